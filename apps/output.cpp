@@ -1,0 +1,78 @@
+#include "apps/output.h"
+
+#include <unistd.h>
+
+#include <random>
+#include <stdexcept>
+
+#include "apps/config.h"
+
+namespace tribo::cli {
+
+AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
+  std::random_device rd;
+  tmp_ = path_;
+  tmp_ += ".partial-" + std::to_string(rd());
+  stream_.open(tmp_);
+  if (!stream_) throw InputError(path_.string() + ": cannot open for writing");
+  stream_.precision(10);
+}
+
+AtomicFile::~AtomicFile() {
+  if (!committed_) {
+    stream_.close();
+    std::error_code ec;
+    std::filesystem::remove(tmp_, ec);
+  }
+}
+
+void AtomicFile::commit() {
+  stream_.flush();
+  if (!stream_) throw std::runtime_error(path_.string() + ": write failed");
+  stream_.close();
+  std::filesystem::rename(tmp_, path_);
+  committed_ = true;
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
+  AtomicFile f(path);
+  f.stream() << content;
+  f.commit();
+}
+
+void make_output_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    throw InputError(dir.string() + ": cannot create output directory (" + ec.message() + ")");
+  }
+}
+
+Progress::Progress(std::string label, int total)
+    : label_(std::move(label)), total_(total), tty_(isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()) {}
+
+void Progress::step(const std::string& what) {
+  ++count_;
+  const double frac = total_ > 0 ? static_cast<double>(count_) / total_ : 1.0;
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  if (tty_) {
+    const int width = 30, filled = static_cast<int>(frac * width);
+    std::fprintf(stderr, "\r%s [%s%s] %d/%d %5.1f s %-30s", label_.c_str(),
+                 std::string(filled, '#').c_str(), std::string(width - filled, '.').c_str(), count_,
+                 total_, elapsed, what.c_str());
+    std::fflush(stderr);
+  } else {
+    const int decile = static_cast<int>(frac * 10);
+    if (decile != last_decile_) {
+      last_decile_ = decile;
+      std::fprintf(stderr, "%s: %d/%d (%.0f %%) %.1f s\n", label_.c_str(), count_, total_, 100 * frac, elapsed);
+    }
+  }
+}
+
+void Progress::done() {
+  if (tty_) std::fprintf(stderr, "\n");
+}
+
+}  // namespace tribo::cli

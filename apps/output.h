@@ -1,0 +1,49 @@
+// Writing results: files appear whole or not at all (written to a temporary name, then renamed),
+// and a terminal progress bar for long jobs.
+#pragma once
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace tribo::cli {
+
+// A file written under a temporary name and renamed into place by commit(); destroyed
+// uncommitted, it leaves nothing behind.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  std::ofstream& stream() { return stream_; }
+  void commit();
+
+ private:
+  std::filesystem::path path_, tmp_;
+  std::ofstream stream_;
+  bool committed_ = false;
+};
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+
+// Creates DIR (and parents); an error names DIR.
+void make_output_dir(const std::filesystem::path& dir);
+
+// "[#####.....] 12/40 label" on stderr when it is a terminal, a line per 10 % otherwise.
+class Progress {
+ public:
+  Progress(std::string label, int total);
+  void step(const std::string& what = "");
+  void done();
+
+ private:
+  std::string label_;
+  int total_, count_ = 0, last_decile_ = -1;
+  bool tty_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace tribo::cli
