@@ -6,12 +6,13 @@ function(tribo_add_library name)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS})
 endfunction()
 
-# tribo_add_test(name SOURCES ... DEPENDS ...): one GoogleTest executable registered with CTest.
+# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow]): one GoogleTest executable
+# registered with CTest. Label `slow` marks tests the sanitizer build skips (ctest -LE slow).
 function(tribo_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60)
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "unit;${ARG_LABELS}")
 endfunction()
 
 # tribo_add_bench(name SOURCES ... DEPENDS ...): one Google Benchmark executable (not a test).
