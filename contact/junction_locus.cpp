@@ -1,0 +1,92 @@
+#include "contact/junction_locus.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace tribo::contact {
+namespace {
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("junction model: " + what);
+}
+
+// Shape factor g(μ) = μ^{-n} S^{-(1+n)} [√(1+αμ²) − Sμ] of (3.1.24); φ̇ = L g(μ).
+// Strictly decreasing on (0, μs,max] because S > √α makes the bracket decrease.
+double shape(const JunctionLocus& l, double mu) {
+  const double s = l.sigma0_over_tau_i;
+  return std::pow(mu, -l.n) * std::pow(s, -(1.0 + l.n)) * (std::sqrt(1.0 + l.alpha * mu * mu) - s * mu);
+}
+
+// With σ0 = κ φ̇^m, φ̇ = L_ref (φ̇/φ̇_ref)^{m(1+n)} g(μ); returns the exponent m(1+n).
+double hardening_exponent(const JunctionLocus& l) { return l.strain_rate_index_m * (1.0 + l.n); }
+
+}  // namespace
+
+void validate(const JunctionLocus& l) {
+  require(std::isfinite(l.alpha) && l.alpha > 0.0, "alpha must be positive (thesis: 10..25)");
+  require(std::isfinite(l.n) && l.n >= 0.0, "n must be non-negative (thesis: 1..1.5)");
+  require(std::isfinite(l.sigma0_over_tau_i) && l.sigma0_over_tau_i * l.sigma0_over_tau_i > l.alpha,
+          "sigma0/tau_i squared must exceed alpha (3.1.23), otherwise there is no upper asymptote");
+  require(std::isfinite(l.location_per_s) && l.location_per_s > 0.0, "location parameter must be positive");
+  require(std::isfinite(l.strain_rate_index_m) && l.strain_rate_index_m >= 0.0 && hardening_exponent(l) < 1.0,
+          "strain-rate index m must satisfy 0 <= m (1 + n) < 1");
+  require(std::isfinite(l.reference_load_rate_per_s) && l.reference_load_rate_per_s > 0.0,
+          "reference load rate must be positive");
+}
+
+double sigma0_over_tau_i_from_upper_asymptote(double mu_s_max, double alpha) {
+  require(std::isfinite(mu_s_max) && mu_s_max > 0.0, "upper asymptote mu_s_max must be positive");
+  require(std::isfinite(alpha) && alpha > 0.0, "alpha must be positive");
+  return std::sqrt(1.0 / (mu_s_max * mu_s_max) + alpha);  // thesis (3.1.23)
+}
+
+double upper_asymptote(const JunctionLocus& l) {
+  validate(l);
+  return 1.0 / std::sqrt(l.sigma0_over_tau_i * l.sigma0_over_tau_i - l.alpha);
+}
+
+double load_rate_at_static_friction_per_s(const JunctionLocus& l, double mu_s) {
+  const double mu_max = upper_asymptote(l);
+  require(std::isfinite(mu_s) && mu_s > 0.0 && mu_s <= mu_max,
+          "mu_s must lie in (0, " + std::to_string(mu_max) + "]");
+  const double g = shape(l, mu_s);
+  if (g <= 0.0) return 0.0;
+  // φ̇^{1−m(1+n)} = L_ref φ̇_ref^{−m(1+n)} g(μ)   — (3.1.24) with (5.1.2)
+  const double e = hardening_exponent(l);
+  return std::pow(l.location_per_s * std::pow(l.reference_load_rate_per_s, -e) * g, 1.0 / (1.0 - e));
+}
+
+double static_friction_from_load_rate(const JunctionLocus& l, double phi_dot_per_s) {
+  const double mu_max = upper_asymptote(l);
+  require(std::isfinite(phi_dot_per_s) && phi_dot_per_s >= 0.0, "load rate must be finite and non-negative");
+  if (phi_dot_per_s == 0.0) return mu_max;
+  const double e = hardening_exponent(l);
+  const double target = std::pow(phi_dot_per_s, 1.0 - e) * std::pow(l.reference_load_rate_per_s, e) / l.location_per_s;
+  double lo = 0.0, hi = mu_max;  // g(lo) = +inf > target >= g(hi) = 0
+  for (int i = 0; i < 200 && hi - lo > 4e-16 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (shape(l, mid) > target ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+double location_through_point_per_s(const JunctionLocus& shape_params, double phi_dot_per_s, double mu_s) {
+  JunctionLocus l = shape_params;
+  l.location_per_s = 1.0;
+  const double mu_max = upper_asymptote(l);
+  require(std::isfinite(mu_s) && mu_s > 0.0 && mu_s < mu_max, "mu_s must lie below the upper asymptote");
+  require(std::isfinite(phi_dot_per_s) && phi_dot_per_s > 0.0, "load rate must be positive");
+  const double e = hardening_exponent(l);
+  return std::pow(phi_dot_per_s, 1.0 - e) * std::pow(l.reference_load_rate_per_s, e) / shape(l, mu_s);
+}
+
+double tabor_area_m2(double normal_load_N, double tangential_load_N, double alpha, double sigma0_Pa) {
+  require(std::isfinite(normal_load_N) && normal_load_N >= 0.0, "normal load must be non-negative");
+  require(std::isfinite(tangential_load_N), "tangential load must be finite");
+  require(std::isfinite(alpha) && alpha >= 0.0, "alpha must be non-negative");
+  require(std::isfinite(sigma0_Pa) && sigma0_Pa > 0.0, "flow stress sigma0 must be positive");
+  return std::sqrt(normal_load_N * normal_load_N + alpha * tangential_load_N * tangential_load_N) / sigma0_Pa;  // (3.1.9)
+}
+
+}  // namespace tribo::contact
