@@ -1,0 +1,67 @@
+// Friction laws as small state machines the rig integrates (DESIGN §4).
+//
+// Sign convention: U = v − ẋ is the velocity of the driven surface relative to the slider. While
+// stuck (U = 0) the contact supplies whatever force keeps ẋ = v, up to the static limit. While
+// slipping with direction d = ±1 (d = sign U, fixed for the phase and changed only by events) the
+// friction on the slider is d · F_k ≥ 0-magnitude, dragging the slider along with the surface.
+// A law never evaluates sign(U) itself: the rig decides the phase and direction at named events.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string>
+
+namespace tribo::rig {
+
+enum class Phase { stick, slip };
+
+// What a law may look at. `state` is the law's own state (its slice of the integrated vector).
+struct FrictionContext {
+  double t_s = 0.0;
+  Phase phase = Phase::stick;
+  int slip_direction = 0;                  // ±1 during slip, 0 during stick
+  double relative_speed_m_per_s = 0.0;     // |U| = |v − ẋ|
+  double drive_speed_m_per_s = 0.0;        // v
+  double normal_load_N = 0.0;              // W
+  double tangential_load_rate_per_s = 0.0; // φ̇ = |dF/dt| / W while stuck (thesis 3.1.20–3.1.21)
+  double slip_distance_m = 0.0;            // ∫|U| dt since the last slip onset
+  double time_in_phase_s = 0.0;            // time since the current phase began
+  std::span<const double> state;
+};
+
+class FrictionLaw {
+ public:
+  virtual ~FrictionLaw() = default;
+
+  // Short identifier for reports.
+  virtual std::string name() const = 0;
+
+  // Number of state variables the law integrates (film thickness, temperature, ...).
+  virtual std::size_t state_size() const { return 0; }
+  virtual void initial_state(std::span<double> /*state*/) const {}
+  // Absolute error tolerance of each state variable for the integrator, in the state's units.
+  virtual void state_tolerances(std::span<double> atol) const {
+    for (double& a : atol) a = 1e-12;
+  }
+
+  // Largest tangential force (N) a stuck contact holds before it breaks away.
+  virtual double static_limit_N(const FrictionContext& c) const = 0;
+
+  // A slipping contact re-attaches at a velocity match only if the force needed to keep ẋ = v
+  // does not exceed this (N). Defaults to the static limit; a fluid film can lower it.
+  virtual double reattach_limit_N(const FrictionContext& c) const { return static_limit_N(c); }
+
+  // Magnitude (N, ≥ 0) of the friction force while slipping at |U| = c.relative_speed_m_per_s.
+  virtual double kinetic_force_N(const FrictionContext& c) const = 0;
+
+  // d(state)/dt in either phase.
+  virtual void state_rates(const FrictionContext& /*c*/, std::span<double> rates) const {
+    for (double& r : rates) r = 0.0;
+  }
+
+  // Event hooks: the state may jump when a slip begins or a stick begins.
+  virtual void on_slip_onset(const FrictionContext& /*c*/, std::span<double> /*state*/) const {}
+  virtual void on_stick_onset(const FrictionContext& /*c*/, std::span<double> /*state*/) const {}
+};
+
+}  // namespace tribo::rig

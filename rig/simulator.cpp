@@ -1,0 +1,349 @@
+#include "rig/simulator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "rig/internal/cvode_integrator.h"
+
+namespace tribo::rig {
+
+const char* to_string(EventKind kind) {
+  switch (kind) {
+    case EventKind::breakaway: return "breakaway";
+    case EventKind::reattach: return "reattach";
+    case EventKind::reversal: return "reversal";
+  }
+  return "?";
+}
+
+namespace {
+
+// Layout of the integrated vector: x, ẋ, slip distance s, then the law's own state.
+constexpr std::size_t kX = 0, kXdot = 1, kSlip = 2, kLaw = 3;
+
+// The hybrid system: model (rig, drive, law) plus the discrete mode (phase, direction).
+struct Machine {
+  const RigParameters& rig;
+  const Drive& drive;
+  const FrictionLaw& law;
+  Phase phase = Phase::stick;
+  int direction = 0;
+  double phase_start_s = 0.0;
+  std::string callback_error;
+
+  FrictionContext context(double t, const double* y) const {
+    FrictionContext c;
+    c.t_s = t;
+    c.phase = phase;
+    c.slip_direction = phase == Phase::slip ? direction : 0;
+    c.drive_speed_m_per_s = drive.speed_m_per_s(t);
+    // Speed along the slip direction; clipped at 0 for the instant before a velocity match is located.
+    c.relative_speed_m_per_s = phase == Phase::slip ? std::max(0.0, direction * (c.drive_speed_m_per_s - y[kXdot])) : 0.0;
+    c.normal_load_N = rig.normal_load_N;
+    c.tangential_load_rate_per_s = phase == Phase::stick ? std::abs(force_rate(t)) / rig.normal_load_N : 0.0;
+    c.slip_distance_m = y[kSlip];
+    c.time_in_phase_s = t - phase_start_s;
+    c.state = std::span<const double>(y + kLaw, law.state_size());
+    return c;
+  }
+
+  // Force the contact must supply to keep ẋ = v: F_need = M v̇ + r v + k x.
+  double needed_force(double t, const double* y) const {
+    return rig.mass_kg * drive.acceleration_m_per_s2(t) + rig.damping_N_s_per_m * drive.speed_m_per_s(t) +
+           rig.stiffness_N_per_m * y[kX];
+  }
+  // dF_need/dt while stuck (v̇ is piecewise constant).
+  double force_rate(double t) const {
+    return rig.damping_N_s_per_m * drive.acceleration_m_per_s2(t) + rig.stiffness_N_per_m * drive.speed_m_per_s(t);
+  }
+
+  // Kinetic friction at the onset of slip in direction d (|U| = 0⁺).
+  double kinetic_at_onset(double t, const double* y, int d) const {
+    Machine probe = *this;
+    probe.phase = Phase::slip;
+    probe.direction = d;
+    FrictionContext c = probe.context(t, y);
+    c.relative_speed_m_per_s = 0.0;
+    return law.kinetic_force_N(c);
+  }
+
+  // A stuck contact cannot break away below the kinetic friction at zero relative speed: the
+  // slider would at once be dragged back to the surface speed.
+  double breakaway_limit(double t, const double* y, int d) const {
+    return std::max(law.static_limit_N(context(t, y)), kinetic_at_onset(t, y, d));
+  }
+
+  double friction(double t, const double* y) const {
+    if (phase == Phase::stick) return needed_force(t, y);
+    return direction * law.kinetic_force_N(context(t, y));
+  }
+
+  double acceleration(double t, const double* y) const {
+    if (phase == Phase::stick) return drive.acceleration_m_per_s2(t);
+    return (friction(t, y) - rig.damping_N_s_per_m * y[kXdot] - rig.stiffness_N_per_m * y[kX]) / rig.mass_kg;
+  }
+
+  void rates(double t, const double* y, double* dy) const {
+    const FrictionContext c = context(t, y);
+    law.state_rates(c, std::span<double>(dy + kLaw, law.state_size()));
+    if (phase == Phase::stick) {
+      dy[kX] = drive.speed_m_per_s(t);
+      dy[kXdot] = drive.acceleration_m_per_s2(t);
+      dy[kSlip] = 0.0;
+    } else {
+      dy[kX] = y[kXdot];
+      dy[kXdot] = acceleration(t, y);
+      dy[kSlip] = direction * (c.drive_speed_m_per_s - y[kXdot]);
+    }
+  }
+
+  // Event functions (all located on downward crossings):
+  //   stick: g0 = F_lim,+ − F_need (breakaway_forward), g1 = F_lim,− + F_need (breakaway_backward)
+  //   slip:  g0 = d U (velocity_match)
+  void events(double t, const double* y, double* g) const {
+    if (phase == Phase::stick) {
+      const double need = needed_force(t, y);
+      g[0] = breakaway_limit(t, y, +1) - need;
+      g[1] = breakaway_limit(t, y, -1) + need;
+    } else {
+      g[0] = direction * (drive.speed_m_per_s(t) - y[kXdot]);
+    }
+  }
+};
+
+int rhs_callback(sunrealtype t, N_Vector y, N_Vector ydot, void* data) {
+  auto* m = static_cast<Machine*>(data);
+  try {
+    m->rates(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    return 0;
+  } catch (const std::exception& e) {
+    m->callback_error = e.what();
+    return -1;
+  }
+}
+
+int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
+  auto* m = static_cast<Machine*>(data);
+  try {
+    m->events(t, N_VGetArrayPointer(y), g);
+    return 0;
+  } catch (const std::exception& e) {
+    m->callback_error = e.what();
+    return -1;
+  }
+}
+
+void validate(const SimulationOptions& o) {
+  auto bad = [](const std::string& what) { throw std::invalid_argument("simulation options: " + what); };
+  if (!std::isfinite(o.duration_s) || !(o.duration_s > 0.0)) bad("duration_s must be positive");
+  if (!(o.relative_tolerance > 0.0) || !(o.relative_tolerance < 1e-2)) bad("relative_tolerance must lie in (0, 1e-2)");
+  if (!(o.displacement_tolerance_fraction > 0.0)) bad("displacement_tolerance_fraction must be positive");
+  if (o.samples_per_period < 4) bad("samples_per_period must be at least 4");
+  if (o.stick_samples_per_run < 1) bad("stick_samples_per_run must be at least 1");
+  if (!std::isfinite(o.initial_displacement_m)) bad("initial_displacement_m must be finite");
+}
+
+}  // namespace
+
+SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const FrictionLaw& law,
+                           const SimulationOptions& options, const SimulationObserver& observer) {
+  validate(rig);
+  validate(options);
+  const std::size_t n = kLaw + law.state_size();
+  const double wn = rig.natural_frequency_rad_per_s();
+  const double x_scale = rig.normal_load_N / rig.stiffness_N_per_m;
+  const double dt_slip = 2.0 * std::numbers::pi / wn / options.samples_per_period;
+  const double dt_stick = std::max(dt_slip, options.duration_s / options.stick_samples_per_run);
+  const double t_end = options.duration_s;
+
+  std::vector<double> atol(n);
+  atol[kX] = atol[kSlip] = options.displacement_tolerance_fraction * x_scale;
+  atol[kXdot] = atol[kX] * wn;
+  law.state_tolerances(std::span<double>(atol.data() + kLaw, law.state_size()));
+
+  Machine m{rig, drive, law, Phase::stick, 0, 0.0, {}};
+  std::vector<double> y(n, 0.0);
+  y[kX] = options.initial_displacement_m;
+  y[kXdot] = drive.speed_m_per_s(0.0);
+  if (options.start_slipping) {
+    const double u0 = drive.speed_m_per_s(0.0) - options.initial_velocity_m_per_s;
+    if (!std::isfinite(u0) || u0 == 0.0) {
+      throw std::invalid_argument("simulation options: initial_velocity_m_per_s must differ from the drive speed to start slipping");
+    }
+    y[kXdot] = options.initial_velocity_m_per_s;
+    m.phase = Phase::slip;
+    m.direction = u0 > 0.0 ? +1 : -1;
+  }
+  law.initial_state(std::span<double>(y.data() + kLaw, law.state_size()));
+
+  internal::CvodeIntegrator cv(n, rhs_callback, root_callback, &m, options.relative_tolerance, atol);
+  SimulationSummary summary;
+  double t = 0.0;
+
+  auto emit_sample = [&]() {
+    if (!observer.on_sample) return;
+    Sample s;
+    s.t_s = t;
+    s.x_m = y[kX];
+    s.xdot_m_per_s = y[kXdot];
+    s.xddot_m_per_s2 = m.acceleration(t, y.data());
+    s.friction_N = m.friction(t, y.data());
+    s.drive_speed_m_per_s = drive.speed_m_per_s(t);
+    s.drive_displacement_m = drive.displacement_m(t);
+    s.slip_distance_m = y[kSlip];
+    s.phase = m.phase;
+    s.slip_direction = m.phase == Phase::slip ? m.direction : 0;
+    observer.on_sample(s);
+  };
+  auto emit_event = [&](Event e) {
+    ++summary.events;
+    if (observer.on_event) observer.on_event(e);
+  };
+  auto law_state = [&]() { return std::span<double>(y.data() + kLaw, law.state_size()); };
+
+  auto breakaway = [&](int d) {
+    Event e;
+    e.t_s = t;
+    e.kind = EventKind::breakaway;
+    e.slip_direction = d;
+    e.x_m = y[kX];
+    e.xdot_m_per_s = drive.speed_m_per_s(t);
+    e.friction_N = m.needed_force(t, y.data());
+    e.mu = std::abs(e.friction_N) / rig.normal_load_N;
+    e.load_rate_per_s = std::abs(m.force_rate(t)) / rig.normal_load_N;
+    e.phase_duration_s = t - m.phase_start_s;
+    emit_event(e);
+    m.phase = Phase::slip;
+    m.direction = d;
+    m.phase_start_s = t;
+    y[kXdot] = drive.speed_m_per_s(t);
+    y[kSlip] = 0.0;
+    law.on_slip_onset(m.context(t, y.data()), law_state());
+  };
+
+  // Velocity match while slipping in direction d: re-attach when the force needed to hold
+  // ẋ = v is within the re-attachment limit (or within the kinetic friction at 0⁺ of the
+  // opposite direction, so that neither slip direction is consistent); otherwise slip on in −d.
+  auto velocity_match = [&]() {
+    y[kXdot] = drive.speed_m_per_s(t);
+    Event e;
+    e.t_s = t;
+    e.x_m = y[kX];
+    e.xdot_m_per_s = y[kXdot];
+    e.friction_N = m.direction * law.kinetic_force_N(m.context(t, y.data()));
+    e.mu = std::abs(e.friction_N) / rig.normal_load_N;
+    e.slip_distance_m = y[kSlip];
+    const double need = m.needed_force(t, y.data());
+    const int reverse = -m.direction;
+    const double hold = std::max(law.reattach_limit_N(m.context(t, y.data())), m.kinetic_at_onset(t, y.data(), reverse));
+    if (std::abs(need) <= hold || need * reverse <= 0.0) {
+      e.kind = EventKind::reattach;
+      e.phase_duration_s = t - m.phase_start_s;
+      emit_event(e);
+      m.phase = Phase::stick;
+      m.direction = 0;
+      m.phase_start_s = t;
+      law.on_stick_onset(m.context(t, y.data()), law_state());
+    } else {
+      e.kind = EventKind::reversal;
+      e.slip_direction = reverse;
+      e.phase_duration_s = t - m.phase_start_s;
+      emit_event(e);
+      m.direction = reverse;
+    }
+  };
+
+  // After a restart the mode may already be inconsistent (a drive step changed v): switch at once.
+  auto settle = [&]() {
+    for (int guard = 0; guard < 4; ++guard) {
+      if (m.phase == Phase::stick) {
+        const double need = m.needed_force(t, y.data());
+        if (need > m.breakaway_limit(t, y.data(), +1)) {
+          breakaway(+1);
+        } else if (-need > m.breakaway_limit(t, y.data(), -1)) {
+          breakaway(-1);
+        } else {
+          return;
+        }
+      } else if (m.direction * (drive.speed_m_per_s(t) - y[kXdot]) < 0.0) {
+        velocity_match();
+      } else {
+        return;
+      }
+    }
+  };
+
+  emit_sample();
+  double next_sample = 0.0;
+  settle();
+  while (t < t_end) {
+    if (summary.events > options.max_events) {
+      summary.message = "stopped after " + std::to_string(summary.events) + " events at t = " + std::to_string(t) +
+                        " s (max_events reached: chattering between stick and slip?)";
+      summary.end_time_s = t;
+      return summary;
+    }
+    const double t_stop = std::min(t_end, drive.next_breakpoint_s(t));
+    const std::vector<int> directions = m.phase == Phase::stick ? std::vector<int>{-1, -1} : std::vector<int>{-1};
+    cv.restart(t, y, directions, t_stop);
+    const double dt_phase = m.phase == Phase::stick ? dt_stick : dt_slip;
+    if (next_sample <= t || next_sample > t + dt_phase) next_sample = t + dt_phase;
+    while (true) {
+      const double t_out = std::min(next_sample, t_stop);
+      double t_reached = t;
+      const int flag = cv.advance(t_out, t_reached);
+      if (flag < 0) {
+        summary.message = "CVODE failed at t = " + std::to_string(t_reached) + " s with code " + std::to_string(flag) +
+                          (m.callback_error.empty() ? "" : " (" + m.callback_error + ")");
+        summary.end_time_s = t;
+        summary.integrator_steps += cv.steps();
+        return summary;
+      }
+      t = t_reached;
+      std::copy(cv.state().begin(), cv.state().end(), y.begin());
+      if (flag == CV_ROOT_RETURN) {
+        emit_sample();
+        if (m.phase == Phase::stick) {
+          const auto found = cv.roots_found(2);
+          breakaway(found[0] != 0 ? +1 : -1);
+        } else {
+          velocity_match();
+        }
+        settle();
+        emit_sample();
+        next_sample = t + (m.phase == Phase::stick ? dt_stick : dt_slip);
+        break;
+      }
+      if (t >= t_stop) {
+        if (m.phase == Phase::stick) y[kXdot] = drive.speed_m_per_s(t);  // follow a drive step
+        settle();
+        emit_sample();
+        next_sample = t + (m.phase == Phase::stick ? dt_stick : dt_slip);
+        break;
+      }
+      emit_sample();
+      next_sample = t + (m.phase == Phase::stick ? dt_stick : dt_slip);
+    }
+    summary.integrator_steps += cv.steps();
+  }
+  summary.completed = true;
+  summary.end_time_s = t;
+  summary.message = "completed";
+  return summary;
+}
+
+SimulationResult simulate(const RigParameters& rig, const Drive& drive, const FrictionLaw& law,
+                          const SimulationOptions& options) {
+  SimulationResult result;
+  SimulationObserver observer;
+  observer.on_sample = [&](const Sample& s) { result.samples.push_back(s); };
+  observer.on_event = [&](const Event& e) { result.events.push_back(e); };
+  result.summary = simulate(rig, drive, law, options, observer);
+  return result;
+}
+
+}  // namespace tribo::rig

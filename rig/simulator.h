@@ -1,0 +1,101 @@
+// Event-driven integration of the rig, thesis (4.2.1):  M ẍ + r ẋ + k x = F.
+//
+// Two phases, switched only at named, directional events located by CVODE root finding:
+//   stick (ẋ = v):  F = F_need = M v̇ + r v + k x; it ends at
+//       `breakaway_forward`   F_static − F_need crosses 0 downwards  → slip with d = +1 (U > 0)
+//       `breakaway_backward`  F_static + F_need crosses 0 downwards  → slip with d = −1 (U < 0)
+//   slip (direction d):  F = d F_k(|U|, state); it ends at
+//       `velocity_match`      d U crosses 0 downwards. Then the contact re-attaches if
+//                             |F_need| ≤ F_reattach; otherwise it keeps slipping with d → −d.
+// Drive breakpoints (velocity steps) restart the integrator; a stuck slider follows the new speed.
+// Nothing in the right-hand side evaluates sign(U): the direction is part of the phase.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rig/drive.h"
+#include "rig/friction_law.h"
+#include "rig/parameters.h"
+
+namespace tribo::rig {
+
+struct SimulationOptions {
+  double duration_s = 5.0;
+  // CVODE local error test: |e_i| ≤ relative_tolerance |y_i| + atol_i, with atol for x equal to
+  // displacement_tolerance_fraction × W/k (the Coulomb displacement scale) and for ẋ that times ω_n.
+  double relative_tolerance = 1e-10;
+  double displacement_tolerance_fraction = 1e-10;
+  // Output spacing while slipping: (2π/ω_n) / samples_per_period.
+  int samples_per_period = 200;
+  // Output spacing while stuck: max(slip spacing, duration_s / stick_samples_per_run).
+  int stick_samples_per_run = 4000;
+  // A run with more events than this stops and says so (e.g. chattering at a velocity match).
+  long max_events = 2'000'000;
+  double initial_displacement_m = 0.0;  // slider displacement at t = 0
+  // By default the slider starts stuck (ẋ = v). With start_slipping it starts at
+  // initial_velocity_m_per_s, which must differ from v(0); the slip direction follows from U.
+  bool start_slipping = false;
+  double initial_velocity_m_per_s = 0.0;
+};
+
+enum class EventKind { breakaway, reattach, reversal };
+const char* to_string(EventKind kind);
+
+struct Event {
+  double t_s = 0.0;
+  EventKind kind = EventKind::breakaway;
+  int slip_direction = 0;        // direction of the slip that starts (breakaway, reversal) or 0 (reattach)
+  double x_m = 0.0;
+  double xdot_m_per_s = 0.0;
+  double friction_N = 0.0;       // friction on the slider at the event, before the switch
+  double mu = 0.0;               // friction_N / W; at a breakaway this is μs
+  double load_rate_per_s = 0.0;  // φ̇ = |dF/dt|/W just before breakaway (thesis 3.1.20)
+  double phase_duration_s = 0.0; // length of the phase that just ended
+  double slip_distance_m = 0.0;  // ∫|U|dt of the slip that just ended (0 at breakaway)
+};
+
+struct Sample {
+  double t_s = 0.0;
+  double x_m = 0.0;
+  double xdot_m_per_s = 0.0;
+  double xddot_m_per_s2 = 0.0;
+  double friction_N = 0.0;       // true friction force on the slider
+  double drive_speed_m_per_s = 0.0;
+  double drive_displacement_m = 0.0;
+  double slip_distance_m = 0.0;
+  Phase phase = Phase::stick;
+  int slip_direction = 0;
+};
+
+struct SimulationSummary {
+  bool completed = false;        // reached duration_s
+  std::string message;
+  double end_time_s = 0.0;
+  long integrator_steps = 0;
+  long events = 0;
+};
+
+struct SimulationResult {
+  SimulationSummary summary;
+  std::vector<Sample> samples;
+  std::vector<Event> events;
+};
+
+// Observers receive samples and events as they happen (to stream long runs to disk).
+struct SimulationObserver {
+  std::function<void(const Sample&)> on_sample;
+  std::function<void(const Event&)> on_event;
+};
+
+// Integrates from a stuck start at t = 0. Throws std::invalid_argument for invalid parameters;
+// integrator failures are reported in the summary (completed = false, message says why).
+SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const FrictionLaw& law,
+                           const SimulationOptions& options, const SimulationObserver& observer);
+
+// Convenience: collects every sample and event.
+SimulationResult simulate(const RigParameters& rig, const Drive& drive, const FrictionLaw& law,
+                          const SimulationOptions& options);
+
+}  // namespace tribo::rig

@@ -1,0 +1,52 @@
+// Drive histories: exact displacement of piecewise-linear speed, and a stuck slider following a
+// velocity step (load-rate change at the step, thesis 3.1.20 φ̇ = k v / W while stuck).
+#include <gtest/gtest.h>
+
+#include "rig/drive.h"
+#include "rig/kinetic_laws.h"
+#include "rig/simulator.h"
+
+namespace tribo::rig {
+namespace {
+
+TEST(Drive, DisplacementIsTheExactIntegralOfPiecewiseLinearSpeed) {
+  const Drive d = Drive::table({0.0, 1.0, 3.0}, {0.0, 2.0, 0.0});
+  EXPECT_DOUBLE_EQ(d.displacement_m(1.0), 1.0);   // triangle ½·1·2
+  EXPECT_DOUBLE_EQ(d.displacement_m(3.0), 3.0);   // + ½·2·2
+  EXPECT_DOUBLE_EQ(d.displacement_m(5.0), 3.0);   // speed 0 beyond the table
+  EXPECT_DOUBLE_EQ(d.speed_m_per_s(2.0), 1.0);
+  EXPECT_DOUBLE_EQ(d.acceleration_m_per_s2(2.0), -1.0);
+}
+
+TEST(Drive, SlideHoldSlideStopsTheDriveDuringTheHold) {
+  const Drive d = Drive::slide_hold_slide(1e-3, 2.0, 3.0);
+  EXPECT_DOUBLE_EQ(d.speed_m_per_s(3.0), 0.0);
+  EXPECT_DOUBLE_EQ(d.displacement_m(6.0), 1e-3 * 3.0);
+}
+
+TEST(Drive, RejectsNegativeSpeedAndUnorderedTimes) {
+  EXPECT_THROW(Drive::constant(-1e-3), std::invalid_argument);
+  EXPECT_THROW(Drive::steps({0.0, 2.0, 1.0}, {1.0, 2.0, 3.0}), std::invalid_argument);
+  EXPECT_THROW(Drive::steps({0.5}, {1.0}), std::invalid_argument);
+}
+
+TEST(Drive, StuckSliderBreaksAwayWhenTheSpringReachesMuSW) {
+  // Steps 1 → 3 mm/s at t = 0.5 s; breakaway at k x + r v = μs W, x = ∫v dt.
+  const RigParameters rig;
+  const Drive d = Drive::steps({0.0, 0.5}, {1e-3, 3e-3});
+  auto law = make_coulomb(0.3, 0.2);
+  SimulationOptions opt;
+  opt.duration_s = 2.0;
+  const SimulationResult r = simulate(rig, d, *law, opt);
+  ASSERT_TRUE(r.summary.completed);
+  ASSERT_FALSE(r.events.empty());
+  const Event& e = r.events.front();
+  ASSERT_EQ(e.kind, EventKind::breakaway);
+  const double x_s = (0.3 * rig.normal_load_N - rig.damping_N_s_per_m * 3e-3) / rig.stiffness_N_per_m;
+  const double t_expected = 0.5 + (x_s - 0.5e-3) / 3e-3;
+  EXPECT_NEAR(e.t_s, t_expected, 1e-8);
+  EXPECT_NEAR(e.load_rate_per_s, rig.stiffness_N_per_m * 3e-3 / rig.normal_load_N, 1e-12);
+}
+
+}  // namespace
+}  // namespace tribo::rig

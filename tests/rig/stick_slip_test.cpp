@@ -1,0 +1,93 @@
+// Classic stick-slip with constant μs > μk at constant drive speed, against the closed form
+// (rig/reference/closed_forms.h), and the energy balance over a cycle.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rig/kinetic_laws.h"
+#include "rig/observables.h"
+#include "rig/reference/closed_forms.h"
+#include "rig/simulator.h"
+
+namespace tribo::rig {
+namespace {
+
+struct Case {
+  double damping_N_s_per_m;
+  double drive_speed_m_per_s;
+};
+
+class StickSlipClosedForm : public ::testing::TestWithParam<Case> {};
+
+TEST_P(StickSlipClosedForm, AmplitudePeriodAndStickTimeMatch) {
+  RigParameters rig;
+  rig.damping_N_s_per_m = GetParam().damping_N_s_per_m;
+  const double v = GetParam().drive_speed_m_per_s, mu_s = 0.3, mu_k = 0.2;
+  const auto ref = reference::coulomb_stick_slip(rig, mu_s, mu_k, v);
+  SimulationOptions opt;
+  opt.duration_s = 6.5 * ref.period_s;
+  auto law = make_coulomb(mu_s, mu_k);
+  const SimulationResult r = simulate(rig, Drive::constant(v), *law, opt);
+  ASSERT_TRUE(r.summary.completed) << r.summary.message;
+  // From the first breakaway on, every cycle is the steady one.
+  const RunObservables o = summarise(rig, r.samples, r.events, r.events.front().t_s);
+  EXPECT_EQ(o.regime, "stick_slip");
+  // Period and stick time come from located events (≈1e-9 relative); the peak-to-peak is read
+  // off samples spaced 2π/(200 ω_n), whose error at an extremum is ≤ (π/200)²/2 ≈ 1.2e-4.
+  EXPECT_NEAR(o.period_s, ref.period_s, 1e-6 * ref.period_s);
+  EXPECT_NEAR(o.stick_time_s, ref.stick_time_s, 1e-6 * ref.stick_time_s);
+  EXPECT_NEAR(o.slip_time_s, ref.slip_time_s, 1e-6 * ref.slip_time_s);
+  EXPECT_NEAR(o.peak_to_peak_m, ref.peak_to_peak_m, 2e-4 * ref.peak_to_peak_m);
+  EXPECT_NEAR(o.mu_s_mean, mu_s, 1e-8);
+}
+
+INSTANTIATE_TEST_SUITE_P(UndampedAndThesisDamping, StickSlipClosedForm,
+                         ::testing::Values(Case{0.0, 1e-3}, Case{0.0, 2e-2}, Case{1.7338, 1e-3}, Case{1.7338, 5e-3}));
+
+TEST(StickSlip, UndampedClosedFormIsTheTextbookFormula) {
+  // The formula: peak-to-peak 2Δ, period 2Δ/v + (π + 2 atan(v/(ω_n Δ)))/ω_n, Δ = (μs−μk)W/k.
+  RigParameters rig;
+  rig.damping_N_s_per_m = 0.0;
+  const double v = 1e-3, W = rig.normal_load_N, k = rig.stiffness_N_per_m, wn = rig.natural_frequency_rad_per_s();
+  const double delta = 0.1 * W / k;
+  const auto ref = reference::coulomb_stick_slip(rig, 0.3, 0.2, v);
+  EXPECT_NEAR(ref.period_s, 2 * delta / v + (M_PI + 2 * std::atan(v / (wn * delta))) / wn, 1e-10);
+  EXPECT_NEAR(ref.peak_to_peak_m, 2 * std::hypot(delta, v / wn), 1e-12);
+  EXPECT_NEAR(ref.peak_to_peak_m, 2 * delta, 1e-4 * 2 * delta);  // v/(ω_n Δ) = 0.011 here
+}
+
+TEST(StickSlip, FrictionWorkEqualsDampingDissipationOverACycle) {
+  // Energy E = ½Mẋ² + ½kx² returns to its value after a full cycle, so ∮F ẋ dt = ∮r ẋ² dt.
+  RigParameters rig;
+  rig.damping_N_s_per_m = 20.0;  // larger than the thesis rig so the balance is not trivially small
+  const double v = 5e-3;
+  const auto ref = reference::coulomb_stick_slip(rig, 0.3, 0.2, v);
+  SimulationOptions opt;
+  opt.duration_s = 4.5 * ref.period_s;
+  opt.samples_per_period = 2000;
+  opt.stick_samples_per_run = 20000;
+  auto law = make_coulomb(0.3, 0.2);
+  const SimulationResult r = simulate(rig, Drive::constant(v), *law, opt);
+  ASSERT_TRUE(r.summary.completed);
+  std::vector<double> breakaways;
+  for (const Event& e : r.events) {
+    if (e.kind == EventKind::breakaway) breakaways.push_back(e.t_s);
+  }
+  ASSERT_GE(breakaways.size(), 3u);
+  const double t0 = breakaways[1], t1 = breakaways[2];
+  double friction_work = 0.0, damping_work = 0.0, gross = 0.0;
+  for (std::size_t i = 1; i < r.samples.size(); ++i) {
+    const Sample &a = r.samples[i - 1], &b = r.samples[i];
+    if (a.t_s < t0 || b.t_s > t1) continue;
+    const double dt = b.t_s - a.t_s;
+    friction_work += 0.5 * (a.friction_N * a.xdot_m_per_s + b.friction_N * b.xdot_m_per_s) * dt;
+    damping_work += 0.5 * rig.damping_N_s_per_m * (a.xdot_m_per_s * a.xdot_m_per_s + b.xdot_m_per_s * b.xdot_m_per_s) * dt;
+    gross += 0.5 * std::abs(a.friction_N * a.xdot_m_per_s + b.friction_N * b.xdot_m_per_s) * dt;
+  }
+  // Trapezoid error with 2000 samples per period: (2π/2000)²/12 ≈ 1e-6 of the gross work.
+  EXPECT_NEAR(friction_work, damping_work, 1e-5 * gross);
+  EXPECT_GT(damping_work, 1e-3 * gross);
+}
+
+}  // namespace
+}  // namespace tribo::rig
