@@ -1,1 +1,119 @@
+#include "apps/rig_config.h"
 
+#include <stdexcept>
+
+#include "rig/kinetic_laws.h"
+
+namespace tribo::cli {
+namespace {
+
+// Library constructors validate physics and throw std::invalid_argument; name the table too.
+template <class F>
+auto with_context(const ConfigTable& table, const std::string& key, F&& build) {
+  try {
+    return build();
+  } catch (const std::invalid_argument& e) {
+    table.fail(key, e.what());
+  }
+}
+
+// Thesis Fig 5.2.1: v = 2.8e-2 in/s, where μs = 0.26 was measured.
+constexpr double kDefaultDriveSpeed_m_per_s = 7.112e-4;
+
+}  // namespace
+
+rig::RigParameters read_rig_parameters(ConfigTable& t) {
+  rig::RigParameters p;
+  p.mass_kg = t.number("mass_kg", p.mass_kg, Range::positive);
+  p.stiffness_N_per_m = t.number("stiffness_N_per_m", p.stiffness_N_per_m, Range::positive);
+  p.damping_N_s_per_m = t.number("damping_N_s_per_m", p.damping_N_s_per_m, Range::non_negative);
+  p.normal_load_N = t.number("normal_load_N", p.normal_load_N, Range::positive);
+  p.slider_radius_m = t.number("slider_radius_m", p.slider_radius_m, Range::positive);
+  with_context(t, "damping_N_s_per_m", [&] { rig::validate(p); return 0; });
+  return p;
+}
+
+rig::Drive read_drive(ConfigTable* t, std::optional<double> speed) {
+  if (!t) return rig::Drive::constant(speed.value_or(kDefaultDriveSpeed_m_per_s));
+  if (speed) t->fail("kind", "give the drive either as [rig] drive_speed_m_per_s or as a [drive] table, not both");
+  const std::string kind = t->choice("kind", "constant", {"constant", "steps", "slide_hold_slide", "table"});
+  rig::Drive drive = rig::Drive::constant(kDefaultDriveSpeed_m_per_s);
+  if (kind == "constant") {
+    drive = rig::Drive::constant(t->number("speed_m_per_s", kDefaultDriveSpeed_m_per_s, Range::non_negative));
+  } else if (kind == "slide_hold_slide") {
+    const double v = t->required_number("speed_m_per_s", Range::non_negative);
+    const double slide = t->required_number("slide_s", Range::positive);
+    const double hold = t->required_number("hold_s", Range::positive);
+    drive = rig::Drive::slide_hold_slide(v, slide, hold);
+  } else {
+    const auto times = t->number_array("times_s", Range::non_negative);
+    const auto speeds = t->number_array("speeds_m_per_s", Range::non_negative);
+    if (times.empty()) t->fail("times_s", "is required for kind = \"" + kind + "\"");
+    drive = with_context(*t, "times_s", [&] {
+      return kind == "steps" ? rig::Drive::steps(times, speeds) : rig::Drive::table(times, speeds);
+    });
+  }
+  t->finish();
+  return drive;
+}
+
+std::shared_ptr<const rig::FrictionLaw> read_friction_law(ConfigTable* t) {
+  if (!t) return rig::make_coulomb(0.3, 0.2);
+  const std::string law = t->choice("law", "coulomb", {"coulomb", "stribeck", "table"});
+  const double mu_s = t->number("mu_s", 0.3, Range::non_negative);
+  std::shared_ptr<const rig::FrictionLaw> result;
+  if (law == "coulomb") {
+    const double mu_k = t->number("mu_k", 0.2, Range::non_negative);
+    if (mu_k > mu_s) t->fail("mu_k", "must not exceed mu_s (" + std::to_string(mu_s) + ")");
+    result = rig::make_coulomb(mu_s, mu_k);
+  } else if (law == "stribeck") {
+    rig::StribeckParameters p;
+    p.mu_coulomb = t->number("mu_k", p.mu_coulomb, Range::non_negative);
+    p.mu_breakaway = t->number("mu_k0", p.mu_breakaway, Range::non_negative);
+    p.stribeck_speed_m_per_s = t->number("stribeck_speed_m_per_s", p.stribeck_speed_m_per_s, Range::positive);
+    p.exponent = t->number("exponent", p.exponent, Range::positive);
+    p.viscous_per_m_per_s = t->number("viscous_per_m_per_s", p.viscous_per_m_per_s, Range::non_negative);
+    result = with_context(*t, "law", [&] {
+      return std::make_shared<rig::KineticCurveLaw>(mu_s, std::make_shared<rig::StribeckCurve>(p));
+    });
+  } else {
+    const auto speeds = t->number_array("speeds_m_per_s", Range::non_negative);
+    const auto mu = t->number_array("mu_k", Range::non_negative);
+    result = with_context(*t, "speeds_m_per_s", [&] {
+      return std::make_shared<rig::KineticCurveLaw>(mu_s, std::make_shared<rig::TabulatedCurve>(speeds, mu));
+    });
+  }
+  t->finish();
+  return result;
+}
+
+RigRun load_rig_run(const std::filesystem::path& path) {
+  const toml::table doc = parse_toml_file(path);
+  ConfigTable root(doc, path.string(), "");
+  RigRun run;
+
+  std::optional<double> speed;
+  if (auto t = root.table("rig")) {
+    run.rig = read_rig_parameters(*t);
+    speed = t->optional_number("drive_speed_m_per_s", Range::non_negative);
+    t->finish();
+  }
+  auto drive_table = root.table("drive");
+  run.drive = read_drive(drive_table ? &*drive_table : nullptr, speed);
+  auto friction_table = root.table("friction");
+  run.law = read_friction_law(friction_table ? &*friction_table : nullptr);
+  if (auto t = root.table("run")) {
+    run.options.duration_s = t->number("duration_s", run.options.duration_s, Range::positive);
+    run.options.samples_per_period =
+        static_cast<int>(t->integer("samples_per_period", run.options.samples_per_period, 8));
+    run.options.relative_tolerance = t->number("relative_tolerance", run.options.relative_tolerance, Range::positive);
+    if (run.options.relative_tolerance >= 1e-2) t->fail("relative_tolerance", "must be below 1e-2");
+    run.analysis_start_fraction = t->number("analysis_start_fraction", run.analysis_start_fraction, Range::unit_interval);
+    if (run.analysis_start_fraction >= 1.0) t->fail("analysis_start_fraction", "must be below 1");
+    t->finish();
+  }
+  root.finish();
+  return run;
+}
+
+}  // namespace tribo::cli

@@ -1,0 +1,42 @@
+// `tribo rig` configuration: TOML → rig parameters, drive history, friction law, run options.
+//
+//   [rig]       mass_kg, stiffness_N_per_m, damping_N_s_per_m, normal_load_N, slider_radius_m,
+//               drive_speed_m_per_s                       (thesis rig for every key left out)
+//   [drive]     kind = "constant" | "steps" | "slide_hold_slide" | "table"
+//               times_s = [...], speeds_m_per_s = [...]    (steps, table)
+//               speed_m_per_s, slide_s, hold_s             (slide_hold_slide)
+//   [friction]  law = "coulomb" | "stribeck" | "table", mu_s, mu_k, ...   (see docs/rig.md)
+//   [run]       duration_s, samples_per_period, relative_tolerance, analysis_start_fraction
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "apps/config.h"
+#include "rig/drive.h"
+#include "rig/friction_law.h"
+#include "rig/parameters.h"
+#include "rig/simulator.h"
+
+namespace tribo::cli {
+
+struct RigRun {
+  rig::RigParameters rig;
+  std::optional<rig::Drive> drive;
+  std::shared_ptr<const rig::FrictionLaw> law;
+  rig::SimulationOptions options;
+  double analysis_start_fraction = 0.5;  // observables use the run from this fraction of duration on
+};
+
+// Reads and validates a whole config; throws InputError ("file: key 'a.b': reason") on bad input.
+RigRun load_rig_run(const std::filesystem::path& path);
+
+// The pieces, for other commands that embed a rig (demo, gap): each reads its table and rejects
+// unknown keys. `friction` may be absent (the Coulomb defaults μs = 0.3, μk = 0.2 then apply).
+rig::RigParameters read_rig_parameters(ConfigTable& rig_table);
+std::shared_ptr<const rig::FrictionLaw> read_friction_law(ConfigTable* friction_table);
+rig::Drive read_drive(ConfigTable* drive_table, std::optional<double> drive_speed_m_per_s);
+
+}  // namespace tribo::cli

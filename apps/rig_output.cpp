@@ -1,0 +1,68 @@
+#include "apps/rig_output.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+namespace tribo::cli {
+namespace {
+// JSON has no NaN: absent observables are null.
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+}  // namespace
+
+void write_trace_header(std::ostream& os) {
+  os << "t_s,x_m,xdot_m_per_s,friction_N,xddot_m_per_s2,friction_true_N,relative_velocity_m_per_s,"
+        "drive_speed_m_per_s,x_drive_m,slip_distance_m,phase\n";
+}
+
+void write_trace_row(std::ostream& os, const rig::RigParameters& rig, const rig::Sample& s) {
+  os << s.t_s << ',' << s.x_m << ',' << s.xdot_m_per_s << ',' << rig::measured_friction_N(rig, s) << ','
+     << s.xddot_m_per_s2 << ',' << s.friction_N << ',' << (s.drive_speed_m_per_s - s.xdot_m_per_s) << ','
+     << s.drive_speed_m_per_s << ',' << s.drive_displacement_m << ',' << s.slip_distance_m << ','
+     << (s.phase == rig::Phase::stick ? "stick" : "slip") << '\n';
+}
+
+void write_events_csv(std::ostream& os, const std::vector<rig::Event>& events) {
+  os << "t_s,event,slip_direction,x_m,xdot_m_per_s,friction_N,mu,load_rate_per_s,phase_duration_s,slip_distance_m\n";
+  for (const rig::Event& e : events) {
+    os << e.t_s << ',' << rig::to_string(e.kind) << ',' << e.slip_direction << ',' << e.x_m << ',' << e.xdot_m_per_s
+       << ',' << e.friction_N << ',' << e.mu << ',' << e.load_rate_per_s << ',' << e.phase_duration_s << ','
+       << e.slip_distance_m << '\n';
+  }
+}
+
+nlohmann::json observables_json(const rig::RunObservables& o) {
+  return {{"regime", o.regime},
+          {"window_start_s", o.window_start_s},
+          {"period_s", number_or_null(o.period_s)},
+          {"peak_to_peak_m", number_or_null(o.peak_to_peak_m)},
+          {"mean_displacement_m", number_or_null(o.mean_displacement_m)},
+          {"stick_time_s", number_or_null(o.stick_time_s)},
+          {"slip_time_s", number_or_null(o.slip_time_s)},
+          {"mu_s_mean", number_or_null(o.mu_s_mean)},
+          {"load_rate_mean_per_s", number_or_null(o.load_rate_mean_per_s)},
+          {"mean_friction_N", number_or_null(o.mean_friction_N)},
+          {"breakaways", o.breakaways},
+          {"reattachments", o.reattachments},
+          {"reversals", o.reversals}};
+}
+
+nlohmann::json rig_json(const rig::RigParameters& rig) {
+  return {{"mass_kg", rig.mass_kg},
+          {"stiffness_N_per_m", rig.stiffness_N_per_m},
+          {"damping_N_s_per_m", rig.damping_N_s_per_m},
+          {"normal_load_N", rig.normal_load_N},
+          {"slider_radius_m", rig.slider_radius_m},
+          {"natural_frequency_rad_per_s", rig.natural_frequency_rad_per_s()},
+          {"damped_frequency_rad_per_s", rig.damped_frequency_rad_per_s()},
+          {"decay_rate_per_s", rig.decay_rate_per_s()}};
+}
+
+int run_plot_script(const std::string& args) {
+  const std::filesystem::path script = std::filesystem::path(TRIBO_SOURCE_DIR) / "tools" / "tribo_plots.py";
+  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string cmd = python + " '" + script.string() + "' " + args;
+  return std::system(cmd.c_str());
+}
+
+}  // namespace tribo::cli

@@ -1,0 +1,25 @@
+// Files a rig run writes: trace.csv (streamed), events.csv and summary.json. SI units with the
+// unit in every column name; friction_N is the force as the thesis instrument measures it (4.2.3).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+#include <vector>
+
+#include "rig/observables.h"
+#include "rig/simulator.h"
+
+namespace tribo::cli {
+
+void write_trace_header(std::ostream& os);
+void write_trace_row(std::ostream& os, const rig::RigParameters& rig, const rig::Sample& s);
+void write_events_csv(std::ostream& os, const std::vector<rig::Event>& events);
+nlohmann::json observables_json(const rig::RunObservables& o);
+nlohmann::json rig_json(const rig::RigParameters& rig);
+
+// Path of the plotting script and the Python that has matplotlib (Debian's /usr/bin/python3).
+// Returns the command's exit status; plots are optional extras, so callers warn on failure.
+int run_plot_script(const std::string& args);
+
+}  // namespace tribo::cli
