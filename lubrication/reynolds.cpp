@@ -1,0 +1,483 @@
+#include "lubrication/reynolds.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace tribo::lubrication {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("reynolds: " + what); }
+
+// A link is one face of the cell around an unknown node P, towards neighbour node N.
+enum class LinkKind { unknown, dirichlet, rim };
+struct Link {
+  LinkKind kind;
+  std::size_t node;    // neighbour node N (outside the film for rim links)
+  int unknown;         // unknown index of N, or −1
+  double theta;        // fraction of the spacing to the boundary value (1 except rim links)
+  double value_Pa;     // boundary pressure for dirichlet and rim links
+  bool along_x;
+  int sign;            // +1 towards +x / +y, −1 towards −x / −y
+};
+
+// Grid topology: which nodes are unknowns, and the four links of each.
+struct Topology {
+  std::vector<int> unknown_of;             // per node, −1 where p is prescribed
+  std::vector<std::size_t> node_of;        // per unknown
+  std::vector<std::array<Link, 4>> links;  // per unknown
+  std::vector<bool> wetted;                // per node
+  std::vector<double> boundary_Pa;         // per node, prescribed p (0 inside)
+  std::vector<double> weight_m2;           // per node, load-integration weight
+};
+
+// Smallest fraction of a link kept between a node and the rim; nodes closer to the rim than
+// this along a grid line are put on the rim (p = 0), which keeps k/θ bounded. The pressure
+// error this causes is O(θ_min · dx · |∇p|), far below the O(dx²) discretisation error.
+constexpr double kMinRimFraction = 1e-3;
+
+// Distance fraction t ∈ (0, 1] along the link from (x, y) in direction (ex, ey) of length d
+// at which the circle is crossed, for a point inside the circle.
+double rim_fraction(const DiscDomain& disc, double x, double y, double ex, double ey, double d) {
+  const double px = x - disc.centre_x_m, py = y - disc.centre_y_m;
+  const double b = px * ex + py * ey;
+  const double c = px * px + py * py - disc.radius_m * disc.radius_m;
+  return (-b + std::sqrt(b * b - c)) / d;
+}
+
+Topology build_topology(const ReynoldsProblem& pr) {
+  const Grid& g = pr.grid;
+  const bool periodic = pr.boundary_y == BoundaryY::periodic && !pr.disc;
+  Topology t;
+  t.unknown_of.assign(g.size(), -1);
+  t.wetted.assign(g.size(), false);
+  t.boundary_Pa.assign(g.size(), 0.0);
+  t.weight_m2.assign(g.size(), 0.0);
+  auto inside_disc = [&](int i, int j) {
+    const double x = i * g.dx_m - pr.disc->centre_x_m, y = j * g.dy_m - pr.disc->centre_y_m;
+    return x * x + y * y < pr.disc->radius_m * pr.disc->radius_m;
+  };
+  const int dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < g.nx; ++i) {
+      const std::size_t n = g.index(i, j);
+      bool unknown;
+      if (pr.disc) {
+        unknown = inside_disc(i, j);
+        for (const auto& d : dirs) {
+          if (!unknown) break;
+          if (inside_disc(i + d[0], j + d[1])) continue;
+          const double len = d[0] ? g.dx_m : g.dy_m;
+          if (rim_fraction(*pr.disc, i * g.dx_m, j * g.dy_m, d[0], d[1], len) < kMinRimFraction) unknown = false;
+        }
+        t.wetted[n] = unknown;
+      } else {
+        const bool x_end = i == 0 || i == g.nx - 1;
+        const bool y_end = !periodic && (j == 0 || j == g.ny - 1);
+        unknown = !x_end && !y_end;
+        t.wetted[n] = true;
+        if (x_end && !y_end) t.boundary_Pa[n] = i == 0 ? pr.inlet_pressure_Pa : pr.outlet_pressure_Pa;
+        const double wx = x_end ? 0.5 * g.dx_m : g.dx_m;
+        const double wy = periodic ? g.dy_m : ((j == 0 || j == g.ny - 1) ? 0.5 * g.dy_m : g.dy_m);
+        t.weight_m2[n] = wx * wy;
+      }
+      if (unknown) {
+        t.unknown_of[n] = static_cast<int>(t.node_of.size());
+        t.node_of.push_back(n);
+      }
+    }
+  if (t.node_of.empty()) bad("the film domain holds no interior grid node; refine the grid");
+  t.links.resize(t.node_of.size());
+  for (std::size_t u = 0; u < t.node_of.size(); ++u) {
+    const std::size_t n = t.node_of[u];
+    const int i = static_cast<int>(n % g.nx), j = static_cast<int>(n / g.nx);
+    double len_x = 0;  // row length of the cell for the disc's load weights
+    for (int k = 0; k < 4; ++k) {
+      const int ni = i + dirs[k][0];
+      int nj = j + dirs[k][1];
+      if (periodic) nj = (nj + g.ny) % g.ny;
+      const std::size_t m = g.index(ni, nj);
+      const bool along_x = dirs[k][0] != 0;
+      const double len = along_x ? g.dx_m : g.dy_m;
+      Link link{LinkKind::unknown, m, t.unknown_of[m], 1.0, 0.0, along_x, along_x ? dirs[k][0] : dirs[k][1]};
+      if (link.unknown < 0) {
+        if (pr.disc) {
+          link.kind = LinkKind::rim;
+          link.theta = rim_fraction(*pr.disc, i * g.dx_m, j * g.dy_m, dirs[k][0], dirs[k][1], len);
+          // The neighbour may be inside the circle but on the rim (θ_min rule): the rim is there.
+          if (inside_disc(ni, nj)) link.theta = 1.0;
+        } else {
+          link.kind = LinkKind::dirichlet;
+          link.value_Pa = t.boundary_Pa[m];
+        }
+      }
+      if (along_x) len_x += 0.5 * link.theta * g.dx_m;
+      t.links[u][k] = link;
+    }
+    if (pr.disc) t.weight_m2[n] = len_x * g.dy_m;
+  }
+  return t;
+}
+
+
+// Face quantities of a link (see the header): conductance h³/(12η) from the trapezoid rule on
+// ∫dx/h³, the Couette gap h̃ = ∫dx/h² / ∫dx/h³, and the face length times 1/(θ d).
+struct Face {
+  double conductance_per_Pa;  // k A / (θ d): mass flow per unit pressure difference (m³/(Pa s))
+  double couette_m3_per_s;    // s (U/2) h̃ A, the Couette flow out of the cell at ϑ = 1
+};
+
+Face face_of(const ReynoldsProblem& pr, std::size_t p_node, const Link& link) {
+  const Grid& g = pr.grid;
+  const double hp = pr.gap_m[p_node], hn = pr.gap_m[link.node];
+  const double d = link.along_x ? g.dx_m : g.dy_m, area = link.along_x ? g.dy_m : g.dx_m;
+  // The diffusive face runs from P to the rim point (gap interpolated there) for rim links.
+  const double hb = link.kind == LinkKind::rim ? hp + link.theta * (hn - hp) : hn;
+  const double inv3 = 1.0 / (hp * hp * hp) + 1.0 / (hb * hb * hb);
+  const double k = 2.0 / inv3 / (12.0 * pr.viscosity_Pa_s);
+  Face f{k * area / (link.theta * d), 0.0};
+  if (link.along_x && pr.sliding_speed_m_per_s != 0.0) {
+    // The Couette divergence uses the regular face P–N (the Gibou cell is a full dx × dy cell).
+    const double i3 = 1.0 / (hp * hp * hp) + 1.0 / (hn * hn * hn);
+    const double i2 = 1.0 / (hp * hp) + 1.0 / (hn * hn);
+    f.couette_m3_per_s = link.sign * 0.5 * pr.sliding_speed_m_per_s * (i2 / i3) * area;
+  }
+  return f;
+}
+
+// Whether the Couette flux through this link takes ϑ from P (else from the neighbour).
+bool upwind_is_p(const ReynoldsProblem& pr, const Link& link) { return link.sign * pr.sliding_speed_m_per_s >= 0.0; }
+
+double gap_rate(const ReynoldsProblem& pr, std::size_t node) {
+  return pr.gap_rate_m_per_s.empty() ? 0.0 : pr.gap_rate_m_per_s[node];
+}
+
+// Pattern signature: a new symbolic analysis is needed only when it changes.
+struct Signature {
+  int nx = 0, ny = 0;
+  BoundaryY by = BoundaryY::ambient;
+  bool disc = false;
+  double cx = 0, cy = 0, r = 0, dx = 0, dy = 0;
+  Cavitation cav = Cavitation::none;
+  int upwind = 0;
+  bool operator==(const Signature&) const = default;
+};
+
+Signature signature_of(const ReynoldsProblem& pr) {
+  Signature s{pr.grid.nx, pr.grid.ny, pr.boundary_y, pr.disc.has_value(), 0, 0, 0, pr.grid.dx_m, pr.grid.dy_m,
+              pr.cavitation, pr.sliding_speed_m_per_s > 0 ? 1 : (pr.sliding_speed_m_per_s < 0 ? -1 : 0)};
+  if (pr.disc) {
+    s.cx = pr.disc->centre_x_m;
+    s.cy = pr.disc->centre_y_m;
+    s.r = pr.disc->radius_m;
+  }
+  return s;
+}
+
+// Fischer–Burmeister function φ(a, b) = a + b − √(a² + b²) and its partial derivatives; at the
+// kink a = b = 0 the element (1 − 1/√2, 1 − 1/√2) of the B-subdifferential is used.
+struct FB {
+  double value, da, db;
+};
+FB fischer_burmeister(double a, double b) {
+  const double r = std::hypot(a, b);
+  if (r == 0.0) return {0.0, 1.0 - M_SQRT1_2, 1.0 - M_SQRT1_2};
+  return {a + b - r, 1.0 - a / r, 1.0 - b / r};
+}
+
+}  // namespace
+
+void validate(const ReynoldsProblem& pr) {
+  const Grid& g = pr.grid;
+  if (g.nx < 3 || g.ny < 3)
+    bad("grid must have at least 3 nodes in x and y (got " + std::to_string(g.nx) + " x " + std::to_string(g.ny) + ")");
+  if (!(std::isfinite(g.dx_m) && g.dx_m > 0 && std::isfinite(g.dy_m) && g.dy_m > 0))
+    bad("grid spacing dx_m, dy_m must be finite and > 0");
+  if (pr.gap_m.size() != g.size())
+    bad("gap_m has " + std::to_string(pr.gap_m.size()) + " values, the grid " + std::to_string(g.size()));
+  for (std::size_t n = 0; n < pr.gap_m.size(); ++n)
+    if (!std::isfinite(pr.gap_m[n]) || pr.gap_m[n] <= 0.0) {
+      std::ostringstream m;
+      m << "gap_m must be finite and > 0 everywhere; node (i=" << n % g.nx << ", j=" << n / g.nx << ") has h = "
+        << pr.gap_m[n] << " m";
+      bad(m.str());
+    }
+  if (!pr.gap_rate_m_per_s.empty()) {
+    if (pr.gap_rate_m_per_s.size() != g.size()) bad("gap_rate_m_per_s must be empty or have one value per node");
+    for (double v : pr.gap_rate_m_per_s)
+      if (!std::isfinite(v)) bad("gap_rate_m_per_s holds a non-finite value");
+  }
+  if (!std::isfinite(pr.viscosity_Pa_s) || pr.viscosity_Pa_s <= 0.0)
+    bad("viscosity_Pa_s must be finite and > 0 (got " + std::to_string(pr.viscosity_Pa_s) + ")");
+  if (!std::isfinite(pr.sliding_speed_m_per_s)) bad("sliding_speed_m_per_s must be finite");
+  if (!std::isfinite(pr.inlet_pressure_Pa) || !std::isfinite(pr.outlet_pressure_Pa))
+    bad("inlet_pressure_Pa and outlet_pressure_Pa must be finite");
+  if (pr.cavitation == Cavitation::mass_conserving && (pr.inlet_pressure_Pa < 0 || pr.outlet_pressure_Pa < 0))
+    bad("with cavitation the boundary pressures must be >= 0 (gauge, cavitation at p = 0)");
+  if (pr.disc) {
+    const DiscDomain& d = *pr.disc;
+    if (!(std::isfinite(d.radius_m) && d.radius_m > 0)) bad("disc radius_m must be finite and > 0");
+    if (!(std::isfinite(d.centre_x_m) && std::isfinite(d.centre_y_m))) bad("disc centre must be finite");
+    if (d.centre_x_m - d.radius_m <= 0 || d.centre_x_m + d.radius_m >= g.length_x_m() ||
+        d.centre_y_m - d.radius_m <= 0 || d.centre_y_m + d.radius_m >= (g.ny - 1) * g.dy_m)
+      bad("the disc must lie strictly inside the grid");
+  }
+}
+
+struct ReynoldsSolver::Impl {
+  ReynoldsOptions options;
+  std::unique_ptr<SparseLinearSolver> cholmod = make_linear_solver(LinearSolverKind::cholmod);
+  std::unique_ptr<SparseLinearSolver> umfpack = make_linear_solver(LinearSolverKind::umfpack);
+  std::optional<Signature> cholmod_signature, umfpack_signature;
+  int analyses = 0;
+  double linear_s = 0;
+
+  // Solves the linear (ϑ ≡ 1) problem into p (per unknown); returns the SPD system's rhs scale.
+  LinearSolveStatus solve_linear(const ReynoldsProblem& pr, const Topology& t, Eigen::VectorXd& p, double& rhs_scale) {
+    const std::size_t n = t.node_of.size();
+    std::vector<Eigen::Triplet<double, int>> triplets;
+    triplets.reserve(5 * n);
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
+    const double cell = pr.grid.dx_m * pr.grid.dy_m;
+    for (std::size_t u = 0; u < n; ++u) {
+      const std::size_t node = t.node_of[u];
+      double diag = 0;
+      for (const Link& link : t.links[u]) {
+        const Face f = face_of(pr, node, link);
+        diag += f.conductance_per_Pa;
+        if (link.kind == LinkKind::unknown)
+          triplets.emplace_back(static_cast<int>(u), link.unknown, -f.conductance_per_Pa);
+        else
+          b[u] += f.conductance_per_Pa * link.value_Pa;
+        b[u] -= f.couette_m3_per_s;
+      }
+      b[u] -= gap_rate(pr, node) * cell;
+      triplets.emplace_back(static_cast<int>(u), static_cast<int>(u), diag);
+    }
+    SparseMatrix a(static_cast<int>(n), static_cast<int>(n));
+    a.setFromTriplets(triplets.begin(), triplets.end());
+    rhs_scale = b.cwiseAbs().maxCoeff();
+    const auto t0 = Clock::now();
+    const Signature sig = signature_of(pr);
+    LinearSolveStatus s;
+    if (!cholmod_signature || !(*cholmod_signature == sig) || !cholmod->analyzed()) {
+      cholmod_signature.reset();
+      s = cholmod->analyze(a);
+      ++analyses;
+      if (s.ok) cholmod_signature = sig;
+    }
+    if (s.ok) s = cholmod->factorize(a);
+    if (s.ok) s = cholmod->solve(b, p);
+    linear_s += seconds_since(t0);
+    return s;
+  }
+
+  // Residual F (size 2n: mass rows scaled by mass_scale, FB rows) and, if wanted, its Jacobian.
+  void residual(const ReynoldsProblem& pr, const Topology& t, const Eigen::VectorXd& z, double mass_scale,
+                double p_scale, Eigen::VectorXd& f, std::vector<Eigen::Triplet<double, int>>* jac) const {
+    const std::size_t n = t.node_of.size();
+    const double cell = pr.grid.dx_m * pr.grid.dy_m;
+    f.resize(static_cast<Eigen::Index>(2 * n));
+    for (std::size_t u = 0; u < n; ++u) {
+      const std::size_t node = t.node_of[u];
+      const int row = static_cast<int>(2 * u);
+      const double p = z[row], th = z[row + 1];
+      double mass = gap_rate(pr, node) * cell * th;
+      double d_mass_dp = 0, d_mass_dth = gap_rate(pr, node) * cell;
+      for (const Link& link : t.links[u]) {
+        const Face fc = face_of(pr, node, link);
+        const bool known = link.kind != LinkKind::unknown;
+        const double pn = known ? link.value_Pa : z[2 * link.unknown];
+        const double thn = known ? 1.0 : z[2 * link.unknown + 1];
+        const bool from_p = upwind_is_p(pr, link);
+        mass += fc.conductance_per_Pa * (p - pn) + fc.couette_m3_per_s * (from_p ? th : thn);
+        d_mass_dp += fc.conductance_per_Pa;
+        if (from_p) d_mass_dth += fc.couette_m3_per_s;
+        if (jac && !known) {
+          // Both neighbour entries are always stored (possibly zero) so the pattern never changes.
+          jac->emplace_back(row, 2 * link.unknown, -fc.conductance_per_Pa / mass_scale);
+          jac->emplace_back(row, 2 * link.unknown + 1, from_p ? 0.0 : fc.couette_m3_per_s / mass_scale);
+        }
+      }
+      f[row] = mass / mass_scale;
+      const FB fb = fischer_burmeister(p / p_scale, 1.0 - th);
+      f[row + 1] = fb.value;
+      if (jac) {
+        jac->emplace_back(row, row, d_mass_dp / mass_scale);
+        jac->emplace_back(row, row + 1, d_mass_dth / mass_scale);
+        jac->emplace_back(row + 1, row, fb.da / p_scale);
+        jac->emplace_back(row + 1, row + 1, -fb.db);
+      }
+    }
+  }
+
+  ReynoldsSolution solve(const ReynoldsProblem& pr) {
+    const auto start = Clock::now();
+    validate(pr);
+    linear_s = 0;
+    const Topology t = build_topology(pr);
+    const std::size_t n = t.node_of.size();
+    ReynoldsSolution sol;
+    sol.wetted = t.wetted;
+    sol.pressure_Pa = t.boundary_Pa;
+    sol.fill_fraction.assign(pr.grid.size(), 1.0);
+    ReynoldsSummary& sum = sol.summary;
+    sum.linear_solver = "cholmod";
+
+    Eigen::VectorXd p;
+    double rhs_scale = 0;
+    LinearSolveStatus s = solve_linear(pr, t, p, rhs_scale);
+    if (!s.ok) {
+      sum.message = s.message;
+      sum.wall_s = seconds_since(start);
+      sum.linear_solver_s = linear_s;
+      return sol;
+    }
+    sum.converged = true;
+    sum.iterations = 1;
+    sum.message = "linear solve (no cavitation)";
+    // The linear solution satisfies the complementarity conditions wherever it is ≥ 0; only a
+    // sub-ambient pressure calls for the Newton solve.
+    const bool cavitates = pr.cavitation == Cavitation::mass_conserving && p.minCoeff() < 0.0;
+    if (cavitates) {
+      sum.linear_solver = "umfpack";
+      sum.converged = false;
+      const double p_scale = std::max(p.cwiseAbs().maxCoeff(), 1e-300);
+      const double mass_scale = std::max(rhs_scale, 1e-300);
+      Eigen::VectorXd z(static_cast<Eigen::Index>(2 * n));
+      for (std::size_t u = 0; u < n; ++u) {
+        z[2 * u] = std::max(p[u], 0.0);
+        z[2 * u + 1] = p[u] >= 0.0 ? 1.0 : 0.9;  // off the FB kink where the film may rupture
+      }
+      Eigen::VectorXd f, f_trial, dz;
+      std::vector<Eigen::Triplet<double, int>> triplets;
+      SparseMatrix jac(static_cast<int>(2 * n), static_cast<int>(2 * n));
+      const Signature sig = signature_of(pr);
+      residual(pr, t, z, mass_scale, p_scale, f, nullptr);
+      double merit = 0.5 * f.squaredNorm();
+      sum.iterations = 0;
+      sum.message = "Newton iteration limit reached";
+      for (int it = 0; it < options.max_newton_iterations; ++it) {
+        sum.residual = f.cwiseAbs().maxCoeff();
+        if (sum.residual <= options.newton_tolerance) {
+          sum.converged = true;
+          sum.message = "converged: scaled residual " + std::to_string(sum.residual);
+          break;
+        }
+        triplets.clear();
+        residual(pr, t, z, mass_scale, p_scale, f, &triplets);
+        jac.setFromTriplets(triplets.begin(), triplets.end());
+        const auto t0 = Clock::now();
+        LinearSolveStatus ls;
+        if (!umfpack_signature || !(*umfpack_signature == sig) || !umfpack->analyzed()) {
+          umfpack_signature.reset();
+          ls = umfpack->analyze(jac);
+          ++analyses;
+          if (ls.ok) umfpack_signature = sig;
+        }
+        if (ls.ok) ls = umfpack->factorize(jac);
+        if (ls.ok) ls = umfpack->solve(-f, dz);
+        linear_s += seconds_since(t0);
+        if (!ls.ok) {
+          sum.message = ls.message;
+          break;
+        }
+        ++sum.iterations;
+        // Armijo back-tracking on the merit ½‖F‖²; the Newton direction is a descent direction
+        // with slope −‖F‖² = −2·merit.
+        double step = 1.0;
+        bool accepted = false;
+        while (step >= options.min_step) {
+          residual(pr, t, z + step * dz, mass_scale, p_scale, f_trial, nullptr);
+          const double trial = 0.5 * f_trial.squaredNorm();
+          if (trial <= (1.0 - 2.0 * options.armijo_constant * step) * merit) {
+            accepted = true;
+            break;
+          }
+          step *= 0.5;
+        }
+        if (!accepted) {
+          sum.message = "line search failed: no sufficient decrease of the residual";
+          break;
+        }
+        z += step * dz;
+        f = f_trial;
+        merit = 0.5 * f.squaredNorm();
+      }
+      if (!sum.converged && sum.iterations == options.max_newton_iterations) {
+        sum.residual = f.cwiseAbs().maxCoeff();
+        if (sum.residual <= options.newton_tolerance) {
+          sum.converged = true;
+          sum.message = "converged: scaled residual " + std::to_string(sum.residual);
+        }
+      }
+      for (std::size_t u = 0; u < n; ++u) {
+        p[u] = z[2 * u];
+        sol.fill_fraction[t.node_of[u]] = z[2 * u + 1];
+      }
+    }
+    for (std::size_t u = 0; u < n; ++u) sol.pressure_Pa[t.node_of[u]] = p[u];
+    double wetted_area = 0, cavitated_area = 0;
+    sol.max_pressure_Pa = -std::numeric_limits<double>::infinity();
+    for (std::size_t node = 0; node < pr.grid.size(); ++node) {
+      if (!t.wetted[node]) continue;
+      sol.load_N += t.weight_m2[node] * sol.pressure_Pa[node];
+      sol.max_pressure_Pa = std::max(sol.max_pressure_Pa, sol.pressure_Pa[node]);
+      wetted_area += t.weight_m2[node];
+      if (sol.fill_fraction[node] < 1.0 - 1e-9) cavitated_area += t.weight_m2[node];
+    }
+    sol.cavitated_fraction = wetted_area > 0 ? cavitated_area / wetted_area : 0.0;
+    sum.linear_solver_s = linear_s;
+    sum.wall_s = seconds_since(start);
+    return sol;
+  }
+};
+
+ReynoldsSolver::ReynoldsSolver(ReynoldsOptions options) : impl_(std::make_unique<Impl>()) {
+  if (!(options.newton_tolerance > 0) || options.max_newton_iterations < 1 || !(options.armijo_constant > 0) ||
+      !(options.armijo_constant < 0.5) || !(options.min_step > 0) || !(options.min_step <= 1))
+    throw std::invalid_argument(
+        "reynolds options: need newton_tolerance > 0, max_newton_iterations >= 1, 0 < armijo_constant < 0.5, "
+        "0 < min_step <= 1");
+  impl_->options = options;
+}
+ReynoldsSolver::~ReynoldsSolver() = default;
+ReynoldsSolver::ReynoldsSolver(ReynoldsSolver&&) noexcept = default;
+ReynoldsSolver& ReynoldsSolver::operator=(ReynoldsSolver&&) noexcept = default;
+
+ReynoldsSolution ReynoldsSolver::solve(const ReynoldsProblem& problem) { return impl_->solve(problem); }
+int ReynoldsSolver::symbolic_analyses() const { return impl_->analyses; }
+
+ReynoldsSolution solve_reynolds(const ReynoldsProblem& problem, const ReynoldsOptions& options) {
+  return ReynoldsSolver(options).solve(problem);
+}
+
+FilmFlow film_flow(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
+  validate(pr);
+  const Topology t = build_topology(pr);
+  FilmFlow flow;
+  const double cell = pr.grid.dx_m * pr.grid.dy_m;
+  for (std::size_t u = 0; u < t.node_of.size(); ++u) {
+    const std::size_t node = t.node_of[u];
+    const double p = sol.pressure_Pa[node], th = sol.fill_fraction[node];
+    flow.squeeze_storage_m3_per_s += gap_rate(pr, node) * cell * th;
+    for (const Link& link : t.links[u]) {
+      if (link.kind == LinkKind::unknown) continue;
+      const Face f = face_of(pr, node, link);
+      const double out = f.conductance_per_Pa * (p - link.value_Pa) + f.couette_m3_per_s * (upwind_is_p(pr, link) ? th : 1.0);
+      flow.net_outflow_m3_per_s += out;
+      if (!pr.disc && link.along_x && link.sign < 0 && link.node % pr.grid.nx == 0) flow.inflow_x0_m3_per_s -= out;
+      if (!pr.disc && link.along_x && link.sign > 0 && link.node % pr.grid.nx == static_cast<std::size_t>(pr.grid.nx - 1))
+        flow.outflow_xL_m3_per_s += out;
+    }
+  }
+  return flow;
+}
+
+}  // namespace tribo::lubrication

@@ -1,0 +1,142 @@
+// Reynolds equation for a thin incompressible Newtonian film on a regular 2-D grid.
+//
+//     ∇·( h³/(12η) ∇p ) = (U/2) ∂(ϑh)/∂x + ϑ ∂h/∂t                    (DESIGN §3; thesis App. III)
+//
+// p gauge pressure (Pa), h(x, y) the gap (m), η the viscosity (Pa·s), U = U₁ + U₂ the sum of the
+// two surface speeds along +x (m/s), ∂h/∂t the squeeze rate (m/s; < 0 when the gap closes) and
+// ϑ ∈ (0, 1] the fraction of the gap filled with liquid (ϑ = 1 where p > 0).
+//
+// Discretisation (finite volumes on the nodes x_i = i·dx, y_j = j·dy, node-centred cells):
+// mass flux through the face between nodes P and N, per unit face length,
+//
+//     q = −(h³/12η)_f (p_N − p_P)/d + (U/2) h̃_f ϑ_up,
+//
+// with the face conductance and Couette gap from the exact 1-D integral of the flux between the
+// nodes, evaluated by the trapezoid rule (second order for smooth h, exact for a step at the
+// face):  (h³)_f = 2 / (h_P⁻³ + h_N⁻³),  h̃_f = (h_P⁻² + h_N⁻²) / (h_P⁻³ + h_N⁻³).
+// Cell balance: Σ_faces q·(face length) + ϑ_P ḣ_P dx dy = 0.
+//
+// Boundaries: p = p_inlet at x = 0, p = p_outlet at x = Lx (ambient 0 by default); in y either
+// ambient (p = 0 on y = 0, Ly) or periodic (period ny·dy, for homogenisation cells). The circular
+// domain (parallel discs) masks the grid with a disc and treats the cut links by the symmetric
+// ghost-value method of Gibou, Fedkiw, Cheng & Kang (J. Comput. Phys. 176, 2002): a link from
+// node P to the rim, cut at fraction θ of the spacing, carries the conductance k/θ towards the
+// rim pressure. The matrix stays symmetric and the solution second-order accurate.
+//
+// Without cavitation the pressure system is SPD and solved by CHOLMOD. With cavitation the
+// Jakobsson–Floberg–Olsson conditions are imposed as the complementarity problem
+//     p ≥ 0,  1 − ϑ ≥ 0,  p (1 − ϑ) = 0
+// (Giacopini, Fowell, Dini & Strozzi, J. Tribol. 132, 2010) and solved by Fischer–Burmeister–
+// Newton (Woloszynski, Podsiadlo & Stachowiak, Tribol. Lett. 58, 2015): the complementarity row
+// φ(p/p_s, 1 − ϑ) = a + b − √(a² + b²) = 0 replaces it, the Couette flux takes ϑ from the upwind
+// node, and each Newton step is an unsymmetric sparse solve (UMFPACK) whose pattern is fixed, so
+// its symbolic analysis is reused.
+//
+// Field layout: row-major, value (i, j) at index j·nx + i, i along x (sliding direction).
+#pragma once
+
+#include "lubrication/linear_solver.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tribo::lubrication {
+
+struct Grid {
+  int nx = 0, ny = 0;        // nodes along x and y (≥ 3 each)
+  double dx_m = 0, dy_m = 0;  // node spacing
+  double length_x_m() const { return (nx - 1) * dx_m; }
+  std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
+  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
+};
+
+enum class BoundaryY { ambient, periodic };
+enum class Cavitation { none, mass_conserving };
+
+// Circular film domain (parallel discs): nodes with |x − c| < R are wetted, the rim is at p = 0.
+struct DiscDomain {
+  double centre_x_m = 0, centre_y_m = 0, radius_m = 0;
+};
+
+struct ReynoldsProblem {
+  Grid grid;
+  std::vector<double> gap_m;                // size nx·ny, every value finite and > 0
+  std::vector<double> gap_rate_m_per_s;     // ∂h/∂t per node; empty means 0
+  double viscosity_Pa_s = 0.021;
+  double sliding_speed_m_per_s = 0.0;       // U = U₁ + U₂ along +x
+  double inlet_pressure_Pa = 0.0;           // p at x = 0 (rectangular domain)
+  double outlet_pressure_Pa = 0.0;          // p at x = Lx
+  BoundaryY boundary_y = BoundaryY::ambient;
+  std::optional<DiscDomain> disc;           // circular domain; x, y boundaries then ambient
+  Cavitation cavitation = Cavitation::none;
+};
+
+// Throws std::invalid_argument naming the first bad input (grid < 3, h ≤ 0, NaN, η ≤ 0, …).
+void validate(const ReynoldsProblem& problem);
+
+struct ReynoldsOptions {
+  // Newton stops when max(|mass residual| / mass scale, |φ_FB|) ≤ tolerance; the mass scale is
+  // the largest source term |U/2 Δh̃ dy| + |ḣ dx dy| (or the largest boundary flux when only
+  // pressures drive the film), so the test is relative to the problem's own flux.
+  double newton_tolerance = 1e-10;
+  int max_newton_iterations = 60;
+  // Armijo back-tracking on ½‖F‖² (sufficient-decrease constant, smallest step).
+  double armijo_constant = 1e-4;
+  double min_step = 1e-8;
+};
+
+struct ReynoldsSummary {
+  bool converged = false;
+  int iterations = 0;          // Newton iterations (1 for the linear no-cavitation solve)
+  double residual = 0.0;       // final scaled residual (see ReynoldsOptions)
+  std::string message;         // why it stopped, or the SuiteSparse failure
+  std::string linear_solver;   // "cholmod" or "umfpack"
+  double linear_solver_s = 0;  // wall time inside SuiteSparse (analyse + factorise + solve)
+  double wall_s = 0;           // total wall time of the solve
+};
+
+struct ReynoldsSolution {
+  std::vector<double> pressure_Pa;    // per node (boundary values included)
+  std::vector<double> fill_fraction;  // ϑ per node (1 outside cavitated zones)
+  std::vector<bool> wetted;           // node inside the film domain
+  double load_N = 0;                  // ∫ p dA (trapezoid along rows, with cut rims for discs)
+  double max_pressure_Pa = 0;
+  double cavitated_fraction = 0;      // share of wetted area with ϑ < 1
+  ReynoldsSummary summary;
+};
+
+// Mass balance of a solution from its discrete face fluxes (m³/s): flow into the film through
+// the x = 0 boundary, out through x = Lx, net out through every boundary (rim included), and the
+// squeeze storage ∫ϑ ḣ dA. Conservation means net_outflow + squeeze_storage = 0.
+struct FilmFlow {
+  double inflow_x0_m3_per_s = 0, outflow_xL_m3_per_s = 0;
+  double net_outflow_m3_per_s = 0, squeeze_storage_m3_per_s = 0;
+};
+FilmFlow film_flow(const ReynoldsProblem& problem, const ReynoldsSolution& solution);
+
+// A solver that keeps its SuiteSparse factorisations between solves: repeated solves on the same
+// grid and domain (realisations, time steps, Newton iterations) reuse the symbolic analysis.
+class ReynoldsSolver {
+ public:
+  explicit ReynoldsSolver(ReynoldsOptions options = {});
+  ~ReynoldsSolver();
+  ReynoldsSolver(const ReynoldsSolver&) = delete;
+  ReynoldsSolver& operator=(const ReynoldsSolver&) = delete;
+  ReynoldsSolver(ReynoldsSolver&&) noexcept;
+  ReynoldsSolver& operator=(ReynoldsSolver&&) noexcept;
+
+  ReynoldsSolution solve(const ReynoldsProblem& problem);
+  // How many symbolic analyses have run (tests check reuse).
+  int symbolic_analyses() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// One-shot convenience: ReynoldsSolver(options).solve(problem).
+ReynoldsSolution solve_reynolds(const ReynoldsProblem& problem, const ReynoldsOptions& options = {});
+
+}  // namespace tribo::lubrication
