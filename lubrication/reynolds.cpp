@@ -466,16 +466,23 @@ FilmFlow film_flow(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
   for (std::size_t u = 0; u < t.node_of.size(); ++u) {
     const std::size_t node = t.node_of[u];
     const double p = sol.pressure_Pa[node], th = sol.fill_fraction[node];
-    flow.squeeze_storage_m3_per_s += gap_rate(pr, node) * cell * th;
+    const double storage = gap_rate(pr, node) * cell * th;
+    flow.squeeze_storage_m3_per_s += storage;
+    double balance = storage;
     for (const Link& link : t.links[u]) {
-      if (link.kind == LinkKind::unknown) continue;
+      const bool known = link.kind != LinkKind::unknown;
+      const double pn = known ? link.value_Pa : sol.pressure_Pa[link.node];
+      const double thn = known ? 1.0 : sol.fill_fraction[link.node];
       const Face f = face_of(pr, node, link);
-      const double out = f.conductance_per_Pa * (p - link.value_Pa) + f.couette_m3_per_s * (upwind_is_p(pr, link) ? th : 1.0);
+      const double out = f.conductance_per_Pa * (p - pn) + f.couette_m3_per_s * (upwind_is_p(pr, link) ? th : thn);
+      balance += out;
+      if (!known) continue;
       flow.net_outflow_m3_per_s += out;
       if (!pr.disc && link.along_x && link.sign < 0 && link.node % pr.grid.nx == 0) flow.inflow_x0_m3_per_s -= out;
       if (!pr.disc && link.along_x && link.sign > 0 && link.node % pr.grid.nx == static_cast<std::size_t>(pr.grid.nx - 1))
         flow.outflow_xL_m3_per_s += out;
     }
+    flow.max_cell_imbalance_m3_per_s = std::max(flow.max_cell_imbalance_m3_per_s, std::abs(balance));
   }
   return flow;
 }

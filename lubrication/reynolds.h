@@ -113,6 +113,9 @@ struct ReynoldsSolution {
 struct FilmFlow {
   double inflow_x0_m3_per_s = 0, outflow_xL_m3_per_s = 0;
   double net_outflow_m3_per_s = 0, squeeze_storage_m3_per_s = 0;
+  // Largest |Σ face outflow + ϑ ḣ dx dy| over the cells: zero (to the solver tolerance) for a
+  // mass-conserving solution, not for a half-Sommerfeld one.
+  double max_cell_imbalance_m3_per_s = 0;
 };
 FilmFlow film_flow(const ReynoldsProblem& problem, const ReynoldsSolution& solution);
 
