@@ -1,0 +1,110 @@
+#include "contact/fft.h"
+
+#include <fftw3.h>
+#include <omp.h>
+
+#include <cassert>
+#include <mutex>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace tribo::contact {
+namespace {
+
+// FFTW's planner is not thread-safe; all planning and plan destruction goes through this lock.
+std::mutex& planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+
+void init_threads_once() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    if (fftw_init_threads() == 0) throw std::runtime_error("FFTW: fftw_init_threads failed");
+  });
+}
+
+}  // namespace
+
+RealFft2d::RealFft2d(Eigen::Index nx, Eigen::Index ny, int threads, bool measure) : nx_(nx), ny_(ny) {
+  if (nx < 1 || ny < 1) {
+    throw std::invalid_argument("FFT grid must have at least one point per direction, got " + std::to_string(nx) +
+                                " x " + std::to_string(ny));
+  }
+  if (threads < 0) throw std::invalid_argument("FFT thread count must be >= 0, got " + std::to_string(threads));
+  init_threads_once();
+  real_ = static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(nx * ny)));
+  spectrum_ = reinterpret_cast<std::complex<double>*>(
+      fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(spectrum_size())));
+  if (real_ == nullptr || spectrum_ == nullptr) {
+    release();
+    throw std::bad_alloc();
+  }
+  const unsigned flags = measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    fftw_plan_with_nthreads(threads == 0 ? omp_get_max_threads() : threads);
+    // FFTW dimensions are [ny][nx] because x is contiguous (see fft.h).
+    forward_plan_ = fftw_plan_dft_r2c_2d(static_cast<int>(ny), static_cast<int>(nx), real_,
+                                         reinterpret_cast<fftw_complex*>(spectrum_), flags);
+    inverse_plan_ = fftw_plan_dft_c2r_2d(static_cast<int>(ny), static_cast<int>(nx),
+                                         reinterpret_cast<fftw_complex*>(spectrum_), real_, flags);
+  }
+  if (forward_plan_ == nullptr || inverse_plan_ == nullptr) {
+    release();
+    throw std::runtime_error("FFTW could not plan a " + std::to_string(nx) + " x " + std::to_string(ny) +
+                             " real transform");
+  }
+  // FFTW_MEASURE overwrites the buffers while planning; start from a defined state.
+  real().setZero();
+}
+
+RealFft2d::~RealFft2d() { release(); }
+
+RealFft2d::RealFft2d(RealFft2d&& other) noexcept
+    : nx_(std::exchange(other.nx_, 0)),
+      ny_(std::exchange(other.ny_, 0)),
+      real_(std::exchange(other.real_, nullptr)),
+      spectrum_(std::exchange(other.spectrum_, nullptr)),
+      forward_plan_(std::exchange(other.forward_plan_, nullptr)),
+      inverse_plan_(std::exchange(other.inverse_plan_, nullptr)) {}
+
+RealFft2d& RealFft2d::operator=(RealFft2d&& other) noexcept {
+  if (this != &other) {
+    release();
+    nx_ = std::exchange(other.nx_, 0);
+    ny_ = std::exchange(other.ny_, 0);
+    real_ = std::exchange(other.real_, nullptr);
+    spectrum_ = std::exchange(other.spectrum_, nullptr);
+    forward_plan_ = std::exchange(other.forward_plan_, nullptr);
+    inverse_plan_ = std::exchange(other.inverse_plan_, nullptr);
+  }
+  return *this;
+}
+
+void RealFft2d::release() noexcept {
+  if (forward_plan_ != nullptr || inverse_plan_ != nullptr) {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    if (forward_plan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(forward_plan_));
+    if (inverse_plan_ != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan_));
+  }
+  forward_plan_ = inverse_plan_ = nullptr;
+  fftw_free(real_);
+  fftw_free(spectrum_);
+  real_ = nullptr;
+  spectrum_ = nullptr;
+}
+
+void RealFft2d::forward() {
+  assert(forward_plan_ != nullptr && "RealFft2d used after move");
+  fftw_execute(static_cast<fftw_plan>(forward_plan_));
+}
+
+void RealFft2d::inverse() {
+  assert(inverse_plan_ != nullptr && "RealFft2d used after move");
+  fftw_execute(static_cast<fftw_plan>(inverse_plan_));
+}
+
+}  // namespace tribo::contact

@@ -1,0 +1,57 @@
+// Move-only owner of a pair of FFTW plans for a real 2-D grid (r2c forward, c2r inverse).
+//
+// Layout, stated once for all of contact/: a field on an nx × ny grid is an Eigen::ArrayXXd with
+// nx rows (x, index i) and ny columns (y, index j), column-major, so x is the contiguous index.
+// FFTW sees it as a row-major array [ny][nx]; the r2c spectrum is therefore [ny][nx/2 + 1]:
+//   spectrum[j * (nx/2 + 1) + k] = Σ_{i,j'} f(i, j') exp(−2πi (k i / nx + j j' / ny))
+// with wavenumbers q_x = 2π k / L_x (k = 0..nx/2) and q_y = 2π j̃ / L_y, j̃ = j for j ≤ ny/2,
+// j − ny otherwise. Neither direction is normalised: inverse(forward(f)) = nx · ny · f.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <complex>
+#include <cstddef>
+
+namespace tribo::contact {
+
+// FFTW's thread count for new plans: 0 means "as many as OpenMP offers" (omp_get_max_threads()).
+class RealFft2d {
+ public:
+  // Plans both transforms on buffers owned by this object. `threads` = 1 gives transforms whose
+  // bits do not depend on the machine's thread count (used for seeded surface synthesis).
+  // `measure` asks FFTW to time candidate algorithms (slower to plan, faster to run).
+  RealFft2d(Eigen::Index nx, Eigen::Index ny, int threads = 0, bool measure = false);
+  ~RealFft2d();
+  RealFft2d(RealFft2d&& other) noexcept;
+  RealFft2d& operator=(RealFft2d&& other) noexcept;
+  RealFft2d(const RealFft2d&) = delete;
+  RealFft2d& operator=(const RealFft2d&) = delete;
+
+  Eigen::Index nx() const { return nx_; }
+  Eigen::Index ny() const { return ny_; }
+  // Complex points along x in the half spectrum, nx/2 + 1.
+  Eigen::Index nx_half() const { return nx_ / 2 + 1; }
+  Eigen::Index spectrum_size() const { return nx_half() * ny_; }
+
+  // The real buffer (nx × ny) and the half spectrum (spectrum_size() values).
+  Eigen::Map<Eigen::ArrayXXd> real() { return {real_, nx_, ny_}; }
+  std::complex<double>* spectrum() { return spectrum_; }
+
+  void forward();  // real() → spectrum()
+  void inverse();  // spectrum() → real(); overwrites spectrum() (FFTW c2r destroys its input)
+
+ private:
+  void release() noexcept;
+
+  Eigen::Index nx_ = 0, ny_ = 0;
+  double* real_ = nullptr;
+  std::complex<double>* spectrum_ = nullptr;
+  void* forward_plan_ = nullptr;  // fftw_plan; kept opaque so users need not include fftw3.h
+  void* inverse_plan_ = nullptr;
+};
+
+// Signed wavenumber index of FFT bin j on an n-point axis: j for j ≤ n/2, j − n otherwise.
+inline Eigen::Index signed_frequency(Eigen::Index j, Eigen::Index n) { return j <= n / 2 ? j : j - n; }
+
+}  // namespace tribo::contact

@@ -1,0 +1,114 @@
+#include "contact/halfspace.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace tribo::contact {
+namespace {
+
+// Love's displacement at (x, y) from unit pressure on the cell [−a, a] × [−b, b] (see header).
+double love_influence(double x, double y, double a, double b, double e_star) {
+  auto term = [](double c, double t1, double t2) {
+    // c (asinh(t1/|c|) − asinh(t2/|c|)); → 0 as c → 0, the limit of c ln(…) terms.
+    const double ac = std::abs(c);
+    return ac == 0.0 ? 0.0 : c * (std::asinh(t1 / ac) - std::asinh(t2 / ac));
+  };
+  const double s = term(x + a, y + b, y - b) + term(y + b, x + a, x - a) + term(x - a, y - b, y + b) +
+                   term(y - b, x - a, x + a);
+  return s / (std::numbers::pi * e_star);
+}
+
+}  // namespace
+
+void validate(const Grid& g) {
+  if (g.nx < 1 || g.ny < 1) {
+    throw std::invalid_argument("grid must have at least 1 point per side, got " + std::to_string(g.nx) + " x " +
+                                std::to_string(g.ny));
+  }
+  if (!(std::isfinite(g.lx_m) && g.lx_m > 0.0 && std::isfinite(g.ly_m) && g.ly_m > 0.0)) {
+    throw std::invalid_argument("domain size must be positive and finite");
+  }
+}
+
+double composite_modulus_Pa(double e1, double nu1, double e2, double nu2) {
+  auto compliance = [](double e, double nu, const char* which) {
+    if (!(e > 0.0) || std::isnan(e)) throw std::invalid_argument(std::string("Young's modulus of ") + which + " must be positive");
+    if (!(nu >= 0.0 && nu < 0.5)) throw std::invalid_argument(std::string("Poisson's ratio of ") + which + " must lie in [0, 0.5)");
+    return std::isinf(e) ? 0.0 : (1.0 - nu * nu) / e;
+  };
+  const double c = compliance(e1, nu1, "body 1") + compliance(e2, nu2, "body 2");
+  if (c == 0.0) throw std::invalid_argument("both bodies rigid: the composite modulus is infinite");
+  return 1.0 / c;
+}
+
+ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool periodic, int threads, bool measure_fft)
+    : grid_(grid),
+      e_star_Pa_(e_star_Pa),
+      periodic_(periodic),
+      fft_((validate(grid), periodic ? grid.nx : 2 * grid.nx), periodic ? grid.ny : 2 * grid.ny, threads, measure_fft) {
+  if (!(std::isfinite(e_star_Pa) && e_star_Pa > 0.0)) {
+    throw std::invalid_argument("composite modulus e_star_Pa must be positive and finite");
+  }
+  const Eigen::Index mx = fft_.nx(), my = fft_.ny(), mxh = fft_.nx_half();
+  const double inv_size = 1.0 / static_cast<double>(mx * my);
+  kernel_.resize(mxh * my);
+  if (periodic) {
+    const double dqx = 2.0 * std::numbers::pi / grid.lx_m, dqy = 2.0 * std::numbers::pi / grid.ly_m;
+    for (Eigen::Index j = 0; j < my; ++j) {
+      const double qy = dqy * static_cast<double>(signed_frequency(j, my));
+      for (Eigen::Index k = 0; k < mxh; ++k) {
+        const double q = std::hypot(dqx * static_cast<double>(k), qy);
+        kernel_[j * mxh + k] = q > 0.0 ? 2.0 / (e_star_Pa * q) * inv_size : 0.0;
+      }
+    }
+    // Self-compliance = mean of the multiplier over all modes (the diagonal of a circulant).
+    double sum = 0.0;
+    for (Eigen::Index j = 0; j < my; ++j) {
+      for (Eigen::Index k = 0; k < mxh; ++k) {
+        const int weight = (k == 0 || 2 * k == mx) ? 1 : 2;
+        sum += weight * kernel_[j * mxh + k];
+      }
+    }
+    self_compliance_ = sum;
+  } else {
+    const double a = 0.5 * grid.dx_m(), b = 0.5 * grid.dy_m();
+    auto real = fft_.real();
+    // Wrapped offsets: index i ↔ offset i for i < nx, i − 2nx above; the padding row/column at
+    // exactly ±nx is never reached by a convolution restricted to the nx × ny patch.
+    for (Eigen::Index j = 0; j < my; ++j) {
+      const double y = grid.dy_m() * static_cast<double>(signed_frequency(j, my));
+      for (Eigen::Index i = 0; i < mx; ++i) {
+        const double x = grid.dx_m() * static_cast<double>(signed_frequency(i, mx));
+        real(i, j) = love_influence(x, y, a, b, e_star_Pa);
+      }
+    }
+    self_compliance_ = real(0, 0);
+    fft_.forward();
+    // The kernel is even in x and y, so its transform is real (imaginary parts are round-off).
+    for (Eigen::Index m = 0; m < mxh * my; ++m) kernel_[m] = fft_.spectrum()[m].real() * inv_size;
+  }
+}
+
+void ElasticHalfSpace::displacement(const Eigen::ArrayXXd& p, Eigen::ArrayXXd& u) {
+  const Eigen::Index nx = grid_.nx, ny = grid_.ny;
+  assert(p.rows() == nx && p.cols() == ny && "pressure field does not match the half-space grid");
+  auto real = fft_.real();
+  if (periodic_) {
+    real = p;
+  } else {
+    real.setZero();
+    real.topLeftCorner(nx, ny) = p;
+  }
+  fft_.forward();
+  std::complex<double>* s = fft_.spectrum();
+  const Eigen::Index count = fft_.spectrum_size();
+#pragma omp parallel for schedule(static)
+  for (Eigen::Index m = 0; m < count; ++m) s[m] *= kernel_[m];
+  fft_.inverse();
+  u = real.topLeftCorner(nx, ny);
+}
+
+}  // namespace tribo::contact

@@ -1,0 +1,65 @@
+// Linear elastic half-space by FFT: surface displacement u from surface pressure p.
+//
+//   composite modulus      1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂
+//   periodic (Fourier):    ũ(q) = 2 p̃(q) / (E* |q|),  ũ(0) = 0 (the mean displacement of a
+//                          periodic half-space is undefined; it is absorbed into the approach)
+//   non-periodic:          u = K ∗ p with Love's (1929) influence coefficients for a uniform
+//                          pressure on one rectangular cell −a ≤ x ≤ a, −b ≤ y ≤ b:
+//     K(x, y) = 1/(π E*) [ (x+a)(ash((y+b)/|x+a|) − ash((y−b)/|x+a|))
+//                        + (y+b)(ash((x+a)/|y+b|) − ash((x−a)/|y+b|))
+//                        + (x−a)(ash((y−b)/|x−a|) − ash((y+b)/|x−a|))
+//                        + (y−b)(ash((x−a)/|y−b|) − ash((x+a)/|y−b|)) ]   (ash = asinh)
+//     (Johnson, Contact Mechanics (1985) §3.9, written with asinh to avoid cancellation),
+//     evaluated on a 2nx × 2ny grid with the pressure zero-padded, so the circular convolution
+//     equals the linear one on the nx × ny patch (Liu, Wang & Liu 2000, DC-FFT).
+// u > 0 is displacement into the body (the gap opens); units m from Pa.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "contact/fft.h"
+
+namespace tribo::contact {
+
+// A grid of nx × ny cells covering L_x × L_y (cell centres at ((i + ½) Δx, (j + ½) Δy)).
+struct Grid {
+  Eigen::Index nx = 0, ny = 0;
+  double lx_m = 0.0, ly_m = 0.0;
+  double dx_m() const { return lx_m / static_cast<double>(nx); }
+  double dy_m() const { return ly_m / static_cast<double>(ny); }
+  double cell_area_m2() const { return dx_m() * dy_m(); }
+  double area_m2() const { return lx_m * ly_m; }
+};
+
+// Throws std::invalid_argument naming the bad field (sizes < 1, non-positive or non-finite sides).
+void validate(const Grid& grid);
+
+// thesis Appendix I materials combine as 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂; a rigid body has E = ∞.
+double composite_modulus_Pa(double e1_Pa, double nu1, double e2_Pa, double nu2);
+
+class ElasticHalfSpace {
+ public:
+  // `threads` as for RealFft2d (0 = all OpenMP threads).
+  ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool periodic, int threads = 0, bool measure_fft = false);
+
+  const Grid& grid() const { return grid_; }
+  double e_star_Pa() const { return e_star_Pa_; }
+  bool periodic() const { return periodic_; }
+  // Displacement of a cell under unit pressure on itself (m/Pa): the diagonal of the operator.
+  double self_compliance_m_per_Pa() const { return self_compliance_; }
+
+  // u = G p on the nx × ny grid. Not const: uses the owned FFT buffers (one instance per thread).
+  void displacement(const Eigen::ArrayXXd& pressure_Pa, Eigen::ArrayXXd& displacement_m);
+  // Number of r2c + c2r pairs per displacement() — one on the (padded) FFT grid.
+  const RealFft2d& fft() const { return fft_; }
+
+ private:
+  Grid grid_;
+  double e_star_Pa_;
+  bool periodic_;
+  RealFft2d fft_;                // nx × ny (periodic) or 2nx × 2ny (padded)
+  Eigen::ArrayXd kernel_;        // real Fourier multiplier on the half spectrum, 1/(FFT size) folded in
+  double self_compliance_ = 0.0;
+};
+
+}  // namespace tribo::contact

@@ -1,0 +1,91 @@
+// Frictionless normal contact of a rigid rough profile and an elastic(-plastic) half-space by
+// constrained conjugate gradients (Polonsky & Keer, Wear 231 (1999) 206), with the pressure cap of
+// the saturated plasticity model (Sainsot & Lubrecht 2011; Almqvist et al. 2007).
+//
+// Unknown: pressure p_i ≥ 0 on the cells of a Grid. Initial gap (profile) h_i ≥ 0, rigid approach δ,
+// elastic displacement u = G p (contact/halfspace.h). The gap and the conditions are
+//   g_i = h_i + u_i − δ,
+//   free cells       0 < p_i < p_cap :  g_i = 0
+//   out of contact       p_i = 0     :  g_i ≥ 0
+//   plastic cells        p_i = p_cap :  g_i ≤ 0   (−g_i is the new plastic displacement)
+// and, for load control, Σ p_i ΔA = W (δ is then the Lagrange multiplier of the load, computed as
+// the mean of h + u over the free cells). Elastic contact is the case p_cap = ∞. Surface
+// plasticity with p_cap = σ0 ≈ 3Y is the thesis' fully plastic junction pressure (3.1.9) at F = 0.
+//
+// Plastic displacement is kept by the caller: after a solve, profile + plastic_increment_m is the
+// flattened profile; unloading and reloading from it are elastic up to the previous peak load.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <string>
+
+#include "contact/halfspace.h"
+
+namespace tribo::contact {
+
+struct NormalContactOptions {
+  // Stop when the complementarity residual, relative to the elastic displacement,
+  //   ε = ‖r‖₂ / ‖u − ū‖₂ ≤ tolerance,   r_i = g_i (free), min(g_i, 0) (p_i = 0), max(g_i, 0) (p_i = p_cap),
+  // i.e. the rms gap error of the contact conditions above measured against the rms elastic
+  // deflection (a scale the problem sets, so the tolerance is dimensionless).
+  double tolerance = 1e-8;
+  // 0 → 1000 + 4 max(nx, ny); CG needs O(√condition) ~ O(√n) iterations, plus set changes.
+  int max_iterations = 0;
+  // Local pressure cap p_cap (Pa): the hardness σ0 for surface plasticity; ∞ for elastic contact.
+  double pressure_cap_Pa = std::numeric_limits<double>::infinity();
+
+  // False with a reason when an option is out of range (tolerance in (0, 1), cap > 0, iterations ≥ 0).
+  bool is_valid(std::string* why) const;
+};
+
+struct NormalContactSummary {
+  bool converged = false;
+  int iterations = 0;
+  double residual = 0.0;  // ε at exit (see NormalContactOptions::tolerance)
+  std::string message;
+};
+
+struct NormalContactResult {
+  Eigen::ArrayXXd pressure_Pa;
+  Eigen::ArrayXXd gap_m;                // max(g, 0)
+  Eigen::ArrayXXd displacement_m;       // elastic u
+  Eigen::ArrayXXd plastic_increment_m;  // max(−g, 0) on plastic cells, 0 elsewhere
+  double normal_load_N = 0.0;
+  double approach_m = 0.0;              // δ
+  double real_area_m2 = 0.0;            // cells with p > 0
+  double plastic_area_m2 = 0.0;         // cells at the cap
+  double area_fraction = 0.0;
+  double max_pressure_Pa = 0.0;
+  double mean_gap_m = 0.0;              // mean of gap_m over the grid
+  NormalContactSummary summary;
+};
+
+// Load-controlled solve: total normal load W (N) on the profile `gap0_m` (the initial gap h, m,
+// same shape as the half-space grid). `warm_start_Pa` (optional, same shape) seeds the pressure.
+// Throws std::invalid_argument for bad input (shape mismatch, NaN, W ≤ 0, or W above the
+// saturation load p_cap · L_x L_y that no pressure field within the cap can carry).
+NormalContactResult solve_normal_load(ElasticHalfSpace& halfspace, const Eigen::ArrayXXd& gap0_m, double normal_load_N,
+                                      const NormalContactOptions& options = {},
+                                      const Eigen::ArrayXXd* warm_start_Pa = nullptr);
+
+// Displacement-controlled solve at rigid approach δ (m).
+NormalContactResult solve_approach(ElasticHalfSpace& halfspace, const Eigen::ArrayXXd& gap0_m, double approach_m,
+                                   const NormalContactOptions& options = {},
+                                   const Eigen::ArrayXXd* warm_start_Pa = nullptr);
+
+// Mean-gap-controlled solve on a periodic half-space: on a periodic grid ū = 0, so the mean of
+// h + u − δ is mean(h) − δ and the target fixes δ. Throws for a non-periodic half-space.
+NormalContactResult solve_mean_gap(ElasticHalfSpace& halfspace, const Eigen::ArrayXXd& gap0_m, double mean_gap_m,
+                                   const NormalContactOptions& options = {},
+                                   const Eigen::ArrayXXd* warm_start_Pa = nullptr);
+
+// Initial gap of a rigid rough surface with heights z against a flat: h = max(z) − z.
+Eigen::ArrayXXd gap_from_heights(const Eigen::ArrayXXd& heights_m);
+
+// Initial gap of a sphere of radius R centred on the grid, paraboloidal (Hertz) approximation
+// h = r² / (2R) with r measured from the domain centre.
+Eigen::ArrayXXd sphere_gap(const Grid& grid, double radius_m);
+
+}  // namespace tribo::contact
