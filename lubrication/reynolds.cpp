@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <sstream>
 #include <stdexcept>
 
@@ -41,6 +42,9 @@ struct Topology {
 // this along a grid line are put on the rim (p = 0), which keeps k/θ bounded. The pressure
 // error this causes is O(θ_min · dx · |∇p|), far below the O(dx²) discretisation error.
 constexpr double kMinRimFraction = 1e-3;
+
+// Iterates remembered by the non-monotone line search.
+constexpr std::size_t kNonMonotoneMemory = 8;
 
 // Distance fraction t ∈ (0, 1] along the link from (x, y) in direction (ex, ey) of length d
 // at which the circle is crossed, for a point inside the circle.
@@ -264,7 +268,10 @@ struct ReynoldsSolver::Impl {
     a.setFromTriplets(triplets.begin(), triplets.end());
     rhs_scale = b.cwiseAbs().maxCoeff();
     const auto t0 = Clock::now();
-    const Signature sig = signature_of(pr);
+    // The pressure matrix does not depend on the sliding direction or the cavitation model.
+    Signature sig = signature_of(pr);
+    sig.cav = Cavitation::none;
+    sig.upwind = 0;
     LinearSolveStatus s;
     if (!cholmod_signature || !(*cholmod_signature == sig) || !cholmod->analyzed()) {
       cholmod_signature.reset();
@@ -278,7 +285,7 @@ struct ReynoldsSolver::Impl {
     return s;
   }
 
-  // Residual F (size 2n: mass rows scaled by mass_scale, FB rows) and, if wanted, its Jacobian.
+  // Residual F (size 2n: mass rows divided by mass_scale, FB rows) and, if wanted, its Jacobian.
   void residual(const ReynoldsProblem& pr, const Topology& t, const Eigen::VectorXd& z, double mass_scale,
                 double p_scale, Eigen::VectorXd& f, std::vector<Eigen::Triplet<double, int>>* jac) const {
     const std::size_t n = t.node_of.size();
@@ -361,6 +368,7 @@ struct ReynoldsSolver::Impl {
       const Signature sig = signature_of(pr);
       residual(pr, t, z, mass_scale, p_scale, f, nullptr);
       double merit = 0.5 * f.squaredNorm();
+      std::deque<double> merits{merit};
       sum.iterations = 0;
       sum.message = "Newton iteration limit reached";
       for (int it = 0; it < options.max_newton_iterations; ++it) {
@@ -389,14 +397,16 @@ struct ReynoldsSolver::Impl {
           break;
         }
         ++sum.iterations;
-        // Armijo back-tracking on the merit ½‖F‖²; the Newton direction is a descent direction
-        // with slope −‖F‖² = −2·merit.
+        // Non-monotone Armijo back-tracking (Grippo, Lampariello & Lucidi 1986) on the merit
+        // ½‖F‖²: the step must decrease the largest merit of the last few iterates. The FB
+        // kinks and the upwind switch make a monotone search stall where full steps converge.
+        const double reference = *std::max_element(merits.begin(), merits.end());
         double step = 1.0;
         bool accepted = false;
         while (step >= options.min_step) {
           residual(pr, t, z + step * dz, mass_scale, p_scale, f_trial, nullptr);
           const double trial = 0.5 * f_trial.squaredNorm();
-          if (trial <= (1.0 - 2.0 * options.armijo_constant * step) * merit) {
+          if (trial <= reference - 2.0 * options.armijo_constant * step * merit) {
             accepted = true;
             break;
           }
@@ -409,6 +419,8 @@ struct ReynoldsSolver::Impl {
         z += step * dz;
         f = f_trial;
         merit = 0.5 * f.squaredNorm();
+        merits.push_back(merit);
+        if (merits.size() > kNonMonotoneMemory) merits.pop_front();
       }
       if (!sum.converged && sum.iterations == options.max_newton_iterations) {
         sum.residual = f.cwiseAbs().maxCoeff();

@@ -77,9 +77,9 @@ struct ReynoldsProblem {
 void validate(const ReynoldsProblem& problem);
 
 struct ReynoldsOptions {
-  // Newton stops when max(|mass residual| / mass scale, |φ_FB|) ≤ tolerance; the mass scale is
-  // the largest source term |U/2 Δh̃ dy| + |ḣ dx dy| (or the largest boundary flux when only
-  // pressures drive the film), so the test is relative to the problem's own flux.
+  // Newton stops when max(|mass imbalance of a cell| / mass scale, |φ_FB|) ≤ tolerance; the mass
+  // scale is the largest forcing of the full-film system (|Couette + squeeze + boundary| flux of
+  // one cell), so the test is relative to the problem's own flux. p_s = max |p| of the full film.
   double newton_tolerance = 1e-10;
   int max_newton_iterations = 60;
   // Armijo back-tracking on ½‖F‖² (sufficient-decrease constant, smallest step).

@@ -1,0 +1,235 @@
+#include "lubrication/flow_factors.h"
+
+#include "lubrication/reynolds.h"
+
+#include <omp.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace tribo::lubrication {
+namespace {
+
+[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("homogenisation: " + what); }
+
+Estimate estimate(const std::vector<double>& v) {
+  Estimate e;
+  if (v.empty()) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  for (double x : v) e.mean += x;
+  e.mean /= static_cast<double>(v.size());
+  if (v.size() < 2) return e;
+  double ss = 0;
+  for (double x : v) ss += (x - e.mean) * (x - e.mean);
+  e.standard_error = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
+  return e;
+}
+
+// Reynolds cell over one period of the surface: n + 1 nodes along the flow (x = L wraps to 0),
+// n nodes across it (periodic). `transposed` swaps the surface axes (flow along the surface's y).
+ReynoldsProblem cell_problem(const Eigen::ArrayXXd& z, double size_m, double nominal_gap_m, double floor_m,
+                             bool transposed, double viscosity_Pa_s, std::size_t* touching) {
+  const int n = static_cast<int>(z.rows());
+  ReynoldsProblem pr;
+  pr.grid = Grid{n + 1, n, size_m / n, size_m / n};
+  pr.gap_m.resize(pr.grid.size());
+  std::size_t count = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double h = nominal_gap_m + (transposed ? z(j, i % n) : z(i % n, j));
+      pr.gap_m[pr.grid.index(i, j)] = std::max(h, floor_m);
+      if (i < n && h <= floor_m) ++count;
+    }
+  if (touching) *touching = count;
+  pr.viscosity_Pa_s = viscosity_Pa_s;
+  pr.boundary_y = BoundaryY::periodic;
+  return pr;
+}
+
+// Mean local film h̄_T over one period (the wrapped column counted once).
+double mean_film_m(const ReynoldsProblem& pr) {
+  double sum = 0;
+  for (int j = 0; j < pr.grid.ny; ++j)
+    for (int i = 0; i + 1 < pr.grid.nx; ++i) sum += pr.gap_m[pr.grid.index(i, j)];
+  return sum / ((pr.grid.nx - 1) * pr.grid.ny);
+}
+
+struct PatirChengPressure {
+  double gamma, c, r;
+};
+struct PatirChengShear {
+  double gamma, a1, alpha1, alpha2, alpha3, a2;
+};
+// Patir & Cheng 1978, Table 1 (pressure flow factor) and 1979, Table 1 (shear flow factor).
+constexpr std::array<PatirChengPressure, 7> kPressureFits{{{1.0 / 9, 1.48, 0.42},
+                                                           {1.0 / 6, 1.38, 0.42},
+                                                           {1.0 / 3, 1.18, 0.42},
+                                                           {1.0, 0.90, 0.56},
+                                                           {3.0, 0.225, 1.5},
+                                                           {6.0, 0.520, 1.5},
+                                                           {9.0, 0.870, 1.5}}};
+constexpr std::array<PatirChengShear, 7> kShearFits{{{1.0 / 9, 2.046, 1.12, 0.78, 0.03, 1.856},
+                                                     {1.0 / 6, 1.962, 1.08, 0.77, 0.03, 1.754},
+                                                     {1.0 / 3, 1.858, 1.01, 0.76, 0.03, 1.561},
+                                                     {1.0, 1.899, 0.98, 0.92, 0.05, 1.126},
+                                                     {3.0, 1.560, 0.85, 1.13, 0.08, 0.556},
+                                                     {6.0, 1.290, 0.62, 1.09, 0.08, 0.388},
+                                                     {9.0, 1.011, 0.54, 1.07, 0.08, 0.295}}};
+
+bool same_gamma(double a, double b) { return std::abs(a / b - 1.0) < 1e-6; }
+
+}  // namespace
+
+double patir_cheng_phi_x(double h, double gamma) {
+  if (!(h >= 0.5)) return std::numeric_limits<double>::quiet_NaN();
+  for (const auto& f : kPressureFits)
+    if (same_gamma(f.gamma, gamma)) return gamma <= 1.0 ? 1.0 - f.c * std::exp(-f.r * h) : 1.0 + f.c * std::pow(h, -f.r);
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+double patir_cheng_phi_y(double h, double gamma) { return patir_cheng_phi_x(h, 1.0 / gamma); }
+
+double patir_cheng_shear_factor(double h, double gamma) {
+  if (!(h > 0.5)) return std::numeric_limits<double>::quiet_NaN();
+  for (const auto& f : kShearFits)
+    if (same_gamma(f.gamma, gamma))
+      return h <= 5.0 ? f.a1 * std::pow(h, f.alpha1) * std::exp(-f.alpha2 * h + f.alpha3 * h * h)
+                      : f.a2 * std::exp(-0.25 * h);
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+void validate(const HomogenisationOptions& o) {
+  contact::validate(o.surface);
+  if (!(o.surface.rms_height_m > 0)) bad("surface.rms_height_m (σ) must be > 0");
+  if (o.surface.grid < 8) bad("surface.grid must be >= 8");
+  if (o.gap_ratios.empty()) bad("gap_ratios must not be empty");
+  for (double h : o.gap_ratios)
+    if (!(std::isfinite(h) && h > 0)) bad("gap_ratios must be finite and > 0");
+  if (o.realisations < 1) bad("realisations must be >= 1");
+  if (!(std::isfinite(o.viscosity_Pa_s) && o.viscosity_Pa_s > 0)) bad("viscosity_Pa_s must be finite and > 0");
+  if (!(std::isfinite(o.sliding_speed_m_per_s) && o.sliding_speed_m_per_s != 0))
+    bad("sliding_speed_m_per_s must be finite and non-zero");
+  if (!(std::isfinite(o.pressure_drop_Pa) && o.pressure_drop_Pa > 0)) bad("pressure_drop_Pa must be finite and > 0");
+  if (!(o.contact_gap_fraction > 0 && o.contact_gap_fraction <= 0.5)) bad("contact_gap_fraction must be in (0, 0.5]");
+  if (o.threads < 0) bad("threads must be >= 0");
+}
+
+namespace {
+
+// Runs `per_realisation(k, solver, surface)` for every realisation in parallel; one solver per
+// realisation keeps the symbolic analyses reused across the gap ratios of that realisation.
+template <class F>
+void for_each_realisation(const HomogenisationOptions& o, F per_realisation) {
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  std::string error;
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+  for (int k = 0; k < o.realisations; ++k) {
+    try {
+      contact::GaussianSurfaceParams p = o.surface;
+      p.seed = o.first_seed + static_cast<std::uint64_t>(k);
+      const Eigen::ArrayXXd z = contact::gaussian_surface(p);
+      ReynoldsSolver solver;
+      per_realisation(k, solver, z);
+    } catch (const std::exception& e) {
+#pragma omp critical(tribo_homogenisation_error)
+      error = e.what();
+    }
+  }
+  if (!error.empty()) throw std::runtime_error("homogenisation: " + error);
+}
+
+}  // namespace
+
+std::vector<FlowFactorRow> flow_factors(const HomogenisationOptions& o) {
+  validate(o);
+  const std::size_t nh = o.gap_ratios.size();
+  const double sigma = o.surface.rms_height_m, size = o.surface.size_m, eta = o.viscosity_Pa_s;
+  const auto r = static_cast<std::size_t>(o.realisations);
+  // Per (gap ratio, realisation): NaN marks an unconverged solve.
+  std::vector<std::vector<double>> px(nh, std::vector<double>(r)), py = px, ps = px, film = px, touch = px;
+  for_each_realisation(o, [&](int k, ReynoldsSolver& solver, const Eigen::ArrayXXd& z) {
+    const double cells = static_cast<double>(z.size());
+    for (std::size_t m = 0; m < nh; ++m) {
+      const double h = o.gap_ratios[m] * sigma, floor_m = o.contact_gap_fraction * sigma;
+      const double smooth_flow = h * h * h * o.pressure_drop_Pa / (12.0 * eta * size);
+      std::size_t touching = 0;
+      for (int axis = 0; axis < 2; ++axis) {
+        ReynoldsProblem pr = cell_problem(z, size, h, floor_m, axis == 1, eta, &touching);
+        pr.inlet_pressure_Pa = o.pressure_drop_Pa;
+        const ReynoldsSolution s = solver.solve(pr);
+        const double q = film_flow(pr, s).inflow_x0_m3_per_s / size;
+        (axis == 0 ? px : py)[m][k] = s.summary.converged ? q / smooth_flow : std::nan("");
+      }
+      ReynoldsProblem pr = cell_problem(z, size, h, floor_m, false, eta, &touching);
+      pr.sliding_speed_m_per_s = o.sliding_speed_m_per_s;
+      const ReynoldsSolution s = solver.solve(pr);
+      const double u = o.sliding_speed_m_per_s, q = film_flow(pr, s).inflow_x0_m3_per_s / size;
+      const double ht = mean_film_m(pr);
+      ps[m][k] = s.summary.converged ? (0.5 * u * ht - q) / (0.5 * u * sigma) : std::nan("");
+      film[m][k] = ht / sigma;
+      touch[m][k] = static_cast<double>(touching) / cells;
+    }
+  });
+  std::vector<FlowFactorRow> rows(nh);
+  for (std::size_t m = 0; m < nh; ++m) {
+    auto finite = [&](const std::vector<double>& v) {
+      std::vector<double> out;
+      for (double x : v)
+        if (std::isfinite(x)) out.push_back(x);
+      return out;
+    };
+    FlowFactorRow& row = rows[m];
+    row.h_over_sigma = o.gap_ratios[m];
+    row.phi_x = estimate(finite(px[m]));
+    row.phi_y = estimate(finite(py[m]));
+    row.phi_s = estimate(finite(ps[m]));
+    row.mean_film_over_sigma = estimate(film[m]);
+    row.contact_fraction = estimate(touch[m]);
+    row.unconverged = static_cast<int>(3 * r - finite(px[m]).size() - finite(py[m]).size() - finite(ps[m]).size());
+  }
+  return rows;
+}
+
+std::vector<LiftRow> rugosity_lift(const HomogenisationOptions& o) {
+  validate(o);
+  const std::size_t nh = o.gap_ratios.size();
+  const double sigma = o.surface.rms_height_m, size = o.surface.size_m;
+  const auto r = static_cast<std::size_t>(o.realisations);
+  std::vector<std::vector<double>> cav(nh, std::vector<double>(r)), full = cav, frac = cav, iters = cav;
+  for_each_realisation(o, [&](int k, ReynoldsSolver& solver, const Eigen::ArrayXXd& z) {
+    for (std::size_t m = 0; m < nh; ++m) {
+      ReynoldsProblem pr = cell_problem(z, size, o.gap_ratios[m] * sigma, o.contact_gap_fraction * sigma, false,
+                                        o.viscosity_Pa_s, nullptr);
+      pr.sliding_speed_m_per_s = o.sliding_speed_m_per_s;
+      full[m][k] = solver.solve(pr).load_N / (size * size);
+      pr.cavitation = Cavitation::mass_conserving;
+      const ReynoldsSolution s = solver.solve(pr);
+      cav[m][k] = s.summary.converged ? s.load_N / (size * size) : std::nan("");
+      frac[m][k] = s.cavitated_fraction;
+      iters[m][k] = s.summary.iterations;
+    }
+  });
+  std::vector<LiftRow> rows(nh);
+  const double eta_u = o.viscosity_Pa_s * o.sliding_speed_m_per_s;
+  for (std::size_t m = 0; m < nh; ++m) {
+    std::vector<double> ok, per;
+    for (double x : cav[m])
+      if (std::isfinite(x)) {
+        ok.push_back(x);
+        per.push_back(x / eta_u);
+      }
+    LiftRow& row = rows[m];
+    row.h_over_sigma = o.gap_ratios[m];
+    row.mean_pressure_Pa = estimate(ok);
+    row.mean_pressure_per_eta_u = estimate(per);
+    row.mean_pressure_full_film_Pa = estimate(full[m]);
+    row.cavitated_fraction = estimate(frac[m]);
+    row.newton_iterations = estimate(iters[m]);
+    row.unconverged = static_cast<int>(r - ok.size());
+  }
+  return rows;
+}
+
+}  // namespace tribo::lubrication
