@@ -7,6 +7,7 @@
 #include "apps/output.h"
 #include "apps/rig_config.h"
 #include "apps/rig_output.h"
+#include "rig/instrument.h"
 
 namespace tribo::cli {
 namespace {
@@ -23,18 +24,16 @@ void run_rig(const RigArgs& args) {
   const std::filesystem::path dir(args.out);
   const auto start = std::chrono::steady_clock::now();
 
+  const rig::SimulationResult result = rig::simulate(run.rig, *run.drive, *run.law, run.options);
+  const rig::SimulationSummary& summary = result.summary;
+  const auto& samples = result.samples;
+  const auto& events = result.events;
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const std::vector<double> measured = rig::measure_friction_N(run.rig, rig::instrument_from(run.friction, run.seed), samples);
+
   AtomicFile trace(dir / "trace.csv");
   write_trace_header(trace.stream());
-  std::vector<rig::Sample> samples;
-  std::vector<rig::Event> events;
-  rig::SimulationObserver observer;
-  observer.on_sample = [&](const rig::Sample& s) {
-    write_trace_row(trace.stream(), run.rig, s);
-    samples.push_back(s);
-  };
-  observer.on_event = [&](const rig::Event& e) { events.push_back(e); };
-  const rig::SimulationSummary summary = rig::simulate(run.rig, *run.drive, *run.law, run.options, observer);
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (std::size_t i = 0; i < samples.size(); ++i) write_trace_row(trace.stream(), samples[i], measured[i]);
 
   const rig::RunObservables obs =
       rig::summarise(run.rig, samples, events, run.analysis_start_fraction * summary.end_time_s);

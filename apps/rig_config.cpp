@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "rig/kinetic_laws.h"
+#include "rig/friction_model.h"
 
 namespace tribo::cli {
 namespace {
@@ -57,15 +58,16 @@ rig::Drive read_drive(ConfigTable* t, std::optional<double> speed) {
   return drive;
 }
 
-std::shared_ptr<const rig::FrictionLaw> read_friction_law(ConfigTable* t) {
-  if (!t) return rig::make_coulomb(0.3, 0.2);
+rig::FrictionModel read_friction_model(ConfigTable* t) {
+  rig::FrictionModel model;
+  if (!t) return model;
   const std::string law = t->choice("law", "coulomb", {"coulomb", "stribeck", "table"});
-  const double mu_s = t->number("mu_s", 0.3, Range::non_negative);
-  std::shared_ptr<const rig::FrictionLaw> result;
+  model.baseline.mu_s = t->number("mu_s", model.baseline.mu_s, Range::non_negative);
   if (law == "coulomb") {
-    const double mu_k = t->number("mu_k", 0.2, Range::non_negative);
-    if (mu_k > mu_s) t->fail("mu_k", "must not exceed mu_s (" + std::to_string(mu_s) + ")");
-    result = rig::make_coulomb(mu_s, mu_k);
+    model.baseline.mu_k = t->number("mu_k", model.baseline.mu_k, Range::non_negative);
+    if (model.baseline.mu_k > model.baseline.mu_s) {
+      t->fail("mu_k", "must not exceed mu_s (" + std::to_string(model.baseline.mu_s) + ")");
+    }
   } else if (law == "stribeck") {
     rig::StribeckParameters p;
     p.mu_coulomb = t->number("mu_k", p.mu_coulomb, Range::non_negative);
@@ -73,18 +75,37 @@ std::shared_ptr<const rig::FrictionLaw> read_friction_law(ConfigTable* t) {
     p.stribeck_speed_m_per_s = t->number("stribeck_speed_m_per_s", p.stribeck_speed_m_per_s, Range::positive);
     p.exponent = t->number("exponent", p.exponent, Range::positive);
     p.viscous_per_m_per_s = t->number("viscous_per_m_per_s", p.viscous_per_m_per_s, Range::non_negative);
-    result = with_context(*t, "law", [&] {
-      return std::make_shared<rig::KineticCurveLaw>(mu_s, std::make_shared<rig::StribeckCurve>(p));
-    });
+    model.baseline.kinetic = with_context(*t, "law", [&] { return std::make_shared<rig::StribeckCurve>(p); });
   } else {
     const auto speeds = t->number_array("speeds_m_per_s", Range::non_negative);
     const auto mu = t->number_array("mu_k", Range::non_negative);
-    result = with_context(*t, "speeds_m_per_s", [&] {
-      return std::make_shared<rig::KineticCurveLaw>(mu_s, std::make_shared<rig::TabulatedCurve>(speeds, mu));
-    });
+    model.baseline.kinetic = with_context(*t, "speeds_m_per_s", [&] { return std::make_shared<rig::TabulatedCurve>(speeds, mu); });
   }
+  // effects = ["name", ...]; each may have a [friction.name] table of parameters.
+  for (const std::string& name : t->string_array("effects")) {
+    const rig::EffectInfo& info = with_context(*t, "effects", [&]() -> const rig::EffectInfo& { return rig::effect_info(name); });
+    if (model.has(name)) t->fail("effects", "effect \"" + name + "\" is listed twice");
+    model.add(name);
+    if (auto params = t->table(name)) {
+      for (const rig::ParameterSpec& spec : info.parameters) {
+        const double value = params->number(spec.name, spec.default_value);
+        if (value < spec.lower || value > spec.upper) {
+          params->fail(spec.name, "must lie in [" + std::to_string(spec.lower) + ", " + std::to_string(spec.upper) + "] " + spec.unit +
+                                      " (got " + std::to_string(value) + ")");
+        }
+        model.set(name, spec.name, value);
+      }
+      params->finish();
+    }
+  }
+  for (const rig::EffectInfo& info : rig::effect_catalogue()) {
+    if (!model.has(info.name) && t->has(info.name)) {
+      t->fail(info.name, "parameters given for an effect not listed in friction.effects");
+    }
+  }
+  with_context(*t, "law", [&] { rig::validate(model); return 0; });
   t->finish();
-  return result;
+  return model;
 }
 
 RigRun load_rig_run(const std::filesystem::path& path) {
@@ -101,13 +122,16 @@ RigRun load_rig_run(const std::filesystem::path& path) {
   auto drive_table = root.table("drive");
   run.drive = read_drive(drive_table ? &*drive_table : nullptr, speed);
   auto friction_table = root.table("friction");
-  run.law = read_friction_law(friction_table ? &*friction_table : nullptr);
+  run.friction = read_friction_model(friction_table ? &*friction_table : nullptr);
+  run.law = rig::make_friction_law(run.friction);
   if (auto t = root.table("run")) {
     run.options.duration_s = t->number("duration_s", run.options.duration_s, Range::positive);
     run.options.samples_per_period =
         static_cast<int>(t->integer("samples_per_period", run.options.samples_per_period, 8));
     run.options.relative_tolerance = t->number("relative_tolerance", run.options.relative_tolerance, Range::positive);
     if (run.options.relative_tolerance >= 1e-2) t->fail("relative_tolerance", "must be below 1e-2");
+    run.options.start_in_steady_sliding = t->choice("start", "stuck", {"stuck", "sliding"}) == "sliding";
+    run.seed = static_cast<std::uint64_t>(t->integer("seed", static_cast<long long>(run.seed), 0));
     run.analysis_start_fraction = t->number("analysis_start_fraction", run.analysis_start_fraction, Range::unit_interval);
     if (run.analysis_start_fraction >= 1.0) t->fail("analysis_start_fraction", "must be below 1");
     t->finish();

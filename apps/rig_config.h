@@ -5,8 +5,9 @@
 //   [drive]     kind = "constant" | "steps" | "slide_hold_slide" | "table"
 //               times_s = [...], speeds_m_per_s = [...]    (steps, table)
 //               speed_m_per_s, slide_s, hold_s             (slide_hold_slide)
-//   [friction]  law = "coulomb" | "stribeck" | "table", mu_s, mu_k, ...   (see docs/rig.md)
-//   [run]       duration_s, samples_per_period, relative_tolerance, analysis_start_fraction
+//   [friction]  law = "coulomb" | "stribeck" | "table", mu_s, mu_k, ..., effects = [...]
+//               [friction.<effect>] parameters            (docs/friction-effects.md)
+//   [run]       duration_s, samples_per_period, relative_tolerance, analysis_start_fraction, seed
 #pragma once
 
 #include <filesystem>
@@ -17,6 +18,8 @@
 #include "apps/config.h"
 #include "rig/drive.h"
 #include "rig/friction_law.h"
+#include "rig/friction_model.h"
+#include <cstdint>
 #include "rig/parameters.h"
 #include "rig/simulator.h"
 
@@ -25,7 +28,9 @@ namespace tribo::cli {
 struct RigRun {
   rig::RigParameters rig;
   std::optional<rig::Drive> drive;
+  rig::FrictionModel friction;
   std::shared_ptr<const rig::FrictionLaw> law;
+  std::uint64_t seed = 1;                // instrument noise
   rig::SimulationOptions options;
   double analysis_start_fraction = 0.5;  // observables use the run from this fraction of duration on
 };
@@ -36,7 +41,7 @@ RigRun load_rig_run(const std::filesystem::path& path);
 // The pieces, for other commands that embed a rig (demo, gap): each reads its table and rejects
 // unknown keys. `friction` may be absent (the Coulomb defaults μs = 0.3, μk = 0.2 then apply).
 rig::RigParameters read_rig_parameters(ConfigTable& rig_table);
-std::shared_ptr<const rig::FrictionLaw> read_friction_law(ConfigTable* friction_table);
+rig::FrictionModel read_friction_model(ConfigTable* friction_table);
 rig::Drive read_drive(ConfigTable* drive_table, std::optional<double> drive_speed_m_per_s);
 
 }  // namespace tribo::cli

@@ -15,8 +15,8 @@ void write_trace_header(std::ostream& os) {
         "drive_speed_m_per_s,x_drive_m,slip_distance_m,phase\n";
 }
 
-void write_trace_row(std::ostream& os, const rig::RigParameters& rig, const rig::Sample& s) {
-  os << s.t_s << ',' << s.x_m << ',' << s.xdot_m_per_s << ',' << rig::measured_friction_N(rig, s) << ','
+void write_trace_row(std::ostream& os, const rig::Sample& s, double measured_friction_N) {
+  os << s.t_s << ',' << s.x_m << ',' << s.xdot_m_per_s << ',' << measured_friction_N << ','
      << s.xddot_m_per_s2 << ',' << s.friction_N << ',' << (s.drive_speed_m_per_s - s.xdot_m_per_s) << ','
      << s.drive_speed_m_per_s << ',' << s.drive_displacement_m << ',' << s.slip_distance_m << ','
      << (s.phase == rig::Phase::stick ? "stick" : "slip") << '\n';

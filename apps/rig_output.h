@@ -13,7 +13,8 @@
 namespace tribo::cli {
 
 void write_trace_header(std::ostream& os);
-void write_trace_row(std::ostream& os, const rig::RigParameters& rig, const rig::Sample& s);
+// `measured_friction_N` is the instrument's reading at this sample (rig/instrument.h).
+void write_trace_row(std::ostream& os, const rig::Sample& s, double measured_friction_N);
 void write_events_csv(std::ostream& os, const std::vector<rig::Event>& events);
 nlohmann::json observables_json(const rig::RunObservables& o);
 nlohmann::json rig_json(const rig::RigParameters& rig);

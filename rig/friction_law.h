@@ -23,7 +23,9 @@ struct FrictionContext {
   double relative_speed_m_per_s = 0.0;     // |U| = |v − ẋ|
   double drive_speed_m_per_s = 0.0;        // v
   double normal_load_N = 0.0;              // W
-  double tangential_load_rate_per_s = 0.0; // φ̇ = |dF/dt| / W while stuck (thesis 3.1.20–3.1.21)
+  // φ̇ = |dF/dt| / W at which a stuck contact is (or, while slipping, would be) loaded by the
+  // drive: |k v + r v̇| / W (thesis 3.1.20–3.1.21).
+  double tangential_load_rate_per_s = 0.0;
   double slip_distance_m = 0.0;            // ∫|U| dt since the last slip onset
   double time_in_phase_s = 0.0;            // time since the current phase began
   std::span<const double> state;

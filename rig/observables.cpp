@@ -28,11 +28,6 @@ double peak_to_peak(const std::vector<Sample>& samples, double t0, double t1) {
 }
 }  // namespace
 
-double measured_friction_N(const RigParameters& rig, const Sample& s) {
-  const double wn = rig.natural_frequency_rad_per_s();
-  return rig.stiffness_N_per_m * (s.x_m + s.xddot_m_per_s2 / (wn * wn));  // thesis (4.2.3)
-}
-
 RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& samples,
                          const std::vector<Event>& events, double window_start_s) {
   RunObservables o;
@@ -98,7 +93,9 @@ RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& sa
   const bool any_stick_in_window =
       std::any_of(samples.begin(), samples.end(), [&](const Sample& s) { return s.t_s >= window_start_s && s.phase == Phase::stick; });
   if (o.breakaways > 0 && o.reattachments > 0) {
-    o.regime = max_slip > period_d ? "multi_cycle_slip" : "stick_slip";
+    // A slip that runs through a velocity match without re-attaching (a reversal) or lasts
+    // longer than 1.5 damped periods spans several cycles; a single slip is under one period.
+    o.regime = (o.reversals > 0 || max_slip > 1.5 * period_d) ? "multi_cycle_slip" : "stick_slip";
   } else if (o.breakaways == 0 && o.reattachments == 0 && any_stick_in_window) {
     o.regime = "stuck";
   } else {

@@ -1,7 +1,8 @@
 // What an experimentalist reads off a run: per-cycle static friction μs and load rate φ̇
 // (thesis §5.1), amplitude, period, stick time, and the regime (thesis §5.2):
 //   stick_slip        — the slider re-attaches every cycle, slip lasts under one period
-//   multi_cycle_slip  — it re-attaches, but a slip phase runs longer than one period 2π/ω_d
+//   multi_cycle_slip  — it re-attaches, but a slip runs through a velocity match (reversal)
+//                       or lasts longer than 1.5 periods 2π/ω_d
 //   quasi_harmonic    — it never re-attaches and the oscillation does not decay
 //   steady_sliding    — it never re-attaches and the oscillation decays (or never started)
 //   stuck             — it never breaks away
@@ -36,8 +37,5 @@ struct RunObservables {
 RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& samples,
                          const std::vector<Event>& events, double window_start_s);
 
-// The friction force as the thesis' instrument measures it, (4.2.3): F/k = x + ẍ/ω_n², i.e. the
-// damping term r ẋ is neglected. Differs from the true force by r ẋ.
-double measured_friction_N(const RigParameters& rig, const Sample& s);
 
 }  // namespace tribo::rig

@@ -44,7 +44,7 @@ struct Machine {
     // Speed along the slip direction; clipped at 0 for the instant before a velocity match is located.
     c.relative_speed_m_per_s = phase == Phase::slip ? std::max(0.0, direction * (c.drive_speed_m_per_s - y[kXdot])) : 0.0;
     c.normal_load_N = rig.normal_load_N;
-    c.tangential_load_rate_per_s = phase == Phase::stick ? std::abs(force_rate(t)) / rig.normal_load_N : 0.0;
+    c.tangential_load_rate_per_s = std::abs(force_rate(t)) / rig.normal_load_N;
     c.slip_distance_m = y[kSlip];
     c.time_in_phase_s = t - phase_start_s;
     c.state = std::span<const double>(y + kLaw, law.state_size());
@@ -169,7 +169,16 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   std::vector<double> y(n, 0.0);
   y[kX] = options.initial_displacement_m;
   y[kXdot] = drive.speed_m_per_s(0.0);
-  if (options.start_slipping) {
+  law.initial_state(std::span<double>(y.data() + kLaw, law.state_size()));
+  if (options.start_in_steady_sliding) {
+    if (!(drive.speed_m_per_s(0.0) > 0.0)) {
+      throw std::invalid_argument("simulation options: steady sliding needs a positive drive speed at t = 0");
+    }
+    m.phase = Phase::slip;
+    m.direction = +1;
+    y[kXdot] = 1e-3 * drive.speed_m_per_s(0.0);  // a small kick: an exact equilibrium never leaves
+    y[kX] = law.kinetic_force_N(m.context(0.0, y.data())) / rig.stiffness_N_per_m;
+  } else if (options.start_slipping) {
     const double u0 = drive.speed_m_per_s(0.0) - options.initial_velocity_m_per_s;
     if (!std::isfinite(u0) || u0 == 0.0) {
       throw std::invalid_argument("simulation options: initial_velocity_m_per_s must differ from the drive speed to start slipping");
@@ -178,7 +187,6 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     m.phase = Phase::slip;
     m.direction = u0 > 0.0 ? +1 : -1;
   }
-  law.initial_state(std::span<double>(y.data() + kLaw, law.state_size()));
 
   internal::CvodeIntegrator cv(n, rhs_callback, root_callback, &m, options.relative_tolerance, atol);
   SimulationSummary summary;

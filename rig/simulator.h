@@ -38,6 +38,11 @@ struct SimulationOptions {
   // initial_velocity_m_per_s, which must differ from v(0); the slip direction follows from U.
   bool start_slipping = false;
   double initial_velocity_m_per_s = 0.0;
+  // Start at rest on the moving surface in the steady-sliding equilibrium, k x = F_k(U = v(0))
+  // (overrides the two options above), kicked by ẋ = 1e-3 v: how a slider released onto a running
+  // disc starts. Whether
+  // it then sticks, oscillates or slides steadily is the rig's own answer.
+  bool start_in_steady_sliding = false;
 };
 
 enum class EventKind { breakaway, reattach, reversal };

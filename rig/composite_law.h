@@ -1,0 +1,49 @@
+// The composite friction law: baseline Coulomb / kinetic curve plus friction effects, combined
+// through the fixed channels documented in effect.h (order-independent by construction).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "contact/junction_locus.h"
+#include "rig/effect.h"
+#include "rig/friction_law.h"
+#include "rig/friction_model.h"
+
+namespace tribo::rig {
+
+class CompositeLaw final : public FrictionLaw {
+ public:
+  // `locus` replaces the constant μs when a static-friction effect is present.
+  CompositeLaw(BaselineLaw baseline, std::optional<contact::JunctionLocus> locus,
+               std::vector<std::unique_ptr<FrictionEffect>> effects);
+
+  std::string name() const override;
+  std::size_t state_size() const override { return state_size_; }
+  void initial_state(std::span<double> state) const override;
+  void state_tolerances(std::span<double> atol) const override;
+  double static_limit_N(const FrictionContext& c) const override;
+  double reattach_limit_N(const FrictionContext& c) const override { return static_limit_N(c); }
+  double kinetic_force_N(const FrictionContext& c) const override;
+  void state_rates(const FrictionContext& c, std::span<double> rates) const override;
+  void on_slip_onset(const FrictionContext& c, std::span<double> state) const override;
+
+  // Channel 1: μs at the context's load rate.
+  double static_coefficient(const FrictionContext& c) const;
+  double baseline_kinetic_coefficient(double speed_m_per_s) const;
+
+ private:
+  EffectContext effect_context(const FrictionContext& c, std::size_t i) const;
+  double solid_fraction(const FrictionContext& c) const;
+  template <class S>
+  S slice(S state, std::size_t i) const { return state.subspan(offsets_[i], effects_[i]->state_size()); }
+
+  BaselineLaw baseline_;
+  std::optional<contact::JunctionLocus> locus_;
+  std::vector<std::unique_ptr<FrictionEffect>> effects_;
+  std::vector<std::size_t> offsets_;
+  std::size_t state_size_ = 0;
+};
+
+}  // namespace tribo::rig

@@ -1,0 +1,67 @@
+// Friction effects: composable components of the rig's friction law (DESIGN §4, §8).
+//
+// The composite law (composite_law.h) combines the baseline Coulomb/kinetic curve with effects
+// through fixed channels, so the result does not depend on the order effects are listed in:
+//
+//   μs,eff   = locus μs(φ̇) if a static-friction effect is present, else μs          (channel 1)
+//   χ        = Π solid_fraction_e                 (share of W carried by solid contact) (channel 2)
+//   F_static = χ(U = 0) · μs,eff · W
+//   F_k      = χ · (μk(U) + Σ kinetic_increment_e) · W + Σ fluid_force_e              (channels 3, 4)
+//   F_reattach = χ(U = 0) · μs,eff · W
+//
+// Each effect has named parameters with units and physical bounds, so a fitter can vary them
+// as a vector, and optional state integrated with the rig.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rig/friction_law.h"
+
+namespace tribo::rig {
+
+// A named, bounded, documented parameter.
+struct ParameterSpec {
+  std::string name;         // config key, e.g. "mu_s_max"
+  std::string unit;         // SI unit, "1" for dimensionless
+  double default_value;
+  double lower;             // physical bounds, inclusive
+  double upper;
+  std::string meaning;
+};
+
+// What an effect sees: the rig's context plus the baseline's view.
+struct EffectContext {
+  const FrictionContext* rig = nullptr;
+  double mu_s = 0.0;               // effective static coefficient at this instant (channel 1)
+  double mu_k_baseline = 0.0;      // baseline kinetic coefficient at |U|
+  std::span<const double> state;   // this effect's own state
+};
+
+class FrictionEffect {
+ public:
+  virtual ~FrictionEffect() = default;
+  virtual std::string name() const = 0;
+
+  virtual std::size_t state_size() const { return 0; }
+  virtual void initial_state(std::span<double> /*state*/) const {}
+  virtual void state_tolerances(std::span<double> atol) const {
+    for (double& a : atol) a = 1e-10;
+  }
+  virtual void state_rates(const EffectContext& /*c*/, std::span<double> rates) const {
+    for (double& r : rates) r = 0.0;
+  }
+  virtual void on_slip_onset(const EffectContext& /*c*/, std::span<double> /*state*/) const {}
+
+  // Channel 2: fraction (0..1] of the normal load still carried by solid contact.
+  virtual double solid_fraction(const EffectContext& /*c*/) const { return 1.0; }
+  // Channel 3: addition to the solid kinetic coefficient.
+  virtual double kinetic_increment(const EffectContext& /*c*/) const { return 0.0; }
+  // Channel 4: force (N, ≥ 0, along the slip) carried by fluid shear.
+  virtual double fluid_force_N(const EffectContext& /*c*/) const { return 0.0; }
+};
+
+}  // namespace tribo::rig

@@ -1,0 +1,37 @@
+// squeeze_film — thesis (3.2.2), Appendix III, §5.2a and Fig 5.2.2: slip builds a load-bearing
+// film (lift over slip distance D_b); near zero relative speed the film cannot vanish at once,
+// because squeezing it out takes time. Its load share φ (state) follows
+//
+//     dφ/dt = (φ_max − φ) |U| / D_b − φ / τ_sq,
+//
+// with τ_sq the time to squeeze a film of thickness h down to h/2 between parallel discs of the
+// patch radius R under the load W (Appendix III; lubrication/reference/squeeze_film.h):
+//
+//     τ_sq = (3π η R⁴ / 4W) (1/(h/2)² − 1/h²).
+//
+// The solid contact carries (1 − φ) W, so friction near U = 0 is lower, and the force at which
+// the surfaces re-attach is lower: slip runs on for several cycles (multi-cycle slip).
+#pragma once
+
+#include "rig/effect.h"
+
+namespace tribo::rig::effects {
+
+class SqueezeFilm final : public FrictionEffect {
+ public:
+  SqueezeFilm(double film_fraction, double build_up_distance_m, double film_thickness_m, double patch_radius_m,
+              double viscosity_Pa_s);
+  std::string name() const override { return "squeeze_film"; }
+  std::size_t state_size() const override { return 1; }
+  void initial_state(std::span<double> state) const override { state[0] = 0.0; }
+  void state_tolerances(std::span<double> atol) const override { atol[0] = 1e-9; }
+  void state_rates(const EffectContext& c, std::span<double> rates) const override;
+  double solid_fraction(const EffectContext& c) const override { return 1.0 - c.state[0]; }
+  // Squeeze-out time τ_sq at normal load W.
+  double squeeze_time_s(double normal_load_N) const;
+
+ private:
+  double phi_max_, build_up_m_, h_m_, radius_m_, eta_Pa_s_;
+};
+
+}  // namespace tribo::rig::effects

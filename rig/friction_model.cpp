@@ -1,0 +1,184 @@
+#include "rig/friction_model.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "contact/junction_locus.h"
+#include "rig/composite_law.h"
+#include "rig/effects/hydrodynamic_lift.h"
+#include "rig/effects/slip_transient.h"
+#include "rig/effects/squeeze_film.h"
+#include "rig/effects/thermal_thinning.h"
+#include "rig/effects/viscous_friction.h"
+
+namespace tribo::rig {
+namespace {
+
+// The thesis' anchor of the static-friction locus: μs = 0.26 at v = 2.8e-2 in/s on the thesis rig,
+// φ̇ = k v / W = 0.0785 1/s (Fig 5.2.1), with μs,max = 0.55, α = 25, n = 1.25 (§5.1).
+constexpr double kAnchorLoadRate_per_s = 10367.5 * 7.112e-4 / 93.857;
+constexpr double kAnchorMuS = 0.26;
+
+double default_location_per_s() {
+  contact::JunctionLocus shape;
+  shape.alpha = 25.0;
+  shape.n = 1.25;
+  shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(0.55, 25.0);
+  return contact::location_through_point_per_s(shape, kAnchorLoadRate_per_s, kAnchorMuS);
+}
+
+std::vector<EffectInfo> build_catalogue() {
+  return {
+      {"rate_dependent_static",
+       "static friction from the load rate at slip via the junction-model locus, with an upper asymptote",
+       "thesis (3.1.22)-(3.1.24), (5.1.1); Fig 5.1.2",
+       {{"mu_s_max", "1", 0.55, 0.05, 1.5, "upper asymptote of mu_s as the load rate falls to zero (3.1.23)"},
+        {"alpha", "1", 25.0, 3.0, 30.0, "Tabor's combined-stress coefficient (3.1.5), thesis range 10..25"},
+        {"n", "1", 1.25, 1.0, 1.5, "area exponent of the anelastic damping b A^n (3.1.12)"},
+        {"location_per_s", "1/s", default_location_per_s(), 1e-6, 1e6,
+         "location parameter sigma0^(1+n)/(W^n b) of (3.1.24); default puts mu_s = 0.26 at phi_dot = 0.0785 1/s"}}},
+      {"strain_rate_hardening",
+       "flow stress sigma0 = kappa phi_dot^m reshapes the static-friction locus (implies the locus)",
+       "thesis (5.1.2), (3.1.25); Fig 5.1.5",
+       {{"m", "1", 0.1, 0.0, 0.35, "strain-rate index: brass about 0.1, copper about 0.02"},
+        {"reference_load_rate_per_s", "1/s", kAnchorLoadRate_per_s, 1e-6, 1e3,
+         "load rate at which the locus keeps its location parameter"}}},
+      {"slip_transient",
+       "after slip onset friction decays from the breakaway level with slip distance (not time)",
+       "thesis section 5.2a, Figs 5.2.3-5.2.6",
+       {{"amplitude", "1", 1.0, 0.0, 1.0, "share of (mu_s - mu_k) present at slip onset"},
+        {"decay_distance_m", "m", 1e-4, 1e-7, 1e-2, "e-folding slip distance D_c"}}},
+      {"viscous_friction",
+       "viscous shear of the film adds a force linear in relative speed",
+       "thesis (3.2.1), Fig 3.2.1",
+       {{"coefficient_N_s_per_m", "N s/m", 5.0, 0.0, 1e4, "c = eta A / h; 5 N s/m = thesis oil over the slider face at h = 0.3 um"}}},
+      {"squeeze_film",
+       "a squeeze film carries part of the load near zero relative speed; lower friction and re-attachment force",
+       "thesis (3.2.2), Appendix III, section 5.2a, Fig 5.2.2",
+       {{"film_fraction", "1", 0.8, 0.0, 0.99, "largest share of W the film carries"},
+        {"build_up_distance_m", "m", 2e-3, 1e-7, 1e-1, "slip distance over which lift builds the film"},
+        {"film_thickness_m", "m", 1e-6, 1e-8, 1e-4, "film thickness h at which squeeze-out starts (time to h/2)"},
+        {"patch_radius_m", "m", 2e-3, 1e-5, 1e-2, "radius R of the region the oil is squeezed from (<= slider radius)"},
+        {"viscosity_Pa_s", "Pa s", 0.021, 1e-4, 10.0, "lubricant viscosity; thesis oil 120 SSU at 80 F"}}},
+      {"hydrodynamic_lift",
+       "rugosity lift carries a share f_max U/(U + U_half) of the load, unloading the solid contact",
+       "thesis section 3.2, section 5.2a",
+       {{"max_fraction", "1", 0.5, 0.0, 0.99, "largest share of W the lift carries"},
+        {"half_speed_m_per_s", "m/s", 0.05, 1e-5, 10.0, "relative speed at which the lift carries half of it"}}},
+      {"thermal_thinning",
+       "viscous traction c0 U exp(-U/U_T): viscosity falls as the film heats, a humped friction-speed curve",
+       "thesis (3.2.3)-(3.2.5), (5.2.1)-(5.2.2), Fig 5.2.8",
+       {{"traction_coefficient_N_s_per_m", "N s/m", 300.0, 0.0, 1e5, "c0 = eta0 A / h_eff of the boundary film"},
+        {"thermal_speed_m_per_s", "m/s", 0.0254, 1e-4, 10.0, "speed of the traction maximum, 1/(gamma theta); thesis 1 in/s"}}},
+      {"instrument",
+       "sensor gain, lag of the acceleration channel behind displacement, and noise of the measured friction",
+       "thesis (4.2.3), sections 4.2-4.3, Appendix IV",
+       {{"gain", "1", 1.0, 0.5, 2.0, "scale error of the summed friction signal"},
+        {"lag_s", "s", 0.0, 0.0, 0.01, "delay of the accelerometer channel behind the displacement channel"},
+        {"noise_N", "N", 0.0, 0.0, 10.0, "rms white noise on the measured friction"}}},
+  };
+}
+
+std::size_t index_of(const EffectInfo& info, const std::string& parameter) {
+  for (std::size_t i = 0; i < info.parameters.size(); ++i) {
+    if (info.parameters[i].name == parameter) return i;
+  }
+  std::string known;
+  for (const auto& p : info.parameters) known += (known.empty() ? "" : ", ") + p.name;
+  throw std::invalid_argument("friction effect " + info.name + ": unknown parameter '" + parameter + "' (known: " + known + ")");
+}
+
+}  // namespace
+
+const std::vector<EffectInfo>& effect_catalogue() {
+  static const std::vector<EffectInfo> catalogue = build_catalogue();
+  return catalogue;
+}
+
+const EffectInfo& effect_info(const std::string& name) {
+  std::string known;
+  for (const auto& e : effect_catalogue()) {
+    if (e.name == name) return e;
+    known += (known.empty() ? "" : ", ") + e.name;
+  }
+  throw std::invalid_argument("unknown friction effect '" + name + "' (known: " + known + ")");
+}
+
+void FrictionModel::add(const std::string& effect) {
+  if (has(effect)) return;
+  std::vector<double> values;
+  for (const auto& p : effect_info(effect).parameters) values.push_back(p.default_value);
+  effects[effect] = values;
+}
+
+double FrictionModel::get(const std::string& effect, const std::string& parameter) const {
+  const auto it = effects.find(effect);
+  if (it == effects.end()) throw std::invalid_argument("friction model has no effect '" + effect + "'");
+  return it->second.at(index_of(effect_info(effect), parameter));
+}
+
+void FrictionModel::set(const std::string& effect, const std::string& parameter, double value) {
+  add(effect);
+  effects[effect].at(index_of(effect_info(effect), parameter)) = value;
+}
+
+void validate(const FrictionModel& m) {
+  auto bad = [](const std::string& what) { throw std::invalid_argument("friction: " + what); };
+  if (!std::isfinite(m.baseline.mu_s) || m.baseline.mu_s < 0.0) bad("mu_s must be finite and non-negative");
+  if (!m.baseline.kinetic && (!std::isfinite(m.baseline.mu_k) || m.baseline.mu_k < 0.0)) bad("mu_k must be finite and non-negative");
+  if (!m.baseline.kinetic && m.baseline.mu_k > m.baseline.mu_s) bad("mu_k must not exceed mu_s");
+  for (const auto& [name, values] : m.effects) {
+    const EffectInfo& info = effect_info(name);
+    if (values.size() != info.parameters.size()) bad(name + ": expected " + std::to_string(info.parameters.size()) + " parameters");
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const ParameterSpec& p = info.parameters[i];
+      if (!std::isfinite(values[i]) || values[i] < p.lower || values[i] > p.upper) {
+        bad(name + "." + p.name + " = " + std::to_string(values[i]) + " lies outside its physical range [" +
+            std::to_string(p.lower) + ", " + std::to_string(p.upper) + "] " + p.unit);
+      }
+    }
+  }
+}
+
+std::shared_ptr<const FrictionLaw> make_friction_law(const FrictionModel& m) {
+  validate(m);
+  std::optional<contact::JunctionLocus> locus;
+  if (m.has("rate_dependent_static") || m.has("strain_rate_hardening")) {
+    FrictionModel defaults = m;
+    defaults.add("rate_dependent_static");
+    contact::JunctionLocus l;
+    l.alpha = defaults.get("rate_dependent_static", "alpha");
+    l.n = defaults.get("rate_dependent_static", "n");
+    l.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(defaults.get("rate_dependent_static", "mu_s_max"), l.alpha);
+    l.location_per_s = defaults.get("rate_dependent_static", "location_per_s");
+    if (m.has("strain_rate_hardening")) {
+      l.strain_rate_index_m = m.get("strain_rate_hardening", "m");
+      l.reference_load_rate_per_s = m.get("strain_rate_hardening", "reference_load_rate_per_s");
+    }
+    locus = l;
+  }
+  std::vector<std::unique_ptr<FrictionEffect>> effects;
+  auto p = [&](const char* effect, const char* parameter) { return m.get(effect, parameter); };
+  if (m.has("slip_transient")) {
+    effects.push_back(std::make_unique<effects::SlipTransient>(p("slip_transient", "amplitude"), p("slip_transient", "decay_distance_m")));
+  }
+  if (m.has("viscous_friction")) {
+    effects.push_back(std::make_unique<effects::ViscousFriction>(p("viscous_friction", "coefficient_N_s_per_m")));
+  }
+  if (m.has("squeeze_film")) {
+    effects.push_back(std::make_unique<effects::SqueezeFilm>(
+        p("squeeze_film", "film_fraction"), p("squeeze_film", "build_up_distance_m"), p("squeeze_film", "film_thickness_m"),
+        p("squeeze_film", "patch_radius_m"), p("squeeze_film", "viscosity_Pa_s")));
+  }
+  if (m.has("hydrodynamic_lift")) {
+    effects.push_back(std::make_unique<effects::HydrodynamicLift>(p("hydrodynamic_lift", "max_fraction"),
+                                                                  p("hydrodynamic_lift", "half_speed_m_per_s")));
+  }
+  if (m.has("thermal_thinning")) {
+    effects.push_back(std::make_unique<effects::ThermalThinning>(p("thermal_thinning", "traction_coefficient_N_s_per_m"),
+                                                                 p("thermal_thinning", "thermal_speed_m_per_s")));
+  }
+  return std::make_shared<CompositeLaw>(m.baseline, locus, std::move(effects));
+}
+
+}  // namespace tribo::rig

@@ -1,0 +1,65 @@
+// A friction model as data: the baseline law plus named effects with parameter values. The
+// catalogue (effect names, parameters, units, bounds, defaults) is the single source of truth
+// for the config reader, the documentation and the gap diagnosis' fitter.
+//
+// Effects (DESIGN §8; equations in docs/friction-effects.md and in each effect's source):
+//   rate_dependent_static  μs from the load rate φ̇ via the junction locus, thesis (3.1.22)–(3.1.24)
+//   strain_rate_hardening  σ0 = κ φ̇^m modifies that locus, thesis (5.1.2)
+//   slip_transient         friction decays with slip distance after slip onset, thesis §5.2a
+//   viscous_friction       F += c U, viscous shear of the film, thesis (3.2.1)
+//   squeeze_film           a film carries load near U = 0, thesis (3.2.2), Appendix III
+//   hydrodynamic_lift      rugosity lift unloads the solid contact as U rises, thesis §5.2a
+//   thermal_thinning       viscous traction with η falling as the film heats, (3.2.3)–(3.2.5), (5.2.2)
+//   instrument             gain, phase lag, noise of the measured friction, thesis §4.2–4.3
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rig/effect.h"
+#include "rig/friction_law.h"
+#include "rig/kinetic_laws.h"
+
+namespace tribo::rig {
+
+struct EffectInfo {
+  std::string name;
+  std::string summary;
+  std::string thesis_reference;
+  std::vector<ParameterSpec> parameters;
+};
+
+// All effects of the catalogue, in a fixed order.
+const std::vector<EffectInfo>& effect_catalogue();
+// Throws std::invalid_argument listing the known names when `name` is not one.
+const EffectInfo& effect_info(const std::string& name);
+
+struct BaselineLaw {
+  double mu_s = 0.3;
+  double mu_k = 0.2;                                  // used when `kinetic` is null
+  std::shared_ptr<const KineticCurve> kinetic;        // optional velocity-dependent μk(U)
+};
+
+struct FrictionModel {
+  BaselineLaw baseline;
+  // Effect name → parameter values in the order of its catalogue entry. "instrument" is kept
+  // here too but acts on the measurement, not on the law (see instrument.h).
+  std::map<std::string, std::vector<double>> effects;
+
+  bool has(const std::string& effect) const { return effects.count(effect) != 0; }
+  // Adds an effect with its default parameters (no-op if present).
+  void add(const std::string& effect);
+  // Named parameter access, "effect.parameter"; throws std::invalid_argument for unknown names.
+  double get(const std::string& effect, const std::string& parameter) const;
+  void set(const std::string& effect, const std::string& parameter, double value);
+};
+
+// Checks names, counts and bounds; throws std::invalid_argument naming effect.parameter.
+void validate(const FrictionModel& model);
+
+// The law the rig integrates. Immutable and thread-safe: build one per parameter set.
+std::shared_ptr<const FrictionLaw> make_friction_law(const FrictionModel& model);
+
+}  // namespace tribo::rig

@@ -1,0 +1,35 @@
+// The friction instrument of the thesis (§4.2–4.3, Appendix IV): displacement and acceleration
+// signals summed electrically, F_meas/k = x + ẍ/ω_n² (4.2.3), which neglects the damping force
+// r ẋ. The `instrument` effect adds what a real channel does:
+//
+//     F_meas(t) = g · k · [ x(t) + ẍ(t − τ) / ω_n² ] + n(t),
+//
+// gain g, lag τ of the accelerometer channel behind the displacement channel, and white noise n
+// of rms σ (seeded, so a run is reproducible).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "rig/friction_model.h"
+#include "rig/parameters.h"
+#include "rig/simulator.h"
+
+namespace tribo::rig {
+
+struct InstrumentModel {
+  double gain = 1.0;
+  double lag_s = 0.0;
+  double noise_N = 0.0;
+  std::uint64_t seed = 1;
+};
+
+// From the model's "instrument" effect if present, else the ideal (4.2.3) instrument.
+InstrumentModel instrument_from(const FrictionModel& model, std::uint64_t seed);
+
+// Measured friction at every sample (samples ordered in time); the lagged acceleration is
+// interpolated linearly between samples and held at its first value before the run starts.
+std::vector<double> measure_friction_N(const RigParameters& rig, const InstrumentModel& instrument,
+                                       const std::vector<Sample>& samples);
+
+}  // namespace tribo::rig
