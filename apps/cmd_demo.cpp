@@ -14,6 +14,7 @@
 #include "apps/demo_model.h"
 #include "apps/output.h"
 #include "apps/rig_output.h"
+#include "rig/composite_law.h"
 #include "rig/instrument.h"
 #include "rig/observables.h"
 
@@ -87,6 +88,19 @@ void write_static_friction(const std::filesystem::path& path, const std::vector<
   f.commit();
 }
 
+// The closed-form locus (3.1.24) of the model's static-friction effect, for the μs–φ̇ plot.
+void write_locus(const std::filesystem::path& path, const rig::FrictionModel& model) {
+  const auto law = std::dynamic_pointer_cast<const rig::CompositeLaw>(rig::make_friction_law(model));
+  AtomicFile f(path);
+  f.stream() << "phi_dot_per_s,mu_s\n";
+  rig::FrictionContext c;
+  for (int i = 0; i <= 120; ++i) {
+    c.tangential_load_rate_per_s = std::pow(10.0, -5.0 + 7.0 * i / 120.0);
+    f.stream() << c.tangential_load_rate_per_s << ',' << law->static_coefficient(c) << '\n';
+  }
+  f.commit();
+}
+
 void write_trace(const std::filesystem::path& path, const rig::RigParameters& rig, const SpeedRun& r) {
   const auto measured = rig::measure_friction_N(rig, rig::InstrumentModel{}, r.result.samples);
   AtomicFile f(path);
@@ -113,7 +127,7 @@ void write_report(const std::filesystem::path& path, const rig::RigParameters& r
   }
   md << "\n## The thesis' observations (chapter V) beside the simulation\n\n| thesis figure | v (in/s) | thesis | simulated |\n|---|---|---|---|\n";
   const char* names[] = {"Fig 5.2.1 stick-slip", "Fig 5.2.2 multi-cycle slip", "Fig 5.2.8 quasi-harmonic"};
-  const char* thesis[] = {"stick-slip, mu_s = 0.26", "multi-cycle slip, mu_s = 0.45", "quasi-harmonic, mu_k about 0.15"};
+  const char* thesis[] = {"stick-slip, mu_s = 0.26", "multi-cycle slip at high mu_s (0.45), slower than Fig 5.2.1", "quasi-harmonic, mu_k about 0.15"};
   for (std::size_t i = 0; i < figures.size(); ++i) {
     const auto& o = figures[i].obs;
     md << "| " << names[i] << " | " << fmt(figures[i].v_m_per_s / kInch_m, "%.3g") << " | " << thesis[i] << " | " << o.regime
@@ -134,11 +148,13 @@ void run_demo(const DemoArgs& args) {
   const rig::FrictionModel model = thesis_demo_model();
   const auto law = rig::make_friction_law(model);
 
-  // Log-spaced sweep 3e-5 … 12 in/s plus the speeds of the thesis' figures 5.2.1, 5.2.2, 5.2.8.
+  // Log-spaced sweep 3e-5 … 12 in/s plus the speeds of the thesis' figures 5.2.1, 5.2.2, 5.2.8
+  // (Fig 5.2.2's caption reads 0.11 in/s, but its text places it slower than Fig 5.2.1, at μs = 0.45:
+  // shared/data/thesis/observations.csv; 1e-4 in/s gives that μs here).
   std::vector<double> speeds;
   const double lo = 3e-5 * kInch_m, hi = 12.0 * kInch_m;
   for (int i = 0; i < args.speeds; ++i) speeds.push_back(lo * std::pow(hi / lo, static_cast<double>(i) / (args.speeds - 1)));
-  const std::vector<double> figure_speeds = {2.8e-2 * kInch_m, 0.11 * kInch_m, 5.3 * kInch_m};
+  const std::vector<double> figure_speeds = {2.8e-2 * kInch_m, 1e-4 * kInch_m, 5.3 * kInch_m};
   std::vector<double> all = speeds;
   all.insert(all.end(), figure_speeds.begin(), figure_speeds.end());
 
@@ -161,7 +177,8 @@ void run_demo(const DemoArgs& args) {
 
   write_sweep(dir / "sweep.csv", rig, sweep);
   write_static_friction(dir / "static_friction.csv", sweep);
-  const char* trace_names[] = {"stick_slip_0.028in_per_s.csv", "multi_cycle_0.11in_per_s.csv", "quasi_harmonic_5.3in_per_s.csv"};
+  write_locus(dir / "junction_locus.csv", model);
+  const char* trace_names[] = {"stick_slip_0.028in_per_s.csv", "multi_cycle_1e-4in_per_s.csv", "quasi_harmonic_5.3in_per_s.csv"};
   for (std::size_t i = 0; i < figures.size(); ++i) write_trace(dir / "traces" / trace_names[i], rig, figures[i]);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_report(dir / "report.md", rig, law->name(), sweep, figures, wall);

@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+"""Plots for tribo outputs (matplotlib, Agg backend).
+
+    tribo_plots.py demo DIR   phase_plane.png, regime_map.png, mu_s_vs_phidot.png from a demo run
+    tribo_plots.py rig DIR    phase_plane.png, trace.png from a `tribo rig` run
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+REGIME_COLOURS = {
+    "stick_slip": "tab:red",
+    "multi_cycle_slip": "tab:purple",
+    "quasi_harmonic": "tab:green",
+    "steady_sliding": "tab:blue",
+    "stuck": "tab:gray",
+}
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    return rows
+
+
+def column(rows, name):
+    return [float(r[name]) if r[name] != "" else float("nan") for r in rows]
+
+
+def omega_n(summary_dir):
+    """Natural frequency from summary.json when present, else the thesis rig's 101.9 rad/s."""
+    import json
+
+    path = os.path.join(summary_dir, "summary.json")
+    if os.path.exists(path):
+        with open(path) as f:
+            return json.load(f)["rig"]["natural_frequency_rad_per_s"]
+    return (10367.5 / 0.99822) ** 0.5
+
+
+def phase_plane(ax, rows, wn, label, t_from=None):
+    """Displacement against velocity/omega_n over the last part of a trace (thesis Appendix II)."""
+    t = column(rows, "t_s")
+    start = t_from if t_from is not None else t[-1] * 0.6
+    sel = [i for i, ti in enumerate(t) if ti >= start]
+    x = [float(rows[i]["x_m"]) * 1e3 for i in sel]
+    v = [float(rows[i]["xdot_m_per_s"]) / wn * 1e3 for i in sel]
+    f = [float(rows[i]["friction_N"]) for i in sel]
+    ax.plot(x, v, lw=0.8, label="trajectory")
+    return x, v, f
+
+
+def plot_demo(d):
+    wn = omega_n(d)
+    traces = [
+        ("stick_slip_0.028in_per_s.csv", "stick-slip, v = 0.028 in/s (Fig 5.2.1)"),
+        ("multi_cycle_1e-4in_per_s.csv", "multi-cycle slip, v = 1e-4 in/s (Fig 5.2.2)"),
+        ("quasi_harmonic_5.3in_per_s.csv", "v = 5.3 in/s (Fig 5.2.8)"),
+    ]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.6))
+    for ax, (name, title) in zip(axes, traces):
+        rows = read_csv(os.path.join(d, "traces", name))
+        phase_plane(ax, rows, wn, title)
+        ax.set_title(title, fontsize=10)
+        ax.set_xlabel("displacement x (mm)")
+        ax.set_ylabel("velocity / omega_n (mm)")
+        ax.grid(alpha=0.3)
+    fig.suptitle("Phase-plane traces of the thesis rig (last 40 % of each run)")
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "phase_plane.png"), dpi=110)
+    plt.close(fig)
+
+    sweep = read_csv(os.path.join(d, "sweep.csv"))
+    fig, (a1, a2) = plt.subplots(1, 2, figsize=(12, 4.6))
+    for regime, colour in REGIME_COLOURS.items():
+        rs = [r for r in sweep if r["regime"] == regime]
+        if not rs:
+            continue
+        v = column(rs, "v_in_per_s")
+        a1.scatter(v, [max(p, 1e-12) * 1e3 for p in column(rs, "peak_to_peak_m")], c=colour, label=regime, s=30)
+        a2.scatter(v, column(rs, "mean_mu"), c=colour, label=regime, s=30)
+    a1.set_xscale("log")
+    a1.set_yscale("log")
+    a1.set_xlabel("driven speed v (in/s)")
+    a1.set_ylabel("peak-to-peak displacement (mm)")
+    a1.set_title("Regime map")
+    a2.set_xscale("log")
+    a2.set_xlabel("driven speed v (in/s)")
+    a2.set_ylabel("mean friction coefficient F/W")
+    a2.set_title("Mean friction")
+    for a in (a1, a2):
+        a.grid(alpha=0.3, which="both")
+        a.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "regime_map.png"), dpi=110)
+    plt.close(fig)
+
+    fig, ax = plt.subplots(figsize=(6.5, 4.6))
+    sf = read_csv(os.path.join(d, "static_friction.csv"))
+    ax.scatter(column(sf, "phi_dot_per_s"), column(sf, "mu_s"), s=14, label="simulated breakaways")
+    locus_path = os.path.join(d, "junction_locus.csv")
+    if os.path.exists(locus_path):
+        lc = read_csv(locus_path)
+        ax.plot(column(lc, "phi_dot_per_s"), column(lc, "mu_s"), "k-", lw=1, label="locus (3.1.24)")
+    ax.scatter([0.0785], [0.26], marker="*", s=140, c="tab:orange", label="thesis: 0.26 at 2.8e-2 in/s")
+    ax.axhline(0.55, ls="--", c="gray", lw=0.8, label="upper asymptote 0.55")
+    ax.set_xscale("log")
+    ax.set_xlabel("load rate phi_dot = k v / W (1/s)")
+    ax.set_ylabel("static friction mu_s")
+    ax.set_title("Static friction against load rate (thesis Fig 5.1.2)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "mu_s_vs_phidot.png"), dpi=110)
+    plt.close(fig)
+
+
+def plot_rig(d):
+    wn = omega_n(d)
+    rows = read_csv(os.path.join(d, "trace.csv"))
+    fig, ax = plt.subplots(figsize=(6, 5))
+    phase_plane(ax, rows, wn, "")
+    ax.set_xlabel("displacement x (mm)")
+    ax.set_ylabel("velocity / omega_n (mm)")
+    ax.set_title("Phase plane (last 40 % of the run)")
+    ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "phase_plane.png"), dpi=110)
+    plt.close(fig)
+
+    t = column(rows, "t_s")
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    a1.plot(t, [x * 1e3 for x in column(rows, "x_m")], lw=0.8)
+    a1.set_ylabel("x (mm)")
+    a2.plot(t, column(rows, "friction_N"), lw=0.8, label="measured (4.2.3)")
+    a2.plot(t, column(rows, "friction_true_N"), lw=0.6, alpha=0.7, label="true")
+    a2.set_ylabel("friction (N)")
+    a2.set_xlabel("t (s)")
+    a2.legend(fontsize=8)
+    for a in (a1, a2):
+        a.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "trace.png"), dpi=110)
+    plt.close(fig)
+
+
+def main(argv):
+    if len(argv) != 3 or argv[1] not in ("demo", "rig"):
+        sys.stderr.write(__doc__)
+        return 2
+    {"demo": plot_demo, "rig": plot_rig}[argv[1]](argv[2])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
