@@ -150,7 +150,7 @@ void run_demo(const DemoArgs& args) {
 
   // Log-spaced sweep 3e-5 … 12 in/s plus the speeds of the thesis' figures 5.2.1, 5.2.2, 5.2.8
   // (Fig 5.2.2's caption reads 0.11 in/s, but its text places it slower than Fig 5.2.1, at μs = 0.45:
-  // shared/data/thesis/observations.csv; 1e-4 in/s gives that μs here).
+  // shared/data/thesis/observations.csv). This model slips over several cycles at μs ≈ 0.55, 1e-4 in/s.
   std::vector<double> speeds;
   const double lo = 3e-5 * kInch_m, hi = 12.0 * kInch_m;
   for (int i = 0; i < args.speeds; ++i) speeds.push_back(lo * std::pow(hi / lo, static_cast<double>(i) / (args.speeds - 1)));
