@@ -9,5 +9,6 @@ void add_rig_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
 void add_contact_command(CLI::App& app);
 void add_reynolds_command(CLI::App& app);
+void add_gap_command(CLI::App& app);
 
 }  // namespace tribo::cli

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   tribo::cli::add_rig_command(app);
   tribo::cli::add_contact_command(app);
   tribo::cli::add_reynolds_command(app);
+  tribo::cli::add_gap_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
