@@ -1,0 +1,266 @@
+// Each friction effect alone against a closed form or a limit (rig/effects/*.h state the
+// equations), and the composition rules of rig/effect.h.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "contact/junction_locus.h"
+#include "rig/composite_law.h"
+#include "rig/friction_model.h"
+#include "rig/instrument.h"
+#include "rig/observables.h"
+#include "rig/simulator.h"
+
+namespace tribo::rig {
+namespace {
+
+FrictionModel coulomb(double mu_s, double mu_k) {
+  FrictionModel m;
+  m.baseline.mu_s = mu_s;
+  m.baseline.mu_k = mu_k;
+  return m;
+}
+
+SimulationResult run(const RigParameters& rig, const FrictionModel& model, double v, double duration,
+                     bool steady_start = false) {
+  SimulationOptions opt;
+  opt.duration_s = duration;
+  opt.start_in_steady_sliding = steady_start;
+  opt.samples_per_period = 400;
+  const auto law = make_friction_law(model);
+  SimulationResult r = simulate(rig, Drive::constant(v), *law, opt);
+  EXPECT_TRUE(r.summary.completed) << r.summary.message;
+  return r;
+}
+
+// Samples of the first slip phase (from the first breakaway to the next velocity match).
+std::vector<Sample> first_slip(const SimulationResult& r) {
+  std::vector<Sample> out;
+  for (const Sample& s : r.samples) {
+    if (s.phase == Phase::slip) out.push_back(s);
+    else if (!out.empty()) break;
+  }
+  return out;
+}
+
+TEST(SlipTransient, DecaysWithSlipDistanceNotTimeAtBothRigFrequencies) {
+  // Thesis §5.2a: the same normalised decay against displacement at ω = 102 and 152 rad/s.
+  FrictionModel m = coulomb(0.3, 0.15);
+  m.set("slip_transient", "amplitude", 0.5);
+  m.set("slip_transient", "decay_distance_m", 3e-4);
+  RigParameters heavy, light;
+  light.mass_kg = heavy.stiffness_N_per_m / (152.0 * 152.0);  // lead weights removed
+  const double W = heavy.normal_load_N, v = 1e-3;
+  const auto slip_heavy = first_slip(run(heavy, m, v, 3.0));
+  const auto slip_light = first_slip(run(light, m, v, 3.0));
+  ASSERT_GT(slip_heavy.size(), 50u);
+  ASSERT_GT(slip_light.size(), 50u);
+  // Closed form F(s) = W [μk + (μs − μk) e^{−s/D_c}] on both rigs, to the integrator's accuracy.
+  for (const auto* slip : {&slip_heavy, &slip_light}) {
+    for (const Sample& s : *slip) {
+      const double expected = W * (0.15 + 0.5 * 0.15 * std::exp(-s.slip_distance_m / 3e-4));
+      ASSERT_NEAR(s.friction_N, expected, 1e-6 * W) << "s = " << s.slip_distance_m;
+    }
+  }
+  // Against time the two differ: the lighter rig accelerates faster and reaches the half-decay
+  // distance D_c ln 2 sooner — by about the frequency ratio 152/102 for a free-vibration start.
+  auto half_decay_time = [](const std::vector<Sample>& slip) {
+    for (const Sample& s : slip) {
+      if (s.slip_distance_m >= 3e-4 * std::numbers::ln2) return s.t_s - slip.front().t_s;
+    }
+    return slip.back().t_s - slip.front().t_s;
+  };
+  EXPECT_GT(half_decay_time(slip_heavy) / half_decay_time(slip_light), 1.2);
+}
+
+TEST(RateDependentStatic, BreakawayLiesOnTheJunctionLocus) {
+  const RigParameters rig;
+  FrictionModel m = coulomb(0.55, 0.1);
+  m.add("rate_dependent_static");
+  contact::JunctionLocus locus;
+  locus.alpha = 25.0;
+  locus.n = 1.25;
+  locus.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(0.55, 25.0);
+  locus.location_per_s = m.get("rate_dependent_static", "location_per_s");
+  for (double v : {1e-5, 1e-4, 7.112e-4, 3e-3}) {
+    const double phi_dot = rig.stiffness_N_per_m * v / rig.normal_load_N;  // (3.1.20) with r v̇ = 0
+    const double mu_expected = contact::static_friction_from_load_rate(locus, phi_dot);
+    const auto r = run(rig, m, v, 1.2 * mu_expected * rig.normal_load_N / (rig.stiffness_N_per_m * v));
+    ASSERT_FALSE(r.events.empty());
+    ASSERT_EQ(r.events.front().kind, EventKind::breakaway);
+    EXPECT_NEAR(r.events.front().load_rate_per_s, phi_dot, 1e-12 * phi_dot);
+    // Event location to CVODE's root tolerance: 1e-8 in μ.
+    EXPECT_NEAR(r.events.front().mu, mu_expected, 1e-8) << "v = " << v;
+  }
+  // The default location parameter reproduces the thesis point μs = 0.26 at 2.8e-2 in/s.
+  EXPECT_NEAR(contact::static_friction_from_load_rate(locus, 10367.5 * 7.112e-4 / 93.857), 0.26, 1e-9);
+}
+
+TEST(StrainRateHardening, FlattensTheLocusAroundItsReferenceRate) {
+  FrictionModel plain = coulomb(0.55, 0.1), hard = plain;
+  plain.add("rate_dependent_static");
+  hard.add("rate_dependent_static");
+  hard.set("strain_rate_hardening", "m", 0.1);
+  const auto lp = std::dynamic_pointer_cast<const CompositeLaw>(make_friction_law(plain));
+  const auto lh = std::dynamic_pointer_cast<const CompositeLaw>(make_friction_law(hard));
+  FrictionContext c;
+  c.tangential_load_rate_per_s = hard.get("strain_rate_hardening", "reference_load_rate_per_s");
+  EXPECT_NEAR(lh->static_coefficient(c), lp->static_coefficient(c), 1e-12);  // same at φ̇_ref
+  // (5.1.2): φ̇^{1 − m(1+n)} replaces φ̇, so a decade of load rate spans less μs.
+  c.tangential_load_rate_per_s *= 10.0;
+  const double hi_p = lp->static_coefficient(c), hi_h = lh->static_coefficient(c);
+  c.tangential_load_rate_per_s /= 100.0;
+  const double lo_p = lp->static_coefficient(c), lo_h = lh->static_coefficient(c);
+  EXPECT_LT(lo_h - hi_h, lo_p - hi_p);
+  EXPECT_GT(hi_h, hi_p);
+}
+
+TEST(ViscousFriction, SteadySlidingCarriesMuKWPlusCU) {
+  const RigParameters rig;
+  FrictionModel m = coulomb(0.3, 0.15);
+  m.set("viscous_friction", "coefficient_N_s_per_m", 40.0);
+  const double v = 0.05;
+  const auto r = run(rig, m, v, 3.0, /*steady_start=*/true);
+  const Sample& last = r.samples.back();
+  // Positive slope c damps the start-up kick (e^{−(r+c)t/2M} ≈ 1e-27 after 3 s); U = v − ẋ.
+  EXPECT_NEAR(last.friction_N, 0.15 * rig.normal_load_N + 40.0 * v, 1e-9 * last.friction_N);
+  EXPECT_NEAR(last.x_m * rig.stiffness_N_per_m, last.friction_N, 1e-6 * last.friction_N);
+}
+
+TEST(SqueezeFilm, SlipRunsThroughVelocityMatchesWhereTheBaselineSticksAtOnce) {
+  const RigParameters rig;
+  const FrictionModel base = coulomb(0.5, 0.12);
+  FrictionModel film = base;
+  film.add("squeeze_film");
+  const double v = 1e-4, duration = 2.0 * 0.5 * rig.normal_load_N / (rig.stiffness_N_per_m * v);
+  const auto rb = run(rig, base, v, duration);
+  const auto rf = run(rig, film, v, duration);
+  auto reversals_before_reattach = [](const SimulationResult& r) {
+    int n = 0;
+    for (const Event& e : r.events) {
+      if (e.kind == EventKind::reattach) break;
+      if (e.kind == EventKind::reversal) ++n;
+    }
+    return n;
+  };
+  EXPECT_EQ(reversals_before_reattach(rb), 0);
+  EXPECT_GE(reversals_before_reattach(rf), 1);  // more than one slip half-cycle
+}
+
+// Growth rate of a small oscillation about steady sliding at v, from the ẋ envelope.
+double growth_rate(const FrictionModel& m, double v) {
+  const RigParameters rig;
+  // Windows 1 s apart and early enough that a growing oscillation is still small (kick 1e-3 v).
+  const auto r = run(rig, m, v, 2.0, /*steady_start=*/true);
+  double early = 0.0, late = 0.0;
+  for (const Sample& s : r.samples) {
+    if (s.t_s >= 0.5 && s.t_s < 1.0) early = std::max(early, std::abs(s.xdot_m_per_s));
+    if (s.t_s >= 1.5) late = std::max(late, std::abs(s.xdot_m_per_s));
+  }
+  return std::log(late / early) / 1.0;
+}
+
+TEST(ThermalThinning, SteadySlidingIsUnstableExactlyWhereMinusWdMuDUExceedsR) {
+  // F_th = c0 U e^{−U/U_T}: −dF/dU = c0 e^{−u}(u − 1), u = U/U_T, exceeds r between two roots.
+  const RigParameters rig;
+  const double c0 = 300.0, ut = 0.0254, r = rig.damping_N_s_per_m;
+  FrictionModel m = coulomb(0.12, 0.12);
+  m.set("thermal_thinning", "traction_coefficient_N_s_per_m", c0);
+  m.set("thermal_thinning", "thermal_speed_m_per_s", ut);
+  auto excess = [&](double u) { return c0 * std::exp(-u) * (u - 1.0) - r; };
+  auto bisect = [&](double a, double b) {
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (a + b);
+      ((excess(a) < 0) == (excess(mid) < 0) ? a : b) = mid;
+    }
+    return 0.5 * (a + b);
+  };
+  const double u1 = bisect(1.0, 2.0), u2 = bisect(2.0, 20.0);
+  for (double u : {0.95 * u1, 1.05 * u1, 0.95 * u2, 1.05 * u2}) {
+    const bool unstable = u > u1 && u < u2;
+    const double sigma = growth_rate(m, u * ut);
+    const double linear = -(r - (c0 * std::exp(-u) * (u - 1.0))) / (2.0 * rig.mass_kg);
+    EXPECT_EQ(sigma > 0.0, unstable) << "u = " << u << ", linear rate " << linear;
+    // The envelope peaks sit up to a period (0.06 s) off their nominal 1 s spacing: ±6 % of the
+    // rate, plus the sampling of the peaks; allow 10 % + 0.05 1/s.
+    EXPECT_NEAR(sigma, linear, 0.1 * std::abs(linear) + 0.05) << "u = " << u;
+  }
+}
+
+TEST(Instrument, IdealChannelsReadTheTrueFrictionOfAnUndampedRig) {
+  RigParameters rig;
+  rig.damping_N_s_per_m = 0.0;  // (4.2.3) neglects r ẋ only
+  const auto r = run(rig, coulomb(0.3, 0.2), 1e-3, 3.0);
+  const auto measured = measure_friction_N(rig, InstrumentModel{}, r.samples);
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    ASSERT_NEAR(measured[i], r.samples[i].friction_N, 1e-9 * rig.normal_load_N) << "sample " << i;
+  }
+}
+
+TEST(Instrument, GainScalesAndNoiseHasTheRequestedRms) {
+  RigParameters rig;
+  rig.damping_N_s_per_m = 0.0;
+  const auto r = run(rig, coulomb(0.3, 0.2), 1e-3, 3.0);
+  const auto ideal = measure_friction_N(rig, InstrumentModel{}, r.samples);
+  const auto scaled = measure_friction_N(rig, InstrumentModel{1.1, 0.0, 0.0, 1}, r.samples);
+  const auto noisy = measure_friction_N(rig, InstrumentModel{1.0, 0.0, 0.5, 7}, r.samples);
+  double ss = 0.0;
+  for (std::size_t i = 0; i < ideal.size(); ++i) {
+    ASSERT_NEAR(scaled[i], 1.1 * ideal[i], 1e-12 * std::abs(ideal[i]) + 1e-12);
+    ss += (noisy[i] - ideal[i]) * (noisy[i] - ideal[i]);
+  }
+  const double rms = std::sqrt(ss / ideal.size());
+  // N ≈ 5000 samples: the rms estimate has a relative standard error 1/√(2N) ≈ 1 %; allow 5 %.
+  ASSERT_GT(ideal.size(), 2000u);
+  EXPECT_NEAR(rms, 0.5, 0.025);
+}
+
+TEST(Composition, EffectsAtZeroStrengthLeaveTheBaselineTraceUnchanged) {
+  const RigParameters rig;
+  const FrictionModel base = coulomb(0.3, 0.2);
+  FrictionModel zero = base;
+  zero.set("slip_transient", "amplitude", 0.0);
+  zero.set("viscous_friction", "coefficient_N_s_per_m", 0.0);
+  zero.set("squeeze_film", "film_fraction", 0.0);
+  zero.set("hydrodynamic_lift", "max_fraction", 0.0);
+  zero.set("thermal_thinning", "traction_coefficient_N_s_per_m", 0.0);
+  const auto rb = run(rig, base, 1e-3, 4.0);
+  const auto rz = run(rig, zero, 1e-3, 4.0);
+  ASSERT_EQ(rb.events.size(), rz.events.size());
+  for (std::size_t i = 0; i < rb.events.size(); ++i) {
+    // Zero-strength states still enter CVODE's error norm, so step sizes may differ slightly:
+    // event times agree to the integrator's tolerance.
+    EXPECT_NEAR(rb.events[i].t_s, rz.events[i].t_s, 1e-8 * rb.events[i].t_s);
+    EXPECT_NEAR(rb.events[i].x_m, rz.events[i].x_m, 1e-9);
+  }
+}
+
+TEST(Composition, ListingOrderDoesNotMatter) {
+  const RigParameters rig;
+  FrictionModel a = coulomb(0.4, 0.15), b = a;
+  for (const char* e : {"slip_transient", "viscous_friction", "squeeze_film", "rate_dependent_static"}) a.add(e);
+  for (const char* e : {"rate_dependent_static", "squeeze_film", "viscous_friction", "slip_transient"}) b.add(e);
+  EXPECT_EQ(make_friction_law(a)->name(), make_friction_law(b)->name());
+  const auto ra = run(rig, a, 1e-3, 2.0), rb = run(rig, b, 1e-3, 2.0);
+  ASSERT_EQ(ra.samples.size(), rb.samples.size());
+  for (std::size_t i = 0; i < ra.samples.size(); ++i) ASSERT_EQ(ra.samples[i].x_m, rb.samples[i].x_m);
+}
+
+TEST(Catalogue, EveryEffectHasDocumentedBoundedParametersAndRejectsOutOfRange) {
+  for (const EffectInfo& e : effect_catalogue()) {
+    EXPECT_FALSE(e.thesis_reference.empty()) << e.name;
+    for (const ParameterSpec& p : e.parameters) {
+      EXPECT_LE(p.lower, p.default_value) << e.name << "." << p.name;
+      EXPECT_GE(p.upper, p.default_value) << e.name << "." << p.name;
+      EXPECT_FALSE(p.unit.empty()) << e.name << "." << p.name;
+    }
+  }
+  FrictionModel m = coulomb(0.3, 0.2);
+  m.set("squeeze_film", "film_fraction", 1.5);
+  EXPECT_THROW(make_friction_law(m), std::invalid_argument);
+  EXPECT_THROW(effect_info("wear"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tribo::rig
