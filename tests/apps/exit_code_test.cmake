@@ -1,0 +1,20 @@
+# Runs `tribo rig` on a config with a negative mass: expects exit status 2, a message naming the
+# key, and no output directory.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(WRITE ${WORK}/bad.toml "[rig]\nmass_kg = -1.0\n")
+execute_process(COMMAND ${TRIBO} rig ${WORK}/bad.toml --out ${WORK}/out
+                RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 2)
+  message(FATAL_ERROR "expected exit status 2, got ${status}: ${err}")
+endif()
+if(NOT err MATCHES "rig.mass_kg")
+  message(FATAL_ERROR "error does not name the key rig.mass_kg: ${err}")
+endif()
+if(EXISTS ${WORK}/out)
+  message(FATAL_ERROR "output directory was created for a bad config")
+endif()
+execute_process(COMMAND ${TRIBO} rig ${WORK}/missing.toml --out ${WORK}/out RESULT_VARIABLE status2 ERROR_VARIABLE err2)
+if(NOT status2 EQUAL 2 OR NOT err2 MATCHES "missing.toml")
+  message(FATAL_ERROR "missing config: expected status 2 naming the file, got ${status2}: ${err2}")
+endif()
