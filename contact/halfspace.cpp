@@ -21,6 +21,12 @@ double love_influence(double x, double y, double a, double b, double e_star) {
   return s / (std::numbers::pi * e_star);
 }
 
+// FFTW threads pay off only on large transforms; below 128² points one thread is faster.
+int fft_threads(const Grid& g, bool periodic, int requested) {
+  const Eigen::Index points = (periodic ? 1 : 4) * g.nx * g.ny;
+  return requested == 0 && points < 128 * 128 ? 1 : requested;
+}
+
 }  // namespace
 
 void validate(const Grid& g) {
@@ -45,10 +51,11 @@ double composite_modulus_Pa(double e1, double nu1, double e2, double nu2) {
 }
 
 ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool periodic, int threads, bool measure_fft)
-    : grid_(grid),
+    : grid_((validate(grid), grid)),
       e_star_Pa_(e_star_Pa),
       periodic_(periodic),
-      fft_((validate(grid), periodic ? grid.nx : 2 * grid.nx), periodic ? grid.ny : 2 * grid.ny, threads, measure_fft) {
+      fft_(periodic ? grid.nx : 2 * grid.nx, periodic ? grid.ny : 2 * grid.ny,
+           fft_threads(grid, periodic, threads), measure_fft) {
   if (!(std::isfinite(e_star_Pa) && e_star_Pa > 0.0)) {
     throw std::invalid_argument("composite modulus e_star_Pa must be positive and finite");
   }
@@ -105,7 +112,7 @@ void ElasticHalfSpace::displacement(const Eigen::ArrayXXd& p, Eigen::ArrayXXd& u
   fft_.forward();
   std::complex<double>* s = fft_.spectrum();
   const Eigen::Index count = fft_.spectrum_size();
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (count >= Eigen::Index{1} << 15) schedule(static)
   for (Eigen::Index m = 0; m < count; ++m) s[m] *= kernel_[m];
   fft_.inverse();
   u = real.topLeftCorner(nx, ny);

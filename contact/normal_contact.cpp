@@ -12,6 +12,10 @@ namespace {
 
 enum class Control { load, approach };
 
+// Below this many cells a loop's work is smaller than the cost of waking a thread team (and on
+// a busy machine far smaller than a descheduled spinning thread), so it runs serially.
+constexpr Eigen::Index kParallelMinCells = Eigen::Index{1} << 15;
+
 void check_field(const ElasticHalfSpace& hs, const Eigen::ArrayXXd& f, const char* name) {
   const Grid& g = hs.grid();
   if (f.rows() != g.nx || f.cols() != g.ny) {
@@ -40,7 +44,7 @@ double projection_shift(const Eigen::ArrayXXd& y, double cap, double target) {
   for (int it = 0; it < 200; ++it) {
     double sum = 0.0;
     long active = 0;
-#pragma omp parallel for reduction(+ : sum, active) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : sum, active) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       const double v = yp[i] - c;
       if (v >= cap) {
@@ -124,7 +128,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       double sum_free = 0.0, plastic_max = -std::numeric_limits<double>::infinity(),
              open_min = std::numeric_limits<double>::infinity();
       long free = 0;
-#pragma omp parallel for reduction(+ : sum_free, free) reduction(max : plastic_max) reduction(min : open_min) \
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : sum_free, free) reduction(max : plastic_max) reduction(min : open_min) \
     schedule(static)
       for (Eigen::Index i = 0; i < n; ++i) {
         const double g = hp[i] + up[i];
@@ -151,7 +155,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     // gradient norm for the conjugate direction.
     double res2 = 0.0, usum = 0.0, usq = 0.0, g_norm = 0.0;
     long free = 0;
-#pragma omp parallel for reduction(+ : res2, usum, usq, g_norm, free) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : res2, usum, usq, g_norm, free) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       const double g = hp[i] + up[i] - delta;
       double ri;
@@ -189,20 +193,20 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     double tmean = 0.0;
     if (control == Control::load && free > 0) {
       double s = 0.0;
-#pragma omp parallel for reduction(+ : s) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : s) schedule(static)
       for (Eigen::Index i = 0; i < n; ++i) {
         if (pp[i] > 0.0 && pp[i] < cap) s += hp[i] + up[i] - delta + beta * tp[i];
       }
       tmean = s / static_cast<double>(free);
     }
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       tp[i] = (pp[i] > 0.0 && pp[i] < cap) ? hp[i] + up[i] - delta + beta * tp[i] - tmean : 0.0;
     }
     // Step τ = Σ g t / Σ (G t) t over the free cells (exact line minimum along t).
     hs.displacement(t, r);
     double num = 0.0, den = 0.0;
-#pragma omp parallel for reduction(+ : num, den) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : num, den) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       if (pp[i] > 0.0 && pp[i] < cap) {
         num += (hp[i] + up[i] - delta) * tp[i];
@@ -215,7 +219,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     // others (Polonsky & Keer's recovery: overlapping cells out of contact gain pressure, opening
     // plastic cells lose it), then the projection onto the constraints (clamp, and the load).
     long entered = 0;
-#pragma omp parallel for reduction(+ : entered) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : entered) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       const double g = hp[i] + up[i] - delta;
       if (pp[i] > 0.0 && pp[i] < cap) {
@@ -227,7 +231,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     }
     const double shift = control == Control::load ? projection_shift(y, cap, target) : 0.0;
     long changed = 0;
-#pragma omp parallel for reduction(+ : changed) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : changed) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       const bool was_free = pp[i] > 0.0 && pp[i] < cap;
       const double v = std::clamp(yp[i] - shift, 0.0, cap);

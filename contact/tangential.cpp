@@ -33,6 +33,7 @@ TangentialContactResult solve_tangential_load(ElasticHalfSpace& hs, const Eigen:
   auto solve_at = [&](double cap) {
     normal.pressure_cap_Pa = cap;
     out.contact = solve_normal_load(hs, gap0, w, normal, warm);
+    out.inner_iterations += out.contact.summary.iterations;
     warm = &out.contact.pressure_Pa;
     const double tau = f / out.contact.real_area_m2;
     return cap * cap + opt.alpha * tau * tau - sigma0 * sigma0;

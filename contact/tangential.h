@@ -38,7 +38,8 @@ struct TangentialContactResult {
   double pressure_cap_Pa = 0.0;     // √(σ0² − α τ²)
   bool slipped = false;             // τ ≥ τ_i: the junction cannot hold F
   bool converged = false;           // outer and last inner solve converged
-  int outer_iterations = 0;
+  int outer_iterations = 0;         // elastic-plastic solves
+  int inner_iterations = 0;         // CG iterations summed over them
   std::string message;
 };
 
