@@ -115,11 +115,12 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   bool exact_u = false;  // u = G p by FFT rather than updated incrementally
   bool conjugate = false;
   double g_norm_old = 1.0, step = 1.0 / hs.self_compliance_m_per_Pa(), delta = value, residual = 0.0;
-  int it = 0, since_exact = 0;
+  int it = 0, since_exact = 0, fft_pairs = 0;
   bool converged = false;
   for (;; ++it) {
     if (!exact_u || since_exact >= 32) {
       hs.displacement(p, u);
+      ++fft_pairs;
       exact_u = true;
       since_exact = 0;
     }
@@ -128,8 +129,8 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       double sum_free = 0.0, plastic_max = -std::numeric_limits<double>::infinity(),
              open_min = std::numeric_limits<double>::infinity();
       long free = 0;
-#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : sum_free, free) reduction(max : plastic_max) reduction(min : open_min) \
-    schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : sum_free, free) reduction(max : plastic_max) \
+    reduction(min : open_min) schedule(static)
       for (Eigen::Index i = 0; i < n; ++i) {
         const double g = hp[i] + up[i];
         if (pp[i] <= 0.0) {
@@ -151,11 +152,12 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
         delta = 0.5 * (plastic_max + open_min);
       }
     }
-    // Residual of the contact conditions against the elastic scale ‖u − ū‖₂; and the free-cell
-    // gradient norm for the conjugate direction.
-    double res2 = 0.0, usum = 0.0, usq = 0.0, g_norm = 0.0;
+    // Residual of the contact conditions against the elastic scale ‖u − ū‖₂; the free-cell
+    // gradient norm and Σ t_old over the free cells for the conjugate direction.
+    double res2 = 0.0, usum = 0.0, usq = 0.0, g_norm = 0.0, t_old_sum = 0.0;
     long free = 0;
-#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : res2, usum, usq, g_norm, free) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : res2, usum, usq, g_norm, t_old_sum, free) \
+    schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       const double g = hp[i] + up[i] - delta;
       double ri;
@@ -166,6 +168,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       } else {
         ri = g;
         g_norm += g * g;
+        t_old_sum += tp[i];
         ++free;
       }
       res2 += ri * ri;
@@ -187,24 +190,18 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     if (it >= max_iterations) break;
 
     // Conjugate direction on the free cells (Polonsky & Keer), made mean-free there for load
-    // control so that a step along it keeps Σ p.
+    // control so that a step along it keeps Σ p. The gap has zero mean over the free cells
+    // (that defines δ), so the mean of g + β t_old is β Σ t_old / free.
     const double beta = conjugate ? g_norm / g_norm_old : 0.0;
     g_norm_old = g_norm;
-    double tmean = 0.0;
-    if (control == Control::load && free > 0) {
-      double s = 0.0;
-#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : s) schedule(static)
-      for (Eigen::Index i = 0; i < n; ++i) {
-        if (pp[i] > 0.0 && pp[i] < cap) s += hp[i] + up[i] - delta + beta * tp[i];
-      }
-      tmean = s / static_cast<double>(free);
-    }
+    const double tmean = control == Control::load && free > 0 ? beta * t_old_sum / static_cast<double>(free) : 0.0;
 #pragma omp parallel for if (n >= kParallelMinCells) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       tp[i] = (pp[i] > 0.0 && pp[i] < cap) ? hp[i] + up[i] - delta + beta * tp[i] - tmean : 0.0;
     }
     // Step τ = Σ g t / Σ (G t) t over the free cells (exact line minimum along t).
     hs.displacement(t, r);
+    ++fft_pairs;
     double num = 0.0, den = 0.0;
 #pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : num, den) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
@@ -215,34 +212,43 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     }
     const bool cg_step = free > 0 && den > 0.0 && std::isfinite(num / den) && num / den > 0.0;
     if (cg_step) step = num / den;
-    // Trial pressure: the CG step on free cells, a gradient step of the same length on the
+    // Trial pressure y: the CG step on free cells, a gradient step of the same length on the
     // others (Polonsky & Keer's recovery: overlapping cells out of contact gain pressure, opening
-    // plastic cells lose it), then the projection onto the constraints (clamp, and the load).
-    long entered = 0;
-#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : entered) schedule(static)
+    // plastic cells lose it). Then p = clamp(y − c, 0, cap), the projection onto the
+    // constraints, with c = 0 unless the clamped sum misses the load. Fused in one pass: the
+    // clamp at c = 0, its sum, the count of cells that change set, and u − τ G t.
+    long changed = 0, entered = 0;
+    double clamped_sum = 0.0;
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : changed, entered, clamped_sum) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       const double g = hp[i] + up[i] - delta;
-      if (pp[i] > 0.0 && pp[i] < cap) {
+      const bool was_free = pp[i] > 0.0 && pp[i] < cap;
+      if (was_free) {
         yp[i] = cg_step ? pp[i] - step * tp[i] : pp[i];
       } else {
         yp[i] = pp[i] - step * g;
         if ((pp[i] <= 0.0 && g < 0.0) || (pp[i] >= cap && g > 0.0)) ++entered;
       }
-    }
-    const double shift = control == Control::load ? projection_shift(y, cap, target) : 0.0;
-    long changed = 0;
-#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : changed) schedule(static)
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const bool was_free = pp[i] > 0.0 && pp[i] < cap;
-      const double v = std::clamp(yp[i] - shift, 0.0, cap);
+      const double v = std::clamp(yp[i], 0.0, cap);
       if (was_free != (v > 0.0 && v < cap) || (!was_free && v != pp[i])) ++changed;
       pp[i] = v;
+      clamped_sum += v;
+      if (cg_step) up[i] -= step * rp[i];
+    }
+    if (control == Control::load && std::abs(clamped_sum - target) > 1e-14 * target) {
+      const double shift = projection_shift(y, cap, target);
+      long shifted_changed = 0;
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : shifted_changed) schedule(static)
+      for (Eigen::Index i = 0; i < n; ++i) {
+        const double v = std::clamp(yp[i] - shift, 0.0, cap);
+        if (v != pp[i]) ++shifted_changed;
+        pp[i] = v;
+      }
+      changed += shifted_changed;
     }
     conjugate = entered == 0 && cg_step;
     if (changed == 0 && cg_step) {
-      // Same free set, nothing projected: u ← u − τ G t (the shift is round-off since Σ t = 0).
-      u -= step * r;
-      ++since_exact;
+      ++since_exact;  // same free set, nothing projected: u − τ G t is exact
     } else {
       exact_u = false;
     }
@@ -266,6 +272,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   out.summary.converged = converged;
   out.summary.iterations = it;
   out.summary.residual = residual;
+  out.summary.fft_pairs = fft_pairs + (since_exact != 0 ? 1 : 0);
   std::ostringstream msg;
   if (converged) {
     msg << "converged in " << it << " iterations, residual " << residual << " <= " << opt.tolerance;

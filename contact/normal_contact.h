@@ -44,6 +44,7 @@ struct NormalContactSummary {
   bool converged = false;
   int iterations = 0;
   double residual = 0.0;  // ε at exit (see NormalContactOptions::tolerance)
+  int fft_pairs = 0;      // half-space evaluations (r2c + c2r pairs on the FFT grid)
   std::string message;
 };
 
