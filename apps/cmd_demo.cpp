@@ -17,6 +17,7 @@
 #include "rig/composite_law.h"
 #include "rig/instrument.h"
 #include "rig/observables.h"
+#include "rig/sweep.h"
 
 namespace tribo::cli {
 namespace {
@@ -29,31 +30,7 @@ struct DemoArgs {
   bool plots = true;
 };
 
-struct SpeedRun {
-  double v_m_per_s = 0.0;
-  double duration_s = 0.0;
-  rig::SimulationResult result;
-  rig::RunObservables obs;
-};
-
-// Long enough for several stick-slip cycles (stick time ≈ 2 Δμ W / (k v)) and for a
-// quasi-harmonic oscillation to settle (growth rates of order 1/s).
-double run_duration_s(const rig::RigParameters& rig, double v) {
-  const double cycle = 2.0 * 0.45 * rig.normal_load_N / (rig.stiffness_N_per_m * v) +
-                       2.0 * std::numbers::pi / rig.natural_frequency_rad_per_s();
-  return std::max(6.0, 5.0 * cycle);
-}
-
-SpeedRun run_speed(const rig::RigParameters& rig, const rig::FrictionLaw& law, double v) {
-  SpeedRun r;
-  r.v_m_per_s = v;
-  r.duration_s = run_duration_s(rig, v);
-  rig::SimulationOptions opt;
-  opt.duration_s = r.duration_s;
-  r.result = rig::simulate(rig, rig::Drive::constant(v), law, opt);
-  r.obs = rig::summarise(rig, r.result.samples, r.result.events, 0.4 * r.result.summary.end_time_s);
-  return r;
-}
+using SpeedRun = rig::SweepPoint;
 
 std::string fmt(double v, const char* f = "%.4g") {
   if (!std::isfinite(v)) return "";
@@ -67,8 +44,8 @@ void write_sweep(const std::filesystem::path& path, const rig::RigParameters& ri
   f.stream() << "v_m_per_s,v_in_per_s,load_rate_per_s,regime,period_s,peak_to_peak_m,stick_time_s,slip_time_s,"
                 "mu_s_mean,mean_friction_N,mean_mu,breakaways,reversals,completed\n";
   for (const SpeedRun& r : runs) {
-    const auto& o = r.obs;
-    f.stream() << r.v_m_per_s << ',' << r.v_m_per_s / kInch_m << ',' << rig.stiffness_N_per_m * r.v_m_per_s / rig.normal_load_N << ','
+    const auto& o = r.observables;
+    f.stream() << r.drive_speed_m_per_s << ',' << r.drive_speed_m_per_s / kInch_m << ',' << rig.stiffness_N_per_m * r.drive_speed_m_per_s / rig.normal_load_N << ','
                << o.regime << ',' << fmt(o.period_s, "%.8g") << ',' << fmt(o.peak_to_peak_m, "%.8g") << ','
                << fmt(o.stick_time_s, "%.8g") << ',' << fmt(o.slip_time_s, "%.8g") << ',' << fmt(o.mu_s_mean, "%.6g") << ','
                << fmt(o.mean_friction_N, "%.6g") << ',' << fmt(o.mean_friction_N / rig.normal_load_N, "%.6g") << ','
@@ -82,7 +59,7 @@ void write_static_friction(const std::filesystem::path& path, const std::vector<
   f.stream() << "phi_dot_per_s,mu_s,v_m_per_s\n";
   for (const SpeedRun& r : runs) {
     for (const rig::Event& e : r.result.events) {
-      if (e.kind == rig::EventKind::breakaway) f.stream() << e.load_rate_per_s << ',' << e.mu << ',' << r.v_m_per_s << '\n';
+      if (e.kind == rig::EventKind::breakaway) f.stream() << e.load_rate_per_s << ',' << e.mu << ',' << r.drive_speed_m_per_s << '\n';
     }
   }
   f.commit();
@@ -121,16 +98,16 @@ void write_report(const std::filesystem::path& path, const rig::RigParameters& r
      << "## Regime by driven speed\n\n| v (in/s) | v (m/s) | phi_dot (1/s) | regime | period (s) | peak-to-peak (m) | mean mu_s |\n"
      << "|---|---|---|---|---|---|---|\n";
   for (const SpeedRun& r : sweep) {
-    md << "| " << fmt(r.v_m_per_s / kInch_m, "%.3g") << " | " << fmt(r.v_m_per_s, "%.3g") << " | "
-       << fmt(rig.stiffness_N_per_m * r.v_m_per_s / rig.normal_load_N, "%.3g") << " | " << r.obs.regime << " | "
-       << fmt(r.obs.period_s) << " | " << fmt(r.obs.peak_to_peak_m) << " | " << fmt(r.obs.mu_s_mean, "%.3f") << " |\n";
+    md << "| " << fmt(r.drive_speed_m_per_s / kInch_m, "%.3g") << " | " << fmt(r.drive_speed_m_per_s, "%.3g") << " | "
+       << fmt(rig.stiffness_N_per_m * r.drive_speed_m_per_s / rig.normal_load_N, "%.3g") << " | " << r.observables.regime << " | "
+       << fmt(r.observables.period_s) << " | " << fmt(r.observables.peak_to_peak_m) << " | " << fmt(r.observables.mu_s_mean, "%.3f") << " |\n";
   }
   md << "\n## The thesis' observations (chapter V) beside the simulation\n\n| thesis figure | v (in/s) | thesis | simulated |\n|---|---|---|---|\n";
   const char* names[] = {"Fig 5.2.1 stick-slip", "Fig 5.2.2 multi-cycle slip", "Fig 5.2.8 quasi-harmonic"};
   const char* thesis[] = {"stick-slip, mu_s = 0.26", "multi-cycle slip at high mu_s (0.45), slower than Fig 5.2.1", "quasi-harmonic, mu_k about 0.15"};
   for (std::size_t i = 0; i < figures.size(); ++i) {
-    const auto& o = figures[i].obs;
-    md << "| " << names[i] << " | " << fmt(figures[i].v_m_per_s / kInch_m, "%.3g") << " | " << thesis[i] << " | " << o.regime
+    const auto& o = figures[i].observables;
+    md << "| " << names[i] << " | " << fmt(figures[i].drive_speed_m_per_s / kInch_m, "%.3g") << " | " << thesis[i] << " | " << o.regime
        << ", mu_s = " << fmt(o.mu_s_mean, "%.3f") << ", mean mu = " << fmt(o.mean_friction_N / rig.normal_load_N, "%.3f") << " |\n";
   }
   md << "\nPlots: `phase_plane.png` (x against xdot/omega_n, as the thesis' oscilloscope traces), "
@@ -158,20 +135,21 @@ void run_demo(const DemoArgs& args) {
   std::vector<double> all = speeds;
   all.insert(all.end(), figure_speeds.begin(), figure_speeds.end());
 
-  std::vector<SpeedRun> runs(all.size());
   Progress progress("tribo demo: speed sweep", static_cast<int>(all.size()));
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    runs[i] = run_speed(rig, *law, all[i]);
-#pragma omp critical
-    progress.step(fmt(all[i] / kInch_m, "%.3g in/s") + " " + runs[i].obs.regime);
-  }
+  rig::SweepOptions sweep_options;
+  // Several stick-slip cycles at the largest Δμ ≈ 0.45, and at least 6 s for a quasi-harmonic
+  // oscillation to grow and settle (growth rates of order 1/s).
+  sweep_options.duration_for = [&](double v) { return rig::stick_slip_duration_s(rig, v, 0.45, 5.0, 6.0); };
+  sweep_options.on_point_done = [&](const rig::SweepPoint& p) {
+    progress.step(fmt(p.drive_speed_m_per_s / kInch_m, "%.3g in/s") + " " + p.observables.regime);
+  };
+  const std::vector<SpeedRun> runs = rig::sweep_drive_speeds(rig, *law, all, sweep_options);
   progress.done();
   const std::vector<SpeedRun> sweep(runs.begin(), runs.begin() + args.speeds);
   const std::vector<SpeedRun> figures(runs.begin() + args.speeds, runs.end());
   for (const SpeedRun& r : runs) {
     if (!r.result.summary.completed) {
-      std::fprintf(stderr, "tribo: warning: run at %g m/s stopped early: %s\n", r.v_m_per_s, r.result.summary.message.c_str());
+      std::fprintf(stderr, "tribo: warning: run at %g m/s stopped early: %s\n", r.drive_speed_m_per_s, r.result.summary.message.c_str());
     }
   }
 
