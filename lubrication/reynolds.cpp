@@ -184,16 +184,22 @@ Signature signature_of(const ReynoldsProblem& pr) {
   return s;
 }
 
-// Fischer–Burmeister function φ(a, b) = a + b − √(a² + b²) and its partial derivatives; at the
-// kink a = b = 0 the element (1 − 1/√2, 1 − 1/√2) of the B-subdifferential is used.
-struct FB {
+// NCP functions φ(a, b) = 0 ⇔ a ≥ 0, b ≥ 0, ab = 0, with a = p/p_s, b = 1 − ϑ, and an element
+// of their B-subdifferential.
+struct Ncp {
   double value, da, db;
 };
-FB fischer_burmeister(double a, double b) {
+// Fischer–Burmeister φ = a + b − √(a² + b²); at the kink a = b = 0 the element
+// (1 − 1/√2, 1 − 1/√2) is used.
+Ncp fischer_burmeister(double a, double b) {
   const double r = std::hypot(a, b);
   if (r == 0.0) return {0.0, 1.0 - M_SQRT1_2, 1.0 - M_SQRT1_2};
   return {a + b - r, 1.0 - a / r, 1.0 - b / r};
 }
+// Minimum φ = min(a, b): its Newton step is the primal–dual active-set step (Hintermüller, Ito &
+// Kunisch, SIAM J. Optim. 13, 2002) — the film is full where p/p_s < 1 − ϑ is false, cavitated
+// where it is true, and each step solves the mass balance exactly for that split.
+Ncp minimum_function(double a, double b) { return a < b ? Ncp{a, 1.0, 0.0} : Ncp{b, 0.0, 1.0}; }
 
 }  // namespace
 
@@ -285,7 +291,7 @@ struct ReynoldsSolver::Impl {
     return s;
   }
 
-  // Residual F (size 2n: mass rows divided by mass_scale, FB rows) and, if wanted, its Jacobian.
+  // Residual F (size 2n: mass rows divided by mass_scale, NCP rows) and, if wanted, its Jacobian.
   void residual(const ReynoldsProblem& pr, const Topology& t, const Eigen::VectorXd& z, double mass_scale,
                 double p_scale, Eigen::VectorXd& f, std::vector<Eigen::Triplet<double, int>>* jac) const {
     const std::size_t n = t.node_of.size();
@@ -313,7 +319,8 @@ struct ReynoldsSolver::Impl {
         }
       }
       f[row] = mass / mass_scale;
-      const FB fb = fischer_burmeister(p / p_scale, 1.0 - th);
+      const Ncp fb = options.complementarity == Complementarity::minimum ? minimum_function(p / p_scale, 1.0 - th)
+                                                                         : fischer_burmeister(p / p_scale, 1.0 - th);
       f[row + 1] = fb.value;
       if (jac) {
         jac->emplace_back(row, row, d_mass_dp / mass_scale);
@@ -360,7 +367,7 @@ struct ReynoldsSolver::Impl {
       Eigen::VectorXd z(static_cast<Eigen::Index>(2 * n));
       for (std::size_t u = 0; u < n; ++u) {
         z[2 * u] = std::max(p[u], 0.0);
-        z[2 * u + 1] = p[u] >= 0.0 ? 1.0 : 0.9;  // off the FB kink where the film may rupture
+        z[2 * u + 1] = p[u] >= 0.0 ? 1.0 : 0.9;  // off the NCP kink where the film may rupture
       }
       Eigen::VectorXd f, f_trial, dz;
       std::vector<Eigen::Triplet<double, int>> triplets;

@@ -63,10 +63,12 @@ struct FourStepResult {
   double flow_per_width, theta_min, front_m, second_peak_Pa;
 };
 
-FourStepResult solve_four_step(int nx) {
+FourStepResult solve_four_step(int nx, Complementarity complementarity = Complementarity::minimum) {
   FourStepResult r{};
   r.problem = four_step_problem(nx, r.ref);
-  r.solution = solve_reynolds(r.problem);
+  ReynoldsOptions options;
+  options.complementarity = complementarity;
+  r.solution = solve_reynolds(r.problem, options);
   const Grid& g = r.problem.grid;
   r.theta_min = 1.0;
   int last_cavitated = -1;
@@ -87,9 +89,11 @@ FourStepResult solve_four_step(int nx) {
 // are captured at node resolution, so the errors are first order in dx (the observed order of
 // the flow error over nx = 101 → 1601 is printed and must be 1 ± 0.3). At nx = 401 (dx = L/400)
 // the flow q and the cavitated fill ϑ = 2q/(U h_C) are within 1e-3, the reformation front
-// within 2 dx, and both pressure peaks within 1 %.
-TEST(JfoCavitation, FourStepBearingMatchesClosedForm) {
-  const FourStepResult r = solve_four_step(401);
+// within 2 dx, and both pressure peaks within 1 %. Both NCP functions reach the same solution.
+class JfoCavitation : public ::testing::TestWithParam<Complementarity> {};
+
+TEST_P(JfoCavitation, FourStepBearingMatchesClosedForm) {
+  const FourStepResult r = solve_four_step(401, GetParam());
   ASSERT_TRUE(r.solution.summary.converged) << r.solution.summary.message;
   std::printf("  Newton iterations %d, residual %.1e\n", r.solution.summary.iterations, r.solution.summary.residual);
   EXPECT_NEAR(r.flow_per_width / r.ref.q(), 1.0, 1e-3);
@@ -99,7 +103,7 @@ TEST(JfoCavitation, FourStepBearingMatchesClosedForm) {
   EXPECT_NEAR(r.second_peak_Pa / r.ref.pc(), 1.0, 1e-2);
   std::vector<double> err;
   for (int nx : {101, 401, 1601}) {
-    const FourStepResult f = solve_four_step(nx);
+    const FourStepResult f = solve_four_step(nx, GetParam());
     err.push_back(std::abs(f.flow_per_width / f.ref.q() - 1.0));
   }
   const double order = std::log(err[0] / err[2]) / std::log(16.0);
@@ -113,8 +117,8 @@ TEST(JfoCavitation, FourStepBearingMatchesClosedForm) {
 // the through-flow. The half-Sommerfeld answer (the linear solution with p < 0 clipped to 0) on
 // the same bearing violates the cell balance near the clipped zone by more than 5 % of the
 // through-flow. p ≥ 0 holds at every node (to 1e-9 of the peak).
-TEST(JfoCavitation, ConservesMassThroughRuptureAndReformation) {
-  const FourStepResult r = solve_four_step(401);
+TEST_P(JfoCavitation, ConservesMassThroughRuptureAndReformation) {
+  const FourStepResult r = solve_four_step(401, GetParam());
   const FilmFlow f = film_flow(r.problem, r.solution);
   EXPECT_NEAR(f.outflow_xL_m3_per_s / f.inflow_x0_m3_per_s, 1.0, 1e-8);
   EXPECT_LT(f.max_cell_imbalance_m3_per_s, 1e-8 * f.inflow_x0_m3_per_s);
@@ -130,6 +134,12 @@ TEST(JfoCavitation, ConservesMassThroughRuptureAndReformation) {
               f.max_cell_imbalance_m3_per_s / f.inflow_x0_m3_per_s, hs.max_cell_imbalance_m3_per_s / hs.inflow_x0_m3_per_s);
   EXPECT_GT(hs.max_cell_imbalance_m3_per_s, 0.05 * hs.inflow_x0_m3_per_s);
 }
+
+INSTANTIATE_TEST_SUITE_P(NcpFunctions, JfoCavitation,
+                         ::testing::Values(Complementarity::minimum, Complementarity::fischer_burmeister),
+                         [](const auto& info) {
+                           return info.param == Complementarity::minimum ? "minimum" : "fischer_burmeister";
+                         });
 
 // A rough gap mirror-symmetric about the middle of the film, h(x, y) = h(L − x, y):
 // without cavitation p(x) = −p(L − x) (the mirror of a solution solves the problem with U
