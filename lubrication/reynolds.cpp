@@ -291,9 +291,22 @@ struct ReynoldsSolver::Impl {
     return s;
   }
 
-  // Residual F (size 2n: mass rows divided by mass_scale, NCP rows) and, if wanted, its Jacobian.
+  // Jacobian of one unknown's mass row: ∂/∂p and ∂/∂ϑ of the columns self + unknown neighbours.
+  struct MassRow {
+    std::array<int, 5> column{};
+    std::array<double, 5> d_p{}, d_theta{};
+    int count = 0;
+  };
+  // Linearised NCP row: φ + α Δp + β Δϑ = 0.
+  struct NcpRow {
+    double phi, alpha, beta;
+  };
+
+  // Residual F (size 2n: mass rows divided by mass_scale, NCP rows) and, if wanted, the rows of
+  // its Jacobian.
   void residual(const ReynoldsProblem& pr, const Topology& t, const Eigen::VectorXd& z, double mass_scale,
-                double p_scale, Eigen::VectorXd& f, std::vector<Eigen::Triplet<double, int>>* jac) const {
+                double p_scale, Eigen::VectorXd& f, std::vector<MassRow>* mass_rows,
+                std::vector<NcpRow>* ncp_rows) const {
     const std::size_t n = t.node_of.size();
     const double cell = pr.grid.dx_m * pr.grid.dy_m;
     f.resize(static_cast<Eigen::Index>(2 * n));
@@ -302,7 +315,10 @@ struct ReynoldsSolver::Impl {
       const int row = static_cast<int>(2 * u);
       const double p = z[row], th = z[row + 1];
       double mass = gap_rate(pr, node) * cell * th;
-      double d_mass_dp = 0, d_mass_dth = gap_rate(pr, node) * cell;
+      MassRow jr;
+      jr.column[0] = static_cast<int>(u);
+      jr.d_theta[0] = gap_rate(pr, node) * cell / mass_scale;
+      jr.count = 1;
       for (const Link& link : t.links[u]) {
         const Face fc = face_of(pr, node, link);
         const bool known = link.kind != LinkKind::unknown;
@@ -310,24 +326,55 @@ struct ReynoldsSolver::Impl {
         const double thn = known ? 1.0 : z[2 * link.unknown + 1];
         const bool from_p = upwind_is_p(pr, link);
         mass += fc.conductance_per_Pa * (p - pn) + fc.couette_m3_per_s * (from_p ? th : thn);
-        d_mass_dp += fc.conductance_per_Pa;
-        if (from_p) d_mass_dth += fc.couette_m3_per_s;
-        if (jac && !known) {
-          // Both neighbour entries are always stored (possibly zero) so the pattern never changes.
-          jac->emplace_back(row, 2 * link.unknown, -fc.conductance_per_Pa / mass_scale);
-          jac->emplace_back(row, 2 * link.unknown + 1, from_p ? 0.0 : fc.couette_m3_per_s / mass_scale);
+        jr.d_p[0] += fc.conductance_per_Pa / mass_scale;
+        if (from_p) jr.d_theta[0] += fc.couette_m3_per_s / mass_scale;
+        if (!known) {
+          // Every unknown neighbour gets a column, even with zero entries, so the pattern of the
+          // Newton matrix never changes and its symbolic analysis stays valid.
+          jr.column[jr.count] = link.unknown;
+          jr.d_p[jr.count] = -fc.conductance_per_Pa / mass_scale;
+          jr.d_theta[jr.count] = from_p ? 0.0 : fc.couette_m3_per_s / mass_scale;
+          ++jr.count;
         }
       }
       f[row] = mass / mass_scale;
-      const Ncp fb = options.complementarity == Complementarity::minimum ? minimum_function(p / p_scale, 1.0 - th)
-                                                                         : fischer_burmeister(p / p_scale, 1.0 - th);
-      f[row + 1] = fb.value;
-      if (jac) {
-        jac->emplace_back(row, row, d_mass_dp / mass_scale);
-        jac->emplace_back(row, row + 1, d_mass_dth / mass_scale);
-        jac->emplace_back(row + 1, row, fb.da / p_scale);
-        jac->emplace_back(row + 1, row + 1, -fb.db);
+      const Ncp c = options.complementarity == Complementarity::minimum ? minimum_function(p / p_scale, 1.0 - th)
+                                                                        : fischer_burmeister(p / p_scale, 1.0 - th);
+      f[row + 1] = c.value;
+      if (mass_rows) (*mass_rows)[u] = jr;
+      if (ncp_rows) (*ncp_rows)[u] = NcpRow{c.value, c.da / p_scale, -c.db};
+    }
+  }
+
+  // The Newton system J Δz = −F reduced to one unknown per node by eliminating, from each
+  // node's NCP row φ + αΔp + βΔϑ = 0, the increment with the larger coefficient: Δϑ where
+  // |β| ≥ |α|·p_s (full film; the unknown is Δp), else Δp (cavitated; the unknown is Δϑ). With
+  // the minimum function this is exact block elimination of a 0/1 row, and the reduced matrix has
+  // the 5-point pattern of the pressure matrix — half the size of J for UMFPACK.
+  void reduced_system(const std::vector<MassRow>& rows, const std::vector<NcpRow>& ncp, const Eigen::VectorXd& f,
+                      double p_scale, std::vector<char>& keeps_p, std::vector<Eigen::Triplet<double, int>>& triplets,
+                      Eigen::VectorXd& rhs) const {
+    const std::size_t n = rows.size();
+    keeps_p.resize(n);
+    for (std::size_t u = 0; u < n; ++u) keeps_p[u] = std::abs(ncp[u].beta) >= std::abs(ncp[u].alpha) * p_scale;
+    triplets.clear();
+    rhs.resize(static_cast<Eigen::Index>(n));
+    for (std::size_t u = 0; u < n; ++u) {
+      const MassRow& r = rows[u];
+      double b = -f[static_cast<Eigen::Index>(2 * u)];
+      for (int k = 0; k < r.count; ++k) {
+        const NcpRow& c = ncp[r.column[k]];
+        double coefficient;
+        if (keeps_p[r.column[k]]) {  // Δϑ = (−φ − αΔp)/β
+          coefficient = r.d_p[k] - r.d_theta[k] * c.alpha / c.beta;
+          b += r.d_theta[k] * c.phi / c.beta;
+        } else {  // Δp = (−φ − βΔϑ)/α
+          coefficient = r.d_theta[k] - r.d_p[k] * c.beta / c.alpha;
+          b += r.d_p[k] * c.phi / c.alpha;
+        }
+        triplets.emplace_back(static_cast<int>(u), r.column[k], coefficient);
       }
+      rhs[static_cast<Eigen::Index>(u)] = b;
     }
   }
 
@@ -369,11 +416,14 @@ struct ReynoldsSolver::Impl {
         z[2 * u] = std::max(p[u], 0.0);
         z[2 * u + 1] = p[u] >= 0.0 ? 1.0 : 0.9;  // off the NCP kink where the film may rupture
       }
-      Eigen::VectorXd f, f_trial, dz;
+      Eigen::VectorXd f, f_trial, dz(static_cast<Eigen::Index>(2 * n)), rhs, x;
+      std::vector<MassRow> mass_rows(n);
+      std::vector<NcpRow> ncp_rows(n);
+      std::vector<char> keeps_p;
       std::vector<Eigen::Triplet<double, int>> triplets;
-      SparseMatrix jac(static_cast<int>(2 * n), static_cast<int>(2 * n));
+      SparseMatrix jac(static_cast<int>(n), static_cast<int>(n));
       const Signature sig = signature_of(pr);
-      residual(pr, t, z, mass_scale, p_scale, f, nullptr);
+      residual(pr, t, z, mass_scale, p_scale, f, nullptr, nullptr);
       double merit = 0.5 * f.squaredNorm();
       std::deque<double> merits{merit};
       sum.iterations = 0;
@@ -385,8 +435,8 @@ struct ReynoldsSolver::Impl {
           sum.message = "converged: scaled residual " + std::to_string(sum.residual);
           break;
         }
-        triplets.clear();
-        residual(pr, t, z, mass_scale, p_scale, f, &triplets);
+        residual(pr, t, z, mass_scale, p_scale, f, &mass_rows, &ncp_rows);
+        reduced_system(mass_rows, ncp_rows, f, p_scale, keeps_p, triplets, rhs);
         jac.setFromTriplets(triplets.begin(), triplets.end());
         const auto t0 = Clock::now();
         LinearSolveStatus ls;
@@ -397,11 +447,17 @@ struct ReynoldsSolver::Impl {
           if (ls.ok) umfpack_signature = sig;
         }
         if (ls.ok) ls = umfpack->factorize(jac);
-        if (ls.ok) ls = umfpack->solve(-f, dz);
+        if (ls.ok) ls = umfpack->solve(rhs, x);
         linear_s += seconds_since(t0);
         if (!ls.ok) {
           sum.message = ls.message;
           break;
+        }
+        for (std::size_t u = 0; u < n; ++u) {
+          const NcpRow& c = ncp_rows[u];
+          const double xu = x[static_cast<Eigen::Index>(u)];
+          dz[2 * u] = keeps_p[u] ? xu : (-c.phi - c.beta * xu) / c.alpha;
+          dz[2 * u + 1] = keeps_p[u] ? (-c.phi - c.alpha * xu) / c.beta : xu;
         }
         ++sum.iterations;
         // Non-monotone Armijo back-tracking (Grippo, Lampariello & Lucidi 1986) on the merit
@@ -411,7 +467,7 @@ struct ReynoldsSolver::Impl {
         double step = 1.0;
         bool accepted = false;
         while (step >= options.min_step) {
-          residual(pr, t, z + step * dz, mass_scale, p_scale, f_trial, nullptr);
+          residual(pr, t, z + step * dz, mass_scale, p_scale, f_trial, nullptr, nullptr);
           const double trial = 0.5 * f_trial.squaredNorm();
           if (trial <= reference - 2.0 * options.armijo_constant * step * merit) {
             accepted = true;
