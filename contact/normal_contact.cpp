@@ -217,9 +217,9 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     // plastic cells lose it). Then p = clamp(y − c, 0, cap), the projection onto the
     // constraints, with c = 0 unless the clamped sum misses the load. Fused in one pass: the
     // clamp at c = 0, its sum, the count of cells that change set, and u − τ G t.
-    long changed = 0, entered = 0;
+    long changed = 0;
     double clamped_sum = 0.0;
-#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : changed, entered, clamped_sum) schedule(static)
+#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : changed, clamped_sum) schedule(static)
     for (Eigen::Index i = 0; i < n; ++i) {
       const double g = hp[i] + up[i] - delta;
       const bool was_free = pp[i] > 0.0 && pp[i] < cap;
@@ -227,7 +227,6 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
         yp[i] = cg_step ? pp[i] - step * tp[i] : pp[i];
       } else {
         yp[i] = pp[i] - step * g;
-        if ((pp[i] <= 0.0 && g < 0.0) || (pp[i] >= cap && g > 0.0)) ++entered;
       }
       const double v = std::clamp(yp[i], 0.0, cap);
       if (was_free != (v > 0.0 && v < cap) || (!was_free && v != pp[i])) ++changed;
@@ -246,7 +245,9 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       }
       changed += shifted_changed;
     }
-    conjugate = entered == 0 && cg_step;
+    // Conjugacy is kept through recovery steps: restarting CG whenever a cell enters, as
+    // Polonsky & Keer do, cost 2.4× (512²) to 3.7× (1024²) the iterations on rough surfaces.
+    conjugate = cg_step;
     if (changed == 0 && cg_step) {
       ++since_exact;  // same free set, nothing projected: u − τ G t is exact
     } else {
