@@ -1,5 +1,6 @@
 #include "contact/halfspace.h"
 
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>

@@ -1,12 +1,13 @@
 #include "contact/surface_io.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
-#include <map>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
