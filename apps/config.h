@@ -67,4 +67,15 @@ class ConfigTable {
   std::set<std::string> read_;
 };
 
+// Runs `build` (a library constructor or validator) and turns its std::invalid_argument into an
+// InputError naming the config key that holds the offending value.
+template <class F>
+auto input_guard(const ConfigTable& table, const std::string& key, F&& build) {
+  try {
+    return build();
+  } catch (const std::invalid_argument& e) {
+    table.fail(key, e.what());
+  }
+}
+
 }  // namespace tribo::cli

@@ -8,16 +8,6 @@
 namespace tribo::cli {
 namespace {
 
-// Library constructors validate physics and throw std::invalid_argument; name the table too.
-template <class F>
-auto with_context(const ConfigTable& table, const std::string& key, F&& build) {
-  try {
-    return build();
-  } catch (const std::invalid_argument& e) {
-    table.fail(key, e.what());
-  }
-}
-
 // Thesis Fig 5.2.1: v = 2.8e-2 in/s, where μs = 0.26 was measured.
 constexpr double kDefaultDriveSpeed_m_per_s = 7.112e-4;
 
@@ -30,7 +20,7 @@ rig::RigParameters read_rig_parameters(ConfigTable& t) {
   p.damping_N_s_per_m = t.number("damping_N_s_per_m", p.damping_N_s_per_m, Range::non_negative);
   p.normal_load_N = t.number("normal_load_N", p.normal_load_N, Range::positive);
   p.slider_radius_m = t.number("slider_radius_m", p.slider_radius_m, Range::positive);
-  with_context(t, "damping_N_s_per_m", [&] { rig::validate(p); return 0; });
+  input_guard(t, "damping_N_s_per_m", [&] { rig::validate(p); return 0; });
   return p;
 }
 
@@ -50,7 +40,7 @@ rig::Drive read_drive(ConfigTable* t, std::optional<double> speed) {
     const auto times = t->number_array("times_s", Range::non_negative);
     const auto speeds = t->number_array("speeds_m_per_s", Range::non_negative);
     if (times.empty()) t->fail("times_s", "is required for kind = \"" + kind + "\"");
-    drive = with_context(*t, "times_s", [&] {
+    drive = input_guard(*t, "times_s", [&] {
       return kind == "steps" ? rig::Drive::steps(times, speeds) : rig::Drive::table(times, speeds);
     });
   }
@@ -75,15 +65,15 @@ rig::FrictionModel read_friction_model(ConfigTable* t) {
     p.stribeck_speed_m_per_s = t->number("stribeck_speed_m_per_s", p.stribeck_speed_m_per_s, Range::positive);
     p.exponent = t->number("exponent", p.exponent, Range::positive);
     p.viscous_per_m_per_s = t->number("viscous_per_m_per_s", p.viscous_per_m_per_s, Range::non_negative);
-    model.baseline.kinetic = with_context(*t, "law", [&] { return std::make_shared<rig::StribeckCurve>(p); });
+    model.baseline.kinetic = input_guard(*t, "law", [&] { return std::make_shared<rig::StribeckCurve>(p); });
   } else {
     const auto speeds = t->number_array("speeds_m_per_s", Range::non_negative);
     const auto mu = t->number_array("mu_k", Range::non_negative);
-    model.baseline.kinetic = with_context(*t, "speeds_m_per_s", [&] { return std::make_shared<rig::TabulatedCurve>(speeds, mu); });
+    model.baseline.kinetic = input_guard(*t, "speeds_m_per_s", [&] { return std::make_shared<rig::TabulatedCurve>(speeds, mu); });
   }
   // effects = ["name", ...]; each may have a [friction.name] table of parameters.
   for (const std::string& name : t->string_array("effects")) {
-    const rig::EffectInfo& info = with_context(*t, "effects", [&]() -> const rig::EffectInfo& { return rig::effect_info(name); });
+    const rig::EffectInfo& info = input_guard(*t, "effects", [&]() -> const rig::EffectInfo& { return rig::effect_info(name); });
     if (model.has(name)) t->fail("effects", "effect \"" + name + "\" is listed twice");
     model.add(name);
     if (auto params = t->table(name)) {
@@ -103,7 +93,7 @@ rig::FrictionModel read_friction_model(ConfigTable* t) {
       t->fail(info.name, "parameters given for an effect not listed in friction.effects");
     }
   }
-  with_context(*t, "law", [&] { rig::validate(model); return 0; });
+  input_guard(*t, "law", [&] { rig::validate(model); return 0; });
   t->finish();
   return model;
 }
