@@ -123,12 +123,20 @@ def plot_demo(d):
 def plot_rig(d):
     wn = omega_n(d)
     rows = read_csv(os.path.join(d, "trace.csv"))
-    fig, ax = plt.subplots(figsize=(6, 5))
+    fig, (ax, af) = plt.subplots(1, 2, figsize=(11, 4.8))
     phase_plane(ax, rows, wn, "")
     ax.set_xlabel("displacement x (mm)")
     ax.set_ylabel("velocity / omega_n (mm)")
     ax.set_title("Phase plane (last 40 % of the run)")
     ax.grid(alpha=0.3)
+    t = column(rows, "t_s")
+    late = [i for i, ti in enumerate(t) if ti >= 0.6 * t[-1]]
+    af.plot([float(rows[i]["relative_velocity_m_per_s"]) for i in late],
+            [float(rows[i]["friction_N"]) for i in late], lw=0.8)
+    af.set_xlabel("relative velocity U = v - xdot (m/s)")
+    af.set_ylabel("measured friction (N)")
+    af.set_title("Friction against relative velocity")
+    af.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(os.path.join(d, "phase_plane.png"), dpi=110)
     plt.close(fig)
