@@ -318,6 +318,23 @@ NormalContactResult solve_mean_gap(ElasticHalfSpace& hs, const Eigen::ArrayXXd& 
   return solve(hs, h0, Control::approach, h0.mean() - mean_gap_m, opt, warm);
 }
 
+std::vector<LoadGapPoint> load_gap_curve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0,
+                                         const std::vector<double>& loads, const NormalContactOptions& opt) {
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    if (!(std::isfinite(loads[k]) && loads[k] > 0.0) || (k > 0 && !(loads[k] > loads[k - 1]))) {
+      throw std::invalid_argument("load-gap curve: loads must be positive, finite and strictly increasing");
+    }
+  }
+  std::vector<LoadGapPoint> curve;
+  Eigen::ArrayXXd warm;
+  for (double w : loads) {
+    const NormalContactResult r = solve_normal_load(hs, h0, w, opt, warm.size() > 0 ? &warm : nullptr);
+    curve.push_back({r.normal_load_N, r.mean_gap_m, r.approach_m, r.real_area_m2, r.summary});
+    warm = r.pressure_Pa;
+  }
+  return curve;
+}
+
 Eigen::ArrayXXd gap_from_heights(const Eigen::ArrayXXd& z) {
   if (z.size() == 0 || !z.allFinite()) throw std::invalid_argument("surface heights must be finite and non-empty");
   return z.maxCoeff() - z;

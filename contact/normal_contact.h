@@ -20,6 +20,7 @@
 
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "contact/halfspace.h"
 
@@ -81,6 +82,19 @@ NormalContactResult solve_approach(ElasticHalfSpace& halfspace, const Eigen::Arr
 NormalContactResult solve_mean_gap(ElasticHalfSpace& halfspace, const Eigen::ArrayXXd& gap0_m, double mean_gap_m,
                                    const NormalContactOptions& options = {},
                                    const Eigen::ArrayXXd* warm_start_Pa = nullptr);
+
+// The load–gap curve N_s(ḡ) that lubrication/ homogenises (DESIGN §1): load-controlled solves at
+// increasing loads, each warm-started from the previous pressure, all on the same profile.
+struct LoadGapPoint {
+  double normal_load_N = 0.0;
+  double mean_gap_m = 0.0;
+  double approach_m = 0.0;
+  double real_area_m2 = 0.0;
+  NormalContactSummary summary;
+};
+// Throws std::invalid_argument when the loads are not positive and strictly increasing.
+std::vector<LoadGapPoint> load_gap_curve(ElasticHalfSpace& halfspace, const Eigen::ArrayXXd& gap0_m,
+                                         const std::vector<double>& loads_N, const NormalContactOptions& options = {});
 
 // Initial gap of a rigid rough surface with heights z against a flat: h = max(z) − z.
 Eigen::ArrayXXd gap_from_heights(const Eigen::ArrayXXd& heights_m);

@@ -123,6 +123,29 @@ TEST(NormalContact, MeanGapControlHitsTheTargetOnAPeriodicGrid) {
   EXPECT_GT(r.area_fraction, 0.0);
 }
 
+// The load–gap curve is monotone, and load and mean-gap control agree on it: solving at a curve
+// point's mean gap gives back its load (to the solver tolerance, 1e-6 relative here).
+TEST(NormalContact, LoadGapCurveIsMonotoneAndConsistentWithGapControl) {
+  const auto sp = rough(64);
+  const Grid grid{64, 64, sp.size_m, sp.size_m};
+  ElasticHalfSpace hs(grid, kEStar, true);
+  const Eigen::ArrayXXd h = gap_from_heights(gaussian_surface(sp));
+  NormalContactOptions opt;
+  opt.tolerance = 1e-10;
+  const std::vector<LoadGapPoint> curve = load_gap_curve(hs, h, {0.5, 1.0, 2.0, 4.0, 8.0}, opt);
+  ASSERT_EQ(curve.size(), 5u);
+  for (std::size_t k = 0; k < curve.size(); ++k) {
+    ASSERT_TRUE(curve[k].summary.converged) << curve[k].summary.message;
+    if (k > 0) {
+      EXPECT_LT(curve[k].mean_gap_m, curve[k - 1].mean_gap_m);
+      EXPECT_GT(curve[k].real_area_m2, curve[k - 1].real_area_m2);
+    }
+  }
+  const NormalContactResult at_gap = solve_mean_gap(hs, h, curve[2].mean_gap_m, opt);
+  EXPECT_NEAR(at_gap.normal_load_N / curve[2].normal_load_N, 1.0, 1e-6);
+  EXPECT_THROW(load_gap_curve(hs, h, {1.0, 1.0}, opt), std::invalid_argument);
+}
+
 // Hyun, Pei, Molinari & Robbins, PRE 70 (2004) 026117: at small loads the real area of a
 // self-affine surface grows linearly, A = κ W / (E* h'_rms). Reported κ: √(8/π) ≈ 1.6 (Persson's
 // theory) to ≈ 2 (Hyun et al.), and up to ≈ 2.5 for grid-counted areas of FFT-BEM on surfaces
