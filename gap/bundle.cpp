@@ -1,0 +1,297 @@
+#include "gap/bundle.h"
+
+#include <toml++/toml.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace tribo::gap {
+namespace {
+
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(const fs::path& file, long line, const std::string& reason) {
+  std::string where = file.string();
+  if (line > 0) where += ":" + std::to_string(line);
+  throw std::invalid_argument(where + ": " + reason);
+}
+
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
+}
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
+  if (!line.empty() && line.back() == ',') out.emplace_back();
+  return out;
+}
+
+// A CSV table: header names and rows of cells, each row with its line number. Blank lines and
+// lines starting with '#' are skipped.
+struct CsvTable {
+  fs::path file;
+  std::vector<std::string> header;
+  std::vector<std::pair<long, std::vector<std::string>>> rows;
+
+  int column(const std::string& name) const {
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return static_cast<int>(i);
+    return -1;
+  }
+  int required(const std::string& name) const {
+    const int c = column(name);
+    if (c < 0) fail(file, 1, "missing required column '" + name + "'");
+    return c;
+  }
+  double number(long line, const std::vector<std::string>& row, int c) const {
+    const std::string& s = row[static_cast<std::size_t>(c)];
+    if (s.empty()) fail(file, line, "empty value in column '" + header[static_cast<std::size_t>(c)] + "'");
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0' || errno == ERANGE)
+      fail(file, line, "column '" + header[static_cast<std::size_t>(c)] + "': '" + s + "' is not a number");
+    if (!std::isfinite(v)) fail(file, line, "column '" + header[static_cast<std::size_t>(c)] + "': value is " + s + " (NaN and infinities are rejected)");
+    return v;
+  }
+};
+
+CsvTable read_csv(const fs::path& file, const std::set<std::string>& known, std::vector<std::string>& warnings) {
+  std::ifstream in(file);
+  if (!in) fail(file, 0, "cannot open file");
+  CsvTable t;
+  t.file = file;
+  std::string line;
+  long number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    const std::string s = trim(line);
+    if (s.empty() || s[0] == '#') continue;
+    if (t.header.empty()) {
+      t.header = split(s);
+      std::set<std::string> seen;
+      for (const auto& h : t.header) {
+        if (h.empty()) fail(file, number, "empty column name in header");
+        if (!seen.insert(h).second) fail(file, number, "duplicate column '" + h + "'");
+        if (!known.count(h)) warnings.push_back(file.string() + ": unknown column '" + h + "' ignored");
+      }
+      continue;
+    }
+    auto cells = split(s);
+    if (cells.size() != t.header.size())
+      fail(file, number, "expected " + std::to_string(t.header.size()) + " values, found " + std::to_string(cells.size()));
+    t.rows.emplace_back(number, std::move(cells));
+  }
+  if (t.header.empty()) fail(file, 0, "empty file (no header)");
+  if (t.rows.empty()) fail(file, 0, "no data rows");
+  return t;
+}
+
+Trace read_trace(const fs::path& file, std::vector<std::string>& warnings) {
+  const std::set<std::string> known{"t_s", "x_m", "xdot_m_per_s", "friction_N", "mu", "x_drive_m", "v_drive_m_per_s", "normal_stress_Pa"};
+  const CsvTable t = read_csv(file, known, warnings);
+  Trace tr;
+  const int ct = t.required("t_s");
+  const std::vector<std::pair<std::string, std::vector<double>*>> optional_columns{
+      {"x_m", &tr.x_m}, {"xdot_m_per_s", &tr.xdot_m_per_s}, {"friction_N", &tr.friction_N}, {"mu", &tr.mu},
+      {"x_drive_m", &tr.x_drive_m}, {"v_drive_m_per_s", &tr.v_drive_m_per_s}, {"normal_stress_Pa", &tr.normal_stress_Pa}};
+  if (t.column("friction_N") < 0 && t.column("mu") < 0 && t.column("x_m") < 0)
+    fail(file, 1, "missing columns: a trace needs a friction signal (friction_N, mu or x_m)");
+  if (t.column("x_drive_m") >= 0 && t.column("v_drive_m_per_s") < 0)
+    fail(file, 1, "missing column 'v_drive_m_per_s' (x_drive_m is given)");
+  for (const auto& [line, row] : t.rows) {
+    const double time = t.number(line, row, ct);
+    if (!tr.t_s.empty() && !(time > tr.t_s.back()))
+      fail(file, line, "time t_s = " + row[static_cast<std::size_t>(ct)] + " is not strictly increasing");
+    tr.t_s.push_back(time);
+    for (const auto& [name, column] : optional_columns) {
+      const int c = t.column(name);
+      if (c < 0) continue;
+      const double v = t.number(line, row, c);
+      if (name == "normal_stress_Pa" && v < 0.0) fail(file, line, "negative normal load: normal_stress_Pa = " + row[static_cast<std::size_t>(c)]);
+      if (name == "v_drive_m_per_s" && v < 0.0) fail(file, line, "negative drive speed v_drive_m_per_s = " + row[static_cast<std::size_t>(c)]);
+      column->push_back(v);
+    }
+  }
+  if (tr.t_s.size() < 3) fail(file, 0, "a trace needs at least 3 samples");
+  return tr;
+}
+
+std::optional<double> rig_key(const toml::table& rig, const std::string& key, const fs::path& file) {
+  const toml::node* n = rig.get(key);
+  if (!n) return std::nullopt;
+  const auto v = n->value<double>();
+  if (!v) fail(file, static_cast<long>(n->source().begin.line), "[rig] " + key + " must be a number");
+  if (!std::isfinite(*v) || *v < 0.0 || (key != "damping_N_s_per_m" && *v == 0.0))
+    fail(file, static_cast<long>(n->source().begin.line),
+         "[rig] " + key + " = " + std::to_string(*v) + (*v < 0.0 ? ": negative" : ": must be positive and finite") +
+             (key == "normal_load_N" && *v < 0.0 ? " normal load" : ""));
+  return v;
+}
+
+}  // namespace
+
+ExperimentBundle read_bundle(const fs::path& dir) {
+  if (!fs::is_directory(dir)) throw std::invalid_argument(dir.string() + ": not a directory (expected an experiment bundle)");
+  ExperimentBundle b;
+  b.name = fs::absolute(dir).lexically_normal().filename().string();
+  if (b.name.empty()) b.name = fs::absolute(dir).lexically_normal().parent_path().filename().string();
+
+  const fs::path toml_file = dir / "experiment.toml";
+  if (fs::exists(toml_file)) {
+    toml::table doc;
+    try {
+      doc = toml::parse_file(toml_file.string());
+    } catch (const toml::parse_error& e) {
+      fail(toml_file, static_cast<long>(e.source().begin.line), std::string(e.description()));
+    }
+    for (const auto& [key, node] : doc) {
+      const std::string k(key.str());
+      if (k != "rig" && k != "materials" && k != "lubricant" && k != "notes")
+        b.warnings.push_back(toml_file.string() + ": unknown table '" + k + "' ignored");
+    }
+    if (const toml::table* rig = doc["rig"].as_table()) {
+      b.mass_kg = rig_key(*rig, "mass_kg", toml_file);
+      b.stiffness_N_per_m = rig_key(*rig, "stiffness_N_per_m", toml_file);
+      b.damping_N_s_per_m = rig_key(*rig, "damping_N_s_per_m", toml_file);
+      b.normal_load_N = rig_key(*rig, "normal_load_N", toml_file);
+      b.slider_radius_m = rig_key(*rig, "slider_radius_m", toml_file);
+      if (const toml::node* kind = rig->get("kind")) {
+        const auto s = kind->value<std::string>();
+        if (!s || (*s != "pin_on_disc" && *s != "velocity_step"))
+          fail(toml_file, static_cast<long>(kind->source().begin.line), "[rig] kind must be \"pin_on_disc\" or \"velocity_step\"");
+        b.kind = *s;
+      }
+      const std::set<std::string> known{"mass_kg", "stiffness_N_per_m", "damping_N_s_per_m", "normal_load_N", "slider_radius_m", "kind"};
+      for (const auto& [key, node] : *rig)
+        if (!known.count(std::string(key.str())))
+          b.warnings.push_back(toml_file.string() + ": unknown key [rig] " + std::string(key.str()) + " ignored");
+    }
+  }
+
+  const fs::path static_file = dir / "static_friction.csv";
+  if (fs::exists(static_file)) {
+    const CsvTable t = read_csv(static_file, {"phi_dot_per_s", "mu_s"}, b.warnings);
+    const int cp = t.required("phi_dot_per_s"), cm = t.required("mu_s");
+    for (const auto& [line, row] : t.rows) {
+      StaticPoint p{t.number(line, row, cp), t.number(line, row, cm)};
+      if (!(p.phi_dot_per_s > 0.0)) fail(static_file, line, "phi_dot_per_s must be positive");
+      if (p.mu_s < 0.0) fail(static_file, line, "mu_s must not be negative");
+      b.static_points.push_back(p);
+    }
+  }
+
+  const fs::path runs_file = dir / "runs.csv";
+  if (fs::exists(runs_file)) {
+    const CsvTable t = read_csv(runs_file, {"run_id", "v_m_per_s", "file"}, b.warnings);
+    const int ci = t.required("run_id"), cv = t.required("v_m_per_s"), cf = t.required("file");
+    std::set<std::string> ids;
+    for (const auto& [line, row] : t.rows) {
+      Run r;
+      r.run_id = row[static_cast<std::size_t>(ci)];
+      if (r.run_id.empty() || !ids.insert(r.run_id).second) fail(runs_file, line, "run_id must be non-empty and unique");
+      r.v_m_per_s = t.number(line, row, cv);
+      if (r.v_m_per_s < 0.0) fail(runs_file, line, "negative driven speed v_m_per_s");
+      r.file = row[static_cast<std::size_t>(cf)];
+      if (r.file.empty()) fail(runs_file, line, "empty file name");
+      const fs::path trace_file = dir / r.file;
+      if (!fs::exists(trace_file)) fail(runs_file, line, "trace file '" + r.file + "' does not exist");
+      r.trace = read_trace(trace_file, b.warnings);
+      if (!r.trace.has_drive_history() && r.trace.xdot_m_per_s.empty() && r.trace.x_m.empty() && !(r.v_m_per_s > 0.0))
+        fail(runs_file, line, "driven speed must be positive");
+      b.runs.push_back(std::move(r));
+    }
+  }
+
+  const fs::path regimes_file = dir / "regimes.csv";
+  if (fs::exists(regimes_file)) {
+    const CsvTable t = read_csv(regimes_file, {"v_m_per_s", "regime", "amplitude_m", "frequency_rad_per_s"}, b.warnings);
+    const int cv = t.required("v_m_per_s"), cr = t.required("regime");
+    const int ca = t.column("amplitude_m"), cw = t.column("frequency_rad_per_s");
+    const std::set<std::string> regimes{"stick_slip", "multi_cycle_slip", "quasi_harmonic", "steady_sliding", "stuck"};
+    for (const auto& [line, row] : t.rows) {
+      RegimePoint p;
+      p.v_m_per_s = t.number(line, row, cv);
+      if (!(p.v_m_per_s > 0.0)) fail(regimes_file, line, "v_m_per_s must be positive");
+      p.regime = row[static_cast<std::size_t>(cr)];
+      if (!regimes.count(p.regime))
+        fail(regimes_file, line, "unknown regime '" + p.regime + "' (stick_slip, multi_cycle_slip, quasi_harmonic, steady_sliding, stuck)");
+      p.amplitude_m = ca >= 0 ? t.number(line, row, ca) : std::nan("");
+      p.frequency_rad_per_s = cw >= 0 ? t.number(line, row, cw) : std::nan("");
+      b.regimes.push_back(p);
+    }
+  }
+
+  if (b.static_points.empty() && b.runs.empty() && b.regimes.empty())
+    throw std::invalid_argument(dir.string() + ": no data (expected static_friction.csv, runs.csv or regimes.csv)");
+  return b;
+}
+
+void write_bundle(const ExperimentBundle& b, const fs::path& dir) {
+  fs::create_directories(dir / "traces");
+  auto open = [](const fs::path& p) {
+    std::ofstream os(p);
+    if (!os) throw std::runtime_error(p.string() + ": cannot write");
+    os << std::setprecision(10);
+    return os;
+  };
+  {
+    std::ofstream os = open(dir / "experiment.toml");
+    os << "[rig]\nkind = \"" << b.kind << "\"\n";
+    auto key = [&](const char* name, const std::optional<double>& v) {
+      if (v) os << name << " = " << *v << "\n";
+    };
+    key("mass_kg", b.mass_kg);
+    key("stiffness_N_per_m", b.stiffness_N_per_m);
+    key("damping_N_s_per_m", b.damping_N_s_per_m);
+    key("normal_load_N", b.normal_load_N);
+    key("slider_radius_m", b.slider_radius_m);
+  }
+  if (!b.static_points.empty()) {
+    std::ofstream os = open(dir / "static_friction.csv");
+    os << "phi_dot_per_s,mu_s\n";
+    for (const auto& p : b.static_points) os << p.phi_dot_per_s << "," << p.mu_s << "\n";
+  }
+  if (!b.runs.empty()) {
+    std::ofstream os = open(dir / "runs.csv");
+    os << "run_id,v_m_per_s,file\n";
+    for (const auto& r : b.runs) {
+      const std::string file = "traces/run_" + r.run_id + ".csv";
+      os << r.run_id << "," << r.v_m_per_s << "," << file << "\n";
+      std::ofstream tr = open(dir / file);
+      const Trace& t = r.trace;
+      const std::vector<std::pair<const char*, const std::vector<double>*>> cols{
+          {"t_s", &t.t_s}, {"x_m", &t.x_m}, {"xdot_m_per_s", &t.xdot_m_per_s}, {"friction_N", &t.friction_N}, {"mu", &t.mu},
+          {"x_drive_m", &t.x_drive_m}, {"v_drive_m_per_s", &t.v_drive_m_per_s}, {"normal_stress_Pa", &t.normal_stress_Pa}};
+      std::string sep;
+      for (const auto& [name, c] : cols)
+        if (!c->empty()) tr << std::exchange(sep, ",") << name;
+      tr << "\n";
+      for (std::size_t i = 0; i < t.t_s.size(); ++i) {
+        sep.clear();
+        for (const auto& [name, c] : cols)
+          if (!c->empty()) tr << std::exchange(sep, ",") << (*c)[i];
+        tr << "\n";
+      }
+    }
+  }
+  if (!b.regimes.empty()) {
+    std::ofstream os = open(dir / "regimes.csv");
+    os << "v_m_per_s,regime,amplitude_m,frequency_rad_per_s\n";
+    for (const auto& p : b.regimes) os << p.v_m_per_s << "," << p.regime << "," << p.amplitude_m << "," << p.frequency_rad_per_s << "\n";
+  }
+}
+
+}  // namespace tribo::gap

@@ -1,0 +1,466 @@
+#include "gap/compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+
+#include "rig/drive.h"
+#include "rig/instrument.h"
+#include "rig/observables.h"
+
+namespace tribo::gap {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kWindowStartFraction = 0.3;  // analysis skips the first 30 % of a run
+constexpr int kSlipDropPoints = 4;
+constexpr int kStepBins = 12;
+constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
+
+using Features = std::map<std::string, double>;
+
+struct Signal {
+  std::vector<double> t, mu, x, x_drive;  // x, x_drive may be empty
+};
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+double interp(const std::vector<double>& t, const std::vector<double>& y, double at) {
+  if (at <= t.front()) return y.front();
+  if (at >= t.back()) return kNaN;
+  const auto it = std::upper_bound(t.begin(), t.end(), at);
+  const std::size_t i = static_cast<std::size_t>(it - t.begin());
+  const double w = (at - t[i - 1]) / (t[i] - t[i - 1]);
+  return y[i - 1] + w * (y[i] - y[i - 1]);
+}
+
+std::vector<double> moving_average(const std::vector<double>& y, int half_width) {
+  std::vector<double> out(y.size());
+  const long n = static_cast<long>(y.size());
+  for (long i = 0; i < n; ++i) {
+    const long a = std::max(0L, i - half_width), b = std::min(n - 1, i + half_width);
+    double s = 0.0;
+    for (long j = a; j <= b; ++j) s += y[static_cast<std::size_t>(j)];
+    out[static_cast<std::size_t>(i)] = s / static_cast<double>(b - a + 1);
+  }
+  return out;
+}
+
+double mean(const std::vector<double>& v) {
+  if (v.empty()) return kNaN;
+  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+// Time average of y over [t_a, t_b] from the samples inside it.
+double window_mean(const std::vector<double>& t, const std::vector<double>& y, double t_a, double t_b) {
+  double s = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t_a && t[i] <= t_b) s += y[i], ++n;
+  return n ? s / n : kNaN;
+}
+
+// Friction maxima and minima of a constant-speed run, with hysteresis at 30 % / 70 % of the range.
+// `slip_step_s` ≤ 0 asks for the measured Δ (returned through it).
+Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::string* regime) {
+  Features f;
+  const double t0 = s.t.front() + kWindowStartFraction * (s.t.back() - s.t.front());
+  const std::vector<double> mu = moving_average(s.mu, 2);
+  std::vector<std::size_t> idx;
+  for (std::size_t i = 0; i < s.t.size(); ++i)
+    if (s.t[i] >= t0) idx.push_back(i);
+  if (idx.size() < 3) return f;
+  double lo_v = mu[idx.front()], hi_v = lo_v;
+  for (std::size_t i : idx) lo_v = std::min(lo_v, mu[i]), hi_v = std::max(hi_v, mu[i]);
+  std::vector<double> tw, muw;
+  for (std::size_t i : idx) tw.push_back(s.t[i]), muw.push_back(mu[i]);
+  f["mean_mu"] = mean(muw);
+  if (!s.x.empty()) {
+    double xa = s.x[idx.front()], xb = xa;
+    for (std::size_t i : idx) xa = std::min(xa, s.x[i]), xb = std::max(xb, s.x[i]);
+    f["peak_to_peak_m"] = xb - xa;
+  }
+  const double range = hi_v - lo_v;
+  if (!(range > 0.05 * std::abs(f["mean_mu"]))) {
+    if (regime) *regime = "steady_sliding";
+    return f;
+  }
+  const double hi = lo_v + 0.7 * range, lo = lo_v + 0.3 * range;
+  std::vector<std::size_t> peaks, troughs;
+  int state = 0;  // +1 above hi (tracking a maximum), −1 below lo (tracking a minimum)
+  std::size_t cand = 0;
+  for (std::size_t k = 0; k < tw.size(); ++k) {
+    if (muw[k] > hi) {
+      if (state != +1) {
+        if (state == -1) troughs.push_back(cand);
+        state = +1, cand = k;
+      } else if (muw[k] > muw[cand]) {
+        cand = k;
+      }
+    } else if (muw[k] < lo) {
+      if (state != -1) {
+        if (state == +1) peaks.push_back(cand);
+        state = -1, cand = k;
+      } else if (muw[k] < muw[cand]) {
+        cand = k;
+      }
+    }
+  }
+  if (peaks.empty()) {
+    if (regime) *regime = "steady_sliding";
+    return f;
+  }
+  if (regime) *regime = "stick_slip";
+  std::vector<double> mp, mt, rise, fall, period;
+  for (std::size_t p : peaks) mp.push_back(muw[p]);
+  for (std::size_t q : troughs) mt.push_back(muw[q]);
+  for (std::size_t i = 1; i < peaks.size(); ++i) period.push_back(tw[peaks[i]] - tw[peaks[i - 1]]);
+  for (std::size_t p : peaks) {
+    const auto next = std::upper_bound(troughs.begin(), troughs.end(), p);
+    if (next != troughs.end()) fall.push_back(tw[*next] - tw[p]);
+    if (next != troughs.begin()) rise.push_back(tw[p] - tw[*std::prev(next)]);
+  }
+  f["mu_peak"] = mean(mp);
+  if (!mt.empty()) f["mu_trough"] = mean(mt);
+  if (!period.empty()) f["period_s"] = mean(period);
+  if (!rise.empty()) f["rise_time_s"] = mean(rise);
+  if (slip_step_s <= 0.0 && !fall.empty()) slip_step_s = mean(fall) / kSlipDropPoints;
+  if (slip_step_s > 0.0) {
+    for (int j = 1; j <= kSlipDropPoints; ++j) {
+      std::vector<double> drops;
+      for (std::size_t p : peaks) {
+        const double m = interp(tw, muw, tw[p] + j * slip_step_s);
+        if (std::isfinite(m)) drops.push_back(muw[p] - m);
+      }
+      if (!drops.empty()) f["slip_drop_" + std::to_string(j)] = mean(drops);
+    }
+  }
+  return f;
+}
+
+// Velocity steps: steady μ per drive segment and μ − μ_before binned in load-point displacement.
+Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector<std::vector<double>>* edges_out) {
+  Features f;
+  const std::size_t segments = plan.step_times_s.size();
+  const double t_first = s.t.front();
+  auto segment_end = [&](std::size_t k) { return k + 1 < segments ? t_first + plan.step_times_s[k + 1] : s.t.back(); };
+  std::vector<double> steady(segments);
+  for (std::size_t k = 0; k < segments; ++k) {
+    const double a = t_first + plan.step_times_s[k], b = segment_end(k);
+    steady[k] = window_mean(s.t, s.mu, b - 0.3 * (b - a), b);
+    f["steady_mu_" + std::to_string(k)] = steady[k];
+  }
+  for (std::size_t k = 1; k < segments; ++k) {
+    const double t_step = t_first + plan.step_times_s[k], t_end = segment_end(k);
+    const double x_step = interp(s.t, s.x_drive, t_step);
+    std::vector<double> edges;
+    if (edges_out) {
+      const double span = (t_end >= s.t.back() ? s.x_drive.back() : interp(s.t, s.x_drive, t_end)) - x_step;
+      for (int j = 0; j <= kStepBins; ++j) edges.push_back(span * std::pow(static_cast<double>(j) / kStepBins, 2.0));
+      edges_out->push_back(edges);
+    } else {
+      edges = plan.step_bin_edges_m[k - 1];
+    }
+    std::vector<double> sum(kStepBins, 0.0);
+    std::vector<int> count(kStepBins, 0);
+    for (std::size_t i = 0; i < s.t.size(); ++i) {
+      if (s.t[i] < t_step || s.t[i] > t_end) continue;
+      const double d = s.x_drive[i] - x_step;
+      const auto it = std::upper_bound(edges.begin(), edges.end(), d);
+      if (it == edges.begin() || it == edges.end()) continue;
+      const std::size_t b = static_cast<std::size_t>(it - edges.begin()) - 1;
+      sum[b] += s.mu[i] - steady[k - 1];
+      ++count[b];
+    }
+    for (int j = 0; j < kStepBins; ++j)
+      if (count[static_cast<std::size_t>(j)]) f["after_step_" + std::to_string(k) + "_" + std::to_string(j)] = sum[static_cast<std::size_t>(j)] / count[static_cast<std::size_t>(j)];
+  }
+  return f;
+}
+
+std::string phase_of(const std::string& observable, int index, const std::string& regime) {
+  if (observable == "mu_peak" || observable == "mu_s_vs_load_rate") return "slip onset";
+  if (observable == "slip_drop") return index <= 2 ? "slip transient" : "late slip";
+  if (observable == "mu_trough") return "slip end";
+  if (observable == "rise_time_s") return "stick";
+  if (observable == "steady_mu") return "stable slip";
+  if (observable == "mu_after_step") return index < kStepBins / 2 ? "slip transient after step" : "stable slip after step";
+  if (observable == "mean_mu" && regime == "steady_sliding") return "stable slip";
+  return "cycle";
+}
+
+struct Simulated {
+  std::vector<rig::Sample> samples;
+  std::vector<rig::Event> events;
+  std::vector<double> friction_N;
+  rig::SimulationSummary summary;
+};
+
+Simulated run_simulation(const rig::RigParameters& rig, const rig::Drive& drive, const rig::FrictionLaw& law,
+                         const rig::FrictionModel& model, std::uint64_t seed, const rig::SimulationOptions& options) {
+  Simulated s;
+  rig::SimulationResult r = rig::simulate(rig, drive, law, options);
+  s.summary = r.summary;
+  s.samples = std::move(r.samples);
+  s.events = std::move(r.events);
+  if (!s.samples.empty()) s.friction_N = rig::measure_friction_N(rig, rig::instrument_from(model, seed), s.samples);
+  return s;
+}
+
+double median_spacing(const std::vector<double>& t) {
+  std::vector<double> d;
+  for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
+int samples_per_period(const rig::RigParameters& rig, double spacing_s) {
+  const double period = 2.0 * M_PI / rig.natural_frequency_rad_per_s();
+  return static_cast<int>(std::clamp(std::round(period / spacing_s), 1.0, 100.0));
+}
+
+}  // namespace
+
+Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters& rig) {
+  const double W = bundle.normal_load_N.value_or(rig.normal_load_N);
+  std::vector<std::size_t> order(bundle.runs.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bundle.runs[a].v_m_per_s < bundle.runs[b].v_m_per_s; });
+  auto add = [&](const std::string& observable, int index, const std::string& where, const std::string& regime, double v,
+                 int unit, double value, const std::string& key) {
+    Item it;
+    it.observable = observable;
+    it.where = where;
+    it.phase = phase_of(observable, index, regime);
+    it.regime = regime;
+    it.v_m_per_s = v;
+    it.unit = unit;
+    it.measured = value;
+    it.plan = static_cast<int>(plans_.size()) - 1;
+    it.key = key;
+    items_.push_back(it);
+  };
+
+  for (std::size_t r : order) {
+    const Run& run = bundle.runs[r];
+    const Trace& tr = run.trace;
+    Signal s;
+    s.t = tr.t_s;
+    if (!tr.mu.empty()) {
+      s.mu = tr.mu;
+    } else if (!tr.friction_N.empty()) {
+      for (double F : tr.friction_N) s.mu.push_back(F / W);
+    } else {
+      for (double x : tr.x_m) s.mu.push_back(rig.stiffness_N_per_m * x / W);
+    }
+    s.x = tr.x_m;
+    RunPlan plan;
+    plan.label = "run " + run.run_id;
+    plan.v_m_per_s = run.v_m_per_s;
+    plan.duration_s = tr.t_s.back() - tr.t_s.front();
+    plan.sample_spacing_s = median_spacing(tr.t_s);
+    if (tr.has_drive_history()) {
+      plan.kind = RunPlan::Kind::drive_history;
+      const double vmax = *std::max_element(tr.v_drive_m_per_s.begin(), tr.v_drive_m_per_s.end());
+      plan.step_times_s.push_back(0.0);
+      plan.step_speeds_m_per_s.push_back(tr.v_drive_m_per_s.front());
+      for (std::size_t i = 1; i < tr.t_s.size(); ++i)
+        if (std::abs(tr.v_drive_m_per_s[i] - tr.v_drive_m_per_s[i - 1]) > 1e-3 * vmax) {
+          plan.step_times_s.push_back(tr.t_s[i] - tr.t_s.front());
+          plan.step_speeds_m_per_s.push_back(tr.v_drive_m_per_s[i]);
+        }
+      if (!tr.x_drive_m.empty()) {
+        s.x_drive = tr.x_drive_m;
+      } else {
+        s.x_drive.assign(tr.t_s.size(), 0.0);
+        for (std::size_t i = 1; i < tr.t_s.size(); ++i)
+          s.x_drive[i] = s.x_drive[i - 1] + 0.5 * (tr.v_drive_m_per_s[i] + tr.v_drive_m_per_s[i - 1]) * (tr.t_s[i] - tr.t_s[i - 1]);
+      }
+      const Features f = analyse_drive_history(s, plan, &plan.step_bin_edges_m);
+      plans_.push_back(plan);
+      for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
+        const std::string key = "steady_mu_" + std::to_string(k);
+        if (f.count(key) && std::isfinite(f.at(key)))
+          add("steady_mu", 0, plan.label + ", v = " + fmt("%.3g", plan.step_speeds_m_per_s[k]) + " m/s", "steady_sliding",
+              plan.step_speeds_m_per_s[k], units_++, f.at(key), key);
+        if (k == 0) continue;
+        const auto& edges = plan.step_bin_edges_m[k - 1];
+        for (int j = 0; j < kStepBins; ++j) {
+          const std::string bin_key = "after_step_" + std::to_string(k) + "_" + std::to_string(j);
+          if (!f.count(bin_key)) continue;
+          add("mu_after_step", j,
+              fmt("%.3g", edges[static_cast<std::size_t>(j)] * 1e6) + "-" + fmt("%.3g", edges[static_cast<std::size_t>(j) + 1] * 1e6) +
+                  " um after step " + std::to_string(k),
+              "steady_sliding", plan.step_speeds_m_per_s[k], units_++, f.at(bin_key), bin_key);
+        }
+      }
+    } else {
+      plan.kind = RunPlan::Kind::constant_speed;
+      if (!(run.v_m_per_s > 0.0)) throw std::invalid_argument("run " + run.run_id + ": constant-speed trace needs v_m_per_s > 0");
+      std::string regime;
+      double step = 0.0;
+      const Features f = analyse_constant_speed(s, step, &regime);
+      plan.slip_step_s = step;
+      plans_.push_back(plan);
+      const std::string where = "v = " + fmt("%.3g", run.v_m_per_s) + " m/s";
+      const int unit = units_++;
+      for (const auto& [key, value] : f) {
+        if (!std::isfinite(value)) continue;
+        if (key.rfind("slip_drop_", 0) == 0) {
+          const int j = std::stoi(key.substr(10));
+          add("slip_drop", j, where + ", slip onset + " + std::to_string(j) + " x " + fmt("%.3g", step) + " s", regime, run.v_m_per_s, unit, value, key);
+        } else {
+          add(key, 0, where, regime, run.v_m_per_s, unit, value, key);
+        }
+      }
+    }
+  }
+
+  std::vector<StaticPoint> points = bundle.static_points;
+  std::stable_sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.phi_dot_per_s < b.phi_dot_per_s; });
+  for (const StaticPoint& p : points) {
+    RunPlan plan;
+    plan.kind = RunPlan::Kind::static_point;
+    plan.label = "phi_dot = " + fmt("%.3g", p.phi_dot_per_s) + " 1/s";
+    plan.v_m_per_s = p.phi_dot_per_s;  // a load rate; the speed follows from the simulated rig's k and W
+    plan.duration_s = (2.0 * p.mu_s + 0.2) / p.phi_dot_per_s;
+    plans_.push_back(plan);
+    add("mu_s_vs_load_rate", 0, plan.label, "static", p.phi_dot_per_s * W / rig.stiffness_N_per_m, units_++, p.mu_s, "mu_s");
+  }
+
+  std::vector<RegimePoint> regimes = bundle.regimes;
+  std::stable_sort(regimes.begin(), regimes.end(), [](const auto& a, const auto& b) { return a.v_m_per_s < b.v_m_per_s; });
+  for (const RegimePoint& p : regimes) {
+    RunPlan plan;
+    plan.kind = RunPlan::Kind::regime_point;
+    plan.label = "v = " + fmt("%.3g", p.v_m_per_s) + " m/s";
+    plan.regime = p.regime;
+    plan.v_m_per_s = p.v_m_per_s;
+    plans_.push_back(plan);
+    const int unit = units_++;
+    add("regime_mismatch", 0, plan.label + " (" + p.regime + ")", p.regime, p.v_m_per_s, unit, 0.0, "regime_mismatch");
+    if (std::isfinite(p.amplitude_m) && p.amplitude_m > 0.0)
+      add("amplitude_m", 0, plan.label, p.regime, p.v_m_per_s, unit, p.amplitude_m, "amplitude_m");
+    if (std::isfinite(p.frequency_rad_per_s) && p.frequency_rad_per_s > 0.0)
+      add("frequency_rad_per_s", 0, plan.label, p.regime, p.v_m_per_s, unit, p.frequency_rad_per_s, "frequency_rad_per_s");
+  }
+
+  if (items_.empty()) throw std::invalid_argument("bundle " + bundle.name + ": no usable measurement (no trace long enough to analyse)");
+
+  std::vector<double> speeds;
+  for (const Item& it : items_) speeds.push_back(it.v_m_per_s);
+  std::sort(speeds.begin(), speeds.end());
+  speeds.erase(std::unique(speeds.begin(), speeds.end()), speeds.end());
+  const double median = speeds[speeds.size() / 2];
+  for (Item& it : items_) it.speed_class = speeds.size() < 2 ? "all v" : (it.v_m_per_s < median ? "low v" : "high v");
+
+  std::map<std::string, std::pair<double, int>> sq;
+  for (const Item& it : items_) sq[it.observable].first += it.measured * it.measured, ++sq[it.observable].second;
+  for (const auto& [name, acc] : sq) {
+    const double rms = std::sqrt(acc.first / acc.second);
+    scales_.emplace_back(name, rms > 0.0 ? rms : 1.0);
+  }
+}
+
+double Comparison::scale(const std::string& observable) const {
+  for (const auto& [name, s] : scales_)
+    if (name == observable) return s;
+  throw std::invalid_argument("no observable " + observable);
+}
+
+std::vector<double> Comparison::residuals(const std::vector<double>& simulated) const {
+  std::vector<double> r(items_.size());
+  std::map<std::string, double> scale_of(scales_.begin(), scales_.end());
+  for (std::size_t i = 0; i < items_.size(); ++i) {
+    const Item& it = items_[i];
+    r[i] = std::isfinite(simulated[i]) ? (simulated[i] - it.measured) / scale_of.at(it.observable) : 1.0;
+  }
+  return r;
+}
+
+std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig::FrictionModel& model, std::uint64_t seed,
+                                        std::vector<SimulatedRun>* traces, const std::vector<bool>* items_needed) const {
+  std::vector<double> out(items_.size(), kNaN);
+  std::vector<bool> plan_needed(plans_.size(), items_needed == nullptr);
+  if (items_needed)
+    for (std::size_t i = 0; i < items_.size(); ++i)
+      if ((*items_needed)[i]) plan_needed[static_cast<std::size_t>(items_[i].plan)] = true;
+  const std::shared_ptr<const rig::FrictionLaw> law = rig::make_friction_law(model);
+  const double W = rig.normal_load_N, k = rig.stiffness_N_per_m;
+  for (std::size_t p = 0; p < plans_.size(); ++p) {
+    if (!plan_needed[p]) continue;
+    const RunPlan& plan = plans_[p];
+    Features f;
+    rig::SimulationOptions options;
+    options.max_events = 200'000;
+    try {
+      switch (plan.kind) {
+        case RunPlan::Kind::constant_speed:
+        case RunPlan::Kind::drive_history: {
+          const bool history = plan.kind == RunPlan::Kind::drive_history;
+          options.duration_s = plan.duration_s;
+          options.samples_per_period = history ? samples_per_period(rig, plan.sample_spacing_s) : kSamplesPerPeriod;
+          options.start_in_steady_sliding = history;
+          const rig::Drive drive = history ? rig::Drive::steps(plan.step_times_s, plan.step_speeds_m_per_s) : rig::Drive::constant(plan.v_m_per_s);
+          const Simulated sim = run_simulation(rig, drive, *law, model, seed, options);
+          if (!sim.summary.completed || sim.samples.size() < 3) break;
+          Signal s;
+          for (std::size_t i = 0; i < sim.samples.size(); ++i) {
+            if (!s.t.empty() && !(sim.samples[i].t_s > s.t.back())) continue;
+            s.t.push_back(sim.samples[i].t_s);
+            s.mu.push_back(sim.friction_N[i] / W);
+            s.x.push_back(sim.samples[i].x_m);
+            s.x_drive.push_back(sim.samples[i].drive_displacement_m);
+          }
+          if (history) {
+            f = analyse_drive_history(s, plan, nullptr);
+          } else {
+            double step = plan.slip_step_s;
+            f = analyse_constant_speed(s, step, nullptr);
+          }
+          if (traces) traces->push_back({plan.label, s.t, [&] { std::vector<double> F; for (double m : s.mu) F.push_back(m * W); return F; }(), s.mu});
+          break;
+        }
+        case RunPlan::Kind::static_point: {
+          const double v = plan.v_m_per_s * W / k;
+          options.duration_s = plan.duration_s;
+          const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(v), *law, options);
+          for (const rig::Event& e : r.events)
+            if (e.kind == rig::EventKind::breakaway) {
+              f["mu_s"] = e.mu;
+              break;
+            }
+          break;
+        }
+        case RunPlan::Kind::regime_point: {
+          const double mu_scale = std::max(model.baseline.mu_s, 0.05);
+          options.duration_s = std::clamp(6.0 * mu_scale * W / (k * plan.v_m_per_s) + 1.0, 1.0, 60.0);
+          const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(plan.v_m_per_s), *law, options);
+          if (!r.summary.completed) break;
+          const rig::RunObservables o = rig::summarise(rig, r.samples, r.events, 0.5 * r.summary.end_time_s);
+          f["regime_mismatch"] = o.regime == plan.regime ? 0.0 : 1.0;
+          f["amplitude_m"] = 0.5 * o.peak_to_peak_m;
+          if (std::isfinite(o.period_s) && o.period_s > 0.0) f["frequency_rad_per_s"] = 2.0 * M_PI / o.period_s;
+          break;
+        }
+      }
+    } catch (const std::invalid_argument&) {
+      // A parameter set the rig rejects (e.g. overdamped) has no prediction: residual 1.
+    }
+    for (std::size_t i = 0; i < items_.size(); ++i) {
+      if (items_[i].plan != static_cast<int>(p)) continue;
+      const auto it = f.find(items_[i].key);
+      if (it != f.end()) out[i] = it->second;
+    }
+  }
+  return out;
+}
+
+}  // namespace tribo::gap

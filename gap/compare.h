@@ -1,0 +1,96 @@
+// Like-with-like comparison of a bundle with a model (DESIGN §7).
+//
+// The measured side is analysed once into *items*: one number each, with the observable it
+// belongs to, where it lies (speed, cycle phase, slip after a step) and the split unit (the run or
+// static point it comes from). The model side is simulated under the same drive (a constant
+// driven speed, or the measured drive history for velocity steps), measured through the same
+// instrument model and analysed by the same code with the same windows and bins, so every item
+// has a simulated counterpart.
+//
+// Observables:
+//   mu_peak            mean μ at the friction maxima of a run (breakaway, static friction)
+//   mu_trough          mean μ at the friction minima (end of slip)
+//   slip_drop          μ_peak − μ(t_peak + jΔ), j = 1..4: the friction after slip onset, Δ = a
+//                      quarter of the measured peak-to-trough time
+//   rise_time_s        time from a minimum to the next maximum (the stick time of stick-slip)
+//   period_s           mean time between maxima
+//   peak_to_peak_m     range of the slider displacement x
+//   mean_mu            time-averaged μ
+//   mu_s_vs_load_rate  μs at breakaway from rest at the load rate φ̇ of static_friction.csv
+//   regime_mismatch    0 when the simulated regime is the measured one, else 1 (regimes.csv)
+//   amplitude_m, frequency_rad_per_s  from regimes.csv
+//   steady_mu          μ over the last 30 % of each drive segment (velocity steps)
+//   mu_after_step      μ − μ_before-step, averaged over bins of load-point displacement after a
+//                      step (bins finer near the step)
+// Runs use the part of the trace after 30 % of its duration (start-up transient excluded).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gap/bundle.h"
+#include "rig/friction_model.h"
+#include "rig/parameters.h"
+#include "rig/simulator.h"
+
+namespace tribo::gap {
+
+struct Item {
+  std::string observable;
+  std::string where;    // human label: "v = 5.0e-03 m/s", "0-12 um after step 1", ...
+  std::string phase;    // stick, slip onset, slip transient, slip end, cycle, stable slip, static
+  std::string regime;   // measured regime of the run the item comes from
+  std::string speed_class;  // "low v" or "high v" (below / above the median driven speed)
+  double v_m_per_s = 0.0;   // driven speed the item was measured at
+  int unit = 0;         // split unit: items of one unit go to the same split
+  double measured = 0.0;
+  int plan = 0;         // the simulation that produces it
+  std::string key;      // its name in that simulation's analysis
+};
+
+// One simulation that reproduces one measurement.
+struct RunPlan {
+  enum class Kind { constant_speed, drive_history, static_point, regime_point } kind = Kind::constant_speed;
+  std::string label;
+  std::string regime;                                     // measured regime (regime points)
+  double v_m_per_s = 0.0;
+  double duration_s = 0.0;
+  std::vector<double> step_times_s, step_speeds_m_per_s;  // drive history (velocity steps)
+  double sample_spacing_s = 0.0;                          // measured median spacing
+  double slip_step_s = 0.0;                               // Δ of slip_drop (from the measured run)
+  std::vector<std::vector<double>> step_bin_edges_m;      // per step: displacement bin edges
+};
+
+struct SimulatedRun {
+  std::string label;
+  std::vector<double> t_s, friction_N, mu;  // as measured by the instrument model
+};
+
+class Comparison {
+ public:
+  // `rig` supplies what the bundle leaves out (normal load for μ = F/W, ...). Throws
+  // std::invalid_argument when the bundle yields no usable item.
+  Comparison(const ExperimentBundle& bundle, const rig::RigParameters& rig);
+
+  const std::vector<Item>& items() const { return items_; }
+  int units() const { return units_; }
+
+  // Simulated value of every item (NaN where the simulation does not show the feature, e.g. a
+  // run that stays in steady sliding has no friction maxima). Thread-safe. With `items_needed`,
+  // only the simulations that produce those items run (the others stay NaN).
+  std::vector<double> predict(const rig::RigParameters& rig, const rig::FrictionModel& model, std::uint64_t seed,
+                              std::vector<SimulatedRun>* traces = nullptr, const std::vector<bool>* items_needed = nullptr) const;
+
+  // Dimensionless residuals (sim − measured)/scale(observable); 1 where the simulation is NaN.
+  std::vector<double> residuals(const std::vector<double>& simulated) const;
+  double scale(const std::string& observable) const;
+
+ private:
+  std::vector<Item> items_;
+  std::vector<RunPlan> plans_;
+  std::vector<std::pair<std::string, double>> scales_;
+  int units_ = 0;
+};
+
+}  // namespace tribo::gap

@@ -1,0 +1,113 @@
+// Sim-to-real gap diagnosis (DESIGN §7, §8): where the model and the measurements disagree,
+// which unmodelled catalogue effect closes the gap, and how far it shrinks on held-out data.
+//
+// Gap. Every measured item i (compare.h) has a residual r_i = (sim_i − meas_i) / s_o, with s_o the
+// RMS of the measured values of its observable o (r_i = 1 when the simulation lacks the feature).
+//     gap_o = sqrt(mean_{i in o} r_i²),     gap = mean_o gap_o,
+// over the items of a split: the gap is a relative RMS error, 0.1 = the model is off by 10 % of
+// the observable's typical size, averaged so that every observable weighs the same.
+//
+// Split. Items carry a unit (a run, a static point, a bin after a step); units are numbered in
+// order of speed / bin, even units train, odd units are held out.
+//
+// Procedure.
+//  1. Calibrate the model's own free parameters on train (μs, μk, rig keys the model lacks).
+//  2. For each catalogue effect not in the model: add it, fit its parameters together with the
+//     baseline ones on train (Ceres, bounded, forward numeric differences over simulate(), several
+//     starts), evaluate on held-out.
+//  3. Criterion on held-out:  C = n_h ln(S_after / S_before) + p ln(n_h), S the sum of squared
+//     weighted residuals, n_h the number of held-out items, p the effect's fitted parameters (BIC
+//     form). A candidate earns its parameters when C < 0 and it cuts the held-out gap by at least
+//     `min_relative_shrink` and by at least `min_gap_reduction`. If the best single closes less than `pair_threshold` of the gap, the
+//     two best singles are fitted together.
+//  4. Verdict: the earning candidate with the lowest C, else "none". Confidence: share of
+//     bootstrap resamples of the held-out units that give the same verdict.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gap/bundle.h"
+#include "gap/compare.h"
+#include "rig/friction_model.h"
+#include "rig/parameters.h"
+
+namespace tribo::gap {
+
+struct DiagnosisOptions {
+  int starts = 2;                      // fits per candidate: the defaults, then random points in the bounds
+  int max_iterations = 12;             // Levenberg-Marquardt iterations per start
+  double min_relative_shrink = 0.2;    // an effect must cut the held-out gap by this fraction
+  double min_gap_reduction = 0.005;    // and by this much: 0.5 % of the observables' size is within sensor noise
+  double pair_threshold = 0.5;         // pairs are tried when the best single closes less than this
+  int bootstrap_samples = 200;
+  std::uint64_t seed = 1;              // random starts, bootstrap, instrument noise
+  std::vector<std::string> calibrate_rig;  // rig keys the model leaves out: stiffness_N_per_m, damping_N_s_per_m
+  std::vector<std::string> candidates;     // empty: every catalogue effect not in the model
+  std::function<void(const std::string&)> progress;  // called after each fit (any thread, serialised)
+  // Returns an empty string when valid, else why not.
+  std::string invalid_reason() const;
+};
+
+struct GapBreakdown {
+  double gap = 0.0;
+  std::map<std::string, double> by_observable, by_regime, by_phase, by_speed;
+};
+
+struct Localization {
+  std::string observable, where, worst_item;
+  double share = 0.0;  // of the baseline's summed squared residuals
+};
+
+struct Candidate {
+  std::vector<std::string> effects;
+  std::map<std::string, double> params;  // "effect.parameter" → fitted value (plus refitted baseline)
+  int extra_parameters = 0;
+  double train_gap = 0.0, heldout_gap_before = 0.0, heldout_gap_after = 0.0;
+  double criterion = 0.0;
+  bool earns = false;
+  std::map<std::string, double> heldout_after_by_observable;
+  rig::FrictionModel model;
+  rig::RigParameters rig;
+  std::vector<double> residuals;
+};
+
+struct Verdict {
+  std::vector<std::string> effects;  // empty: "none"
+  double heldout_gap_before = 0.0, heldout_gap_after = 0.0, heldout_gap_after_std = 0.0;
+  double confidence = 0.0;
+  std::string conclusion;            // one sentence a tribologist can act on
+};
+
+struct Diagnosis {
+  std::vector<Item> items;
+  std::vector<bool> heldout;          // per item
+  bool has_heldout = true;            // false: one unit only, the "held-out" gap is in-sample
+  rig::FrictionModel calibrated;      // baseline after calibration
+  rig::RigParameters rig;
+  std::map<std::string, double> calibrated_params;
+  GapBreakdown baseline, baseline_heldout;
+  std::vector<double> baseline_residuals, measured, baseline_simulated, best_simulated;
+  std::vector<Localization> localization;
+  std::vector<Candidate> candidates;  // best first
+  Verdict verdict;
+};
+
+// `model_rig` is the model's rig with the bundle's [rig] keys applied by the caller (apply_bundle_rig).
+Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& model_rig, const rig::FrictionModel& model,
+                   const DiagnosisOptions& options);
+
+// The model's rig with every [rig] key the bundle gives.
+rig::RigParameters apply_bundle_rig(const ExperimentBundle& bundle, rig::RigParameters rig);
+
+// gap_report.json content (keys of DESIGN §7 plus details).
+nlohmann::json report_json(const Diagnosis& d);
+
+std::string verdict_name(const std::vector<std::string>& effects);  // "none", "a" or "a+b"
+
+}  // namespace tribo::gap

@@ -1,0 +1,174 @@
+#include "gap/selftest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "contact/junction_locus.h"
+#include "rig/drive.h"
+#include "rig/instrument.h"
+#include "rig/simulator.h"
+
+namespace tribo::gap {
+namespace {
+
+double log_uniform(std::mt19937_64& rng, double a, double b) {
+  return std::exp(std::uniform_real_distribution<double>(std::log(a), std::log(b))(rng));
+}
+double uniform(std::mt19937_64& rng, double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
+
+// Random physical parameters, strong enough to matter on the thesis rig at the synthetic speeds.
+void switch_on(rig::FrictionModel& m, const std::string& effect, std::mt19937_64& rng, const rig::RigParameters& rig,
+               const SyntheticOptions& o) {
+  if (effect == "rate_dependent_static") {
+    contact::JunctionLocus shape;
+    const double mu_s_max = uniform(rng, 0.45, 0.6);
+    shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, shape.alpha);
+    const double v_mid = o.speeds_m_per_s[o.speeds_m_per_s.size() / 2];
+    const double phi_mid = rig.stiffness_N_per_m * v_mid / rig.normal_load_N;
+    const double mu_mid = m.baseline.mu_s + uniform(rng, 0.0, 0.05);
+    m.set(effect, "mu_s_max", mu_s_max);
+    m.set(effect, "location_per_s", contact::location_through_point_per_s(shape, phi_mid, mu_mid));
+  } else if (effect == "strain_rate_hardening") {
+    m.set(effect, "m", uniform(rng, 0.12, 0.25));
+    m.set(effect, "reference_load_rate_per_s", rig.stiffness_N_per_m * o.speeds_m_per_s.front() / rig.normal_load_N);
+  } else if (effect == "slip_transient") {
+    m.set(effect, "amplitude", uniform(rng, 0.6, 1.0));
+    m.set(effect, "decay_distance_m", log_uniform(rng, 3e-4, 1.5e-3));
+  } else if (effect == "viscous_friction") {
+    m.set(effect, "coefficient_N_s_per_m", uniform(rng, 40.0, 90.0));
+  } else if (effect == "squeeze_film") {
+    m.set(effect, "film_fraction", uniform(rng, 0.4, 0.7));
+    m.set(effect, "build_up_distance_m", log_uniform(rng, 5e-4, 3e-3));
+  } else if (effect == "hydrodynamic_lift") {
+    m.set(effect, "max_fraction", uniform(rng, 0.3, 0.5));
+    m.set(effect, "half_speed_m_per_s", log_uniform(rng, 0.03, 0.1));
+  } else if (effect == "thermal_thinning") {
+    m.set(effect, "traction_coefficient_N_s_per_m", uniform(rng, 250.0, 500.0));
+    m.set(effect, "thermal_speed_m_per_s", log_uniform(rng, 0.015, 0.04));
+  } else if (effect == "instrument") {
+    const double g = uniform(rng, 1.15, 1.3);
+    m.set(effect, "gain", std::uniform_int_distribution<int>(0, 1)(rng) ? g : 1.0 / g);
+    m.set(effect, "lag_s", uniform(rng, 1e-3, 3e-3));
+  } else {
+    throw std::invalid_argument("selftest: unknown effect '" + effect + "'");
+  }
+}
+
+}  // namespace
+
+ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::FrictionModel& truth, const SyntheticOptions& o,
+                                   std::uint64_t seed) {
+  ExperimentBundle b;
+  b.name = "synthetic";
+  b.mass_kg = rig.mass_kg;
+  b.stiffness_N_per_m = rig.stiffness_N_per_m;
+  b.damping_N_s_per_m = rig.damping_N_s_per_m;
+  b.normal_load_N = rig.normal_load_N;
+  b.slider_radius_m = rig.slider_radius_m;
+  const auto law = rig::make_friction_law(truth);
+  rig::InstrumentModel instrument = rig::instrument_from(truth, seed);
+  const double mu_k = truth.baseline.kinetic ? truth.baseline.mu_s : truth.baseline.mu_k;
+  instrument.noise_N = o.noise_fraction * mu_k * rig.normal_load_N;
+  std::mt19937_64 rng(seed ^ 0x5bd1e995ULL);
+  std::normal_distribution<double> noise(0.0, instrument.noise_N);
+  for (std::size_t k = 0; k < o.speeds_m_per_s.size(); ++k) {
+    rig::SimulationOptions so;
+    so.duration_s = o.duration_s;
+    so.samples_per_period = o.samples_per_period;
+    const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(o.speeds_m_per_s[k]), *law, so);
+    if (!r.summary.completed) throw std::runtime_error("selftest: synthetic run did not complete: " + r.summary.message);
+    instrument.seed = seed * 1000 + k;
+    const std::vector<double> F = rig::measure_friction_N(rig, instrument, r.samples);
+    Run run;
+    run.run_id = std::to_string(k);
+    run.v_m_per_s = o.speeds_m_per_s[k];
+    for (std::size_t i = 0; i < r.samples.size(); ++i) {
+      if (!run.trace.t_s.empty() && !(r.samples[i].t_s > run.trace.t_s.back())) continue;
+      run.trace.t_s.push_back(r.samples[i].t_s);
+      run.trace.x_m.push_back(r.samples[i].x_m);
+      run.trace.xdot_m_per_s.push_back(r.samples[i].xdot_m_per_s);
+      run.trace.friction_N.push_back(F[i]);
+    }
+    b.runs.push_back(std::move(run));
+    int written = 0;
+    for (const rig::Event& e : r.events) {
+      if (e.kind != rig::EventKind::breakaway || e.t_s < 0.3 * o.duration_s || written >= o.static_points_per_run) continue;
+      b.static_points.push_back({e.load_rate_per_s, instrument.gain * e.mu + noise(rng) / rig.normal_load_N});
+      ++written;
+    }
+  }
+  return b;
+}
+
+SyntheticCase make_synthetic_case(const std::string& true_effect, const std::vector<std::string>& model_effects, std::uint64_t seed,
+                                  const SyntheticOptions& o) {
+  std::mt19937_64 rng(seed);
+  const rig::RigParameters rig;  // the thesis rig
+  SyntheticCase c;
+  c.true_effect = true_effect;
+  c.truth.baseline.mu_s = uniform(rng, 0.28, 0.36);
+  c.truth.baseline.mu_k = uniform(rng, 0.16, 0.21);
+  for (const auto& e : model_effects) switch_on(c.truth, e, rng, rig, o);
+  c.model = c.truth;
+  if (true_effect != "none") switch_on(c.truth, true_effect, rng, rig, o);
+  // The model the diagnosis receives is miscalibrated: calibration must find μs and μk first.
+  c.model.baseline.mu_s *= 1.15;
+  c.model.baseline.mu_k *= 0.9;
+  c.bundle = synthesize_bundle(rig, c.truth, o, seed);
+  return c;
+}
+
+std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed) {
+  std::vector<SelftestCase> cases;
+  const std::vector<std::string> quick_effects{"slip_transient", "viscous_friction", "hydrodynamic_lift", "rate_dependent_static"};
+  const std::vector<std::string> all_effects{"rate_dependent_static", "slip_transient", "viscous_friction", "squeeze_film",
+                                             "hydrodynamic_lift", "thermal_thinning", "instrument"};
+  const int seeds = quick ? 1 : 3;
+  for (int s = 0; s < seeds; ++s) {
+    for (const auto& e : quick ? quick_effects : all_effects) cases.push_back({e, {}, seed + 100 * s + cases.size()});
+    cases.push_back({"none", {}, seed + 100 * s + 50});
+    if (!quick) cases.push_back({"strain_rate_hardening", {"rate_dependent_static"}, seed + 100 * s + 60});
+  }
+  if (quick) cases.push_back({"none", {}, seed + 77});
+  return cases;
+}
+
+SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis,
+                            const std::function<void(const SelftestRow&)>& on_row) {
+  SelftestResult out;
+  int effect_cases = 0, effect_right = 0, controls = 0, controls_none = 0;
+  std::map<std::string, std::pair<double, int>> shrink;
+  for (const SelftestCase& sc : cases) {
+    const SyntheticCase c = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
+    diagnosis.seed = sc.seed;
+    const rig::RigParameters rig = apply_bundle_rig(c.bundle, rig::RigParameters{});
+    const Diagnosis d = diagnose(c.bundle, rig, c.model, diagnosis);
+    SelftestRow row;
+    row.c = sc;
+    row.verdict = verdict_name(d.verdict.effects);
+    row.heldout_gap_before = d.verdict.heldout_gap_before;
+    row.heldout_gap_after = d.verdict.heldout_gap_after;
+    row.confidence = d.verdict.confidence;
+    row.correct = row.verdict == sc.true_effect;
+    ++out.confusion[sc.true_effect][row.verdict];
+    if (sc.true_effect == "none") {
+      ++controls, controls_none += row.correct;
+    } else {
+      ++effect_cases, effect_right += row.correct;
+      if (row.correct) {
+        shrink[sc.true_effect].first += 1.0 - row.heldout_gap_after / row.heldout_gap_before;
+        ++shrink[sc.true_effect].second;
+      }
+    }
+    out.rows.push_back(row);
+    if (on_row) on_row(row);
+  }
+  out.identified_fraction = effect_cases ? static_cast<double>(effect_right) / effect_cases : 1.0;
+  out.controls_none_fraction = controls ? static_cast<double>(controls_none) / controls : 1.0;
+  for (const auto& [e, s] : shrink) out.mean_shrink[e] = s.first / s.second;
+  return out;
+}
+
+}  // namespace tribo::gap
