@@ -314,7 +314,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
       t = t_reached;
       std::copy(cv.state().begin(), cv.state().end(), y.begin());
       if (flag == CV_ROOT_RETURN) {
-        emit_sample();
+        emit_sample();  // the state at the event, before the switch: times stay strictly increasing
         if (m.phase == Phase::stick) {
           const auto found = cv.roots_found(2);
           breakaway(found[0] != 0 ? +1 : -1);
@@ -322,7 +322,6 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
           velocity_match();
         }
         settle();
-        emit_sample();
         next_sample = t + (m.phase == Phase::stick ? dt_stick : dt_slip);
         break;
       }

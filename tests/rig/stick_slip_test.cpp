@@ -80,9 +80,14 @@ TEST(StickSlip, FrictionWorkEqualsDampingDissipationOverACycle) {
     const Sample &a = r.samples[i - 1], &b = r.samples[i];
     if (a.t_s < t0 || b.t_s > t1) continue;
     const double dt = b.t_s - a.t_s;
-    friction_work += 0.5 * (a.friction_N * a.xdot_m_per_s + b.friction_N * b.xdot_m_per_s) * dt;
+    // A sample at an event holds the state before the switch; on [a, b] the new phase's force acts:
+    // constant μk W in a Coulomb slip, k x + r v on entering a stick.
+    const double fa = a.phase == b.phase          ? a.friction_N
+                      : b.phase == Phase::slip    ? b.friction_N
+                                                  : rig.stiffness_N_per_m * a.x_m + rig.damping_N_s_per_m * v;
+    friction_work += 0.5 * (fa * a.xdot_m_per_s + b.friction_N * b.xdot_m_per_s) * dt;
     damping_work += 0.5 * rig.damping_N_s_per_m * (a.xdot_m_per_s * a.xdot_m_per_s + b.xdot_m_per_s * b.xdot_m_per_s) * dt;
-    gross += 0.5 * std::abs(a.friction_N * a.xdot_m_per_s + b.friction_N * b.xdot_m_per_s) * dt;
+    gross += 0.5 * std::abs(fa * a.xdot_m_per_s + b.friction_N * b.xdot_m_per_s) * dt;
   }
   // Trapezoid error with 2000 samples per period: (2π/2000)²/12 ≈ 1e-6 of the gross work.
   EXPECT_NEAR(friction_work, damping_work, 1e-5 * gross);
