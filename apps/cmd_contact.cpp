@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+#include <omp.h>
 
 #include "apps/commands.h"
 #include "apps/config.h"
@@ -197,8 +198,14 @@ void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayX
   f.commit();
 }
 
+// [solver] threads caps both FFTW's threads and the OpenMP loops of the solver.
+void apply_thread_count(int threads) {
+  if (threads > 0) omp_set_num_threads(threads);
+}
+
 void run_contact(const ContactArgs& args) {
   const ContactRun run = load_contact_run(args.config, false);
+  apply_thread_count(run.threads);
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
   const auto start = std::chrono::steady_clock::now();
@@ -273,6 +280,7 @@ void run_contact(const ContactArgs& args) {
 
 void run_junction(const ContactArgs& args) {
   const ContactRun run = load_contact_run(args.config, true);
+  apply_thread_count(run.threads);
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
   const auto start = std::chrono::steady_clock::now();
