@@ -55,6 +55,20 @@ TEST(RigConfig, BadInputsNameTheKeyAndTheReason) {
   expect_error("[rig\nmass_kg = 1\n", {"malformed TOML"});
 }
 
+TEST(RigConfig, DriveTableFromCsvIsInterpolatedAndBadRowsNameTheLine) {
+  write_config("drive.csv", "t_s,v_m_per_s\n0,1e-3\n2,3e-3\n");
+  const RigRun run = load_rig_run(write_config("table.toml", "[drive]\nkind = \"table\"\nfile = \"drive.csv\"\n"));
+  EXPECT_DOUBLE_EQ(run.drive->speed_m_per_s(1.0), 2e-3);
+  EXPECT_DOUBLE_EQ(run.drive->displacement_m(2.0), 4e-3);
+  write_config("drive.csv", "t_s,v_m_per_s\n0,1e-3\n2,-3e-3\n");
+  try {
+    load_rig_run(write_config("table.toml", "[drive]\nkind = \"table\"\nfile = \"drive.csv\"\n"));
+    ADD_FAILURE() << "negative speed accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("drive.csv:3"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RigConfig, MissingFileIsAnInputError) {
   EXPECT_THROW(load_rig_run("/nonexistent/tribo.toml"), InputError);
 }
