@@ -12,7 +12,13 @@ function(tribo_add_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS "unit;${ARG_LABELS}")
+  # gtest_discover_tests cannot pass a list through PROPERTIES: one label per target.
+  if(ARG_LABELS)
+    set(label ${ARG_LABELS})
+  else()
+    set(label unit)
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${label})
 endfunction()
 
 # tribo_add_bench(name SOURCES ... DEPENDS ...): one Google Benchmark executable (not a test).
