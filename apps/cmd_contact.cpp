@@ -55,15 +55,6 @@ struct ContactRun {
   contact::JunctionLocus locus;
 };
 
-template <class F>
-auto with_context(const ConfigTable& table, const std::string& key, F&& build) {
-  try {
-    return build();
-  } catch (const std::invalid_argument& e) {
-    table.fail(key, e.what());
-  }
-}
-
 ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
   const toml::table doc = parse_toml_file(path);
   ConfigTable root(doc, path.string(), "");
@@ -113,7 +104,7 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
       p.correlation_length_m = surface->required_number("correlation_length_m", Range::positive);
       p.correlation_length_across_m = surface->number("correlation_length_across_m", 0.0, Range::non_negative);
     }
-    const Eigen::ArrayXXd z = with_context(*surface, "kind", [&] { return contact::gaussian_surface(p); });
+    const Eigen::ArrayXXd z = input_guard(*surface, "kind", [&] { return contact::gaussian_surface(p); });
     run.stats = contact::surface_statistics(z, p.size_m, p.size_m);
     run.gap0_m = contact::gap_from_heights(z);
   } else {
@@ -121,7 +112,7 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
     const std::filesystem::path file = std::filesystem::path(rel).is_absolute() ? std::filesystem::path(rel)
                                                                                 : path.parent_path() / rel;
     const double scale = surface->number("height_scale", 1.0, Range::positive);
-    const contact::Topography topo = with_context(*surface, "path", [&] { return contact::read_topography(file, scale); });
+    const contact::Topography topo = input_guard(*surface, "path", [&] { return contact::read_topography(file, scale); });
     double lx = topo.lx_m, ly = topo.ly_m;
     if (lx == 0.0) {
       if (!size_m) root.fail("domain", "[domain] size_m is required for a surface file without coordinates");
@@ -177,10 +168,10 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
       run.locus.location_per_s = j->number("location_per_s", run.locus.location_per_s, Range::positive);
       j->finish();
     }
-    run.locus.sigma0_over_tau_i = with_context(root, "junction", [&] {
+    run.locus.sigma0_over_tau_i = input_guard(root, "junction", [&] {
       return contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, run.alpha);
     });
-    with_context(root, "junction", [&] { contact::validate(run.locus); return 0; });
+    input_guard(root, "junction", [&] { contact::validate(run.locus); return 0; });
   } else if (root.has("junction")) {
     root.accept("junction");
   }
