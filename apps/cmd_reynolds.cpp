@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -16,6 +17,7 @@
 #include "apps/commands.h"
 #include "apps/config.h"
 #include "apps/output.h"
+#include "contact/normal_contact.h"
 #include "contact/surface.h"
 #include "contact/surface_io.h"
 #include "lubrication/flow_factors.h"
@@ -147,8 +149,17 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
     run.geometry.update({{"file", gap_path.string()}, {"dx_m", dx}, {"dy_m", dy}, {"gap_rate_m_per_s", rate}});
   } else {
     // Upper surface: the worn slider; lower: the disc (Appendix V). Both Gaussian, the same
-    // spectrum shape, independent seeds (lower = seed + 1).
-    const double mean_gap = g->required_number("mean_gap_m", Range::positive);
+    // spectrum shape, independent seeds (upper = seed + 1). Rigid surfaces at `mean_gap_m`, or
+    // pressed together by `contact_load_N` on an elastic(-plastic) periodic half-space
+    // (contact/normal_contact.h) — the film then fills the deformed gap.
+    const bool rigid = g->has("mean_gap_m");
+    if (rigid == g->has("contact_load_N"))
+      g->fail("mean_gap_m", "give exactly one of mean_gap_m (rigid surfaces) and contact_load_N (deformed by contact)");
+    const double mean_gap = rigid ? g->required_number("mean_gap_m", Range::positive) : 0.0;
+    const double contact_load = rigid ? 0.0 : g->required_number("contact_load_N", Range::positive);
+    const double e_star = g->number("composite_modulus_Pa", contact::composite_modulus_Pa(206.8e9, 0.3, 206.8e9, 0.3),
+                                    Range::positive);
+    const double hardness = g->number("hardness_Pa", std::numeric_limits<double>::infinity(), Range::positive);
     const double floor_fraction = g->number("contact_gap_fraction", 1e-3, Range::positive);
     const double upper_rq = g->number("upper_rms_height_m", kSliderRq_m, Range::non_negative);
     contact::GaussianSurfaceParams p = read_surface(*g, "lower_rms_height_m", kDiscRq_m, n, 1e-3);
@@ -162,19 +173,43 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
       upper = contact::gaussian_surface(q);
     }
     const double sigma = std::hypot(upper_rq, lower_rq);
-    std::vector<double> up(upper.data(), upper.data() + upper.size()), lo(lower.data(), lower.data() + lower.size());
+    std::vector<double> h;
     std::size_t touching = 0;
+    if (rigid) {
+      std::vector<double> up(upper.data(), upper.data() + upper.size()), lo(lower.data(), lower.data() + lower.size());
+      h = with_context(*g, "mean_gap_m", [&] {
+        return lub::rough_pair_gap_m(up, lo, mean_gap, floor_fraction * sigma, &touching);
+      });
+    } else {
+      // Separation s = const + upper − lower; as a rigid profile against a flat its initial gap is
+      // s − min s, i.e. gap_from_heights(lower − upper).
+      contact::ElasticHalfSpace halfspace(contact::Grid{n, n, p.size_m, p.size_m}, e_star, true);
+      contact::NormalContactOptions copt;
+      copt.pressure_cap_Pa = hardness;
+      const Eigen::ArrayXXd gap0 = contact::gap_from_heights(lower - upper);
+      const contact::NormalContactResult c =
+          with_context(*g, "contact_load_N", [&] { return contact::solve_normal_load(halfspace, gap0, contact_load, copt); });
+      if (!c.summary.converged) g->fail("contact_load_N", "contact solve did not converge: " + c.summary.message);
+      h.resize(static_cast<std::size_t>(c.gap_m.size()));
+      for (Eigen::Index k = 0; k < c.gap_m.size(); ++k) {
+        h[static_cast<std::size_t>(k)] = std::max(c.gap_m(k), floor_fraction * sigma);
+        if (c.gap_m(k) < floor_fraction * sigma) ++touching;
+      }
+      run.geometry.update({{"contact_load_N", contact_load},
+                           {"composite_modulus_Pa", e_star},
+                           {"contact_area_fraction", c.area_fraction},
+                           {"contact_mean_gap_m", c.mean_gap_m},
+                           {"contact_iterations", c.summary.iterations}});
+    }
     // The periodic surface wraps along x: one more node closes the period for the p = 0 ends.
-    const std::vector<double> h = with_context(*g, "mean_gap_m", [&] {
-      return lub::rough_pair_gap_m(up, lo, mean_gap, floor_fraction * sigma, &touching);
-    });
     run.problem.grid = lub::Grid{n + 1, n, p.size_m / n, p.size_m / n};
     run.problem.gap_m.resize(run.problem.grid.size());
     for (int j = 0; j < n; ++j)
       for (int i = 0; i <= n; ++i)
         run.problem.gap_m[run.problem.grid.index(i, j)] = h[static_cast<std::size_t>(j) * n + (i % n)];
     run.problem.boundary_y = lub::BoundaryY::periodic;
-    run.geometry.update({{"mean_gap_m", mean_gap},
+    if (rigid) run.geometry["mean_gap_m"] = mean_gap;
+    run.geometry.update({{"rigid", rigid},
                          {"composite_rms_height_m", sigma},
                          {"upper_rms_height_m", upper_rq},
                          {"lower_rms_height_m", lower_rq},
