@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "lubrication/reynolds.h"
@@ -140,6 +141,36 @@ INSTANTIATE_TEST_SUITE_P(NcpFunctions, JfoCavitation,
                          [](const auto& info) {
                            return info.param == Complementarity::minimum ? "minimum" : "fischer_burmeister";
                          });
+
+// Outcomes are data: a Newton budget too small to converge is reported (converged = false with
+// the reason), not thrown and not silently returned as an answer.
+TEST(JfoCavitationOutcome, IterationLimitIsReported) {
+  FourStep ref{};
+  const ReynoldsProblem pr = four_step_problem(201, ref);
+  ReynoldsOptions options;
+  options.max_newton_iterations = 1;
+  const ReynoldsSolution s = solve_reynolds(pr, options);
+  EXPECT_FALSE(s.summary.converged);
+  EXPECT_EQ(s.summary.iterations, 1);
+  EXPECT_GT(s.summary.residual, options.newton_tolerance);
+  EXPECT_NE(s.summary.message.find("iteration limit"), std::string::npos) << s.summary.message;
+}
+
+// Symbolic analyses are reused across cavitating solves with the same pattern: one CHOLMOD
+// (full-film start) and one UMFPACK analysis for three speeds of the same sign; the loads scale
+// exactly with U (homogeneity, to the Newton tolerance).
+TEST(JfoCavitationOutcome, SymbolicAnalysesReusedAcrossSolves) {
+  FourStep ref{};
+  ReynoldsProblem pr = four_step_problem(201, ref);
+  ReynoldsSolver solver;
+  const double w1 = solver.solve(pr).load_N;
+  pr.sliding_speed_m_per_s *= 2.0;
+  const double w2 = solver.solve(pr).load_N;
+  pr.sliding_speed_m_per_s *= 2.0;
+  solver.solve(pr);
+  EXPECT_EQ(solver.symbolic_analyses(), 2);
+  EXPECT_NEAR(w2 / w1, 2.0, 2e-8);
+}
 
 // A rough gap mirror-symmetric about the middle of the film, h(x, y) = h(L − x, y):
 // without cavitation p(x) = −p(L − x) (the mirror of a solution solves the problem with U
