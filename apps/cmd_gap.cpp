@@ -1,8 +1,259 @@
-// Placeholder registration; replaced by the gap subcommand implementation.
+// `tribo gap diagnose --experiment DIR --model MODEL.toml --out OUT`: where a model and a measured
+// experiment bundle disagree, which catalogue effect closes the gap and by how much (gap/diagnosis.h).
+// `tribo gap selftest [--out OUT] [--quick]`: the diagnosis on synthetic bundles with a withheld effect.
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
 #include "apps/commands.h"
+#include "apps/config.h"
+#include "apps/output.h"
+#include "apps/rig_config.h"
+#include "apps/rig_output.h"
+#include "gap/bundle.h"
+#include "gap/diagnosis.h"
+#include "gap/selftest.h"
 
 namespace tribo::cli {
+namespace {
 
-void add_gap_command(CLI::App& app) { app.add_subcommand("gap", "(not yet available)"); }
+struct DiagnoseArgs {
+  std::string experiment, model, out = "out/gap";
+  std::uint64_t seed = 1;
+  bool quick = false, plot = true;
+};
+
+struct SelftestArgs {
+  std::string out = "out/gap-selftest";
+  std::uint64_t seed = 1;
+  bool quick = false;
+};
+
+gap::DiagnosisOptions fitting_options(bool quick, std::uint64_t seed) {
+  gap::DiagnosisOptions o;
+  o.seed = seed;
+  if (quick) {
+    o.max_iterations = 8;
+    o.bootstrap_samples = 100;
+  }
+  return o;
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+// The model: [rig] and [friction] of a `tribo rig` config ([drive] and [run] are not used: the
+// drive comes from the data). Rig keys the model leaves out are returned for calibration.
+struct Model {
+  rig::RigParameters rig;
+  rig::FrictionModel friction;
+  std::vector<std::string> missing_rig_keys;
+};
+
+Model load_model(const std::string& path) {
+  const toml::table doc = parse_toml_file(path);
+  ConfigTable root(doc, path, "");
+  Model m;
+  std::optional<ConfigTable> rig_table = root.table("rig");
+  for (const char* key : {"stiffness_N_per_m", "damping_N_s_per_m", "mass_kg"})
+    if (!rig_table || !rig_table->has(key)) m.missing_rig_keys.push_back(key);
+  if (rig_table) {
+    m.rig = read_rig_parameters(*rig_table);
+    rig_table->accept("drive_speed_m_per_s");
+    rig_table->finish();
+  }
+  std::optional<ConfigTable> friction = root.table("friction");
+  m.friction = read_friction_model(friction ? &*friction : nullptr);
+  if (friction) friction->finish();
+  root.accept("drive");
+  root.accept("run");
+  root.finish();
+  return m;
+}
+
+void write_overlays(const std::filesystem::path& path, const gap::ExperimentBundle& bundle, const std::vector<gap::SimulatedRun>& before,
+                    const std::vector<gap::SimulatedRun>& after, double W) {
+  AtomicFile f(path);
+  auto& os = f.stream();
+  os << "run,source,t_s,mu\n";
+  for (const gap::Run& r : bundle.runs) {
+    const gap::Trace& t = r.trace;
+    for (std::size_t i = 0; i < t.t_s.size(); ++i) {
+      const double mu = !t.mu.empty() ? t.mu[i] : !t.friction_N.empty() ? t.friction_N[i] / W : std::nan("");
+      if (std::isfinite(mu)) os << "run " << r.run_id << ",measured," << t.t_s[i] - t.t_s.front() << "," << mu << "\n";
+    }
+  }
+  for (const auto& [runs, source] : {std::pair{&before, "baseline"}, std::pair{&after, "with effect"}})
+    for (const gap::SimulatedRun& r : *runs)
+      for (std::size_t i = 0; i < r.t_s.size(); ++i) os << r.label << "," << source << "," << r.t_s[i] << "," << r.mu[i] << "\n";
+  f.commit();
+}
+
+std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, const nlohmann::json& j) {
+  std::ostringstream md;
+  md << "# Gap report: " << args.experiment << " vs " << args.model << "\n\n";
+  md << "**Conclusion.** " << d.verdict.conclusion << "\n\n";
+  md << "Command: `tribo gap diagnose --experiment " << args.experiment << " --model " << args.model << " --out " << args.out
+     << (args.quick ? " --quick" : "") << "`\n\n";
+  md << "## Definition\n\n" << j["gap_definition"].get<std::string>()
+     << ". Items are split by unit (run, static point, bin after a step) in order of speed: even units train, odd units held out"
+     << (d.has_heldout ? "" : " (this bundle has a single unit: held-out numbers are in-sample)") << ".\n\n";
+  md << "## Baseline after calibration\n\n";
+  for (const auto& [k, v] : d.calibrated_params) md << "- " << k << " = " << fmt("%.4g", v) << "\n";
+  md << "\nGap (all items) " << fmt("%.4g", d.baseline.gap) << ", held-out " << fmt("%.4g", d.baseline_heldout.gap) << ".\n\n";
+  md << "| observable | gap |\n|---|---|\n";
+  for (const auto& [k, v] : d.baseline.by_observable) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
+  md << "\n| phase | gap |\n|---|---|\n";
+  for (const auto& [k, v] : d.baseline.by_phase) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
+  md << "\n| regime / speed | gap |\n|---|---|\n";
+  for (const auto& [k, v] : d.baseline.by_regime) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
+  for (const auto& [k, v] : d.baseline.by_speed) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
+  md << "\n## Where the gap lies (share of the baseline's squared residual)\n\n| observable | where | share | worst item |\n|---|---|---|---|\n";
+  for (std::size_t i = 0; i < d.localization.size() && i < 8; ++i) {
+    const auto& l = d.localization[i];
+    md << "| " << l.observable << " | " << l.where << " | " << fmt("%.1f %%", 100.0 * l.share) << " | " << l.worst_item << " |\n";
+  }
+  md << "\n## Candidates (best first)\n\n| effect | fitted parameters | train gap | held-out before | held-out after | criterion | earns |\n|---|---|---|---|---|---|---|\n";
+  for (const auto& c : d.candidates) {
+    std::string params;
+    for (const auto& [k, v] : c.params) params += (params.empty() ? "" : ", ") + k + " = " + fmt("%.3g", v);
+    md << "| " << gap::verdict_name(c.effects) << " | " << params << " | " << fmt("%.4g", c.train_gap) << " | " << fmt("%.4g", c.heldout_gap_before)
+       << " | " << fmt("%.4g", c.heldout_gap_after) << " | " << fmt("%.1f", c.criterion) << " | " << (c.earns ? "yes" : "no") << " |\n";
+  }
+  md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict.effects) << "`: held-out gap " << fmt("%.4g", d.verdict.heldout_gap_before) << " -> "
+     << fmt("%.4g", d.verdict.heldout_gap_after) << " (bootstrap std " << fmt("%.2g", d.verdict.heldout_gap_after_std) << "), confidence "
+     << fmt("%.0f %%", 100.0 * d.verdict.confidence) << ".\n\n";
+  md << "Plots: `gap_by_observable.png` (bar chart), `items.png` (measured vs simulated, before / after), `overlay.png` (traces).\n";
+  return md.str();
+}
+
+void run_diagnose(const DiagnoseArgs& args) {
+  gap::ExperimentBundle bundle;
+  try {
+    bundle = gap::read_bundle(args.experiment);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(e.what());
+  }
+  for (const auto& w : bundle.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
+  const Model model = load_model(args.model);
+  gap::DiagnosisOptions o = fitting_options(args.quick, args.seed);
+  for (const std::string& key : model.missing_rig_keys) {
+    const bool in_bundle = key == "stiffness_N_per_m" ? bundle.stiffness_N_per_m.has_value()
+                           : key == "damping_N_s_per_m" ? bundle.damping_N_s_per_m.has_value()
+                                                        : bundle.mass_kg.has_value();
+    if (!in_bundle && key == "stiffness_N_per_m") o.calibrate_rig.push_back(key);
+  }
+  const rig::RigParameters rig = gap::apply_bundle_rig(bundle, model.rig);
+  make_output_dir(args.out);
+  const std::filesystem::path dir(args.out);
+  int candidates = 0;
+  for (const auto& e : rig::effect_catalogue()) candidates += !model.friction.has(e.name);
+  Progress progress("gap: fitting", candidates + 2);
+  o.progress = [&](const std::string& what) { progress.step(what); };
+  gap::Diagnosis d;
+  try {
+    d = gap::diagnose(bundle, rig, model.friction, o);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(args.experiment + ": " + e.what());
+  }
+  progress.done();
+  const nlohmann::json j = report_json(d);
+  write_file_atomically(dir / "gap_report.json", j.dump(2) + "\n");
+  write_file_atomically(dir / "report.md", markdown_report(d, args, j));
+
+  const gap::Comparison comparison(bundle, rig);
+  std::vector<gap::SimulatedRun> before, after;
+  comparison.predict(d.rig, d.calibrated, args.seed, &before);
+  if (!d.verdict.effects.empty()) {
+    comparison.predict(d.candidates.front().rig, d.candidates.front().model, args.seed, &after);
+  }
+  write_overlays(dir / "overlay.csv", bundle, before, after, rig.normal_load_N);
+  std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %.0f %%) -> %s\n", d.verdict.conclusion.c_str(),
+              gap::verdict_name(d.verdict.effects).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
+              100.0 * d.verdict.confidence, args.out.c_str());
+  if (args.plot && run_plot_script("gap '" + args.out + "'") != 0)
+    std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
+}
+
+void run_selftest(const SelftestArgs& args) {
+  make_output_dir(args.out);
+  const std::filesystem::path dir(args.out);
+  const std::vector<gap::SelftestCase> cases = gap::selftest_cases(args.quick, args.seed);
+  Progress progress(args.quick ? "gap selftest (quick)" : "gap selftest", static_cast<int>(cases.size()));
+  const gap::SelftestResult r = gap::run_selftest(cases, gap::SyntheticOptions{}, fitting_options(args.quick, args.seed),
+                                                  [&](const gap::SelftestRow& row) { progress.step(row.c.true_effect + " -> " + row.verdict); });
+  progress.done();
+  std::set<std::string> verdicts;
+  for (const auto& [t, row] : r.confusion)
+    for (const auto& [v, n] : row) verdicts.insert(v);
+  std::ostringstream table;
+  table << "true \\ verdict";
+  for (const auto& v : verdicts) table << "," << v;
+  table << "\n";
+  for (const auto& [t, row] : r.confusion) {
+    table << t;
+    for (const auto& v : verdicts) table << "," << (row.count(v) ? row.at(v) : 0);
+    table << "\n";
+  }
+  write_file_atomically(dir / "confusion.csv", table.str());
+  nlohmann::json j;
+  j["quick"] = args.quick;
+  j["seed"] = args.seed;
+  j["identified_fraction"] = r.identified_fraction;
+  j["controls_none_fraction"] = r.controls_none_fraction;
+  j["mean_heldout_shrink"] = r.mean_shrink;
+  j["confusion"] = r.confusion;
+  j["cases"] = nlohmann::json::array();
+  for (const auto& row : r.rows)
+    j["cases"].push_back({{"true_effect", row.c.true_effect},
+                          {"model_effects", row.c.model_effects},
+                          {"seed", row.c.seed},
+                          {"verdict", row.verdict},
+                          {"heldout_gap_before", row.heldout_gap_before},
+                          {"heldout_gap_after", row.heldout_gap_after},
+                          {"confidence", row.confidence},
+                          {"correct", row.correct}});
+  write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");
+  std::printf("%-24s %-18s %-40s %10s %10s\n", "true effect", "model has", "verdict", "gap before", "gap after");
+  for (const auto& row : r.rows) {
+    std::string has;
+    for (const auto& e : row.c.model_effects) has += (has.empty() ? "" : "+") + e;
+    std::printf("%-24s %-18s %-40s %10.4f %10.4f %s\n", row.c.true_effect.c_str(), has.empty() ? "-" : has.c_str(), row.verdict.c_str(),
+                row.heldout_gap_before, row.heldout_gap_after, row.correct ? "" : "  <- wrong");
+  }
+  std::printf("\nconfusion matrix (rows: true effect, columns: verdict)\n%s", table.str().c_str());
+  std::printf("\nidentified %.0f %% of withheld effects; controls answering none %.0f %%\n", 100.0 * r.identified_fraction,
+              100.0 * r.controls_none_fraction);
+  for (const auto& [e, s] : r.mean_shrink) std::printf("  mean held-out gap shrink, %s: %.0f %%\n", e.c_str(), 100.0 * s);
+  std::printf("-> %s\n", args.out.c_str());
+}
+
+}  // namespace
+
+void add_gap_command(CLI::App& app) {
+  CLI::App* gap = app.add_subcommand("gap", "Sim-to-real gap: where a model and measurements disagree, which effect closes it");
+  gap->require_subcommand(1);
+
+  auto diagnose_args = std::make_shared<DiagnoseArgs>();
+  CLI::App* diagnose = gap->add_subcommand("diagnose", "Diagnose an experiment bundle (DESIGN §7) against a `tribo rig` model config");
+  diagnose->add_option("--experiment", diagnose_args->experiment, "Experiment bundle directory")->required();
+  diagnose->add_option("--model", diagnose_args->model, "Model TOML ([rig], [friction] as for `tribo rig`)")->required();
+  diagnose->add_option("--out", diagnose_args->out, "Output directory")->capture_default_str();
+  diagnose->add_option("--seed", diagnose_args->seed, "Seed of random starts, bootstrap and instrument noise")->capture_default_str();
+  diagnose->add_flag("--quick", diagnose_args->quick, "Fewer iterations per fit");
+  diagnose->add_flag("!--no-plot", diagnose_args->plot, "Skip the PNG plots");
+  diagnose->callback([diagnose_args] { run_diagnose(*diagnose_args); });
+
+  auto selftest_args = std::make_shared<SelftestArgs>();
+  CLI::App* selftest = gap->add_subcommand("selftest", "Withheld-effect validation on synthetic bundles: confusion matrix and gap shrink");
+  selftest->add_option("--out", selftest_args->out, "Output directory")->capture_default_str();
+  selftest->add_option("--seed", selftest_args->seed, "Seed of the synthetic cases")->capture_default_str();
+  selftest->add_flag("--quick", selftest_args->quick, "The reduced CI set (one seed, four effects, two controls)");
+  selftest->callback([selftest_args] { run_selftest(*selftest_args); });
+}
 
 }  // namespace tribo::cli

@@ -214,6 +214,41 @@ Simulated run_simulation(const rig::RigParameters& rig, const rig::Drive& drive,
   return s;
 }
 
+// A velocity step as the rig sees it: the first segment starts in steady sliding; at every step
+// the contact re-locks and the slider is carried by the surface from where it is until the
+// spring force reaches the static limit (it breaks away, re-arming slip-history effects). This
+// stands for the finite machine stiffness of a velocity-step apparatus, where the load point
+// speeds up and the stress rises elastically before the interface slips faster.
+Simulated simulate_steps(const rig::RigParameters& rig, const RunPlan& plan, const rig::FrictionLaw& law, const rig::FrictionModel& model,
+                         std::uint64_t seed, rig::SimulationOptions options) {
+  Simulated all;
+  all.summary.completed = true;
+  double t_offset = 0.0, x_drive_offset = 0.0, x_end = 0.0;
+  for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
+    const double t_end = k + 1 < plan.step_times_s.size() ? plan.step_times_s[k + 1] : plan.duration_s;
+    options.duration_s = t_end - plan.step_times_s[k];
+    options.start_in_steady_sliding = k == 0;
+    options.initial_displacement_m = x_end;
+    const Simulated seg = run_simulation(rig, rig::Drive::constant(plan.step_speeds_m_per_s[k]), law, model, seed + k, options);
+    if (!seg.summary.completed || seg.samples.empty()) {
+      all.summary = seg.summary;
+      all.summary.completed = false;
+      return all;
+    }
+    for (std::size_t i = 0; i < seg.samples.size(); ++i) {
+      rig::Sample s = seg.samples[i];
+      s.t_s += t_offset;
+      s.drive_displacement_m += x_drive_offset;
+      all.samples.push_back(s);
+      all.friction_N.push_back(seg.friction_N[i]);
+    }
+    t_offset += options.duration_s;
+    x_drive_offset = all.samples.back().drive_displacement_m;
+    x_end = seg.samples.back().x_m;
+  }
+  return all;
+}
+
 double median_spacing(const std::vector<double>& t) {
   std::vector<double> d;
   for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
@@ -408,8 +443,12 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
           options.duration_s = plan.duration_s;
           options.samples_per_period = history ? samples_per_period(rig, plan.sample_spacing_s) : kSamplesPerPeriod;
           options.start_in_steady_sliding = history;
-          const rig::Drive drive = history ? rig::Drive::steps(plan.step_times_s, plan.step_speeds_m_per_s) : rig::Drive::constant(plan.v_m_per_s);
-          const Simulated sim = run_simulation(rig, drive, *law, model, seed, options);
+          Simulated sim;
+          if (history) {
+            sim = simulate_steps(rig, plan, *law, model, seed, options);
+          } else {
+            sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), *law, model, seed, options);
+          }
           if (!sim.summary.completed || sim.samples.size() < 3) break;
           Signal s;
           for (std::size_t i = 0; i < sim.samples.size(); ++i) {

@@ -11,6 +11,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "contact/junction_locus.h"
+
 namespace tribo::gap {
 namespace {
 
@@ -29,7 +31,9 @@ struct FitParameter {
   }
   double coordinate(double v) const {
     v = std::clamp(v, lower, upper);
-    return 1.0 + (log ? std::log(v / lower) / std::log(upper / lower) : (v - lower) / (upper - lower));
+    const double w = log ? std::log(v / lower) / std::log(upper / lower) : (v - lower) / (upper - lower);
+    // Starts lie inside the box so that a forward difference never lands on a bound and sees no slope.
+    return 1.0 + std::clamp(w, 0.02, 0.98);
   }
   std::string label() const {
     switch (target) {
@@ -331,7 +335,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     guess.model.baseline.mu_k = std::clamp(mu_k, 0.05 * guess.model.baseline.mu_s, guess.model.baseline.mu_s);
   }
   DiagnosisOptions calibration = o;
-  calibration.max_iterations = 2 * o.max_iterations;
+  calibration.max_iterations = std::max(50, 2 * o.max_iterations);  // few parameters: converge fully, so no
+                                                                    // candidate wins by mere recalibration
   FitResult calibrated = fit(comparison, base_space, Setup{model_rig, model}, train, calibration, o.seed, 1, base_space.size());
   if (const FitResult from_guess = fit(comparison, base_space, guess, train, calibration, o.seed, 1, base_space.size());
       from_guess.cost < calibrated.cost)
@@ -378,6 +383,21 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     Setup start{d.rig, d.calibrated};
     for (const auto& e : effects) {
       start.model.add(e);
+      if (e == "rate_dependent_static") {
+        // Start the locus through the calibrated μs at the median load rate of the data.
+        std::vector<double> v;
+        for (const Item& it : d.items) v.push_back(it.v_m_per_s);
+        std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+        const double phi = d.rig.stiffness_N_per_m * v[v.size() / 2] / d.rig.normal_load_N;
+        contact::JunctionLocus shape;
+        const double mu_s_max = std::max(start.model.get("rate_dependent_static", "mu_s_max"), 1.2 * d.calibrated.baseline.mu_s);
+        shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, shape.alpha);
+        if (phi > 0.0 && d.calibrated.baseline.mu_s < mu_s_max) {
+          start.model.set("rate_dependent_static", "mu_s_max", mu_s_max);
+          start.model.set("rate_dependent_static", "location_per_s",
+                          std::clamp(contact::location_through_point_per_s(shape, phi, d.calibrated.baseline.mu_s), 1e-5, 1e5));
+        }
+      }
       for (FitParameter p : effect_parameters(e)) space.push_back(p);
     }
     const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, base_space.size());

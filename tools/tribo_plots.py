@@ -3,6 +3,7 @@
 
     tribo_plots.py demo DIR   phase_plane.png, regime_map.png, mu_s_vs_phidot.png from a demo run
     tribo_plots.py rig DIR    phase_plane.png, trace.png from a `tribo rig` run
+    tribo_plots.py gap DIR    gap_by_observable.png, items.png, overlay.png from `tribo gap diagnose`
 """
 import csv
 import os
@@ -157,11 +158,88 @@ def plot_rig(d):
     plt.close(fig)
 
 
+def plot_gap(d):
+    import json
+
+    with open(os.path.join(d, "gap_report.json")) as f:
+        rep = json.load(f)
+    verdict = rep["verdict"]["effect"]
+    verdict = verdict if isinstance(verdict, str) else "+".join(verdict)
+    before = rep["baseline"]["by_observable"]
+    after = {}
+    for c in rep["candidates"]:
+        name = c["effect"] if isinstance(c["effect"], str) else "+".join(c["effect"])
+        if name == verdict:
+            after = c["heldout_after_by_observable"]
+    held = rep["baseline"]["heldout"]["by_observable"]
+    names = sorted(before)
+    fig, ax = plt.subplots(figsize=(max(6, 0.9 * len(names) + 2), 4.5))
+    xs = range(len(names))
+    ax.bar([x - 0.27 for x in xs], [before[n] for n in names], 0.27, label="baseline, all items")
+    ax.bar(list(xs), [held.get(n, float("nan")) for n in names], 0.27, label="baseline, held-out")
+    if after:
+        ax.bar([x + 0.27 for x in xs], [after.get(n, float("nan")) for n in names], 0.27, label="with " + verdict + ", held-out")
+    ax.set_xticks(list(xs))
+    ax.set_xticklabels(names, rotation=30, ha="right", fontsize=8)
+    ax.set_ylabel("gap (normalised RMS residual)")
+    ax.set_title("Gap by observable (verdict: %s)" % verdict)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, axis="y")
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "gap_by_observable.png"), dpi=110)
+    plt.close(fig)
+
+    items = rep["items"]
+    groups = sorted({it["observable"] for it in items})
+    fig, axes = plt.subplots(1, len(groups), figsize=(3.2 * len(groups), 3.4), squeeze=False)
+    for ax, g in zip(axes[0], groups):
+        sel = [it for it in items if it["observable"] == g]
+        m = [it["measured"] for it in sel]
+        for key, style, label in (("baseline", "o", "baseline"), ("best", "x", "with " + verdict)):
+            pts = [(a, it[key]) for a, it in zip(m, sel) if it[key] is not None]
+            if pts and not (key == "best" and verdict == "none"):
+                ax.plot([p[0] for p in pts], [p[1] for p in pts], style, ms=4, label=label)
+        lo, hi = min(m), max(m)
+        ax.plot([lo, hi], [lo, hi], "k-", lw=0.6)
+        ax.set_title(g, fontsize=9)
+        ax.set_xlabel("measured", fontsize=8)
+        ax.tick_params(labelsize=7)
+    axes[0][0].set_ylabel("simulated")
+    axes[0][0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "items.png"), dpi=110)
+    plt.close(fig)
+
+    path = os.path.join(d, "overlay.csv")
+    if os.path.exists(path):
+        rows = read_csv(path)
+        runs = []
+        for r in rows:
+            if r["run"] not in runs:
+                runs.append(r["run"])
+        runs = runs[:3]
+        if runs:
+            fig, axes = plt.subplots(len(runs), 1, figsize=(9, 2.8 * len(runs)), squeeze=False)
+            for ax, run in zip(axes[:, 0], runs):
+                for source, lw in (("measured", 0.9), ("baseline", 0.8), ("with effect", 0.8)):
+                    sel = [r for r in rows if r["run"] == run and r["source"] == source]
+                    if sel:
+                        ax.plot(column(sel, "t_s"), column(sel, "mu"), lw=lw, label=source)
+                ax.set_title(run, fontsize=9)
+                ax.set_ylabel("mu")
+                ax.grid(alpha=0.3)
+            axes[-1][0].set_xlabel("t (s)")
+            axes[0][0].legend(fontsize=8)
+            fig.tight_layout()
+            fig.savefig(os.path.join(d, "overlay.png"), dpi=110)
+            plt.close(fig)
+
+
 def main(argv):
-    if len(argv) != 3 or argv[1] not in ("demo", "rig"):
+    if len(argv) != 3 or argv[1] not in ("demo", "rig", "gap"):
         sys.stderr.write(__doc__)
         return 2
-    {"demo": plot_demo, "rig": plot_rig}[argv[1]](argv[2])
+    {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap}[argv[1]](argv[2])
     return 0
 
 
