@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -141,6 +142,71 @@ INSTANTIATE_TEST_SUITE_P(NcpFunctions, JfoCavitation,
                          [](const auto& info) {
                            return info.param == Complementarity::minimum ? "minimum" : "fischer_burmeister";
                          });
+
+// Infinitely long journal bearing, flooded at the widest gap (θ = 0 and 2π at ambient), gap
+// h = c(1 + ε cos θ), journal surface speed U, x = Rθ. For a rupture boundary the JFO conditions
+// are p = ∂p/∂x = 0 — the Swift–Stieber (Reynolds) condition — so with h_c = h(θ_c):
+//   h³ dp/dθ = 6ηUR (h − h_c),   p(0) = 0,   p(θ_c) = 0,
+// and the cavitated zone θ_c < θ < 2π carries the Couette flow with ϑ = h_c/h (Dowson & Taylor,
+// Annu. Rev. Fluid Mech. 11, 1979). The reference is this ODE integrated by Simpson's rule (10⁴
+// intervals) with θ_c from bisection. The rupture is captured to a node (2 nodes allowed); the
+// peak pressure and the load per unit length are second-order quantities of the full-film part
+// (observed 4e-5 at 801 nodes): 1e-3.
+TEST(JfoCavitationJournal, LongBearingMatchesSwiftStieber) {
+  const double c = 10e-6, eps = 0.6, radius = 10e-3, u = 2.0;
+  auto gap = [&](double th) { return c * (1.0 + eps * std::cos(th)); };
+  auto pressure = [&](double th_end, double th_c) {  // p(θ_end) for a trial rupture angle
+    const int m = 10000;
+    const double d = th_end / m, hc = gap(th_c);
+    double sum = 0;
+    for (int k = 0; k <= m; ++k) {
+      const double th = k * d, h = gap(th);
+      sum += (k == 0 || k == m ? 1.0 : (k % 2 ? 4.0 : 2.0)) * (h - hc) / (h * h * h);
+    }
+    return 6 * kEta * u * radius * sum * d / 3.0;
+  };
+  double lo = std::numbers::pi + 1e-6, hi = 2 * std::numbers::pi - 1e-6;  // p(θ_c; θ_c) changes sign
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (pressure(mid, mid) > 0 ? lo : hi) = mid;
+  }
+  const double theta_c = 0.5 * (lo + hi);
+  double peak = 0, load_per_length = 0;
+  const int m = 2000;
+  for (int k = 1; k < m; ++k) {  // trapezoid on θ ∈ [0, θ_c] (p vanishes at both ends)
+    const double p = pressure(k * theta_c / m, theta_c);
+    peak = std::max(peak, p);
+    load_per_length += p * radius * theta_c / m;
+  }
+
+  const int nx = 801;
+  ReynoldsProblem pr;
+  pr.grid = Grid{nx, 3, 2 * std::numbers::pi * radius / (nx - 1), 1e-5};
+  pr.gap_m.resize(pr.grid.size());
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < nx; ++i) pr.gap_m[pr.grid.index(i, j)] = gap(i * pr.grid.dx_m / radius);
+  pr.viscosity_Pa_s = kEta;
+  pr.sliding_speed_m_per_s = u;
+  pr.boundary_y = BoundaryY::periodic;
+  pr.cavitation = Cavitation::mass_conserving;
+  const ReynoldsSolution s = solve_reynolds(pr);
+  ASSERT_TRUE(s.summary.converged) << s.summary.message;
+  int first_cavitated = -1;
+  for (int i = 0; i < nx && first_cavitated < 0; ++i)
+    if (s.fill_fraction[pr.grid.index(i, 1)] < 1.0 - 1e-9) first_cavitated = i;
+  const double theta_rupture = (first_cavitated - 0.5) * pr.grid.dx_m / radius;
+  const double width = pr.grid.ny * pr.grid.dy_m;
+  std::printf("  rupture %.4f rad (Swift-Stieber %.4f), peak %.4e Pa (%.4e), load %.4e N/m (%.4e), %d Newton\n",
+              theta_rupture, theta_c, s.max_pressure_Pa, peak, s.load_N / width, load_per_length,
+              s.summary.iterations);
+  EXPECT_NEAR(theta_rupture, theta_c, 2.0 * pr.grid.dx_m / radius);
+  EXPECT_NEAR(s.max_pressure_Pa / peak, 1.0, 1e-3);
+  EXPECT_NEAR(s.load_N / width / load_per_length, 1.0, 1e-3);
+  // In the cavitated zone the film carries the rupture flow: ϑ h = h_c (to the upwind scheme's
+  // O(dx) smearing, 1 %).
+  const int probe = (first_cavitated + nx) / 2;
+  EXPECT_NEAR(s.fill_fraction[pr.grid.index(probe, 1)] * pr.gap_m[pr.grid.index(probe, 1)] / gap(theta_c), 1.0, 1e-2);
+}
 
 // Outcomes are data: a Newton budget too small to converge is reported (converged = false with
 // the reason), not thrown and not silently returned as an answer.
