@@ -76,6 +76,34 @@ TEST(SqueezeFilmDiscs, ConvergesToAppendixIIIAtSecondOrder) {
   EXPECT_LT(load_err.back(), 2e-6);  // finest grid: 20 µN of 51 N
 }
 
+// Squeeze-out under constant load (Appendix III): integrating ḣ = −W / C(h), with C(h) the load
+// per unit closing speed computed by the solver at each node of the quadrature (t = ∫ dh/ḣ by
+// Simpson's rule in ln h, 20 panels from h₀ = 2 µm to h₁ = 1 µm), reproduces
+// t = (3πηR⁴/4W)(1/h₁² − 1/h₀²). The solver's load is within 2e-5 of (3.2.2) on 83² (see the
+// convergence test) and the quadrature of the smooth integrand (∝ h²) adds < 1e-7: 1e-4.
+TEST(SqueezeFilmDiscs, SqueezeOutTimeUnderConstantLoad) {
+  const double load = 93.86, h0 = 2e-6, h1 = 1e-6;
+  ReynoldsSolver solver;
+  // d(ln h)/dt = ḣ/h = −W/(C(h) h); C from a solve at unit closing speed.
+  auto dlnh_dt = [&](double lnh) {
+    const double h = std::exp(lnh);
+    const double c = solver.solve(parallel_discs_problem(kRadius, h, -1.0, kEta, 0.0, 83)).load_N;
+    return -load / (c * h);
+  };
+  // Integrate t(ln h): dt/d(ln h) = 1 / (d ln h / dt), from ln h₀ to ln h₁.
+  const int steps = 20;
+  const double a = std::log(h0), b = std::log(h1), d = (b - a) / steps;
+  double t = 0;
+  for (int k = 0; k < steps; ++k) {
+    const double x = a + k * d;
+    t += d / 6.0 * (1.0 / dlnh_dt(x) + 4.0 / dlnh_dt(x + 0.5 * d) + 1.0 / dlnh_dt(x + d));
+  }
+  const double t_ref = squeeze_out_time_s(kEta, kRadius, load, h0, h1);
+  std::printf("  squeeze-out 2 -> 1 um under %.2f N: %.6f s (closed form %.6f s)\n", load, t, t_ref);
+  EXPECT_NEAR(t / t_ref, 1.0, 1e-4);
+  EXPECT_EQ(solver.symbolic_analyses(), 1);
+}
+
 // Sliding does not change the squeeze load of parallel discs (thesis, after (3.2.2)): with
 // uniform h the Couette term (U/2)∂h/∂x vanishes identically.
 TEST(SqueezeFilmDiscs, LoadIndependentOfSliding) {
