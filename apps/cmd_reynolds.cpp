@@ -49,11 +49,15 @@ auto with_context(const ConfigTable& table, const std::string& key, F&& build) {
 
 std::optional<ConfigTable> sub(ConfigTable& root, const std::string& key) { return root.table(key); }
 
-double read_viscosity(ConfigTable& root) {
+// [lubricant]: η₀ (default the thesis oil) and, for `tribo reynolds`, Barus ψ (default 0:
+// isoviscous, since the thesis films are far below the pressures where ψ matters).
+double read_viscosity(ConfigTable& root, double* pressure_viscosity_per_Pa = nullptr) {
   const lub::Lubricant oil = lub::thesis_white_mineral_oil();
   auto t = sub(root, "lubricant");
   if (!t) return oil.viscosity_Pa_s;
   const double eta = t->number("viscosity_Pa_s", oil.viscosity_Pa_s, Range::positive);
+  if (pressure_viscosity_per_Pa)
+    *pressure_viscosity_per_Pa = t->number("pressure_viscosity_per_Pa", 0.0, Range::non_negative);
   t->finish();
   return eta;
 }
@@ -99,7 +103,8 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
   const toml::table doc = parse_toml_file(path);
   ConfigTable root(doc, path.string(), "");
   ReynoldsRun run;
-  const double eta = read_viscosity(root);
+  double psi = 0.0;
+  const double eta = read_viscosity(root, &psi);
   const double speed = read_speed(root);
   int n = 256;
   if (auto g = sub(root, "grid")) {
@@ -219,6 +224,7 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
   g->finish();
   root.finish();
   run.problem.viscosity_Pa_s = eta;
+  run.problem.pressure_viscosity_per_Pa = psi;
   run.problem.sliding_speed_m_per_s = speed;
   run.problem.cavitation = cavitation;
   with_context(root, "geometry", [&] { lub::validate(run.problem); return 0; });
@@ -262,6 +268,7 @@ void run_reynolds(const Args& args) {
   j["geometry"] = run.geometry;
   j["grid"] = {{"nx", g.nx}, {"ny", g.ny}, {"dx_m", g.dx_m}, {"dy_m", g.dy_m}};
   j["viscosity_Pa_s"] = run.problem.viscosity_Pa_s;
+  j["pressure_viscosity_per_Pa"] = run.problem.pressure_viscosity_per_Pa;
   j["sliding_speed_m_per_s"] = run.problem.sliding_speed_m_per_s;
   j["cavitation"] = run.problem.cavitation == lub::Cavitation::none ? "none" : "mass_conserving";
   if (run.reference_load_N) {

@@ -155,6 +155,11 @@ Face face_of(const ReynoldsProblem& pr, std::size_t p_node, const Link& link) {
   return f;
 }
 
+// Barus reduced pressure q = (1 − e^{−ψp})/ψ (q = p for ψ = 0).
+double reduced_pressure(double p_Pa, double psi_per_Pa) {
+  return psi_per_Pa > 0.0 ? -std::expm1(-psi_per_Pa * p_Pa) / psi_per_Pa : p_Pa;
+}
+
 // Whether the Couette flux through this link takes ϑ from P (else from the neighbour).
 bool upwind_is_p(const ReynoldsProblem& pr, const Link& link) { return link.sign * pr.sliding_speed_m_per_s >= 0.0; }
 
@@ -225,6 +230,8 @@ void validate(const ReynoldsProblem& pr) {
   }
   if (!std::isfinite(pr.viscosity_Pa_s) || pr.viscosity_Pa_s <= 0.0)
     bad("viscosity_Pa_s must be finite and > 0 (got " + std::to_string(pr.viscosity_Pa_s) + ")");
+  if (!std::isfinite(pr.pressure_viscosity_per_Pa) || pr.pressure_viscosity_per_Pa < 0.0)
+    bad("pressure_viscosity_per_Pa must be finite and >= 0");
   if (!std::isfinite(pr.sliding_speed_m_per_s)) bad("sliding_speed_m_per_s must be finite");
   if (!std::isfinite(pr.inlet_pressure_Pa) || !std::isfinite(pr.outlet_pressure_Pa))
     bad("inlet_pressure_Pa and outlet_pressure_Pa must be finite");
@@ -379,8 +386,43 @@ struct ReynoldsSolver::Impl {
   }
 
   ReynoldsSolution solve(const ReynoldsProblem& pr) {
-    const auto start = Clock::now();
     validate(pr);
+    if (pr.pressure_viscosity_per_Pa > 0.0) return solve_piezoviscous(pr);
+    return solve_isoviscous(pr);
+  }
+
+  // Barus' law through the reduced pressure q (see the header): the isoviscous solve in q, then
+  // p = −ln(1 − ψq)/ψ and the load and peak from p.
+  ReynoldsSolution solve_piezoviscous(const ReynoldsProblem& pr) {
+    const auto start = Clock::now();
+    const double psi = pr.pressure_viscosity_per_Pa;
+    ReynoldsProblem reduced = pr;
+    reduced.pressure_viscosity_per_Pa = 0.0;
+    reduced.inlet_pressure_Pa = reduced_pressure(pr.inlet_pressure_Pa, psi);
+    reduced.outlet_pressure_Pa = reduced_pressure(pr.outlet_pressure_Pa, psi);
+    ReynoldsSolution sol = solve_isoviscous(reduced);
+    const Topology t = build_topology(pr);
+    sol.load_N = 0;
+    sol.max_pressure_Pa = -std::numeric_limits<double>::infinity();
+    bool blow_up = false;
+    for (std::size_t node = 0; node < pr.grid.size(); ++node) {
+      const double x = psi * sol.pressure_Pa[node];
+      if (x >= 1.0) blow_up = true;
+      sol.pressure_Pa[node] = x >= 1.0 ? std::numeric_limits<double>::infinity() : -std::log1p(-x) / psi;
+      if (!t.wetted[node]) continue;
+      sol.load_N += t.weight_m2[node] * sol.pressure_Pa[node];
+      sol.max_pressure_Pa = std::max(sol.max_pressure_Pa, sol.pressure_Pa[node]);
+    }
+    if (blow_up) {
+      sol.summary.converged = false;
+      sol.summary.message = "piezoviscous blow-up: the reduced pressure reaches 1/psi, no finite Barus pressure";
+    }
+    sol.summary.wall_s = seconds_since(start);
+    return sol;
+  }
+
+  ReynoldsSolution solve_isoviscous(const ReynoldsProblem& pr) {
+    const auto start = Clock::now();
     linear_s = 0;
     const Topology t = build_topology(pr);
     const std::size_t n = t.node_of.size();
@@ -540,13 +582,14 @@ FilmFlow film_flow(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
   const double cell = pr.grid.dx_m * pr.grid.dy_m;
   for (std::size_t u = 0; u < t.node_of.size(); ++u) {
     const std::size_t node = t.node_of[u];
-    const double p = sol.pressure_Pa[node], th = sol.fill_fraction[node];
+    const double psi = pr.pressure_viscosity_per_Pa;
+    const double p = reduced_pressure(sol.pressure_Pa[node], psi), th = sol.fill_fraction[node];
     const double storage = gap_rate(pr, node) * cell * th;
     flow.squeeze_storage_m3_per_s += storage;
     double balance = storage;
     for (const Link& link : t.links[u]) {
       const bool known = link.kind != LinkKind::unknown;
-      const double pn = known ? link.value_Pa : sol.pressure_Pa[link.node];
+      const double pn = reduced_pressure(known ? link.value_Pa : sol.pressure_Pa[link.node], psi);
       const double thn = known ? 1.0 : sol.fill_fraction[link.node];
       const Face f = face_of(pr, node, link);
       const double out = f.conductance_per_Pa * (p - pn) + f.couette_m3_per_s * (upwind_is_p(pr, link) ? th : thn);

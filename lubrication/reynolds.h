@@ -33,6 +33,12 @@
 // a + b − √(a² + b²) — the Couette flux takes ϑ from the upwind node, and each Newton step is an
 // unsymmetric sparse solve (UMFPACK) whose pattern is fixed, so its symbolic analysis is reused.
 //
+// Piezoviscosity: with Barus' law η = η₀ e^{ψp} (lubrication/viscosity.h) the reduced pressure
+// q = (1 − e^{−ψp})/ψ turns the Poiseuille flux h³/(12η)∇p into h³/(12η₀)∇q while the Couette
+// and squeeze terms do not involve η, so q solves the isoviscous problem exactly (with q ≥ 0 ⇔
+// p ≥ 0, cavitation included) and p = −ln(1 − ψq)/ψ. Where ψq reaches 1 the pressure has no
+// finite solution (the Barus "blow-up"); the solve then reports non-convergence.
+//
 // Field layout: row-major, value (i, j) at index j·nx + i, i along x (sliding direction).
 #pragma once
 
@@ -67,7 +73,8 @@ struct ReynoldsProblem {
   Grid grid;
   std::vector<double> gap_m;                // size nx·ny, every value finite and > 0
   std::vector<double> gap_rate_m_per_s;     // ∂h/∂t per node; empty means 0
-  double viscosity_Pa_s = 0.021;
+  double viscosity_Pa_s = 0.021;            // η₀ at ambient pressure
+  double pressure_viscosity_per_Pa = 0.0;   // Barus ψ (≥ 0); 0 = isoviscous
   double sliding_speed_m_per_s = 0.0;       // U = U₁ + U₂ along +x
   double inlet_pressure_Pa = 0.0;           // p at x = 0 (rectangular domain)
   double outlet_pressure_Pa = 0.0;          // p at x = Lx

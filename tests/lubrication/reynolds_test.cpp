@@ -140,6 +140,39 @@ TEST(ChannelFlow, PlanePoiseuille) {
   EXPECT_NEAR(f.inflow_x0_m3_per_s / (pr.grid.ny * pr.grid.dy_m), q_ref, 1e-10 * q_ref);
 }
 
+// Piezoviscous Poiseuille channel, Barus η = η₀e^{ψp}: the reduced pressure q = (1 − e^{−ψp})/ψ
+// is linear, so p(x) = −ln(1 − (1 − e^{−ψp_in})(1 − x/L))/ψ and the flow per unit width is
+// h³(1 − e^{−ψp_in})/(12η₀Lψ) — exact for uniform h, so 1e-10. With ψp_in = 2 the flow is
+// (1 − e⁻²)/2 = 43 % of the isoviscous one.
+TEST(ChannelFlow, PiezoviscousPoiseuille) {
+  ReynoldsProblem pr = channel(31, 2e-3, 1e-4);
+  const double psi = 2e-8, p_in = 1e8;
+  pr.inlet_pressure_Pa = p_in;
+  pr.pressure_viscosity_per_Pa = psi;
+  const ReynoldsSolution s = solve_reynolds(pr);
+  ASSERT_TRUE(s.summary.converged) << s.summary.message;
+  const double a = -std::expm1(-psi * p_in);
+  for (int i = 0; i < pr.grid.nx; ++i) {
+    const double x = i * pr.grid.dx_m;
+    EXPECT_NEAR(s.pressure_Pa[pr.grid.index(i, 1)], -std::log1p(-a * (1.0 - x / 2e-3)) / psi, 1e-10 * p_in);
+  }
+  const double q_ref = kGap * kGap * kGap * a / (12.0 * kEta * 2e-3 * psi);
+  EXPECT_NEAR(film_flow(pr, s).inflow_x0_m3_per_s / (pr.grid.ny * pr.grid.dy_m), q_ref, 1e-10 * q_ref);
+}
+
+// Where the isoviscous reduced pressure reaches 1/ψ Barus' law has no finite pressure: reported
+// as non-convergence with the reason, not returned as a number.
+TEST(ChannelFlow, PiezoviscousBlowUpIsReported) {
+  ReynoldsProblem pr = channel(101, 5e-3, 1e-4);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < pr.grid.nx; ++i) pr.gap_m[pr.grid.index(i, j)] = 2e-7 * (1.0 + 1.5 * (1.0 - i / 100.0));
+  pr.sliding_speed_m_per_s = 1.0;
+  pr.pressure_viscosity_per_Pa = 2e-8;  // isoviscous peak here ≈ 6.8e8 Pa > 1/ψ = 5e7 Pa
+  const ReynoldsSolution s = solve_reynolds(pr);
+  EXPECT_FALSE(s.summary.converged);
+  EXPECT_NE(s.summary.message.find("blow-up"), std::string::npos) << s.summary.message;
+}
+
 // Inclined pad (infinitely wide), h = h₀(1 + K(1 − x/L)), sliding at U towards the narrow end:
 // W/B = 6ηUL²/(K²h₀²) [ln(1 + K) − 2K/(2 + K)] (Hamrock, Schmid & Jacobson, Fundamentals of
 // Fluid Film Lubrication, 2nd ed., §8.4). The gap varies smoothly: second-order convergence,
@@ -211,6 +244,9 @@ TEST(ReynoldsInput, RejectsBadInputWithClearMessage) {
   p = good;
   p.sliding_speed_m_per_s = std::numeric_limits<double>::quiet_NaN();
   expect_message(p, "sliding_speed_m_per_s");
+  p = good;
+  p.pressure_viscosity_per_Pa = -1e-8;
+  expect_message(p, "pressure_viscosity_per_Pa");
   p = good;
   p.grid.ny = 2;
   p.gap_m.resize(p.grid.size(), kGap);
