@@ -38,15 +38,6 @@ const double kSliderRq_m = std::sqrt(M_PI / 2) * 2.0 * kMicroInch_m;
 const double kDiscRq_m = std::sqrt(M_PI / 2) * 13.5 * kMicroInch_m;
 constexpr double kSliderRadius_m = 4.7625e-3;  // 3/16 in (Appendix I)
 
-template <class F>
-auto with_context(const ConfigTable& table, const std::string& key, F&& build) {
-  try {
-    return build();
-  } catch (const std::invalid_argument& e) {
-    table.fail(key, e.what());
-  }
-}
-
 std::optional<ConfigTable> sub(ConfigTable& root, const std::string& key) { return root.table(key); }
 
 // [lubricant]: η₀ (default the thesis oil) and, for `tribo reynolds`, Barus ψ (default 0:
@@ -87,7 +78,7 @@ contact::GaussianSurfaceParams read_surface(ConfigTable& t, const std::string& r
     p.rolloff_wavelength_m = t.number("rolloff_wavelength_m", 0.0, Range::non_negative);
     p.cutoff_wavelength_m = t.number("cutoff_wavelength_m", 0.0, Range::non_negative);
   }
-  with_context(t, "spectrum", [&] { contact::validate(p); return 0; });
+  input_guard(t, "spectrum", [&] { contact::validate(p); return 0; });
   return p;
 }
 
@@ -143,7 +134,7 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
     const bool periodic = g->choice("boundary_y", "ambient", {"ambient", "periodic"}) == "periodic";
     const double p_in = g->number("inlet_pressure_Pa", 0.0, Range::non_negative);
     const double p_out = g->number("outlet_pressure_Pa", 0.0, Range::non_negative);
-    const contact::Topography topo = with_context(*g, "file", [&] { return contact::read_topography(gap_path, scale); });
+    const contact::Topography topo = input_guard(*g, "file", [&] { return contact::read_topography(gap_path, scale); });
     const auto& h = topo.heights_m;
     run.problem.grid = lub::Grid{static_cast<int>(h.rows()), static_cast<int>(h.cols()), dx, dy};
     run.problem.gap_m.assign(h.data(), h.data() + h.size());  // column-major: (i, j) at j·nx + i
@@ -182,7 +173,7 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
     std::size_t touching = 0;
     if (rigid) {
       std::vector<double> up(upper.data(), upper.data() + upper.size()), lo(lower.data(), lower.data() + lower.size());
-      h = with_context(*g, "mean_gap_m", [&] {
+      h = input_guard(*g, "mean_gap_m", [&] {
         return lub::rough_pair_gap_m(up, lo, mean_gap, floor_fraction * sigma, &touching);
       });
     } else {
@@ -193,7 +184,7 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
       copt.pressure_cap_Pa = hardness;
       const Eigen::ArrayXXd gap0 = contact::gap_from_heights(lower - upper);
       const contact::NormalContactResult c =
-          with_context(*g, "contact_load_N", [&] { return contact::solve_normal_load(halfspace, gap0, contact_load, copt); });
+          input_guard(*g, "contact_load_N", [&] { return contact::solve_normal_load(halfspace, gap0, contact_load, copt); });
       if (!c.summary.converged) g->fail("contact_load_N", "contact solve did not converge: " + c.summary.message);
       h.resize(static_cast<std::size_t>(c.gap_m.size()));
       for (Eigen::Index k = 0; k < c.gap_m.size(); ++k) {
@@ -227,7 +218,7 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
   run.problem.pressure_viscosity_per_Pa = psi;
   run.problem.sliding_speed_m_per_s = speed;
   run.problem.cavitation = cavitation;
-  with_context(root, "geometry", [&] { lub::validate(run.problem); return 0; });
+  input_guard(root, "geometry", [&] { lub::validate(run.problem); return 0; });
   return run;
 }
 
@@ -319,7 +310,7 @@ FlowFactorRun load_flow_factor_run(const std::filesystem::path& path) {
     h->finish();
   }
   root.finish();
-  with_context(root, "homogenisation", [&] {
+  input_guard(root, "homogenisation", [&] {
     lub::validate(o);
     lub::HomogenisationOptions lift = o;
     lift.contact_gap_fraction = run.lift_contact_gap_fraction;
