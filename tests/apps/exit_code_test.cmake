@@ -18,3 +18,18 @@ execute_process(COMMAND ${TRIBO} rig ${WORK}/missing.toml --out ${WORK}/out RESU
 if(NOT status2 EQUAL 2 OR NOT err2 MATCHES "missing.toml")
   message(FATAL_ERROR "missing config: expected status 2 naming the file, got ${status2}: ${err2}")
 endif()
+
+# The same contract for the contact and Reynolds commands.
+file(WRITE ${WORK}/bad_contact.toml "[surface]\nkind = \"sphere\"\nradius_m = -0.01\n[domain]\nsize_m = 1e-3\ngrid = 64\n"
+  "[material]\ne_star_Pa = 1.137e11\n[load]\nnormal_N = 1.0\n")
+execute_process(COMMAND ${TRIBO} contact ${WORK}/bad_contact.toml --out ${WORK}/out_contact
+                RESULT_VARIABLE status3 ERROR_VARIABLE err3)
+if(NOT status3 EQUAL 2 OR NOT err3 MATCHES "radius_m" OR EXISTS ${WORK}/out_contact)
+  message(FATAL_ERROR "tribo contact, negative radius: expected status 2 naming radius_m and no output, got ${status3}: ${err3}")
+endif()
+file(WRITE ${WORK}/bad_reynolds.toml "[geometry]\nkind = \"parallel_discs\"\ngap_m = 0.0\n")
+execute_process(COMMAND ${TRIBO} reynolds ${WORK}/bad_reynolds.toml --out ${WORK}/out_reynolds
+                RESULT_VARIABLE status4 ERROR_VARIABLE err4)
+if(NOT status4 EQUAL 2 OR NOT err4 MATCHES "gap_m" OR EXISTS ${WORK}/out_reynolds)
+  message(FATAL_ERROR "tribo reynolds, zero gap: expected status 2 naming gap_m and no output, got ${status4}: ${err4}")
+endif()
