@@ -142,9 +142,13 @@ struct Cost {
   std::uint64_t seed;
   std::vector<bool> needed;
 
+  std::vector<double> fixed_tail;  // trailing coordinates held fixed (profile fits)
+
   bool operator()(double const* const* parameters, double* residuals) const {
     Setup s = *start;
-    apply(*space, std::vector<double>(parameters[0], parameters[0] + space->size()), s);
+    std::vector<double> u(parameters[0], parameters[0] + space->size() - fixed_tail.size());
+    u.insert(u.end(), fixed_tail.begin(), fixed_tail.end());
+    apply(*space, u, s);
     std::vector<double> r;
     try {
       r = comparison->residuals(comparison->predict(s.rig, s.model, seed, nullptr, &needed));
@@ -196,14 +200,12 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(1.0, 2.0);
   FitResult best{start, std::numeric_limits<double>::infinity()};
-  for (int k = 0; k < starts; ++k) {
-    std::vector<double> u = coordinates(space, start);
-    if (k > 0)
-      for (std::size_t i = randomised_from; i < u.size(); ++i) u[i] = uniform(rng);
+  // Solves for the leading coordinates with the trailing `tail` fixed; returns the final cost.
+  auto solve = [&](std::vector<double>& u, const std::vector<double>& tail, int iterations) {
     ceres::NumericDiffOptions nd;
     nd.relative_step_size = 0.01;
     auto* cost = new ceres::DynamicNumericDiffCostFunction<Cost, ceres::FORWARD>(
-        new Cost{&c, &space, &start, train, w, o.seed, train_mask}, ceres::TAKE_OWNERSHIP, nd);
+        new Cost{&c, &space, &start, train, w, o.seed, train_mask, tail}, ceres::TAKE_OWNERSHIP, nd);
     cost->AddParameterBlock(static_cast<int>(u.size()));
     cost->SetNumResiduals(static_cast<int>(train.size()));
     ceres::Problem problem;
@@ -213,15 +215,45 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
       problem.SetParameterUpperBound(u.data(), i, 2.0);
     }
     ceres::Solver::Options so;
-    so.max_num_iterations = o.max_iterations;
+    so.max_num_iterations = iterations;
     so.linear_solver_type = ceres::DENSE_QR;
     so.logging_type = ceres::SILENT;
     so.num_threads = 1;
     so.function_tolerance = 1e-4;  // |Δcost|/cost: below this the fit is as good as the noise allows
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
-    if (summary.final_cost < best.cost) {
-      best.cost = summary.final_cost;
+    return summary.final_cost;
+  };
+  // First start: the best point of a coarse grid over the effect's coordinates (up to two), each
+  // with the baseline parameters re-fitted (a short profile fit): the baseline co-adapts with the
+  // effect, and friction observables are only piecewise smooth, so a local method needs a basin.
+  std::vector<double> first = coordinates(space, start);
+  const std::size_t dims = space.size() - randomised_from;
+  if (dims >= 1 && dims <= 2 && randomised_from > 0) {
+    const std::vector<double> levels = dims == 1 ? std::vector<double>{1.1, 1.3, 1.5, 1.7, 1.9} : std::vector<double>{1.15, 1.5, 1.85};
+    std::vector<std::size_t> idx(dims, 0);
+    double best_cost = std::numeric_limits<double>::infinity();
+    const std::vector<double> lead0(first.begin(), first.begin() + static_cast<long>(randomised_from));
+    while (true) {
+      std::vector<double> tail(dims), lead = lead0;
+      for (std::size_t d = 0; d < dims; ++d) tail[d] = levels[idx[d]];
+      if (const double cu = solve(lead, tail, 3); cu < best_cost) {
+        best_cost = cu;
+        first = lead;
+        first.insert(first.end(), tail.begin(), tail.end());
+      }
+      std::size_t d = 0;
+      while (d < dims && ++idx[d] == levels.size()) idx[d++] = 0;
+      if (d == dims) break;
+    }
+  }
+  for (int k = 0; k < starts; ++k) {
+    std::vector<double> u = first;
+    if (k > 0)
+      for (std::size_t i = randomised_from; i < u.size(); ++i) u[i] = uniform(rng);
+    const double final_cost = solve(u, {}, o.max_iterations);
+    if (final_cost < best.cost) {
+      best.cost = final_cost;
       best.setup = start;
       apply(space, u, best.setup);
     }
@@ -342,42 +374,37 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       from_guess.cost < calibrated.cost)
     calibrated = from_guess;
   report("baseline calibration");
-  d.calibrated = calibrated.setup.model;
-  d.rig = calibrated.setup.rig;
-  d.calibrated_params = values(base_space, calibrated.setup);
-  d.baseline_simulated = comparison.predict(d.rig, d.calibrated, o.seed);
-  d.baseline_residuals = comparison.residuals(d.baseline_simulated);
   const std::vector<bool> all(n, true);
-  d.baseline = breakdown(d.items, d.baseline_residuals, all);
-  d.baseline_heldout = breakdown(d.items, d.baseline_residuals, d.heldout);
-  d.best_simulated = d.baseline_simulated;
-
-  // Localization: share of the baseline's squared residuals by observable, phase and speed class.
-  {
-    std::map<std::pair<std::string, std::string>, std::pair<double, std::size_t>> acc;
-    double total = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double r2 = d.baseline_residuals[i] * d.baseline_residuals[i];
-      auto& a = acc[{d.items[i].observable, d.items[i].phase + ", " + d.items[i].speed_class}];
-      if (a.first == 0.0 || r2 > d.baseline_residuals[a.second] * d.baseline_residuals[a.second]) a.second = i;
-      a.first += r2;
-      total += r2;
-    }
-    for (const auto& [key, a] : acc)
-      d.localization.push_back({key.first, key.second, d.items[a.second].where, total > 0.0 ? a.first / total : 0.0});
-    std::stable_sort(d.localization.begin(), d.localization.end(), [](const auto& a, const auto& b) { return a.share > b.share; });
-  }
+  const std::vector<double> w_held = weights(d.items, d.heldout);
+  double sse_before = 0.0, calibrated_cost = calibrated.cost;
+  int n_held = 0;
+  for (bool h : d.heldout) n_held += h;
+  auto set_baseline = [&](const FitResult& f) {
+    d.calibrated = f.setup.model;
+    d.rig = f.setup.rig;
+    d.calibrated_params = values(base_space, f.setup);
+    d.baseline_simulated = comparison.predict(d.rig, d.calibrated, o.seed);
+    d.baseline_residuals = comparison.residuals(d.baseline_simulated);
+    d.baseline = breakdown(d.items, d.baseline_residuals, all);
+    d.baseline_heldout = breakdown(d.items, d.baseline_residuals, d.heldout);
+    d.best_simulated = d.baseline_simulated;
+    sse_before = weighted_sse(d.baseline_residuals, w_held);
+    calibrated_cost = f.cost;
+  };
+  set_baseline(calibrated);
+  auto judge = [&](Candidate& c) {
+    c.heldout_gap_before = d.baseline_heldout.gap;
+    const double sse_after = weighted_sse(c.residuals, w_held);
+    c.criterion = n_held * std::log(std::max(sse_after, 1e-300) / std::max(sse_before, 1e-300)) + c.extra_parameters * std::log(std::max(n_held, 2));
+    c.earns = c.criterion < 0.0 && c.heldout_gap_after <= (1.0 - o.min_relative_shrink) * c.heldout_gap_before &&
+              c.heldout_gap_before - c.heldout_gap_after >= o.min_gap_reduction;
+  };
 
   // 2. Candidates.
   std::vector<std::string> names = o.candidates;
   if (names.empty())
     for (const auto& e : rig::effect_catalogue())
       if (!model.has(e.name)) names.push_back(e.name);
-  const std::vector<double> w_held = weights(d.items, d.heldout);
-  const double sse_before = weighted_sse(d.baseline_residuals, w_held);
-  int n_held = 0;
-  for (bool h : d.heldout) n_held += h;
-
   auto evaluate = [&](const std::vector<std::string>& effects, std::uint64_t seed) {
     std::vector<FitParameter> space = base_space;
     Setup start{d.rig, d.calibrated};
@@ -410,13 +437,9 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     c.residuals = comparison.residuals(comparison.predict(c.rig, c.model, o.seed));
     c.train_gap = breakdown(d.items, c.residuals, train).gap;
     const GapBreakdown held = breakdown(d.items, c.residuals, d.heldout);
-    c.heldout_gap_before = d.baseline_heldout.gap;
     c.heldout_gap_after = held.gap;
     c.heldout_after_by_observable = held.by_observable;
-    const double sse_after = weighted_sse(c.residuals, w_held);
-    c.criterion = n_held * std::log(std::max(sse_after, 1e-300) / std::max(sse_before, 1e-300)) + c.extra_parameters * std::log(std::max(n_held, 2));
-    c.earns = c.criterion < 0.0 && c.heldout_gap_after <= (1.0 - o.min_relative_shrink) * c.heldout_gap_before &&
-              c.heldout_gap_before - c.heldout_gap_after >= o.min_gap_reduction;
+    judge(c);
     report("fitted " + verdict_name(effects));
     return c;
   };
@@ -429,14 +452,48 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     return a.criterion < b.criterion;
   };
   std::stable_sort(singles.begin(), singles.end(), better);
+  // A fair baseline: re-calibrate it from the baseline parameters the best candidates settled on,
+  // so that no effect wins only because its fit also found better μs, μk than the calibration.
+  bool recalibrated = false;
+  for (std::size_t k = 0; k < singles.size() && k < 3; ++k) {
+    Setup from{singles[k].rig, model};
+    from.model.baseline = singles[k].model.baseline;
+    const FitResult f = fit(comparison, base_space, from, train, calibration, o.seed, 1, base_space.size());
+    if (f.cost < calibrated_cost) set_baseline(f), recalibrated = true;
+  }
+  if (recalibrated) {
+    for (Candidate& c : singles) judge(c);
+    std::stable_sort(singles.begin(), singles.end(), better);
+  }
   d.candidates = singles;
   if (singles.size() >= 2) {
     const Candidate& best = singles.front();
     const double closed = best.heldout_gap_before > 0.0 ? 1.0 - best.heldout_gap_after / best.heldout_gap_before : 1.0;
     if (closed < o.pair_threshold && d.baseline_heldout.gap > 0.0) {
-      d.candidates.push_back(evaluate({singles[0].effects[0], singles[1].effects[0]}, o.seed * 7919 + 104729));
+      Candidate pair = evaluate({singles[0].effects[0], singles[1].effects[0]}, o.seed * 7919 + 104729);
+      // The pair must also earn its extra parameters against the best single.
+      if (best.earns)
+        pair.earns = pair.earns && pair.heldout_gap_after <= (1.0 - o.min_relative_shrink) * best.heldout_gap_after &&
+                     best.heldout_gap_after - pair.heldout_gap_after >= o.min_gap_reduction;
+      d.candidates.push_back(pair);
       std::stable_sort(d.candidates.begin(), d.candidates.end(), better);
     }
+  }
+
+  // Localization: share of the baseline's squared residuals by observable, phase and speed class.
+  {
+    std::map<std::pair<std::string, std::string>, std::pair<double, std::size_t>> acc;
+    double total = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r2 = d.baseline_residuals[i] * d.baseline_residuals[i];
+      auto& a = acc[{d.items[i].observable, d.items[i].phase + ", " + d.items[i].speed_class}];
+      if (a.first == 0.0 || r2 > d.baseline_residuals[a.second] * d.baseline_residuals[a.second]) a.second = i;
+      a.first += r2;
+      total += r2;
+    }
+    for (const auto& [key, a] : acc)
+      d.localization.push_back({key.first, key.second, d.items[a.second].where, total > 0.0 ? a.first / total : 0.0});
+    std::stable_sort(d.localization.begin(), d.localization.end(), [](const auto& a, const auto& b) { return a.share > b.share; });
   }
 
   // 3. Verdict with bootstrap over held-out units.
