@@ -258,7 +258,7 @@ double median_spacing(const std::vector<double>& t) {
 
 int samples_per_period(const rig::RigParameters& rig, double spacing_s) {
   const double period = 2.0 * M_PI / rig.natural_frequency_rad_per_s();
-  return static_cast<int>(std::clamp(std::round(period / spacing_s), 1.0, 100.0));
+  return static_cast<int>(std::clamp(std::round(period / spacing_s), 4.0, 100.0));
 }
 
 }  // namespace
@@ -470,12 +470,14 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
         case RunPlan::Kind::static_point: {
           const double v = plan.v_m_per_s * W / k;
           options.duration_s = plan.duration_s;
-          const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(v), *law, options);
-          for (const rig::Event& e : r.events)
-            if (e.kind == rig::EventKind::breakaway) {
-              f["mu_s"] = e.mu;
-              break;
-            }
+          // Only the first breakaway matters: keep no samples and output as sparsely as allowed.
+          options.samples_per_period = 4;  // the rig's minimum
+          options.stick_samples_per_run = 10;
+          rig::SimulationObserver observer;
+          observer.on_event = [&f](const rig::Event& e) {
+            if (e.kind == rig::EventKind::breakaway && !f.count("mu_s")) f["mu_s"] = e.mu;
+          };
+          rig::simulate(rig, rig::Drive::constant(v), *law, options, observer);
           break;
         }
         case RunPlan::Kind::regime_point: {

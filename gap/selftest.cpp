@@ -37,13 +37,13 @@ void switch_on(rig::FrictionModel& m, const std::string& effect, std::mt19937_64
     m.set(effect, "amplitude", uniform(rng, 0.6, 1.0));
     m.set(effect, "decay_distance_m", log_uniform(rng, 3e-4, 1.5e-3));
   } else if (effect == "viscous_friction") {
-    m.set(effect, "coefficient_N_s_per_m", uniform(rng, 40.0, 90.0));
+    m.set(effect, "coefficient_N_s_per_m", uniform(rng, 20.0, 45.0));  // below the c that stabilises sliding at the top speed
   } else if (effect == "squeeze_film") {
     m.set(effect, "film_fraction", uniform(rng, 0.4, 0.7));
     m.set(effect, "build_up_distance_m", log_uniform(rng, 5e-4, 3e-3));
   } else if (effect == "hydrodynamic_lift") {
-    m.set(effect, "max_fraction", uniform(rng, 0.3, 0.5));
-    m.set(effect, "half_speed_m_per_s", log_uniform(rng, 0.03, 0.1));
+    m.set(effect, "max_fraction", uniform(rng, 0.4, 0.6));
+    m.set(effect, "half_speed_m_per_s", log_uniform(rng, 0.01, 0.03));
   } else if (effect == "thermal_thinning") {
     m.set(effect, "traction_coefficient_N_s_per_m", uniform(rng, 250.0, 500.0));
     m.set(effect, "thermal_speed_m_per_s", log_uniform(rng, 0.015, 0.04));
