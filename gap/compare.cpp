@@ -19,6 +19,12 @@ constexpr double kWindowStartFraction = 0.3;  // analysis skips the first 30 % o
 constexpr int kSlipDropPoints = 4;
 constexpr int kStepBins = 12;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
+constexpr const char* kFrictionLevel = "friction level";
+
+bool is_friction_level(const std::string& observable) {
+  return observable == "mu_peak" || observable == "mu_trough" || observable == "mean_mu" || observable == "mu_s_vs_load_rate" ||
+         observable == "steady_mu";
+}
 
 using Features = std::map<std::string, double>;
 
@@ -65,6 +71,38 @@ double window_mean(const std::vector<double>& t, const std::vector<double>& y, d
   for (std::size_t i = 0; i < t.size(); ++i)
     if (t[i] >= t_a && t[i] <= t_b) s += y[i], ++n;
   return n ? s / n : kNaN;
+}
+
+// Trapezoidal time average of y over [a, b] (t_front ≤ a < b ≤ t_back), ends interpolated.
+double time_average(const std::vector<double>& t, const std::vector<double>& y, double a, double b) {
+  double area = 0.0, t_prev = a, y_prev = interp(t, y, a);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (t[i] <= a) continue;
+    const double ti = std::min(t[i], b), yi = t[i] <= b ? y[i] : interp(t, y, b);
+    area += 0.5 * (y_prev + yi) * (ti - t_prev);
+    t_prev = ti, y_prev = yi;
+    if (t[i] >= b) break;
+  }
+  return area / (b - a);
+}
+
+struct Extremum {
+  double t, value;
+};
+
+// The vertex of the parabola through a sampled extremum and its two neighbours: the extremum's
+// time and value then move continuously with the model's parameters instead of jumping from
+// sample to sample, which a least-squares fit on numeric derivatives needs.
+Extremum refine_extremum(const std::vector<double>& t, const std::vector<double>& y, std::size_t k) {
+  if (k == 0 || k + 1 >= t.size()) return {t[k], y[k]};
+  const double t0 = t[k - 1], t1 = t[k], t2 = t[k + 1], y0 = y[k - 1], y1 = y[k], y2 = y[k + 1];
+  const double f01 = (y1 - y0) / (t1 - t0), f12 = (y2 - y1) / (t2 - t1);
+  const double a = (f12 - f01) / (t2 - t0);  // half the parabola's second derivative
+  // A maximum needs a < 0 and a minimum a > 0; y1 is the extreme sample, so a has that sign
+  // unless the three samples are collinear.
+  if (a == 0.0 || !std::isfinite(a)) return {t1, y1};
+  const double tv = std::clamp(0.5 * (t0 + t1) - f01 / (2.0 * a), t0, t2);
+  return {tv, y0 + f01 * (tv - t0) + a * (tv - t0) * (tv - t1)};
 }
 
 // Friction maxima and minima of a constant-speed run, with hysteresis at 30 % / 70 % of the range.
@@ -118,14 +156,20 @@ Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::strin
     return f;
   }
   if (regime) *regime = "stick_slip";
+  std::vector<Extremum> peak, trough;
+  for (std::size_t p : peaks) peak.push_back(refine_extremum(tw, muw, p));
+  for (std::size_t q : troughs) trough.push_back(refine_extremum(tw, muw, q));
   std::vector<double> mp, mt, rise, fall, period;
-  for (std::size_t p : peaks) mp.push_back(muw[p]);
-  for (std::size_t q : troughs) mt.push_back(muw[q]);
-  for (std::size_t i = 1; i < peaks.size(); ++i) period.push_back(tw[peaks[i]] - tw[peaks[i - 1]]);
-  for (std::size_t p : peaks) {
-    const auto next = std::upper_bound(troughs.begin(), troughs.end(), p);
-    if (next != troughs.end()) fall.push_back(tw[*next] - tw[p]);
-    if (next != troughs.begin()) rise.push_back(tw[p] - tw[*std::prev(next)]);
+  for (const Extremum& e : peak) mp.push_back(e.value);
+  for (const Extremum& e : trough) mt.push_back(e.value);
+  for (std::size_t i = 1; i < peak.size(); ++i) period.push_back(peak[i].t - peak[i - 1].t);
+  // Over whole cycles, so the mean does not depend on where in a cycle the record ends.
+  if (peak.size() >= 2 && peak.back().t > peak.front().t) f["mean_mu"] = time_average(tw, muw, peak.front().t, peak.back().t);
+  for (std::size_t i = 0; i < peaks.size(); ++i) {
+    const auto next = std::upper_bound(troughs.begin(), troughs.end(), peaks[i]);
+    const std::size_t n = static_cast<std::size_t>(next - troughs.begin());
+    if (next != troughs.end()) fall.push_back(trough[n].t - peak[i].t);
+    if (next != troughs.begin()) rise.push_back(peak[i].t - trough[n - 1].t);
   }
   f["mu_peak"] = mean(mp);
   if (!mt.empty()) f["mu_trough"] = mean(mt);
@@ -135,9 +179,9 @@ Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::strin
   if (slip_step_s > 0.0) {
     for (int j = 1; j <= kSlipDropPoints; ++j) {
       std::vector<double> drops;
-      for (std::size_t p : peaks) {
-        const double m = interp(tw, muw, tw[p] + j * slip_step_s);
-        if (std::isfinite(m)) drops.push_back(muw[p] - m);
+      for (const Extremum& e : peak) {
+        const double m = interp(tw, muw, e.t + j * slip_step_s);
+        if (std::isfinite(m)) drops.push_back(e.value - m);
       }
       if (!drops.empty()) f["slip_drop_" + std::to_string(j)] = mean(drops);
     }
@@ -396,11 +440,19 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
   const double median = speeds[speeds.size() / 2];
   for (Item& it : items_) it.speed_class = speeds.size() < 2 ? "all v" : (it.v_m_per_s < median ? "low v" : "high v");
 
+  // Friction levels share one scale, the RMS of all measured levels: a level that happens to lie
+  // near zero (the trough 2 μk − μs of Coulomb stick-slip) must not turn sensor noise into a large
+  // relative error. Every other observable is scaled by the RMS of its own measured values.
   std::map<std::string, std::pair<double, int>> sq;
-  for (const Item& it : items_) sq[it.observable].first += it.measured * it.measured, ++sq[it.observable].second;
-  for (const auto& [name, acc] : sq) {
+  for (const Item& it : items_) {
+    auto& acc = sq[is_friction_level(it.observable) ? std::string(kFrictionLevel) : it.observable];
+    acc.first += it.measured * it.measured, ++acc.second;
+  }
+  for (const Item& it : items_) {
+    if (std::any_of(scales_.begin(), scales_.end(), [&](const auto& s) { return s.first == it.observable; })) continue;
+    const auto& acc = sq.at(is_friction_level(it.observable) ? std::string(kFrictionLevel) : it.observable);
     const double rms = std::sqrt(acc.first / acc.second);
-    scales_.emplace_back(name, rms > 0.0 ? rms : 1.0);
+    scales_.emplace_back(it.observable, rms > 0.0 ? rms : 1.0);
   }
 }
 

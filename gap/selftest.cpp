@@ -92,12 +92,17 @@ ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::Fri
       run.trace.friction_N.push_back(F[i]);
     }
     b.runs.push_back(std::move(run));
-    int written = 0;
+    // One static-friction point per run, as a rig operator reports it: the mean of the measured
+    // breakaways (each with its own sensor noise) at that load rate after the start-up transient.
+    double phi_sum = 0.0, mu_sum = 0.0;
+    int breakaways = 0;
     for (const rig::Event& e : r.events) {
-      if (e.kind != rig::EventKind::breakaway || e.t_s < 0.3 * o.duration_s || written >= o.static_points_per_run) continue;
-      b.static_points.push_back({e.load_rate_per_s, instrument.gain * e.mu + noise(rng) / rig.normal_load_N});
-      ++written;
+      if (e.kind != rig::EventKind::breakaway || e.t_s < 0.3 * o.duration_s) continue;
+      phi_sum += e.load_rate_per_s;
+      mu_sum += instrument.gain * e.mu + noise(rng) / rig.normal_load_N;
+      ++breakaways;
     }
+    if (breakaways) b.static_points.push_back({phi_sum / breakaways, mu_sum / breakaways});
   }
   return b;
 }

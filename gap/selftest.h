@@ -24,11 +24,10 @@ struct SyntheticOptions {
   int samples_per_period = 50;    // trace density while slipping (rig/simulator.h)
   // rms noise of the friction sensor as a fraction of μk W (thesis strain-gauge channel ≈ 1 %).
   double noise_fraction = 0.01;
-  int static_points_per_run = 1;  // breakaways written to static_friction.csv per run
 };
 
 // "Measured" bundle: the truth simulated at every speed, measured through its instrument plus
-// noise; static_friction.csv from the breakaways (μs with the same sensor noise).
+// noise; static_friction.csv with one point per run, the mean of its measured breakaways.
 ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::FrictionModel& truth, const SyntheticOptions& options,
                                    std::uint64_t seed);
 
