@@ -236,33 +236,42 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     ceres::Solve(so, &problem, &summary);
     return summary.final_cost;
   };
-  // First start: the best point of a coarse grid over the effect's coordinates (up to two), each
-  // with the baseline parameters re-fitted (a short profile fit): the baseline co-adapts with the
+  // Starts: the best points of a coarse grid over the effect's coordinates (up to two), each with
+  // the baseline parameters re-fitted (a short profile fit): the baseline co-adapts with the
   // effect, and friction observables are only piecewise smooth, so a local method needs a basin.
-  std::vector<double> first = coordinates(space, start);
+  // The grid is coarse against a narrow valley, so the next-best points start fits too.
+  // Without a grid (no effect coordinates, or more than two) the first start is `start` and the
+  // others are random points in the bounds.
+  std::vector<std::pair<double, std::vector<double>>> grid;
+  const std::vector<double> initial = coordinates(space, start);
   const std::size_t dims = space.size() - randomised_from;
   if (dims >= 1 && dims <= 2 && randomised_from > 0) {
     const std::vector<double> levels = dims == 1 ? std::vector<double>{1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9} : std::vector<double>{1.1, 1.3, 1.5, 1.7, 1.9};
     std::vector<std::size_t> idx(dims, 0);
-    double best_cost = std::numeric_limits<double>::infinity();
-    const std::vector<double> lead0(first.begin(), first.begin() + static_cast<long>(randomised_from));
+    // Along the first coordinate the baseline starts from the previous point's fit (continuation):
+    // an effect that takes away much of the friction needs the baseline far from its calibration.
+    const std::vector<double> lead0(initial.begin(), initial.begin() + static_cast<long>(randomised_from));
+    std::vector<double> previous = lead0;
     while (true) {
-      std::vector<double> tail(dims), lead = lead0;
+      std::vector<double> tail(dims), lead = idx[0] == 0 ? lead0 : previous;
       for (std::size_t d = 0; d < dims; ++d) tail[d] = levels[idx[d]];
-      if (const double cu = solve(lead, tail, 3); cu < best_cost) {
-        best_cost = cu;
-        first = lead;
-        first.insert(first.end(), tail.begin(), tail.end());
-      }
+      const double cu = solve(lead, tail, 3);
+      previous = lead;
+      lead.insert(lead.end(), tail.begin(), tail.end());
+      grid.emplace_back(cu, lead);
       std::size_t d = 0;
       while (d < dims && ++idx[d] == levels.size()) idx[d++] = 0;
       if (d == dims) break;
     }
+    std::stable_sort(grid.begin(), grid.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   }
   for (int k = 0; k < starts; ++k) {
-    std::vector<double> u = first;
-    if (k > 0)
+    std::vector<double> u = initial;
+    if (static_cast<std::size_t>(k) < grid.size()) {
+      u = grid[static_cast<std::size_t>(k)].second;
+    } else if (k > 0) {
       for (std::size_t i = randomised_from; i < u.size(); ++i) u[i] = uniform(rng);
+    }
     const double final_cost = solve(u, {}, o.max_iterations);
     if (final_cost < best.cost) {
       best.cost = final_cost;

@@ -43,7 +43,7 @@
 namespace tribo::gap {
 
 struct DiagnosisOptions {
-  int starts = 2;                      // fits per candidate: the defaults, then random points in the bounds
+  int starts = 3;                      // fits per candidate: from the best grid points (else the defaults, then random points)
   int max_iterations = 12;             // Levenberg-Marquardt iterations per start
   double min_relative_shrink = 0.2;    // an effect must cut the held-out gap by this fraction
   // and by this much: the gap a correct model leaves at 1 % sensor noise (0.002-0.003 in the
