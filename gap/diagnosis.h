@@ -22,9 +22,10 @@
 //     form). A candidate earns its parameters when C < 0 and it cuts the held-out gap by at least
 //     `min_relative_shrink` and by at least `min_gap_reduction`. If the best single closes less than `pair_threshold` of the gap, the
 //     two best singles are fitted together.
-//  4. Verdict: among the earning candidates within 2 of the lowest C, the one with the fewest
-//     parameters (Kass & Raftery's "bare mention" BIC difference), else "none". Confidence: share
-//     of bootstrap resamples of the held-out units that give the same verdict.
+//  4. Verdict: the simplest earning candidate, unless one with more parameters beats it by the
+//     same margins and by more than 2 in C (Kass & Raftery's "bare mention" BIC difference);
+//     else "none". Confidence: share of bootstrap resamples of the held-out units that give the
+//     same verdict.
 #pragma once
 
 #include <nlohmann/json.hpp>
