@@ -6,10 +6,11 @@ function(tribo_add_library name)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS})
 endfunction()
 
-# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow]): one GoogleTest executable
-# registered with CTest. Label `slow` marks tests the sanitizer build skips (ctest -LE slow).
+# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow] [TIMEOUT s]): one GoogleTest
+# executable registered with CTest. Label `slow` marks tests the sanitizer build skips
+# (ctest -LE slow); TIMEOUT overrides ctest's --timeout for a test known to run long.
 function(tribo_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   # gtest_discover_tests cannot pass a list through PROPERTIES: one label per target.
@@ -18,7 +19,11 @@ function(tribo_add_test name)
   else()
     set(label unit)
   endif()
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES LABELS ${label})
+  set(properties LABELS ${label})
+  if(ARG_TIMEOUT)
+    list(APPEND properties TIMEOUT ${ARG_TIMEOUT})
+  endif()
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES ${properties})
 endfunction()
 
 # tribo_add_bench(name SOURCES ... DEPENDS ...): one Google Benchmark executable (not a test).
