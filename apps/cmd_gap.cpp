@@ -1,6 +1,7 @@
 // `tribo gap diagnose --experiment DIR --model MODEL.toml --out OUT`: where a model and a measured
 // experiment bundle disagree, which catalogue effect closes the gap and by how much (gap/diagnosis.h).
 // `tribo gap selftest [--out OUT] [--quick]`: the diagnosis on synthetic bundles with a withheld effect.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -152,7 +153,8 @@ void run_diagnose(const DiagnoseArgs& args) {
   const std::filesystem::path dir(args.out);
   int candidates = 0;
   for (const auto& e : rig::effect_catalogue()) candidates += !model.friction.has(e.name);
-  Progress progress("gap: fitting", candidates + 2);
+  // Steps reported: calibration, each candidate, the three leading refined, a pair and its refinement.
+  Progress progress("gap: fitting", 1 + candidates + std::min(3, candidates) + 2);
   o.progress = [&](const std::string& what) { progress.step(what); };
   gap::Diagnosis d;
   try {
