@@ -146,7 +146,10 @@ void run_diagnose(const DiagnoseArgs& args) {
     const bool in_bundle = key == "stiffness_N_per_m" ? bundle.stiffness_N_per_m.has_value()
                            : key == "damping_N_s_per_m" ? bundle.damping_N_s_per_m.has_value()
                                                         : bundle.mass_kg.has_value();
+    // Stiffness and damping nobody gives are fitted; the damping as a ratio ζ, since k moves too.
+    // A left-out mass keeps the thesis value: with k fitted, only ω_n = √(k/M) and ζ matter.
     if (!in_bundle && key == "stiffness_N_per_m") o.calibrate_rig.push_back(key);
+    if (!in_bundle && key == "damping_N_s_per_m") o.calibrate_rig.push_back("damping_ratio");
   }
   const rig::RigParameters rig = gap::apply_bundle_rig(bundle, model.rig);
   make_output_dir(args.out);
@@ -181,13 +184,59 @@ void run_diagnose(const DiagnoseArgs& args) {
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
 
+nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
+  return {{"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
+          {"seed", row.c.seed},               {"quick", quick},
+          {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
+          {"heldout_gap_after", row.heldout_gap_after}, {"confidence", row.confidence},
+          {"correct", row.correct}};
+}
+
+// Rows of an earlier run of the same set (quick or full) from OUT/cases.jsonl, one JSON object a
+// line, appended as each case finishes. A line cut short by a kill is skipped.
+std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, bool quick) {
+  std::vector<gap::SelftestRow> rows;
+  std::ifstream in(file);
+  std::string line;
+  while (std::getline(in, line)) {
+    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    if (j.is_discarded() || !j.is_object() || j.value("quick", !quick) != quick) continue;
+    try {
+      gap::SelftestRow r;
+      r.c.true_effect = j.at("true_effect").get<std::string>();
+      r.c.model_effects = j.at("model_effects").get<std::vector<std::string>>();
+      r.c.seed = j.at("seed").get<std::uint64_t>();
+      r.verdict = j.at("verdict").get<std::string>();
+      r.heldout_gap_before = j.at("heldout_gap_before").get<double>();
+      r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
+      r.confidence = j.at("confidence").get<double>();
+      r.correct = r.verdict == r.c.true_effect;
+      rows.push_back(r);
+    } catch (const nlohmann::json::exception&) {
+      continue;
+    }
+  }
+  return rows;
+}
+
 void run_selftest(const SelftestArgs& args) {
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
   const std::vector<gap::SelftestCase> cases = gap::selftest_cases(args.quick, args.seed);
-  Progress progress(args.quick ? "gap selftest (quick)" : "gap selftest", static_cast<int>(cases.size()));
-  const gap::SelftestResult r = gap::run_selftest(cases, gap::SyntheticOptions{}, fitting_options(args.quick, args.seed),
-                                                  [&](const gap::SelftestRow& row) { progress.step(row.c.true_effect + " -> " + row.verdict); });
+  const std::vector<gap::SelftestRow> finished = finished_rows(dir / "cases.jsonl", args.quick);
+  int resumed = 0;
+  for (const auto& c : cases)
+    resumed += std::any_of(finished.begin(), finished.end(), [&](const gap::SelftestRow& r) { return gap::same_case(r.c, c); });
+  if (resumed) std::fprintf(stderr, "tribo: resuming: %d of %zu cases already in %s\n", resumed, cases.size(), (dir / "cases.jsonl").c_str());
+  std::ofstream journal(dir / "cases.jsonl", std::ios::app);
+  Progress progress(args.quick ? "gap selftest (quick)" : "gap selftest", static_cast<int>(cases.size()) - resumed);
+  const gap::SelftestResult r = gap::run_selftest(
+      cases, gap::SyntheticOptions{}, fitting_options(args.quick, args.seed),
+      [&](const gap::SelftestRow& row) {
+        journal << row_json(row, args.quick).dump() << "\n" << std::flush;
+        progress.step(row.c.true_effect + " -> " + row.verdict);
+      },
+      finished);
   progress.done();
   std::set<std::string> verdicts;
   for (const auto& [t, row] : r.confusion)
@@ -210,15 +259,7 @@ void run_selftest(const SelftestArgs& args) {
   j["mean_heldout_shrink"] = r.mean_shrink;
   j["confusion"] = r.confusion;
   j["cases"] = nlohmann::json::array();
-  for (const auto& row : r.rows)
-    j["cases"].push_back({{"true_effect", row.c.true_effect},
-                          {"model_effects", row.c.model_effects},
-                          {"seed", row.c.seed},
-                          {"verdict", row.verdict},
-                          {"heldout_gap_before", row.heldout_gap_before},
-                          {"heldout_gap_after", row.heldout_gap_after},
-                          {"confidence", row.confidence},
-                          {"correct", row.correct}});
+  for (const auto& row : r.rows) j["cases"].push_back(row_json(row, args.quick));
   write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");
   std::printf("%-24s %-18s %-40s %10s %10s\n", "true effect", "model has", "verdict", "gap before", "gap after");
   for (const auto& row : r.rows) {
@@ -252,7 +293,7 @@ void add_gap_command(CLI::App& app) {
 
   auto selftest_args = std::make_shared<SelftestArgs>();
   CLI::App* selftest = gap->add_subcommand("selftest", "Withheld-effect validation on synthetic bundles: confusion matrix and gap shrink");
-  selftest->add_option("--out", selftest_args->out, "Output directory")->capture_default_str();
+  selftest->add_option("--out", selftest_args->out, "Output directory (an interrupted run resumes from OUT/cases.jsonl)")->capture_default_str();
   selftest->add_option("--seed", selftest_args->seed, "Seed of the synthetic cases")->capture_default_str();
   selftest->add_flag("--quick", selftest_args->quick, "The reduced CI set (one seed, four effects, two controls)");
   selftest->callback([selftest_args] { run_selftest(*selftest_args); });

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -86,11 +87,17 @@ class Comparison {
   std::vector<double> residuals(const std::vector<double>& simulated) const;
   double scale(const std::string& observable) const;
 
+  // The machine stiffness read off the measured rise of friction after the first velocity step up
+  // (k ≈ W Δμ_peak / ΔX_peak: the contact re-locks and loads elastically until it slips); a start
+  // for calibrating a stiffness nobody gives. NaN without a step up.
+  double loading_stiffness_N_per_m() const { return loading_stiffness_N_per_m_; }
+
  private:
   std::vector<Item> items_;
   std::vector<RunPlan> plans_;
   std::vector<std::pair<std::string, double>> scales_;
   int units_ = 0;
+  double loading_stiffness_N_per_m_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace tribo::gap

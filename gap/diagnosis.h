@@ -53,7 +53,9 @@ struct DiagnosisOptions {
   double pair_threshold = 0.5;         // pairs are tried when the best single closes less than this
   int bootstrap_samples = 200;
   std::uint64_t seed = 1;              // random starts, bootstrap, instrument noise
-  std::vector<std::string> calibrate_rig;  // rig keys the model leaves out: stiffness_N_per_m, damping_N_s_per_m
+  // Rig keys the model leaves out: stiffness_N_per_m, mass_kg, damping_N_s_per_m (×/÷ 100 around the
+  // start), or damping_ratio ζ = r / (2√(kM)) in [1e-3, 0.9] (the damping when k is fitted too).
+  std::vector<std::string> calibrate_rig;
   std::vector<std::string> candidates;     // empty: every catalogue effect not in the model
   std::function<void(const std::string&)> progress;  // called after each fit (any thread, serialised)
   // Returns an empty string when valid, else why not.

@@ -140,23 +140,38 @@ std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed) {
   return cases;
 }
 
+bool same_case(const SelftestCase& a, const SelftestCase& b) {
+  return a.true_effect == b.true_effect && a.model_effects == b.model_effects && a.seed == b.seed;
+}
+
+namespace {
+
+SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis) {
+  const SyntheticCase c = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
+  diagnosis.seed = sc.seed;
+  const rig::RigParameters rig = apply_bundle_rig(c.bundle, rig::RigParameters{});
+  const Diagnosis d = diagnose(c.bundle, rig, c.model, diagnosis);
+  SelftestRow row;
+  row.c = sc;
+  row.verdict = verdict_name(d.verdict.effects);
+  row.heldout_gap_before = d.verdict.heldout_gap_before;
+  row.heldout_gap_after = d.verdict.heldout_gap_after;
+  row.confidence = d.verdict.confidence;
+  row.correct = row.verdict == sc.true_effect;
+  return row;
+}
+
+}  // namespace
+
 SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis,
-                            const std::function<void(const SelftestRow&)>& on_row) {
+                            const std::function<void(const SelftestRow&)>& on_row, const std::vector<SelftestRow>& finished) {
   SelftestResult out;
   int effect_cases = 0, effect_right = 0, controls = 0, controls_none = 0;
   std::map<std::string, std::pair<double, int>> shrink;
   for (const SelftestCase& sc : cases) {
-    const SyntheticCase c = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
-    diagnosis.seed = sc.seed;
-    const rig::RigParameters rig = apply_bundle_rig(c.bundle, rig::RigParameters{});
-    const Diagnosis d = diagnose(c.bundle, rig, c.model, diagnosis);
-    SelftestRow row;
-    row.c = sc;
-    row.verdict = verdict_name(d.verdict.effects);
-    row.heldout_gap_before = d.verdict.heldout_gap_before;
-    row.heldout_gap_after = d.verdict.heldout_gap_after;
-    row.confidence = d.verdict.confidence;
-    row.correct = row.verdict == sc.true_effect;
+    const auto earlier = std::find_if(finished.begin(), finished.end(), [&](const SelftestRow& r) { return same_case(r.c, sc); });
+    const bool fresh = earlier == finished.end();
+    const SelftestRow row = fresh ? diagnose_case(sc, synthetic, diagnosis) : *earlier;
     ++out.confusion[sc.true_effect][row.verdict];
     if (sc.true_effect == "none") {
       ++controls, controls_none += row.correct;
@@ -168,7 +183,7 @@ SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const Synthe
       }
     }
     out.rows.push_back(row);
-    if (on_row) on_row(row);
+    if (fresh && on_row) on_row(row);
   }
   out.identified_fraction = effect_cases ? static_cast<double>(effect_right) / effect_cases : 1.0;
   out.controls_none_fraction = controls ? static_cast<double>(controls_none) / controls : 1.0;

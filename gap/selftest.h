@@ -66,7 +66,13 @@ struct SelftestResult {
 // The quick set (CI) or the full set: every effect × seeds, controls, and the second-effect case.
 std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed);
 
+// `finished` holds rows of an earlier, interrupted run: a case found there (same true effect,
+// model effects and seed) is taken as it is rather than diagnosed again. `on_row` is called for
+// every newly diagnosed case, as soon as it is done (to flush it to disk).
 SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis,
-                            const std::function<void(const SelftestRow&)>& on_row);
+                            const std::function<void(const SelftestRow&)>& on_row,
+                            const std::vector<SelftestRow>& finished = {});
+
+bool same_case(const SelftestCase& a, const SelftestCase& b);
 
 }  // namespace tribo::gap
