@@ -106,6 +106,26 @@ TEST(Diagnosis, TracesOnlyNameViscousFrictionDeterministically) {
   EXPECT_EQ(report_json(d).dump(), report_json(again).dump());
 }
 
+// Resuming an interrupted selftest: a case already in `finished` is taken as it was written (here
+// a made-up verdict no diagnosis would give), is not handed to on_row again, and counts in the
+// confusion matrix; no diagnosis runs, so this returns at once.
+TEST(Selftest, FinishedCasesAreTakenNotDiagnosedAgain) {
+  const SelftestCase c{"viscous_friction", {}, 42};
+  SelftestRow earlier;
+  earlier.c = c;
+  earlier.verdict = "instrument";
+  earlier.heldout_gap_before = 0.125;
+  earlier.heldout_gap_after = 0.0625;
+  int fresh_rows = 0;
+  const SelftestResult r = run_selftest({c}, small(), DiagnosisOptions{}, [&](const SelftestRow&) { ++fresh_rows; }, {earlier});
+  EXPECT_EQ(fresh_rows, 0);
+  ASSERT_EQ(r.rows.size(), 1u);
+  EXPECT_EQ(r.rows[0].verdict, "instrument");
+  EXPECT_EQ(r.rows[0].heldout_gap_after, 0.0625);
+  EXPECT_EQ(r.confusion.at("viscous_friction").at("instrument"), 1);
+  EXPECT_EQ(r.identified_fraction, 0.0);
+}
+
 TEST(Diagnosis, RejectsInvalidOptions) {
   ExperimentBundle b;
   b.static_points = {{1.0, 0.3}};
