@@ -84,6 +84,9 @@ struct Setup {
 double damping_ratio(const rig::RigParameters& rig) {
   return rig.damping_N_s_per_m / (2.0 * std::sqrt(rig.stiffness_N_per_m * rig.mass_kg));
 }
+void set_damping_ratio(rig::RigParameters& rig, double zeta) {
+  rig.damping_N_s_per_m = zeta * 2.0 * std::sqrt(rig.stiffness_N_per_m * rig.mass_kg);
+}
 
 void apply(const std::vector<FitParameter>& space, const std::vector<double>& u, Setup& s) {
   double ratio = s.model.baseline.mu_s > 0.0 ? s.model.baseline.mu_k / s.model.baseline.mu_s : 1.0;
@@ -104,7 +107,7 @@ void apply(const std::vector<FitParameter>& space, const std::vector<double>& u,
       case FitParameter::Target::effect: s.model.set(p.effect, p.name, v); break;
     }
   }
-  if (fit_zeta) s.rig.damping_N_s_per_m = zeta * 2.0 * std::sqrt(s.rig.stiffness_N_per_m * s.rig.mass_kg);
+  if (fit_zeta) set_damping_ratio(s.rig, zeta);  // after k and M, whatever their order in the space
   if (!s.model.baseline.kinetic) s.model.baseline.mu_k = std::min(ratio, 1.0) * s.model.baseline.mu_s;
 }
 
@@ -440,7 +443,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     const auto calibrated = [&](const char* key) { return std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), key) > 0; };
     const double k_read = comparison.loading_stiffness_N_per_m();
     if (calibrated("stiffness_N_per_m") && std::isfinite(k_read)) guess.rig.stiffness_N_per_m = k_read;
-    if (calibrated("damping_ratio")) guess.rig.damping_N_s_per_m = std::sqrt(guess.rig.stiffness_N_per_m * guess.rig.mass_kg);
+    if (calibrated("damping_ratio")) set_damping_ratio(guess.rig, 0.5);
   }
   DiagnosisOptions calibration = o;
   calibration.max_iterations = std::max(50, 2 * o.max_iterations);  // few parameters: converge fully, so no
