@@ -3,9 +3,7 @@
 namespace tribo::cli {
 
 rig::FrictionModel thesis_demo_model() {
-  rig::FrictionModel m;
-  m.baseline.mu_s = 0.55;
-  m.baseline.mu_k = 0.12;
+  rig::FrictionModel m = rig::coulomb(0.55, 0.12);
   m.add("rate_dependent_static");
   m.add("slip_transient");
   m.add("squeeze_film");

@@ -17,7 +17,7 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kWindowStartFraction = 0.3;  // analysis skips the first 30 % of a run
 constexpr int kSlipDropPoints = 4;
-constexpr int kStepBins = 12;
+constexpr int kStepBins = 24;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
 constexpr const char* kFrictionLevel = "friction level";
 
@@ -258,28 +258,37 @@ Simulated run_simulation(const rig::RigParameters& rig, const rig::Drive& drive,
   return s;
 }
 
-// The machine stiffness read off a velocity step up: right after the step the contact re-locks
-// and the load point loads it elastically, dF/dX = k, until it slips at the friction peak; so
-// k ≈ W Δμ_peak / ΔX_peak with Δμ_peak the peak of μ − μ_before (3-sample running mean, in the
-// first quarter of the record after the step) and ΔX_peak the load-point travel to it.
-double loading_stiffness(const Signal& s, const RunPlan& plan, double W) {
+// The response to the first velocity step up (see StepResponse).
+StepResponse read_step_response(const Signal& s, const RunPlan& plan, double W) {
+  StepResponse out;
   const double t_first = s.t.front();
   for (std::size_t k = 1; k < plan.step_times_s.size(); ++k) {
     if (!(plan.step_speeds_m_per_s[k] > plan.step_speeds_m_per_s[k - 1])) continue;
     const double a = t_first + plan.step_times_s[k - 1], t_step = t_first + plan.step_times_s[k];
     const double t_end = k + 1 < plan.step_times_s.size() ? t_first + plan.step_times_s[k + 1] : s.t.back();
     const double before = window_mean(s.t, s.mu, t_step - 0.3 * (t_step - a), t_step);
+    const double after = window_mean(s.t, s.mu, t_end - 0.3 * (t_end - t_step), t_end) - before;
     const double x_step = interp(s.t, s.x_drive, t_step);
     const double t_search = t_step + 0.25 * (t_end - t_step);
+    auto rise = [&](std::size_t i) { return (s.mu[i - 1] + s.mu[i] + s.mu[i + 1]) / 3.0 - before; };
     double best = 0.0, x_best = 0.0;
+    std::size_t i_best = 0;
     for (std::size_t i = 1; i + 1 < s.t.size(); ++i) {
       if (s.t[i] <= t_step || s.t[i] > t_search) continue;
-      const double m = (s.mu[i - 1] + s.mu[i] + s.mu[i + 1]) / 3.0 - before;
-      if (m > best) best = m, x_best = s.x_drive[i] - x_step;
+      if (rise(i) > best) best = rise(i), x_best = s.x_drive[i] - x_step, i_best = i;
     }
-    if (best > 0.0 && x_best > 0.0) return W * best / x_best;
+    if (!(best > 0.0 && x_best > 0.0)) continue;
+    out.peak_rise = best;
+    out.peak_travel_m = x_best;
+    out.loading_stiffness_N_per_m = W * best / x_best;
+    for (std::size_t i = i_best + 1; i + 1 < s.t.size() && s.t[i] <= t_end; ++i)
+      if (rise(i) - after <= (best - after) / std::exp(1.0)) {
+        out.decay_distance_m = s.x_drive[i] - x_step - x_best;
+        break;
+      }
+    return out;
   }
-  return kNaN;
+  return out;
 }
 
 // A velocity step as the rig sees it: the first segment starts in steady sliding; at every step
@@ -387,7 +396,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
           s.x_drive[i] = s.x_drive[i - 1] + 0.5 * (tr.v_drive_m_per_s[i] + tr.v_drive_m_per_s[i - 1]) * (tr.t_s[i] - tr.t_s[i - 1]);
       }
       const Features f = analyse_drive_history(s, plan, &plan.step_bin_edges_m);
-      if (!std::isfinite(loading_stiffness_N_per_m_)) loading_stiffness_N_per_m_ = loading_stiffness(s, plan, W);
+      if (!std::isfinite(step_response_.peak_rise)) step_response_ = read_step_response(s, plan, W);
       plans_.push_back(plan);
       for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
         const std::string key = "steady_mu_" + std::to_string(k);

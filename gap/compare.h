@@ -68,6 +68,20 @@ struct SimulatedRun {
   std::vector<double> t_s, friction_N, mu;  // as measured by the instrument model
 };
 
+// Friction after a velocity step up, read off μ − μ_before (3-sample running mean) against the
+// load-point travel X since the step: right after the step the contact re-locks and the load
+// point loads it elastically, dF/dX = k, until it slips at the peak; then friction decays to the
+// new steady level.
+struct StepResponse {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  double peak_rise = kNaN;                   // Δμ_peak (first quarter of the record after the step)
+  double peak_travel_m = kNaN;               // ΔX_peak, load-point travel to the peak
+  double loading_stiffness_N_per_m = kNaN;   // k ≈ W Δμ_peak / ΔX_peak
+  // Travel from the peak until the excess over the new steady level has fallen to 1/e of its
+  // peak value: the slip distance of the decay (the rig slides with the load point by then).
+  double decay_distance_m = kNaN;
+};
+
 class Comparison {
  public:
   // `rig` supplies what the bundle leaves out (normal load for μ = F/W, ...). Throws
@@ -87,17 +101,16 @@ class Comparison {
   std::vector<double> residuals(const std::vector<double>& simulated) const;
   double scale(const std::string& observable) const;
 
-  // The machine stiffness read off the measured rise of friction after the first velocity step up
-  // (k ≈ W Δμ_peak / ΔX_peak: the contact re-locks and loads elastically until it slips); a start
-  // for calibrating a stiffness nobody gives. NaN without a step up.
-  double loading_stiffness_N_per_m() const { return loading_stiffness_N_per_m_; }
+  // The measured response to the first velocity step up (all NaN without one): starts for the
+  // fits of a velocity-step test.
+  const StepResponse& step_response() const { return step_response_; }
 
  private:
   std::vector<Item> items_;
   std::vector<RunPlan> plans_;
   std::vector<std::pair<std::string, double>> scales_;
   int units_ = 0;
-  double loading_stiffness_N_per_m_ = std::numeric_limits<double>::quiet_NaN();
+  StepResponse step_response_;
 };
 
 }  // namespace tribo::gap

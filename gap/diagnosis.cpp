@@ -29,11 +29,14 @@ struct FitParameter {
     const double w = std::clamp(u - 1.0, 0.0, 1.0);
     return log ? lower * std::pow(upper / lower, w) : lower + w * (upper - lower);
   }
+  // Starts of effect parameters lie inside the box, so that a forward difference never lands on
+  // a bound and sees no slope. Baseline and rig parameters are placed where the calibration put
+  // them, bounds included: moved inside, a rig at its damping bound would start a candidate fit
+  // from a different machine (one that stick-slips where the calibrated one slides).
   double coordinate(double v) const {
     v = std::clamp(v, lower, upper);
     const double w = log ? std::log(v / lower) / std::log(upper / lower) : (v - lower) / (upper - lower);
-    // Starts lie inside the box so that a forward difference never lands on a bound and sees no slope.
-    return 1.0 + std::clamp(w, 0.02, 0.98);
+    return 1.0 + (target == Target::effect ? std::clamp(w, 0.02, 0.98) : std::clamp(w, 0.0, 1.0));
   }
   std::string label() const {
     switch (target) {
@@ -118,22 +121,25 @@ double rig_value(const rig::RigParameters& rig, const std::string& key) {
   return rig.mass_kg;
 }
 
+// The value a parameter has in a setup (μk itself for the fitted ratio μk/μs, as reported).
+double current(const FitParameter& p, const Setup& s) {
+  switch (p.target) {
+    case FitParameter::Target::mu_s: return s.model.baseline.mu_s;
+    case FitParameter::Target::mu_k_ratio: return s.model.baseline.mu_k;
+    case FitParameter::Target::rig: return rig_value(s.rig, p.name);
+    case FitParameter::Target::effect: break;
+  }
+  rig::FrictionModel m = s.model;
+  m.add(p.effect);
+  return m.get(p.effect, p.name);
+}
+
 std::vector<double> coordinates(const std::vector<FitParameter>& space, const Setup& s) {
   std::vector<double> u;
   for (const FitParameter& p : space) {
-    switch (p.target) {
-      case FitParameter::Target::mu_s: u.push_back(p.coordinate(s.model.baseline.mu_s)); break;
-      case FitParameter::Target::mu_k_ratio:
-        u.push_back(p.coordinate(s.model.baseline.mu_s > 0.0 ? s.model.baseline.mu_k / s.model.baseline.mu_s : 1.0));
-        break;
-      case FitParameter::Target::rig: u.push_back(p.coordinate(rig_value(s.rig, p.name))); break;
-      case FitParameter::Target::effect: {
-        rig::FrictionModel m = s.model;
-        m.add(p.effect);
-        u.push_back(p.coordinate(m.get(p.effect, p.name)));
-        break;
-      }
-    }
+    const double v = current(p, s);
+    const bool ratio = p.target == FitParameter::Target::mu_k_ratio;
+    u.push_back(p.coordinate(ratio ? (s.model.baseline.mu_s > 0.0 ? v / s.model.baseline.mu_s : 1.0) : v));
   }
   return u;
 }
@@ -216,7 +222,7 @@ enum class Resolution { search, refine };
 
 FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const Setup& start, const std::vector<bool>& train_mask,
               const DiagnosisOptions& o, std::uint64_t seed, int starts, std::size_t randomised_from,
-              Resolution resolution = Resolution::search) {
+              Resolution resolution = Resolution::search, bool start_read_off_data = false) {
   std::vector<int> train;
   for (std::size_t i = 0; i < train_mask.size(); ++i)
     if (train_mask[i]) train.push_back(static_cast<int>(i));
@@ -257,7 +263,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   // effect, and friction observables are only piecewise smooth, so a local method needs a basin.
   // The grid is coarse against a narrow valley, so the next-best points start fits too.
   // Without a grid (no effect coordinates, or more than two) the first start is `start` and the
-  // others are random points in the bounds.
+  // others are random points in the bounds. With `start_read_off_data`, `start` joins the grid.
   std::vector<std::pair<double, std::vector<double>>> grid;
   const std::vector<double> initial = coordinates(space, start);
   const std::size_t dims = space.size() - randomised_from;
@@ -278,6 +284,13 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
       std::size_t d = 0;
       while (d < dims && ++idx[d] == levels.size()) idx[d++] = 0;
       if (d == dims) break;
+    }
+    // A start read off the data competes with the grid points on the same terms.
+    if (start_read_off_data) {
+      std::vector<double> lead = lead0, tail(initial.begin() + static_cast<long>(randomised_from), initial.end());
+      const double cu = solve(lead, tail, 3);
+      lead.insert(lead.end(), tail.begin(), tail.end());
+      grid.emplace_back(cu, lead);
     }
     std::stable_sort(grid.begin(), grid.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   }
@@ -323,12 +336,7 @@ std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const 
 
 std::map<std::string, double> values(const std::vector<FitParameter>& space, const Setup& s) {
   std::map<std::string, double> out;
-  const std::vector<double> u = coordinates(space, s);
-  for (std::size_t i = 0; i < space.size(); ++i) {
-    double v = space[i].value(u[i]);
-    if (space[i].target == FitParameter::Target::mu_k_ratio) v = s.model.baseline.mu_k;
-    out[space[i].label()] = v;
-  }
+  for (const FitParameter& p : space) out[p.label()] = current(p, s);
   return out;
 }
 
@@ -441,7 +449,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     // A machine nobody describes: its stiffness from the elastic rise after a velocity step, and
     // half-critical damping (a servo-driven load point is far from the thesis rig's ζ ≈ 0.01).
     const auto calibrated = [&](const char* key) { return std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), key) > 0; };
-    const double k_read = comparison.loading_stiffness_N_per_m();
+    const double k_read = comparison.step_response().loading_stiffness_N_per_m;
     if (calibrated("stiffness_N_per_m") && std::isfinite(k_read)) guess.rig.stiffness_N_per_m = k_read;
     if (calibrated("damping_ratio")) set_damping_ratio(guess.rig, 0.5);
   }
@@ -525,8 +533,19 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
         }
       }
     }
+    // A velocity step shows the slip transient directly: a peak Δμ above the old level, then a
+    // decay over a slip distance. Breakaway at μs = μk + Δμ_peak with the whole excess decaying
+    // (a = 1) over the measured 1/e distance is where that fit starts too.
+    const StepResponse& step = comparison.step_response();
+    bool read_off = false;
+    if (effects.size() == 1 && effects[0] == "slip_transient" && !start.model.baseline.kinetic && std::isfinite(step.decay_distance_m) && step.decay_distance_m > 0.0) {
+      start.model.baseline.mu_s = start.model.baseline.mu_k + step.peak_rise;
+      start.model.set("slip_transient", "amplitude", 1.0);
+      start.model.set("slip_transient", "decay_distance_m", step.decay_distance_m);
+      read_off = true;
+    }
     const std::vector<FitParameter> space = space_of(effects);
-    const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, base_space.size());
+    const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, base_space.size(), Resolution::search, read_off);
     Candidate c = candidate_from(effects, space, r.setup);
     report("fitted " + verdict_name(effects));
     return c;

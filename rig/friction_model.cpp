@@ -104,6 +104,13 @@ const EffectInfo& effect_info(const std::string& name) {
   throw std::invalid_argument("unknown friction effect '" + name + "' (known: " + known + ")");
 }
 
+FrictionModel coulomb(double mu_s, double mu_k) {
+  FrictionModel m;
+  m.baseline.mu_s = mu_s;
+  m.baseline.mu_k = mu_k;
+  return m;
+}
+
 void FrictionModel::add(const std::string& effect) {
   if (has(effect)) return;
   std::vector<double> values;

@@ -56,6 +56,9 @@ struct FrictionModel {
   void set(const std::string& effect, const std::string& parameter, double value);
 };
 
+// The traditional model the diagnosis starts from: constant μs and μk, no effects (DESIGN §8).
+FrictionModel coulomb(double mu_s, double mu_k);
+
 // Checks names, counts and bounds; throws std::invalid_argument naming effect.parameter.
 void validate(const FrictionModel& model);
 

@@ -18,19 +18,12 @@ SyntheticOptions small() {
   return o;
 }
 
-rig::FrictionModel coulomb(double mu_s, double mu_k) {
-  rig::FrictionModel m;
-  m.baseline.mu_s = mu_s;
-  m.baseline.mu_k = mu_k;
-  return m;
-}
-
 // Like with like: the truth simulated through the same analysis reproduces its own "measured"
 // observables to within the sensor noise (1 % of μk W, averaged over cycles), and a 10 % error in
 // μs shows up as a gap of several per cent.
 TEST(Comparison, TruthReproducesItsOwnMeasurementsAndMiscalibrationShows) {
   const rig::RigParameters rig;
-  const rig::FrictionModel truth = coulomb(0.32, 0.2);
+  const rig::FrictionModel truth = rig::coulomb(0.32, 0.2);
   const ExperimentBundle b = synthesize_bundle(rig, truth, small(), 3);
   const Comparison c(b, rig);
   ASSERT_GT(c.items().size(), 20u);
@@ -41,7 +34,7 @@ TEST(Comparison, TruthReproducesItsOwnMeasurementsAndMiscalibrationShows) {
     return std::sqrt(s / static_cast<double>(r.size()));
   };
   EXPECT_LT(rms(truth), 0.01);
-  EXPECT_GT(rms(coulomb(0.352, 0.2)), 0.05);
+  EXPECT_GT(rms(rig::coulomb(0.352, 0.2)), 0.05);
 }
 
 // The observables move nearly continuously with the model's parameters (extrema refined between
@@ -52,12 +45,12 @@ TEST(Comparison, TruthReproducesItsOwnMeasurementsAndMiscalibrationShows) {
 // least-squares fit to stall on.
 TEST(Comparison, ResidualIsUnimodalOnAFineScanAroundTheTruth) {
   const rig::RigParameters rig;
-  const rig::FrictionModel truth = coulomb(0.32, 0.2);
+  const rig::FrictionModel truth = rig::coulomb(0.32, 0.2);
   const ExperimentBundle b = synthesize_bundle(rig, truth, small(), 3);
   const Comparison c(b, rig);
   std::vector<double> rms;
   for (int k = -5; k <= 5; ++k) {
-    const std::vector<double> r = c.residuals(c.predict(rig, coulomb(0.32, 0.2 * (1.0 + 0.004 * k)), 3));
+    const std::vector<double> r = c.residuals(c.predict(rig, rig::coulomb(0.32, 0.2 * (1.0 + 0.004 * k)), 3));
     double s = 0.0;
     for (double x : r) s += x * x;
     rms.push_back(std::sqrt(s / static_cast<double>(r.size())));
@@ -74,11 +67,11 @@ TEST(Comparison, ResidualIsUnimodalOnAFineScanAroundTheTruth) {
 // (noise 1 % of μk W on each point, averaged over points) and nothing earns its parameters.
 TEST(Diagnosis, StaticPointsOnlyCalibrateMuSAndAnswerNone) {
   const rig::RigParameters rig;
-  ExperimentBundle b = synthesize_bundle(rig, coulomb(0.3, 0.2), small(), 5);
+  ExperimentBundle b = synthesize_bundle(rig, rig::coulomb(0.3, 0.2), small(), 5);
   b.runs.clear();
   DiagnosisOptions o;
   o.max_iterations = 6;
-  const Diagnosis d = diagnose(b, rig, coulomb(0.36, 0.2), o);
+  const Diagnosis d = diagnose(b, rig, rig::coulomb(0.36, 0.2), o);
   EXPECT_NEAR(d.calibrated.baseline.mu_s, 0.3, 0.003);
   EXPECT_TRUE(d.verdict.effects.empty()) << verdict_name(d.verdict.effects);
   EXPECT_LT(d.baseline.gap, 0.02);
@@ -88,7 +81,7 @@ TEST(Diagnosis, StaticPointsOnlyCalibrateMuSAndAnswerNone) {
 // held-out gap shrinks by more than half. Same seed, same report (determinism).
 TEST(Diagnosis, TracesOnlyNameViscousFrictionDeterministically) {
   const rig::RigParameters rig;
-  rig::FrictionModel truth = coulomb(0.32, 0.18);
+  rig::FrictionModel truth = rig::coulomb(0.32, 0.18);
   truth.set("viscous_friction", "coefficient_N_s_per_m", 60.0);
   SyntheticOptions so = small();
   so.speeds_m_per_s = {6e-3, 9e-3, 1.3e-2, 1.8e-2};  // below the speed where c = 60 N s/m stabilises sliding
@@ -98,12 +91,41 @@ TEST(Diagnosis, TracesOnlyNameViscousFrictionDeterministically) {
   o.max_iterations = 8;
   o.candidates = {"viscous_friction", "slip_transient", "hydrodynamic_lift"};
   o.seed = 4;
-  const Diagnosis d = diagnose(b, rig, coulomb(0.3, 0.2), o);
+  const Diagnosis d = diagnose(b, rig, rig::coulomb(0.3, 0.2), o);
   ASSERT_EQ(verdict_name(d.verdict.effects), "viscous_friction") << report_json(d)["candidates"].dump(1);
   EXPECT_LT(d.verdict.heldout_gap_after, 0.5 * d.verdict.heldout_gap_before);
   EXPECT_NEAR(d.candidates.front().params.at("viscous_friction.coefficient_N_s_per_m"), 60.0, 20.0);  // 8 iterations on a piecewise-smooth cost
-  const Diagnosis again = diagnose(b, rig, coulomb(0.3, 0.2), o);
+  const Diagnosis again = diagnose(b, rig, rig::coulomb(0.3, 0.2), o);
   EXPECT_EQ(report_json(d).dump(), report_json(again).dump());
+}
+
+// The response to a velocity step read off a made-up record with known shape: 60 µm at 3 µm/s,
+// then 10 µm/s; after the step μ rises linearly by 0.01 over 1 µm of load-point travel and decays
+// back as exp(−(X − 1 µm)/8 µm). Sampled at 100 Hz (0.1 µm per sample after the step): the
+// 3-sample running mean rounds the peak off by about a third of the rise over one sample (≈ 1.2 %)
+// and may place it one sample late, so ΔX_peak is good to 0.1 µm and k = W Δμ/ΔX to ≈ 12 %.
+TEST(Comparison, StepResponseReadsPeakStiffnessAndDecayDistance) {
+  ExperimentBundle b;
+  b.kind = "velocity_step";
+  gap::Run run;
+  run.run_id = "0";
+  run.v_m_per_s = 3e-6;
+  const double rise = 0.01, x_peak = 1e-6, decay = 8e-6;
+  for (int i = 0; i <= 7000; ++i) {
+    const double t = 0.01 * i, x = t < 20.0 ? 3e-6 * t : 6e-5 + 1e-5 * (t - 20.0), after = x - 6e-5;
+    run.trace.t_s.push_back(t);
+    run.trace.v_drive_m_per_s.push_back(t < 20.0 ? 3e-6 : 1e-5);
+    run.trace.x_drive_m.push_back(x);
+    const double excess = after <= 0.0 ? 0.0 : after < x_peak ? rise * after / x_peak : rise * std::exp(-(after - x_peak) / decay);
+    run.trace.mu.push_back(0.6 + excess);
+  }
+  b.runs.push_back(run);
+  const rig::RigParameters rig;
+  const StepResponse& s = Comparison(b, rig).step_response();
+  EXPECT_NEAR(s.peak_rise, rise, 0.02 * rise);
+  EXPECT_NEAR(s.peak_travel_m, x_peak, 0.1e-6);
+  EXPECT_NEAR(s.loading_stiffness_N_per_m, rig.normal_load_N * rise / x_peak, 0.15 * rig.normal_load_N * rise / x_peak);
+  EXPECT_NEAR(s.decay_distance_m, decay, 0.2e-6);  // two samples
 }
 
 // Resuming an interrupted selftest: a case already in `finished` is taken as it was written (here
@@ -131,7 +153,7 @@ TEST(Diagnosis, RejectsInvalidOptions) {
   b.static_points = {{1.0, 0.3}};
   DiagnosisOptions o;
   o.calibrate_rig = {"colour"};
-  EXPECT_THROW(diagnose(b, rig::RigParameters{}, coulomb(0.3, 0.2), o), std::invalid_argument);
+  EXPECT_THROW(diagnose(b, rig::RigParameters{}, rig::coulomb(0.3, 0.2), o), std::invalid_argument);
 }
 
 }  // namespace

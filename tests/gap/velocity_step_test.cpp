@@ -12,13 +12,6 @@
 namespace tribo::gap {
 namespace {
 
-rig::FrictionModel coulomb(double mu_s, double mu_k) {
-  rig::FrictionModel m;
-  m.baseline.mu_s = mu_s;
-  m.baseline.mu_k = mu_k;
-  return m;
-}
-
 // "Measured" velocity step 3 → 10 µm/s: the truth simulated under the drive history of a
 // 10 Hz record and sampled there, plus sensor noise.
 ExperimentBundle velocity_step_bundle(const rig::RigParameters& truth_rig, const rig::FrictionModel& truth, std::uint64_t seed) {
@@ -58,7 +51,7 @@ TEST(Diagnosis, VelocityStepCalibratesStiffnessAndDampingAndNamesTheSlipTransien
   rig::RigParameters truth_rig;
   truth_rig.stiffness_N_per_m = 3e5;
   truth_rig.damping_N_s_per_m = 0.5 * 2.0 * std::sqrt(3e5 * truth_rig.mass_kg);  // ζ = 0.5
-  rig::FrictionModel truth = coulomb(0.619, 0.608);
+  rig::FrictionModel truth = rig::coulomb(0.619, 0.608);
   truth.set("slip_transient", "amplitude", 1.0);
   truth.set("slip_transient", "decay_distance_m", 1e-5);
   const ExperimentBundle b = velocity_step_bundle(truth_rig, truth, 7);
@@ -68,7 +61,7 @@ TEST(Diagnosis, VelocityStepCalibratesStiffnessAndDampingAndNamesTheSlipTransien
   o.bootstrap_samples = 50;
   o.calibrate_rig = {"stiffness_N_per_m", "damping_ratio"};
   o.candidates = {"slip_transient", "viscous_friction", "strain_rate_hardening"};
-  const Diagnosis d = diagnose(b, rig::RigParameters{}, coulomb(0.62, 0.6), o);
+  const Diagnosis d = diagnose(b, rig::RigParameters{}, rig::coulomb(0.62, 0.6), o);
   ASSERT_EQ(verdict_name(d.verdict.effects), "slip_transient") << report_json(d)["candidates"].dump(1);
   EXPECT_EQ(d.localization.front().observable, "mu_after_step");
   EXPECT_LT(d.verdict.heldout_gap_after, 0.5 * d.verdict.heldout_gap_before);

@@ -15,13 +15,6 @@
 namespace tribo::rig {
 namespace {
 
-FrictionModel coulomb(double mu_s, double mu_k) {
-  FrictionModel m;
-  m.baseline.mu_s = mu_s;
-  m.baseline.mu_k = mu_k;
-  return m;
-}
-
 SimulationResult run(const RigParameters& rig, const FrictionModel& model, double v, double duration,
                      bool steady_start = false) {
   SimulationOptions opt;
