@@ -189,6 +189,19 @@ Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::strin
   return f;
 }
 
+// The ratio q ≥ 1 with 1 + q + … + q^(n−1) = total (in units of the first term): bisection.
+double geometric_ratio(double total, int n) {
+  if (total <= n) return 1.0;
+  double lo = 1.0, hi = 2.0;
+  auto sum = [n](double q) { return (std::pow(q, n) - 1.0) / (q - 1.0); };
+  while (sum(hi) < total) hi *= 2.0;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (sum(mid) < total ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 // Velocity steps: steady μ per drive segment and μ − μ_before binned in load-point displacement.
 Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector<std::vector<double>>* edges_out) {
   Features f;
@@ -206,8 +219,14 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
     const double x_step = interp(s.t, s.x_drive, t_step);
     std::vector<double> edges;
     if (edges_out) {
+      // Widths growing geometrically from the load-point travel of one sample, so the first bins
+      // (one or two samples each) resolve the transient and alternate between train and
+      // held-out; kStepBins of them reach the end of the segment.
       const double span = (t_end >= s.t.back() ? s.x_drive.back() : interp(s.t, s.x_drive, t_end)) - x_step;
-      for (int j = 0; j <= kStepBins; ++j) edges.push_back(span * std::pow(static_cast<double>(j) / kStepBins, 2.0));
+      const double first = std::min(plan.step_speeds_m_per_s[k] * plan.sample_spacing_s, span / kStepBins);
+      const double growth = geometric_ratio(span / first, kStepBins);
+      edges.push_back(0.0);
+      for (int j = 0; j < kStepBins; ++j) edges.push_back(j + 1 == kStepBins ? span : edges.back() + first * std::pow(growth, j));
       edges_out->push_back(edges);
     } else {
       edges = plan.step_bin_edges_m[k - 1];
@@ -383,6 +402,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       const double vmax = *std::max_element(tr.v_drive_m_per_s.begin(), tr.v_drive_m_per_s.end());
       plan.step_times_s.push_back(0.0);
       plan.step_speeds_m_per_s.push_back(tr.v_drive_m_per_s.front());
+      for (double t : tr.t_s) plan.sample_times_s.push_back(t - tr.t_s.front());
       for (std::size_t i = 1; i < tr.t_s.size(); ++i)
         if (std::abs(tr.v_drive_m_per_s[i] - tr.v_drive_m_per_s[i - 1]) > 1e-3 * vmax) {
           plan.step_times_s.push_back(tr.t_s[i] - tr.t_s.front());
@@ -545,7 +565,16 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
             s.x_drive.push_back(sim.samples[i].drive_displacement_m);
           }
           if (history) {
-            f = analyse_drive_history(s, plan, nullptr);
+            // Sampled where the measurement was: a bin near the step holds one or two measured
+            // samples, and the simulated bin must average the same instants, not the whole bin.
+            Signal at;
+            for (double t : plan.sample_times_s) {
+              const bool last = t >= s.t.back();  // the run ends at the last measured instant
+              at.t.push_back(t);
+              at.mu.push_back(last ? s.mu.back() : interp(s.t, s.mu, t));
+              at.x_drive.push_back(last ? s.x_drive.back() : interp(s.t, s.x_drive, t));
+            }
+            f = analyse_drive_history(at, plan, nullptr);
           } else {
             double step = plan.slip_step_s;
             f = analyse_constant_speed(s, step, nullptr);

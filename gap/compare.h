@@ -61,6 +61,7 @@ struct RunPlan {
   double sample_spacing_s = 0.0;                          // measured median spacing
   double slip_step_s = 0.0;                               // Δ of slip_drop (from the measured run)
   std::vector<std::vector<double>> step_bin_edges_m;      // per step: displacement bin edges
+  std::vector<double> sample_times_s;                     // drive history: measured times − first
 };
 
 struct SimulatedRun {

@@ -29,14 +29,14 @@ struct FitParameter {
     const double w = std::clamp(u - 1.0, 0.0, 1.0);
     return log ? lower * std::pow(upper / lower, w) : lower + w * (upper - lower);
   }
-  // Starts of effect parameters lie inside the box, so that a forward difference never lands on
-  // a bound and sees no slope. Baseline and rig parameters are placed where the calibration put
-  // them, bounds included: moved inside, a rig at its damping bound would start a candidate fit
-  // from a different machine (one that stick-slips where the calibrated one slides).
+  // Starts lie inside the box, so that a forward difference never lands on a bound and sees no
+  // slope; except rig keys, placed where the calibration put them, bounds included: moved inside,
+  // a rig at its damping bound would start a candidate fit from a different machine (one that
+  // stick-slips after a velocity step where the calibrated one slides).
   double coordinate(double v) const {
     v = std::clamp(v, lower, upper);
     const double w = log ? std::log(v / lower) / std::log(upper / lower) : (v - lower) / (upper - lower);
-    return 1.0 + (target == Target::effect ? std::clamp(w, 0.02, 0.98) : std::clamp(w, 0.0, 1.0));
+    return 1.0 + (target == Target::rig ? w : std::clamp(w, 0.02, 0.98));
   }
   std::string label() const {
     switch (target) {
@@ -538,7 +538,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     // (a = 1) over the measured 1/e distance is where that fit starts too.
     const StepResponse& step = comparison.step_response();
     bool read_off = false;
-    if (effects.size() == 1 && effects[0] == "slip_transient" && !start.model.baseline.kinetic && std::isfinite(step.decay_distance_m) && step.decay_distance_m > 0.0) {
+    if (effects == std::vector<std::string>{"slip_transient"} && !start.model.baseline.kinetic && step.decay_distance_m > 0.0) {
       start.model.baseline.mu_s = start.model.baseline.mu_k + step.peak_rise;
       start.model.set("slip_transient", "amplitude", 1.0);
       start.model.set("slip_transient", "decay_distance_m", step.decay_distance_m);
