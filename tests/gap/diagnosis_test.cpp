@@ -121,7 +121,7 @@ TEST(Comparison, StepResponseReadsPeakStiffnessAndDecayDistance) {
   }
   b.runs.push_back(run);
   const rig::RigParameters rig;
-  const StepResponse& s = Comparison(b, rig).step_response();
+  const StepResponse s = Comparison(b, rig).step_response();
   EXPECT_NEAR(s.peak_rise, rise, 0.02 * rise);
   EXPECT_NEAR(s.peak_travel_m, x_peak, 0.1e-6);
   EXPECT_NEAR(s.loading_stiffness_N_per_m, rig.normal_load_N * rise / x_peak, 0.15 * rig.normal_load_N * rise / x_peak);
