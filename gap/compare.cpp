@@ -73,6 +73,9 @@ double window_mean(const std::vector<double>& t, const std::vector<double>& y, d
   return n ? s / n : kNaN;
 }
 
+// Steady μ of a drive segment [t_a, t_b]: the mean over its last 30 %, after the transient.
+double steady_mu(const Signal& s, double t_a, double t_b) { return window_mean(s.t, s.mu, t_b - 0.3 * (t_b - t_a), t_b); }
+
 // Trapezoidal time average of y over [a, b] (t_front ≤ a < b ≤ t_back), ends interpolated.
 double time_average(const std::vector<double>& t, const std::vector<double>& y, double a, double b) {
   double area = 0.0, t_prev = a, y_prev = interp(t, y, a);
@@ -211,7 +214,7 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
   std::vector<double> steady(segments);
   for (std::size_t k = 0; k < segments; ++k) {
     const double a = t_first + plan.step_times_s[k], b = segment_end(k);
-    steady[k] = window_mean(s.t, s.mu, b - 0.3 * (b - a), b);
+    steady[k] = steady_mu(s, a, b);
     f["steady_mu_" + std::to_string(k)] = steady[k];
   }
   for (std::size_t k = 1; k < segments; ++k) {
@@ -285,8 +288,8 @@ StepResponse read_step_response(const Signal& s, const RunPlan& plan, double W) 
     if (!(plan.step_speeds_m_per_s[k] > plan.step_speeds_m_per_s[k - 1])) continue;
     const double a = t_first + plan.step_times_s[k - 1], t_step = t_first + plan.step_times_s[k];
     const double t_end = k + 1 < plan.step_times_s.size() ? t_first + plan.step_times_s[k + 1] : s.t.back();
-    const double before = window_mean(s.t, s.mu, t_step - 0.3 * (t_step - a), t_step);
-    const double after = window_mean(s.t, s.mu, t_end - 0.3 * (t_end - t_step), t_end) - before;
+    const double before = steady_mu(s, a, t_step);
+    const double after = steady_mu(s, t_step, t_end) - before;
     const double x_step = interp(s.t, s.x_drive, t_step);
     const double t_search = t_step + 0.25 * (t_end - t_step);
     auto rise = [&](std::size_t i) { return (s.mu[i - 1] + s.mu[i] + s.mu[i + 1]) / 3.0 - before; };
