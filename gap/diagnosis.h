@@ -22,6 +22,8 @@
 //     form). A candidate earns its parameters when C < 0 and it cuts the held-out gap by at least
 //     `min_relative_shrink` and by at least `min_gap_reduction`. If the best single closes less than `pair_threshold` of the gap, the
 //     two best singles are fitted together.
+//     A nested pair is judged with each at its best: when thermal thinning (which is viscous
+//     friction as U_T → ∞) fits train better, viscous friction is refined again from its projection.
 //  4. Verdict: the simplest earning candidate, unless one with more parameters beats it by the
 //     same margins and by more than 2 in C (Kass & Raftery's "bare mention" BIC difference);
 //     else "none". Confidence: share of bootstrap resamples of the held-out units that give the
