@@ -591,12 +591,11 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
           // Only the first breakaway matters: keep no samples and output as sparsely as allowed.
           options.samples_per_period = 4;  // the rig's minimum
           options.stick_samples_per_run = 10;
-          // Read off the same friction channel as the traces: at breakaway the slider has been at
-          // rest, ẍ ≈ 0, and the instrument (rig/instrument.h) shows g times the friction.
-          const double gain = rig::instrument_from(model, seed).gain;
+          // Read off the same friction channel as the traces.
+          const rig::InstrumentModel instrument = rig::instrument_from(model, seed);
           rig::SimulationObserver observer;
-          observer.on_event = [&f, gain](const rig::Event& e) {
-            if (e.kind == rig::EventKind::breakaway && !f.count("mu_s")) f["mu_s"] = gain * e.mu;
+          observer.on_event = [&f, &instrument](const rig::Event& e) {
+            if (e.kind == rig::EventKind::breakaway && !f.count("mu_s")) f["mu_s"] = rig::breakaway_reading(instrument, e.mu);
           };
           rig::simulate(rig, rig::Drive::constant(v), *law, options, observer);
           break;

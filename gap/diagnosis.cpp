@@ -77,6 +77,14 @@ std::vector<FitParameter> effect_parameters(const std::string& effect) {
   return out;
 }
 
+// Nested effects: `general` reduces to `special` in a limit of its other parameters, where
+// special.special_parameter = general.general_parameter. Thermal thinning with U_T far above the
+// slip speeds is viscous friction with c = c0 (rig/effects/thermal_thinning.h).
+struct Nesting {
+  const char *general, *general_parameter, *special, *special_parameter;
+};
+constexpr Nesting kNestings[] = {{"thermal_thinning", "traction_coefficient_N_s_per_m", "viscous_friction", "coefficient_N_s_per_m"}};
+
 struct Setup {
   rig::RigParameters rig;
   rig::FrictionModel model;
@@ -587,21 +595,21 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   constexpr std::size_t kRefined = 3;
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t k = 0; k < std::min(kRefined, singles.size()); ++k) singles[k] = refine(singles[k]);
-  // Nested candidates: thermal thinning with U_T far above the slip speeds is viscous friction with
-  // c = c0 (rig/effects/thermal_thinning.h). When the general fit does better on train, the special
-  // one is refined again from that projection and kept if it then fits train better, so that it is
-  // judged at its own best rather than lose to its generalisation on search luck (selftest seed 3:
-  // the viscous search stopped at c = 33.7 N s/m, held-out gap 0.0045, while thermal thinning
-  // settled at U_T = 10 m/s, c0 = 34.6 N s/m, held-out gap 0.0015).
+  // Nested candidates (kNestings): when the general fit does better on train, the special one is
+  // refined again from the general fit's projection and kept if it then fits train better, so that
+  // it is judged at its own best rather than lose to its generalisation on search luck (selftest
+  // seed 3: the viscous search stopped at c = 33.7 N s/m, held-out gap 0.0045, while thermal
+  // thinning settled at U_T = 10 m/s, c0 = 34.6 N s/m, held-out gap 0.0015).
   const auto single = [&](const std::string& e) {
     return std::find_if(singles.begin(), singles.end(), [&](const Candidate& c) { return c.effects == std::vector<std::string>{e}; });
   };
-  if (const auto general = single("thermal_thinning"), special = single("viscous_friction");
-      general != singles.end() && special != singles.end() && general->train_gap < special->train_gap) {
+  for (const Nesting& nest : kNestings) {
+    const auto general = single(nest.general), special = single(nest.special);
+    if (general == singles.end() || special == singles.end() || !(general->train_gap < special->train_gap)) continue;
     Candidate from = *special;
     from.rig = general->rig;
     from.model.baseline = general->model.baseline;
-    from.model.set("viscous_friction", "coefficient_N_s_per_m", general->model.get("thermal_thinning", "traction_coefficient_N_s_per_m"));
+    from.model.set(nest.special, nest.special_parameter, general->model.get(nest.general, nest.general_parameter));
     if (Candidate projected = refine(from); projected.train_gap < special->train_gap) *special = projected;
   }
   std::stable_sort(singles.begin(), singles.end(), better);

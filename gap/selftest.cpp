@@ -99,7 +99,7 @@ ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::Fri
     for (const rig::Event& e : r.events) {
       if (e.kind != rig::EventKind::breakaway || e.t_s < 0.3 * o.duration_s) continue;
       phi_sum += e.load_rate_per_s;
-      mu_sum += instrument.gain * e.mu + noise(rng) / rig.normal_load_N;
+      mu_sum += rig::breakaway_reading(instrument, e.mu) + noise(rng) / rig.normal_load_N;
       ++breakaways;
     }
     if (breakaways) b.static_points.push_back({phi_sum / breakaways, mu_sum / breakaways});

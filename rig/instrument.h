@@ -27,6 +27,10 @@ struct InstrumentModel {
 // From the model's "instrument" effect if present, else the ideal (4.2.3) instrument.
 InstrumentModel instrument_from(const FrictionModel& model, std::uint64_t seed);
 
+// The friction coefficient the channel shows at a breakaway, without noise: the slider has been at
+// rest, ẍ ≈ 0, so (4.2.3) reads g k x = g F — the lag does not enter.
+inline double breakaway_reading(const InstrumentModel& instrument, double mu) { return instrument.gain * mu; }
+
 // Measured friction at every sample (samples ordered in time); the lagged acceleration is
 // interpolated linearly between samples and held at its first value before the run starts.
 std::vector<double> measure_friction_N(const RigParameters& rig, const InstrumentModel& instrument,
