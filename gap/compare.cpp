@@ -47,17 +47,39 @@ double interp(const std::vector<double>& t, const std::vector<double>& y, double
   return y[i - 1] + w * (y[i] - y[i - 1]);
 }
 
-std::vector<double> moving_average(const std::vector<double>& y, int half_width) {
-  std::vector<double> out(y.size());
-  const long n = static_cast<long>(y.size());
-  for (long i = 0; i < n; ++i) {
-    const long a = std::max(0L, i - half_width), b = std::min(n - 1, i + half_width);
-    double s = 0.0;
-    for (long j = a; j <= b; ++j) s += y[static_cast<std::size_t>(j)];
-    out[static_cast<std::size_t>(i)] = s / static_cast<double>(b - a + 1);
+// A record smoothed over a fixed time: S(t) is the time average of the linear interpolant of the
+// samples over [t − h, t + h] (clipped to the record). A running mean over a fixed number of
+// samples would span a different time wherever the samples are not uniform — a simulated record
+// has extra samples at its events — and jump as an event sample passes an output sample; S moves
+// continuously with the samples, so the features read off it do too, which a least-squares fit on
+// numeric derivatives needs.
+class SmoothedSignal {
+ public:
+  SmoothedSignal(const std::vector<double>& t, const std::vector<double>& y, double half_width_s)
+      : t_(t), y_(y), cum_(t.size(), 0.0), h_(half_width_s) {
+    for (std::size_t i = 1; i < t.size(); ++i) cum_[i] = cum_[i - 1] + 0.5 * (y[i] + y[i - 1]) * (t[i] - t[i - 1]);
   }
-  return out;
-}
+  double front() const { return t_.front(); }
+  double back() const { return t_.back(); }
+  double at(double t) const {
+    const double a = std::max(t_.front(), t - h_), b = std::min(t_.back(), t + h_);
+    return b > a ? (integral_to(b) - integral_to(a)) / (b - a) : interp(t_, y_, t);
+  }
+
+ private:
+  // Integral of the interpolant from the first sample to `at` (inside the record).
+  double integral_to(double at) const {
+    const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), at) - t_.begin());
+    if (i == 0) return 0.0;
+    if (i == t_.size()) return cum_.back();
+    const double dt = at - t_[i - 1], w = dt / (t_[i] - t_[i - 1]);
+    return cum_[i - 1] + dt * (y_[i - 1] + 0.5 * w * (y_[i] - y_[i - 1]));
+  }
+  const std::vector<double>& t_;
+  const std::vector<double>& y_;
+  std::vector<double> cum_;
+  double h_;
+};
 
 double mean(const std::vector<double>& v) {
   if (v.empty()) return kNaN;
@@ -93,35 +115,42 @@ struct Extremum {
   double t, value;
 };
 
-// The vertex of the parabola through a sampled extremum and its two neighbours: the extremum's
-// time and value then move continuously with the model's parameters instead of jumping from
-// sample to sample, which a least-squares fit on numeric derivatives needs.
-Extremum refine_extremum(const std::vector<double>& t, const std::vector<double>& y, std::size_t k) {
-  if (k == 0 || k + 1 >= t.size()) return {t[k], y[k]};
-  const double t0 = t[k - 1], t1 = t[k], t2 = t[k + 1], y0 = y[k - 1], y1 = y[k], y2 = y[k + 1];
-  const double f01 = (y1 - y0) / (t1 - t0), f12 = (y2 - y1) / (t2 - t1);
-  const double a = (f12 - f01) / (t2 - t0);  // half the parabola's second derivative
-  // A maximum needs a < 0 and a minimum a > 0; y1 is the extreme sample, so a has that sign
-  // unless the three samples are collinear.
-  if (a == 0.0 || !std::isfinite(a)) return {t1, y1};
-  const double tv = std::clamp(0.5 * (t0 + t1) - f01 / (2.0 * a), t0, t2);
-  return {tv, y0 + f01 * (tv - t0) + a * (tv - t0) * (tv - t1)};
+// The extremum of S between the grid points either side of the sampled one, by golden-section
+// search: its value then moves continuously with the model's parameters instead of with the phase
+// of the grid — at a re-attachment S has a corner, where a parabola through three grid points
+// misplaces it by a fraction of the jump.
+Extremum locate_extremum(const SmoothedSignal& S, double ta, double tb, bool maximum) {
+  const double sign = maximum ? -1.0 : 1.0, g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double a = std::max(ta, S.front()), b = std::min(tb, S.back());
+  double c = b - g * (b - a), d = a + g * (b - a), fc = sign * S.at(c), fd = sign * S.at(d);
+  for (int i = 0; i < 40; ++i) {  // 0.618^40 ≈ 4e-9 of the bracket
+    if (fc < fd) {
+      b = d, d = c, fd = fc, c = b - g * (b - a), fc = sign * S.at(c);
+    } else {
+      a = c, c = d, fc = fd, d = a + g * (b - a), fd = sign * S.at(d);
+    }
+  }
+  const double tv = 0.5 * (a + b);
+  return {tv, S.at(tv)};
 }
 
-// Friction maxima and minima of a constant-speed run, with hysteresis at 30 % / 70 % of the range.
+// Friction maxima and minima of a constant-speed run, with hysteresis at 30 % / 70 % of the range,
+// on μ smoothed and read every `spacing_s` (the measured record's median spacing, on both sides).
 // `slip_step_s` ≤ 0 asks for the measured Δ (returned through it).
-Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::string* regime) {
+Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_step_s, std::string* regime) {
   Features f;
   const double t0 = s.t.front() + kWindowStartFraction * (s.t.back() - s.t.front());
-  const std::vector<double> mu = moving_average(s.mu, 2);
   std::vector<std::size_t> idx;
   for (std::size_t i = 0; i < s.t.size(); ++i)
     if (s.t[i] >= t0) idx.push_back(i);
   if (idx.size() < 3) return f;
-  double lo_v = mu[idx.front()], hi_v = lo_v;
-  for (std::size_t i : idx) lo_v = std::min(lo_v, mu[i]), hi_v = std::max(hi_v, mu[i]);
+  // Half-width two spacings: five samples of a uniform record.
+  const SmoothedSignal S(s.t, s.mu, 2.0 * spacing_s);
   std::vector<double> tw, muw;
-  for (std::size_t i : idx) tw.push_back(s.t[i]), muw.push_back(mu[i]);
+  for (double t = t0; t <= s.t.back(); t += spacing_s) tw.push_back(t), muw.push_back(S.at(t));
+  if (tw.size() < 3) return f;
+  const auto [lo_it, hi_it] = std::minmax_element(muw.begin(), muw.end());
+  const double lo_v = *lo_it, hi_v = *hi_it;
   f["mean_mu"] = mean(muw);
   if (!s.x.empty()) {
     double xa = s.x[idx.front()], xb = xa;
@@ -137,17 +166,22 @@ Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::strin
   std::vector<std::size_t> peaks, troughs;
   int state = 0;  // +1 above hi (tracking a maximum), −1 below lo (tracking a minimum)
   std::size_t cand = 0;
+  // An extremum tracked from the window's first sample may be that sample, not a turning point
+  // (the window opened on its far side); it is left out, else it jumps as the cycle moves past t0.
+  bool from_edge = true;
   for (std::size_t k = 0; k < tw.size(); ++k) {
     if (muw[k] > hi) {
       if (state != +1) {
-        if (state == -1) troughs.push_back(cand);
+        if (state == -1 && !from_edge) troughs.push_back(cand);
+        from_edge = k == 0;
         state = +1, cand = k;
       } else if (muw[k] > muw[cand]) {
         cand = k;
       }
     } else if (muw[k] < lo) {
       if (state != -1) {
-        if (state == +1) peaks.push_back(cand);
+        if (state == +1 && !from_edge) peaks.push_back(cand);
+        from_edge = k == 0;
         state = -1, cand = k;
       } else if (muw[k] < muw[cand]) {
         cand = k;
@@ -160,8 +194,9 @@ Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::strin
   }
   if (regime) *regime = "stick_slip";
   std::vector<Extremum> peak, trough;
-  for (std::size_t p : peaks) peak.push_back(refine_extremum(tw, muw, p));
-  for (std::size_t q : troughs) trough.push_back(refine_extremum(tw, muw, q));
+  auto locate = [&](std::size_t k, bool maximum) { return locate_extremum(S, tw[k] - spacing_s, tw[k] + spacing_s, maximum); };
+  for (std::size_t p : peaks) peak.push_back(locate(p, true));
+  for (std::size_t q : troughs) trough.push_back(locate(q, false));
   std::vector<double> mp, mt, rise, fall, period;
   for (const Extremum& e : peak) mp.push_back(e.value);
   for (const Extremum& e : trough) mt.push_back(e.value);
@@ -178,12 +213,12 @@ Features analyse_constant_speed(const Signal& s, double& slip_step_s, std::strin
   if (!mt.empty()) f["mu_trough"] = mean(mt);
   if (!period.empty()) f["period_s"] = mean(period);
   if (!rise.empty()) f["rise_time_s"] = mean(rise);
-  if (slip_step_s <= 0.0 && !fall.empty()) slip_step_s = mean(fall) / kSlipDropPoints;
+  if (slip_step_s <= 0.0 && !fall.empty()) slip_step_s = mean(fall) / (kSlipDropPoints + 1);
   if (slip_step_s > 0.0) {
     for (int j = 1; j <= kSlipDropPoints; ++j) {
       std::vector<double> drops;
       for (const Extremum& e : peak) {
-        const double m = interp(tw, muw, e.t + j * slip_step_s);
+        const double m = e.t + j * slip_step_s <= s.t.back() ? S.at(e.t + j * slip_step_s) : kNaN;
         if (std::isfinite(m)) drops.push_back(e.value - m);
       }
       if (!drops.empty()) f["slip_drop_" + std::to_string(j)] = mean(drops);
@@ -442,7 +477,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       if (!(run.v_m_per_s > 0.0)) throw std::invalid_argument("run " + run.run_id + ": constant-speed trace needs v_m_per_s > 0");
       std::string regime;
       double step = 0.0;
-      const Features f = analyse_constant_speed(s, step, &regime);
+      const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime);
       plan.slip_step_s = step;
       plans_.push_back(plan);
       const std::string where = "v = " + fmt("%.3g", run.v_m_per_s) + " m/s";
@@ -580,7 +615,7 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
             f = analyse_drive_history(at, plan, nullptr);
           } else {
             double step = plan.slip_step_s;
-            f = analyse_constant_speed(s, step, nullptr);
+            f = analyse_constant_speed(s, plan.sample_spacing_s, step, nullptr);
           }
           if (traces) traces->push_back({plan.label, s.t, [&] { std::vector<double> F; for (double m : s.mu) F.push_back(m * W); return F; }(), s.mu});
           break;

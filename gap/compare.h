@@ -11,7 +11,8 @@
 //   mu_peak            mean μ at the friction maxima of a run (breakaway, static friction)
 //   mu_trough          mean μ at the friction minima (end of slip)
 //   slip_drop          μ_peak − μ(t_peak + jΔ), j = 1..4: the friction after slip onset, Δ = a
-//                      quarter of the measured peak-to-trough time
+//                      fifth of the measured peak-to-trough time (so no point lands on the
+//                      re-attachment jump that ends the slip)
 //   rise_time_s        time from a minimum to the next maximum (the stick time of stick-slip)
 //   period_s           mean time between maxima
 //   peak_to_peak_m     range of the slider displacement x
@@ -22,7 +23,9 @@
 //   steady_mu          μ over the last 30 % of each drive segment (velocity steps)
 //   mu_after_step      μ − μ_before-step, averaged over bins of load-point displacement after a
 //                      step (bins finer near the step)
-// Runs use the part of the trace after 30 % of its duration (start-up transient excluded).
+// Runs use the part of the trace after 30 % of its duration (start-up transient excluded), with μ
+// averaged over ±2 measured sample spacings in time; extrema are the maxima and minima of that
+// smoothed μ, located between samples, and an extremum cut by the window's start is left out.
 #pragma once
 
 #include <cstdint>

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "gap/compare.h"
 #include "gap/diagnosis.h"
@@ -120,6 +121,48 @@ TEST(Diagnosis, TracesOnlyNameViscousFrictionDeterministically) {
   EXPECT_NEAR(d.candidates.front().params.at("viscous_friction.coefficient_N_s_per_m"), 60.0, 20.0);  // 8 iterations on a piecewise-smooth cost
   const Diagnosis again = diagnose(b, rig, rig::coulomb(0.3, 0.2), o);
   EXPECT_EQ(report_json(d).dump(), report_json(again).dump());
+}
+
+// The constant-speed features of a made-up triangle wave, against closed forms. μ rises from 0.1
+// to 0.4 over 0.8 s (slope s1 = 0.375 /s) and falls back over 0.2 s (s2 = 1.5 /s), period 1 s;
+// sampled every 1 ms at two phases, with extra samples at the corners as the simulator has at its
+// events. μ averaged over ±h in time (h = two spacings) rounds a corner to μ_hi − h s1 s2/(s1 + s2)
+// at h (s1 − s2)/(s1 + s2) after it (minimum: mirrored), exactly, since the samples hold the
+// corners; the features must agree with that to 1e-6 at both phases — a running mean over a
+// number of samples, which spans less time where the corner samples are, does not.
+TEST(Comparison, TriangleWaveFeaturesMatchTheirClosedFormsAtAnySamplePhase) {
+  const double lo = 0.1, hi = 0.4, t_rise = 0.8, period = 1.0, s1 = (hi - lo) / t_rise, s2 = (hi - lo) / (period - t_rise);
+  const double spacing = 1e-3, h = 2.0 * spacing, cut = h * s1 * s2 / (s1 + s2), shift = h * (s1 - s2) / (s1 + s2);
+  auto mu_at = [&](double t) {
+    const double p = t - std::floor(t / period) * period;
+    return p < t_rise ? lo + s1 * p : hi - s2 * (p - t_rise);
+  };
+  for (const double phase : {0.37e-3, 0.81e-3}) {
+    ExperimentBundle b;
+    gap::Run run;
+    run.run_id = "0";
+    run.v_m_per_s = 1e-2;
+    std::vector<double> t;
+    for (double tk = phase; tk < 5.0; tk += spacing) t.push_back(tk);
+    for (int n = 1; n < 5; ++n) t.push_back(n), t.push_back(n + t_rise);
+    std::sort(t.begin(), t.end());
+    for (double tk : t) run.trace.t_s.push_back(tk), run.trace.mu.push_back(mu_at(tk));
+    b.runs.push_back(run);
+    std::map<std::string, std::vector<double>> got;
+    const Comparison c(b, rig::RigParameters{});
+    for (const Item& it : c.items()) got[it.observable].push_back(it.measured);
+    SCOPED_TRACE("phase " + std::to_string(phase));
+    ASSERT_EQ(got["mu_peak"].size(), 1u);
+    EXPECT_NEAR(got["mu_peak"][0], hi - cut, 1e-6);
+    EXPECT_NEAR(got["mu_trough"][0], lo + cut, 1e-6);
+    EXPECT_NEAR(got["period_s"][0], period, 1e-6);
+    EXPECT_NEAR(got["rise_time_s"][0], t_rise + 2.0 * shift, 1e-6);
+    EXPECT_NEAR(got["mean_mu"][0], 0.5 * (lo + hi), 1e-6);
+    // Slip drop j: from the rounded peak to the falling line, j fifths of the peak-to-trough time on.
+    const double fall = period - t_rise - 2.0 * shift;
+    ASSERT_EQ(got["slip_drop"].size(), 4u);
+    for (int j = 1; j <= 4; ++j) EXPECT_NEAR(got["slip_drop"][static_cast<std::size_t>(j - 1)], s2 * (shift + j * fall / 5.0) - cut, 1e-6);
+  }
 }
 
 // The response to a velocity step read off a made-up record with known shape: 60 µm at 3 µm/s,
