@@ -435,6 +435,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.v_m_per_s = run.v_m_per_s;
     plan.duration_s = tr.t_s.back() - tr.t_s.front();
     plan.sample_spacing_s = median_spacing(tr.t_s);
+    if (!(plan.sample_spacing_s > 0.0)) throw std::invalid_argument("run " + run.run_id + ": trace time t_s does not increase");
     if (tr.has_drive_history()) {
       plan.kind = RunPlan::Kind::drive_history;
       const double vmax = *std::max_element(tr.v_drive_m_per_s.begin(), tr.v_drive_m_per_s.end());
