@@ -160,7 +160,7 @@ void run_demo(const DemoArgs& args) {
   for (std::size_t i = 0; i < figures.size(); ++i) write_trace(dir / "traces" / trace_names[i], rig, figures[i]);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_report(dir / "report.md", rig, law->name(), sweep, figures, wall);
-  if (args.plots && run_plot_script("demo '" + args.out + "'") != 0) {
+  if (args.plots && run_plot_script("demo", args.out) != 0) {
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib); CSVs and report are written\n");
   }
   std::printf("tribo demo: %zu speeds in %.1f s -> %s (report.md, sweep.csv, PNG plots)\n", sweep.size(), wall, args.out.c_str());

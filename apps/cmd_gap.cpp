@@ -180,7 +180,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %.0f %%) -> %s\n", d.verdict.conclusion.c_str(),
               gap::verdict_name(d.verdict.effects).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
               100.0 * d.verdict.confidence, args.out.c_str());
-  if (args.plot && run_plot_script("gap '" + args.out + "'") != 0)
+  if (args.plot && run_plot_script("gap", args.out) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
 

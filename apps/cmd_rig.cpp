@@ -56,7 +56,7 @@ void run_rig(const RigArgs& args) {
   std::printf("regime %s, period %.6g s, peak-to-peak %.6g m, mean mu_s %.4g, %ld events, %.3f s wall -> %s\n",
               obs.regime.c_str(), obs.period_s, obs.peak_to_peak_m, obs.mu_s_mean, summary.events, wall,
               args.out.c_str());
-  if (args.plot && run_plot_script("rig '" + args.out + "'") != 0) {
+  if (args.plot && run_plot_script("rig", args.out) != 0) {
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
   }
   if (!summary.completed) throw std::runtime_error("rig run stopped early: " + summary.message);

@@ -10,5 +10,6 @@ void add_demo_command(CLI::App& app);
 void add_contact_command(CLI::App& app);
 void add_reynolds_command(CLI::App& app);
 void add_gap_command(CLI::App& app);
+void add_homogenise_command(CLI::App& app);
 
 }  // namespace tribo::cli

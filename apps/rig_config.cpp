@@ -5,8 +5,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "rig/kinetic_laws.h"
 #include "rig/friction_model.h"
+#include "rig/homogenised_law.h"
+#include "rig/kinetic_laws.h"
 
 namespace tribo::cli {
 namespace {
@@ -102,12 +103,18 @@ rig::Drive read_drive(ConfigTable* t, std::optional<double> speed) {
   return drive;
 }
 
-rig::FrictionModel read_friction_model(ConfigTable* t) {
+rig::FrictionModel read_friction_model(ConfigTable* t, std::optional<double> normal_load_N) {
   rig::FrictionModel model;
   if (!t) return model;
-  const std::string law = t->choice("law", "coulomb", {"coulomb", "stribeck", "table"});
-  model.baseline.mu_s = t->number("mu_s", model.baseline.mu_s, Range::non_negative);
-  if (law == "coulomb") {
+  const std::string law = t->choice("law", "coulomb", {"coulomb", "stribeck", "table", "homogenised"});
+  if (law != "homogenised") model.baseline.mu_s = t->number("mu_s", model.baseline.mu_s, Range::non_negative);
+  if (law == "homogenised") {
+    // table = "law.json" (relative to the config's folder), written by `tribo homogenise`.
+    const std::string table = t->required_string("table");
+    if (!normal_load_N) t->fail("law", "\"homogenised\" needs the rig's normal load, which this command does not provide");
+    const std::filesystem::path path = std::filesystem::path(t->file()).parent_path() / table;
+    model.baseline.homogenised = input_guard(*t, "table", [&] { return rig::load_homogenised_base(path, *normal_load_N); });
+  } else if (law == "coulomb") {
     model.baseline.mu_k = t->number("mu_k", model.baseline.mu_k, Range::non_negative);
     if (model.baseline.mu_k > model.baseline.mu_s) {
       t->fail("mu_k", "must not exceed mu_s (" + std::to_string(model.baseline.mu_s) + ")");
@@ -166,7 +173,7 @@ RigRun load_rig_run(const std::filesystem::path& path) {
   auto drive_table = root.table("drive");
   run.drive = read_drive(drive_table ? &*drive_table : nullptr, speed);
   auto friction_table = root.table("friction");
-  run.friction = read_friction_model(friction_table ? &*friction_table : nullptr);
+  run.friction = read_friction_model(friction_table ? &*friction_table : nullptr, run.rig.normal_load_N);
   run.law = rig::make_friction_law(run.friction);
   if (auto t = root.table("run")) {
     run.options.duration_s = t->number("duration_s", run.options.duration_s, Range::positive);

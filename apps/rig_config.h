@@ -5,7 +5,9 @@
 //   [drive]     kind = "constant" | "steps" | "slide_hold_slide" | "table"
 //               times_s = [...], speeds_m_per_s = [...]    (steps, table)
 //               speed_m_per_s, slide_s, hold_s             (slide_hold_slide)
-//   [friction]  law = "coulomb" | "stribeck" | "table", mu_s, mu_k, ..., effects = [...]
+//   [friction]  law = "coulomb" | "stribeck" | "table" | "homogenised", mu_s, mu_k, ..., effects = [...]
+//               law = "homogenised": table = "law.json" (relative to the config; rig/law_table.h),
+//               no mu_s / mu_k; rate_dependent_static and strain_rate_hardening are not allowed
 //               [friction.<effect>] parameters            (docs/friction-effects.md)
 //   [run]       duration_s, samples_per_period, relative_tolerance, analysis_start_fraction, seed
 #pragma once
@@ -40,8 +42,10 @@ RigRun load_rig_run(const std::filesystem::path& path);
 
 // The pieces, for other commands that embed a rig (demo, gap): each reads its table and rejects
 // unknown keys. `friction` may be absent (the Coulomb defaults μs = 0.3, μk = 0.2 then apply).
+// law = "homogenised" needs the rig's normal load W (the film's initial equilibrium N_s(h̄0) = W);
+// without `normal_load_N` it is an InputError, and so is a W outside the table's solid-load range.
 rig::RigParameters read_rig_parameters(ConfigTable& rig_table);
-rig::FrictionModel read_friction_model(ConfigTable* friction_table);
+rig::FrictionModel read_friction_model(ConfigTable* friction_table, std::optional<double> normal_load_N = std::nullopt);
 rig::Drive read_drive(ConfigTable* drive_table, std::optional<double> drive_speed_m_per_s);
 
 }  // namespace tribo::cli

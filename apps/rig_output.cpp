@@ -1,8 +1,15 @@
 #include "apps/rig_output.h"
 
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <vector>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+
+extern char** environ;  // posix_spawnp passes the environment on
 
 namespace tribo::cli {
 namespace {
@@ -58,11 +65,18 @@ nlohmann::json rig_json(const rig::RigParameters& rig) {
           {"decay_rate_per_s", rig.decay_rate_per_s()}};
 }
 
-int run_plot_script(const std::string& args) {
-  const std::filesystem::path script = std::filesystem::path(TRIBO_SOURCE_DIR) / "tools" / "tribo_plots.py";
+int run_plot_script(const std::string& mode, const std::string& dir) {
+  const std::string script = (std::filesystem::path(TRIBO_SOURCE_DIR) / "tools" / "tribo_plots.py").string();
   const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string cmd = python + " '" + script.string() + "' " + args;
-  return std::system(cmd.c_str());
+  std::vector<std::string> args{python, script, mode, dir};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (posix_spawnp(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return 127;
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return 127;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }
 
 }  // namespace tribo::cli

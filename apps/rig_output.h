@@ -19,8 +19,10 @@ void write_events_csv(std::ostream& os, const std::vector<rig::Event>& events);
 nlohmann::json observables_json(const rig::RunObservables& o);
 nlohmann::json rig_json(const rig::RigParameters& rig);
 
-// Path of the plotting script and the Python that has matplotlib (Debian's /usr/bin/python3).
-// Returns the command's exit status; plots are optional extras, so callers warn on failure.
-int run_plot_script(const std::string& args);
+// Runs tools/tribo_plots.py MODE DIR with the Python that has matplotlib (Debian's
+// /usr/bin/python3), spawned with an argument vector — no shell, so any DIR is passed as it is.
+// Returns the script's exit status (127 when it could not start); plots are optional extras, so
+// callers warn on failure.
+int run_plot_script(const std::string& mode, const std::string& dir);
 
 }  // namespace tribo::cli

@@ -9,11 +9,12 @@
 int main(int argc, char** argv) {
   CLI::App app{"tribo: rough-surface contact, Reynolds lubrication and the friction rig of the thesis"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "tribo 0.1.0");
+  app.set_version_flag("--version", "tribo " TRIBO_VERSION);
   tribo::cli::add_demo_command(app);
   tribo::cli::add_rig_command(app);
   tribo::cli::add_contact_command(app);
   tribo::cli::add_reynolds_command(app);
+  tribo::cli::add_homogenise_command(app);
   tribo::cli::add_gap_command(app);
   try {
     app.parse(argc, argv);

@@ -56,6 +56,37 @@ double mean_film_m(const ReynoldsProblem& pr) {
   return sum / ((pr.grid.nx - 1) * pr.grid.ny);
 }
 
+// Mean shears on the stationary (rough) wall of a solved cell, over the n × n surface nodes (the
+// wrapped column once), contact nodes (film at the floor) contributing nothing. The x-flow q̄ of
+// node i is the mean of its two x-face flows (the face before node 0 is the face before the wrap
+// node n), and the local 1-D relation q̄ = −h_T³p'/(12η) + (U/2)h_T gives the nodal gradient
+//     (h_T/2) p' = 6η((U/2) h_T − q̄)/h_T².
+struct WallShear {
+  double couette_Pa = 0;   // Σ ηU/h_T / N
+  double pressure_Pa = 0;  // Σ (h_T/2) p' / N
+};
+
+WallShear stationary_wall_shear(const ReynoldsProblem& pr, const ReynoldsSolution& s, double floor_m) {
+  const Grid& g = pr.grid;
+  const int n = g.nx - 1;
+  const std::vector<double> q = x_face_flow_m2_per_s(pr, s);
+  const double eta = pr.viscosity_Pa_s, u = pr.sliding_speed_m_per_s;
+  WallShear w;
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double h = pr.gap_m[g.index(i, j)];
+      if (h <= floor_m) continue;
+      const std::size_t row = static_cast<std::size_t>(j) * n;
+      const double qbar = 0.5 * (q[row + (i + n - 1) % n] + q[row + i]);
+      w.couette_Pa += eta * u / h;
+      w.pressure_Pa += 6.0 * eta * (0.5 * u * h - qbar) / (h * h);
+    }
+  const double cells = static_cast<double>(n) * g.ny;
+  w.couette_Pa /= cells;
+  w.pressure_Pa /= cells;
+  return w;
+}
+
 struct PatirChengPressure {
   double gamma, c, r;
 };
@@ -90,6 +121,16 @@ double patir_cheng_phi_x(double h, double gamma) {
 }
 
 double patir_cheng_phi_y(double h, double gamma) { return patir_cheng_phi_x(h, 1.0 / gamma); }
+
+double patir_cheng_phi_f(double h, double contact_gap_fraction) {
+  if (!(h > 0) || !(contact_gap_fraction > 0)) return std::numeric_limits<double>::quiet_NaN();
+  const double z = h / 3.0, eps = contact_gap_fraction / 3.0, a = 1.0 - z * z, a3 = a * a * a;
+  if (z <= 1.0)
+    return 35.0 / 32.0 * z *
+           (a3 * std::log((z + 1.0) / eps) +
+            (-55.0 + z * (132.0 + z * (345.0 + z * (-160.0 + z * (-405.0 + z * (60.0 + 147.0 * z)))))) / 60.0);
+  return 35.0 / 32.0 * z * (a3 * std::log((z + 1.0) / (z - 1.0)) + z / 15.0 * (66.0 + z * z * (30.0 * z * z - 80.0)));
+}
 
 double patir_cheng_shear_factor(double h, double gamma) {
   if (!(h > 0.5)) return std::numeric_limits<double>::quiet_NaN();
@@ -149,6 +190,7 @@ std::vector<FlowFactorRow> flow_factors(const HomogenisationOptions& o) {
   const auto r = static_cast<std::size_t>(o.realisations);
   // Per (gap ratio, realisation): NaN marks an unconverged solve.
   std::vector<std::vector<double>> px(nh, std::vector<double>(r)), py = px, ps = px, film = px, touch = px;
+  std::vector<std::vector<double>> pf = px, pfs = px, pfp = px, couette = px;
   for_each_realisation(o, [&](int k, ReynoldsSolver& solver, const Eigen::ArrayXXd& z) {
     const double cells = static_cast<double>(z.size());
     for (std::size_t m = 0; m < nh; ++m) {
@@ -161,6 +203,11 @@ std::vector<FlowFactorRow> flow_factors(const HomogenisationOptions& o) {
         const ReynoldsSolution s = solver.solve(pr);
         const double q = film_flow(pr, s).inflow_x0_m3_per_s / size;
         (axis == 0 ? px : py)[m][k] = s.summary.converged ? q / smooth_flow : std::nan("");
+        if (axis == 0) {  // φfp = ⟨(h_T/2)p'⟩ / ((h/2)∂p̄/∂x), ∂p̄/∂x = −Δp/L
+          const double mean_gradient = -o.pressure_drop_Pa / size;
+          pfp[m][k] = s.summary.converged ? stationary_wall_shear(pr, s, floor_m).pressure_Pa / (0.5 * h * mean_gradient)
+                                          : std::nan("");
+        }
       }
       ReynoldsProblem pr = cell_problem(z, size, h, floor_m, false, eta, &touching);
       pr.sliding_speed_m_per_s = o.sliding_speed_m_per_s;
@@ -169,6 +216,12 @@ std::vector<FlowFactorRow> flow_factors(const HomogenisationOptions& o) {
       const double ht = mean_film_m(pr);
       ps[m][k] = s.summary.converged ? (0.5 * u * ht - q) / (0.5 * u * sigma) : std::nan("");
       film[m][k] = ht / sigma;
+      // Stationary-wall shear τ = ηU/h_T − (h_T/2)p' in units of ηU/h: φf − φfs.
+      const WallShear w = stationary_wall_shear(pr, s, floor_m);
+      const double scale = eta * u / h;
+      pf[m][k] = w.couette_Pa / scale;
+      pfs[m][k] = s.summary.converged ? w.pressure_Pa / scale : std::nan("");
+      couette[m][k] = s.summary.converged ? (w.couette_Pa - w.pressure_Pa) / scale : std::nan("");
       touch[m][k] = static_cast<double>(touching) / cells;
     }
   });
@@ -185,6 +238,10 @@ std::vector<FlowFactorRow> flow_factors(const HomogenisationOptions& o) {
     row.phi_x = estimate(finite(px[m]));
     row.phi_y = estimate(finite(py[m]));
     row.phi_s = estimate(finite(ps[m]));
+    row.phi_f = estimate(pf[m]);
+    row.phi_fs = estimate(finite(pfs[m]));
+    row.phi_fp = estimate(finite(pfp[m]));
+    row.couette_shear_factor = estimate(finite(couette[m]));
     row.mean_film_over_sigma = estimate(film[m]);
     row.contact_fraction = estimate(touch[m]);
     row.unconverged = static_cast<int>(3 * r - finite(px[m]).size() - finite(py[m]).size() - finite(ps[m]).size());

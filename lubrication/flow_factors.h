@@ -16,6 +16,28 @@
 // Where the surfaces touch (h + δ ≤ 0) the film is floored at `contact_gap_fraction`·σ, which
 // passes a flow of order (that fraction)³ — negligible, as in Patir–Cheng's h_T = 0.
 //
+// Shear-stress factors (Patir & Cheng, J. Lubr. Technol. 101, 1979, 220–230). In the local film
+// the velocity is u(z) = U z/h_T + (p'/2η)(z² − z h_T) between the stationary rough wall (z = 0)
+// and the smooth wall moving at U (z = h_T); the viscous shear stress τ = η ∂u/∂z on the
+// stationary wall is ηU/h_T − (h_T/2)p', on the moving wall ηU/h_T + (h_T/2)p'. Its mean over
+// the cell area, contact nodes excluded (there the surfaces carry boundary friction, not fluid
+// shear; they count as zero over the full area N), is written
+//
+//     τ̄_stationary = (ηU/h)(φf − φfs) − φfp (h/2) ∂p̄/∂x,
+//     τ̄_moving     = (ηU/h)(φf + φfs) + φfp (h/2) ∂p̄/∂x,          (sign convention of this code)
+//
+//   φf  = (1/N) Σ_non-contact h/h_T                                  (Couette part, any cell)
+//   φfs = (h/ηU) (1/N) Σ_non-contact (h_T/2) ∂p/∂x, shear cell (U ≠ 0, p = 0 at both ends):
+//         the shear-induced pressure's part; ≥ 0 (in 1-D, Cauchy–Schwarz), → 0 for a smooth film
+//   φfp = (1/N) Σ_non-contact (h_T/2) ∂p/∂x / ((h/2) ∂p̄/∂x), pressure cell (Δp along x, U = 0)
+// with ∂p/∂x at a node from its mean x-face flow q̄ by the local 1-D relation
+// q̄ = −h_T³p'/(12η) + (U/2)h_T. φf, φfs → 1, 0 and φfp → 1 as h/σ → ∞; for a Gaussian isotropic
+// field the small-roughness rates are φf = 1 + (σ/h)², φfs = 1.5(σ/h)², φfp = 1 − 1.5(σ/h)².
+// The friction of a flat (smooth) pin sliding over the rough stationary surface in steady
+// sliding with no mean pressure gradient is τ̄ = (ηU/h)·couette_shear_factor, where
+// couette_shear_factor = φf − φfs is measured directly as the mean stationary-wall shear of the
+// shear cell times h/(ηU) (per realisation, so its error bar is its own).
+//
 // Rugosity lift: the same rough gap, p = 0 at both ends, sliding at U, with mass-conserving
 // cavitation: the mean film pressure p̄ = load / area. p̄ is exactly proportional to ηU (the
 // complementarity problem is homogeneous), so the table reports p̄ and p̄/(ηU) (1/m).
@@ -56,6 +78,8 @@ struct Estimate {
 struct FlowFactorRow {
   double h_over_sigma = 0;
   Estimate phi_x, phi_y, phi_s;
+  Estimate phi_f, phi_fs, phi_fp;   // shear-stress factors (see above; stationary rough wall)
+  Estimate couette_shear_factor;    // τ̄ h/(ηU) on the stationary wall at ∂p̄/∂x = 0: φf − φfs
   Estimate mean_film_over_sigma;  // h̄_T/σ
   Estimate contact_fraction;      // share of nodes where the surfaces touch
   int unconverged = 0;            // realisations whose solve did not converge (excluded)
@@ -81,5 +105,15 @@ std::vector<LiftRow> rugosity_lift(const HomogenisationOptions& options);
 double patir_cheng_phi_x(double h_over_sigma, double gamma);
 double patir_cheng_phi_y(double h_over_sigma, double gamma);
 double patir_cheng_shear_factor(double h_over_sigma, double gamma);
+
+// Patir & Cheng's (1979) closed form of φf for their polynomial approximation of the Gaussian
+// height density, f(δ) = (35/(96σ))(1 − δ²/(9σ²))³ on |δ| ≤ 3σ, contact (h_T < ε* · 3σ) excluded:
+// with z = H/3 and ε* = contact_gap_fraction/3 (the floor in units of 3σ),
+//   H ≤ 3: φf = (35/32) z {(1 − z²)³ ln((z + 1)/ε*) + (1/60)[−55 + z(132 + z(345 + z(−160 + z(−405 + z(60 + 147z)))))]}
+//   H > 3: φf = (35/32) z {(1 − z²)³ ln((z + 1)/(z − 1)) + (z/15)[66 + z²(30z² − 80)]}
+// — the integral (35/32)∫(1 − u²)³ z/(z − u) du over u < min(1, z − ε*), exact for H > 3 and to
+// O(ε*) below. For the exact Gaussian density it differs by up to 7 % near H = 2 (see the tests).
+// NaN for H ≤ 0 or a fraction ≤ 0.
+double patir_cheng_phi_f(double h_over_sigma, double contact_gap_fraction);
 
 }  // namespace tribo::lubrication

@@ -1,5 +1,6 @@
 #include "lubrication/geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -45,6 +46,80 @@ std::vector<double> rough_pair_gap_m(const std::vector<double>& upper, const std
   }
   if (contact_nodes) *contact_nodes = touching;
   return h;
+}
+
+bool RoughPairFilmOptions::is_valid(std::string* why) const {
+  auto fail = [&](const std::string& m) {
+    if (why) *why = m;
+    return false;
+  };
+  if (mean_gap_m.has_value() == contact_load_N.has_value())
+    return fail("give exactly one of mean_gap_m (rigid surfaces) and contact_load_N (deformed by contact)");
+  if (mean_gap_m && !(std::isfinite(*mean_gap_m) && *mean_gap_m > 0)) return fail("mean_gap_m must be finite and > 0");
+  if (contact_load_N && !(std::isfinite(*contact_load_N) && *contact_load_N > 0))
+    return fail("contact_load_N must be finite and > 0");
+  if (!(std::isfinite(composite_modulus_Pa) && composite_modulus_Pa > 0))
+    return fail("composite_modulus_Pa must be finite and > 0");
+  if (!(hardness_Pa > 0)) return fail("hardness_Pa must be > 0 (infinity for elastic contact)");
+  if (!(contact_gap_fraction > 0 && contact_gap_fraction <= 0.5)) return fail("contact_gap_fraction must be in (0, 0.5]");
+  if (contact_load_N) {
+    contact::NormalContactOptions c = contact;
+    c.pressure_cap_Pa = hardness_Pa;
+    std::string reason;
+    if (!c.is_valid(&reason)) return fail("contact options: " + reason);
+  }
+  return true;
+}
+
+RoughPairFilm rough_pair_film(const Eigen::ArrayXXd& upper, const Eigen::ArrayXXd& lower, double size_m,
+                              const RoughPairFilmOptions& o) {
+  auto bad = [](const std::string& m) { throw std::invalid_argument("rough pair film: " + m); };
+  std::string why;
+  if (!o.is_valid(&why)) bad(why);
+  const Eigen::Index n = lower.rows();
+  if (n < 3 || lower.cols() != n || upper.rows() != n || upper.cols() != n)
+    bad("upper and lower must be the same n x n grid with n >= 3 (got " + std::to_string(upper.rows()) + " x " +
+        std::to_string(upper.cols()) + " and " + std::to_string(lower.rows()) + " x " + std::to_string(lower.cols()) +
+        ")");
+  if (!upper.allFinite() || !lower.allFinite()) bad("non-finite height");
+  if (!(std::isfinite(size_m) && size_m > 0)) bad("size_m must be finite and > 0");
+  auto rq = [](const Eigen::ArrayXXd& z) { return std::sqrt((z - z.mean()).square().mean()); };
+  RoughPairFilm film;
+  film.composite_rms_height_m = std::hypot(rq(upper), rq(lower));
+  film.floor_m = o.contact_gap_fraction * film.composite_rms_height_m;
+  if (!(film.floor_m > 0)) bad("both surfaces are flat: the film floor (a fraction of the rms height) is zero");
+  // h per surface node, column-major as the arrays: (i, j) at j·n + i, i along x.
+  std::vector<double> h;
+  if (o.mean_gap_m) {
+    if (!(*o.mean_gap_m > film.floor_m)) bad("mean_gap_m must exceed the film floor contact_gap_fraction * sigma");
+    const std::vector<double> up(upper.data(), upper.data() + upper.size());
+    const std::vector<double> lo(lower.data(), lower.data() + lower.size());
+    h = rough_pair_gap_m(up, lo, *o.mean_gap_m, film.floor_m, &film.contact_nodes);
+  } else {
+    // Separation s = const + upper − lower; as a rigid profile against a flat its initial gap is
+    // s − min s, i.e. gap_from_heights(lower − upper).
+    contact::ElasticHalfSpace halfspace(contact::Grid{n, n, size_m, size_m}, o.composite_modulus_Pa, true);
+    contact::NormalContactOptions copt = o.contact;
+    copt.pressure_cap_Pa = o.hardness_Pa;
+    const Eigen::ArrayXXd gap0 = contact::gap_from_heights(lower - upper);
+    film.contact = contact::solve_normal_load(halfspace, gap0, *o.contact_load_N, copt);
+    const Eigen::ArrayXXd& g = film.contact->gap_m;
+    h.resize(static_cast<std::size_t>(g.size()));
+    for (Eigen::Index k = 0; k < g.size(); ++k) {
+      h[static_cast<std::size_t>(k)] = std::max(g(k), film.floor_m);
+      if (g(k) < film.floor_m) ++film.contact_nodes;
+    }
+  }
+  film.mean_film_m = std::accumulate(h.begin(), h.end(), 0.0) / static_cast<double>(h.size());
+  // The periodic surface wraps along x: one more node closes the period for the p = 0 ends.
+  const int m = static_cast<int>(n);
+  ReynoldsProblem& pr = film.problem;
+  pr.grid = Grid{m + 1, m, size_m / m, size_m / m};
+  pr.gap_m.resize(pr.grid.size());
+  for (int j = 0; j < m; ++j)
+    for (int i = 0; i <= m; ++i) pr.gap_m[pr.grid.index(i, j)] = h[static_cast<std::size_t>(j) * m + (i % m)];
+  pr.boundary_y = BoundaryY::periodic;
+  return film;
 }
 
 }  // namespace tribo::lubrication

@@ -9,10 +9,21 @@
 //                      the mean gap. Where this falls below `min_gap_m` the surfaces touch; the
 //                      gap is floored there (the contact spots carry the load elastically, and
 //                      the Reynolds flux through them is negligible as h³ → 0).
+//   rough pair film  — the Reynolds cell of a periodic rough pair (rough_pair_film): rigid at a
+//                      mean gap, or pressed together by a solid load on an elastic(-plastic)
+//                      periodic half-space (contact/normal_contact.h) with the film filling the
+//                      deformed gap. The n × n surfaces wrap along x: the grid has n + 1 nodes
+//                      along x (x = L ≡ 0, for p prescribed at both ends) and n across, periodic.
 #pragma once
 
+#include "contact/normal_contact.h"
 #include "lubrication/reynolds.h"
 
+#include <Eigen/Core>
+
+#include <limits>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace tribo::lubrication {
@@ -24,5 +35,46 @@ ReynoldsProblem parallel_discs_problem(double radius_m, double gap_m, double gap
 // Returns the number of floored (contacting) nodes through `contact_nodes` when non-null.
 std::vector<double> rough_pair_gap_m(const std::vector<double>& upper_height_m, const std::vector<double>& lower_height_m,
                                      double mean_gap_m, double min_gap_m, std::size_t* contact_nodes = nullptr);
+
+// How the two rough surfaces of rough_pair_film are placed. Exactly one of mean_gap_m and
+// contact_load_N is given.
+struct RoughPairFilmOptions {
+  // Rigid surfaces: mean planes this far apart, h = h̄ + (z₁ − z̄₁) − (z₂ − z̄₂) (rough_pair_gap_m).
+  std::optional<double> mean_gap_m;
+  // Or pressed together by this solid load (N) on the periodic patch: the rigid profile
+  // gap_from_heights(lower − upper) against an elastic(-plastic) periodic half-space of modulus
+  // E* with the pressure cap hardness_Pa, load-controlled (contact::solve_normal_load); the film
+  // is the deformed gap g.
+  std::optional<double> contact_load_N;
+  // E* (contact mode); default steel on steel, E = 206.8 GPa, ν = 0.3 (thesis Appendix I)
+  double composite_modulus_Pa = contact::composite_modulus_Pa(206.8e9, 0.3, 206.8e9, 0.3);
+  double hardness_Pa = std::numeric_limits<double>::infinity();  // plastic pressure cap; ∞ = elastic
+  contact::NormalContactOptions contact;  // tolerance, iterations (its pressure cap is replaced by hardness_Pa)
+  // The film is floored at contact_gap_fraction · σ (σ = √(Rq₁² + Rq₂²) of the two arrays) where
+  // the surfaces touch (rigid: h < floor; deformed: g < floor); those are the contact nodes.
+  double contact_gap_fraction = 1e-3;
+
+  // False with a reason naming the field: neither or both placements, a non-positive or
+  // non-finite value, a fraction outside (0, 0.5], invalid contact options.
+  bool is_valid(std::string* why) const;
+};
+
+struct RoughPairFilm {
+  ReynoldsProblem problem;            // grid (n + 1) × n, gap_m, periodic y; nothing else set
+  std::size_t contact_nodes = 0;      // surface nodes (of n × n) where the film is at the floor
+  double composite_rms_height_m = 0;  // σ = √(Rq(upper)² + Rq(lower)²), each about its mean
+  double floor_m = 0;                 // contact_gap_fraction · σ
+  double mean_film_m = 0;             // mean film over the n × n surface nodes
+  // Contact mode only: the contact solve. Non-convergence is returned, not thrown (check
+  // contact->summary.converged); the film is then built from the solver's last iterate.
+  std::optional<contact::NormalContactResult> contact;
+};
+
+// The rough-pair Reynolds cell. upper_m (slider) and lower_m (disc) are n × n periodic height
+// fields (rows along x, n ≥ 3) on a square patch of side size_m. Throws std::invalid_argument
+// for bad input (shapes, NaN, invalid options, a rigid mean gap not above the floor, a load the
+// capped contact cannot carry).
+RoughPairFilm rough_pair_film(const Eigen::ArrayXXd& upper_m, const Eigen::ArrayXXd& lower_m, double size_m,
+                              const RoughPairFilmOptions& options);
 
 }  // namespace tribo::lubrication

@@ -130,27 +130,54 @@ Topology build_topology(const ReynoldsProblem& pr) {
 }
 
 
-// Face quantities of a link (see the header): conductance h³/(12η) from the trapezoid rule on
-// ∫dx/h³, the Couette gap h̃ = ∫dx/h² / ∫dx/h³, and the face length times 1/(θ d).
+// Face quantities of a link (see the header): conductance from the trapezoid rule on ∫dx/k with
+// k = φh³/(12η), the Couette film t̃ = ∫(t/k)dx / ∫dx/k (plain: h̃ = ∫dx/h² / ∫dx/h³), and the
+// face length times 1/(θ d).
 struct Face {
   double conductance_per_Pa;  // k A / (θ d): mass flow per unit pressure difference (m³/(Pa s))
-  double couette_m3_per_s;    // s (U/2) h̃ A, the Couette flow out of the cell at ϑ = 1
+  double couette_m3_per_s;    // s (U/2) t̃ A, the Couette flow out of the cell at ϑ = 1
 };
+
+// φ of a node along the link's direction (1 when the field is empty).
+double flow_factor(const ReynoldsProblem& pr, std::size_t node, bool along_x) {
+  const std::vector<double>& phi = along_x ? pr.pressure_flow_factor_x : pr.pressure_flow_factor_y;
+  return phi.empty() ? 1.0 : phi[node];
+}
+
+bool average_flow_model(const ReynoldsProblem& pr) {
+  return !pr.pressure_flow_factor_x.empty() || !pr.pressure_flow_factor_y.empty() || !pr.couette_film_m.empty();
+}
 
 Face face_of(const ReynoldsProblem& pr, std::size_t p_node, const Link& link) {
   const Grid& g = pr.grid;
   const double hp = pr.gap_m[p_node], hn = pr.gap_m[link.node];
   const double d = link.along_x ? g.dx_m : g.dy_m, area = link.along_x ? g.dy_m : g.dx_m;
   // The diffusive face runs from P to the rim point (gap interpolated there) for rim links.
-  const double hb = link.kind == LinkKind::rim ? hp + link.theta * (hn - hp) : hn;
-  const double inv3 = 1.0 / (hp * hp * hp) + 1.0 / (hb * hb * hb);
-  const double k = 2.0 / inv3 / (12.0 * pr.viscosity_Pa_s);
+  const bool rim = link.kind == LinkKind::rim;
+  const double hb = rim ? hp + link.theta * (hn - hp) : hn;
+  if (!average_flow_model(pr)) {  // the plain equation, kept bit for bit
+    const double inv3 = 1.0 / (hp * hp * hp) + 1.0 / (hb * hb * hb);
+    const double k = 2.0 / inv3 / (12.0 * pr.viscosity_Pa_s);
+    Face f{k * area / (link.theta * d), 0.0};
+    if (link.along_x && pr.sliding_speed_m_per_s != 0.0) {
+      // The Couette divergence uses the regular face P–N (the Gibou cell is a full dx × dy cell).
+      const double i3 = 1.0 / (hp * hp * hp) + 1.0 / (hn * hn * hn);
+      const double i2 = 1.0 / (hp * hp) + 1.0 / (hn * hn);
+      f.couette_m3_per_s = link.sign * 0.5 * pr.sliding_speed_m_per_s * (i2 / i3) * area;
+    }
+    return f;
+  }
+  // Average flow model: 1/(φh³) at P, N and the rim point (φ interpolated there like h).
+  const double phi_p = flow_factor(pr, p_node, link.along_x), phi_n = flow_factor(pr, link.node, link.along_x);
+  const double phi_b = rim ? phi_p + link.theta * (phi_n - phi_p) : phi_n;
+  const double ap = 1.0 / (phi_p * hp * hp * hp), ab = 1.0 / (phi_b * hb * hb * hb);
+  const double k = 2.0 / (ap + ab) / (12.0 * pr.viscosity_Pa_s);
   Face f{k * area / (link.theta * d), 0.0};
   if (link.along_x && pr.sliding_speed_m_per_s != 0.0) {
-    // The Couette divergence uses the regular face P–N (the Gibou cell is a full dx × dy cell).
-    const double i3 = 1.0 / (hp * hp * hp) + 1.0 / (hn * hn * hn);
-    const double i2 = 1.0 / (hp * hp) + 1.0 / (hn * hn);
-    f.couette_m3_per_s = link.sign * 0.5 * pr.sliding_speed_m_per_s * (i2 / i3) * area;
+    const double an = 1.0 / (phi_n * hn * hn * hn);
+    const double tp = pr.couette_film_m.empty() ? hp : pr.couette_film_m[p_node];
+    const double tn = pr.couette_film_m.empty() ? hn : pr.couette_film_m[link.node];
+    f.couette_m3_per_s = link.sign * 0.5 * pr.sliding_speed_m_per_s * ((tp * ap + tn * an) / (ap + an)) * area;
   }
   return f;
 }
@@ -228,6 +255,23 @@ void validate(const ReynoldsProblem& pr) {
     for (double v : pr.gap_rate_m_per_s)
       if (!std::isfinite(v)) bad("gap_rate_m_per_s holds a non-finite value");
   }
+  // Average flow fields: empty, or one finite value per node, φ > 0 and t ≥ 0.
+  auto check_field = [&](const std::vector<double>& v, const char* name, bool zero_allowed) {
+    if (v.empty()) return;
+    if (v.size() != g.size())
+      bad(std::string(name) + " must be empty or have one value per node (got " + std::to_string(v.size()) +
+          " values, the grid " + std::to_string(g.size()) + ")");
+    for (std::size_t n = 0; n < v.size(); ++n)
+      if (!std::isfinite(v[n]) || v[n] < 0.0 || (!zero_allowed && v[n] == 0.0)) {
+        std::ostringstream m;
+        m << name << " must be finite and " << (zero_allowed ? ">= 0" : "> 0") << " everywhere; node (i=" << n % g.nx
+          << ", j=" << n / g.nx << ") has " << v[n];
+        bad(m.str());
+      }
+  };
+  check_field(pr.pressure_flow_factor_x, "pressure_flow_factor_x", false);
+  check_field(pr.pressure_flow_factor_y, "pressure_flow_factor_y", false);
+  check_field(pr.couette_film_m, "couette_film_m", true);
   if (!std::isfinite(pr.viscosity_Pa_s) || pr.viscosity_Pa_s <= 0.0)
     bad("viscosity_Pa_s must be finite and > 0 (got " + std::to_string(pr.viscosity_Pa_s) + ")");
   if (!std::isfinite(pr.pressure_viscosity_per_Pa) || pr.pressure_viscosity_per_Pa < 0.0)
@@ -603,6 +647,26 @@ FilmFlow film_flow(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
     flow.max_cell_imbalance_m3_per_s = std::max(flow.max_cell_imbalance_m3_per_s, std::abs(balance));
   }
   return flow;
+}
+
+std::vector<double> x_face_flow_m2_per_s(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
+  validate(pr);
+  if (pr.disc) bad("x_face_flow_m2_per_s needs a rectangular domain (the problem has a disc domain)");
+  const Grid& g = pr.grid;
+  if (sol.pressure_Pa.size() != g.size() || sol.fill_fraction.size() != g.size())
+    bad("x_face_flow_m2_per_s: the solution does not belong to this problem's grid");
+  const double psi = pr.pressure_viscosity_per_Pa;
+  std::vector<double> q(static_cast<std::size_t>(g.nx - 1) * static_cast<std::size_t>(g.ny));
+  for (int j = 0; j < g.ny; ++j)
+    for (int i = 0; i + 1 < g.nx; ++i) {
+      const std::size_t p = g.index(i, j), n = g.index(i + 1, j);
+      const Link link{LinkKind::unknown, n, -1, 1.0, 0.0, true, +1};
+      const Face f = face_of(pr, p, link);
+      const double th = upwind_is_p(pr, link) ? sol.fill_fraction[p] : sol.fill_fraction[n];
+      const double dp = reduced_pressure(sol.pressure_Pa[n], psi) - reduced_pressure(sol.pressure_Pa[p], psi);
+      q[static_cast<std::size_t>(j) * (g.nx - 1) + i] = (-f.conductance_per_Pa * dp + f.couette_m3_per_s * th) / g.dy_m;
+    }
+  return q;
 }
 
 }  // namespace tribo::lubrication

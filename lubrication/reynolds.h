@@ -39,6 +39,20 @@
 // p ≥ 0, cavitation included) and p = −ln(1 − ψq)/ψ. Where ψq reaches 1 the pressure has no
 // finite solution (the Barus "blow-up"); the solve then reports non-convergence.
 //
+// Average flow model (Patir & Cheng, J. Lubr. Technol. 100, 1978, 12–17): optional per-node
+// pressure flow factors φx, φy > 0 and a Couette film t ≥ 0 turn the equation into
+//
+//     ∂/∂x( φx h³/(12η) ∂p/∂x ) + ∂/∂y( φy h³/(12η) ∂p/∂y ) = (U/2) ∂(ϑt)/∂x + ϑ ∂h/∂t,
+//
+// i.e. the mean flows q̄x = −φx h³/(12η) ∂p/∂x + (U/2) t ϑ, q̄y = −φy h³/(12η) ∂p/∂y. (Patir–Cheng's
+// t = h̄_T + σΦs; the squeeze storage stays ϑ·gap_rate, so a caller of the average model passes
+// gap_rate = (dh̄_T/dh)·ḣ.) The faces use the same exact 1-D integral of a constant flux between
+// P and N, now with k = φh³/(12η) and the Couette film t: by the trapezoid rule on ∫dx/k and
+// ∫(t/k)dx,
+//     k_f = 2 / (1/k_P + 1/k_N),      t̃_f = (t_P/k_P + t_N/k_N) / (1/k_P + 1/k_N),
+// which for φ ≡ 1, t ≡ h is the plain face above. Rim links (disc domain) interpolate φ like the
+// gap. With all three fields empty the plain equation is solved bit for bit as without them.
+//
 // Field layout: row-major, value (i, j) at index j·nx + i, i along x (sliding direction).
 #pragma once
 
@@ -81,9 +95,16 @@ struct ReynoldsProblem {
   BoundaryY boundary_y = BoundaryY::ambient;
   std::optional<DiscDomain> disc;           // circular domain; x, y boundaries then ambient
   Cavitation cavitation = Cavitation::none;
+  // Average flow model (Patir & Cheng 1978): the Poiseuille conductance of a node is
+  // φx h³/(12η) along x and φy h³/(12η) along y, and the Couette flux transports the film
+  // t (m) instead of h:  q̄x = −φx h³/(12η) ∂p/∂x + (U/2) t,  q̄y = −φy h³/(12η) ∂p/∂y.
+  std::vector<double> pressure_flow_factor_x;   // φx per node (> 0); empty = 1
+  std::vector<double> pressure_flow_factor_y;   // φy per node (> 0); empty = 1
+  std::vector<double> couette_film_m;           // t per node (≥ 0); empty = gap_m
 };
 
-// Throws std::invalid_argument naming the first bad input (grid < 3, h ≤ 0, NaN, η ≤ 0, …).
+// Throws std::invalid_argument naming the first bad input (grid < 3, h ≤ 0, NaN, η ≤ 0, a flow
+// factor ≤ 0 or a Couette film < 0 with its field and node, …).
 void validate(const ReynoldsProblem& problem);
 
 struct ReynoldsOptions {
@@ -131,6 +152,12 @@ struct FilmFlow {
   double max_cell_imbalance_m3_per_s = 0;
 };
 FilmFlow film_flow(const ReynoldsProblem& problem, const ReynoldsSolution& solution);
+
+// Flow per unit width (m²/s) along +x through the face between nodes (i, j) and (i + 1, j) — the
+// discrete face flux the solver balances, −k_f (p_N − p_P)/dx + (U/2) t̃_f ϑ_upwind (reduced
+// pressure under Barus) — at index j·(nx − 1) + i, i = 0 … nx − 2. Rectangular domains only
+// (throws std::invalid_argument for a disc domain).
+std::vector<double> x_face_flow_m2_per_s(const ReynoldsProblem& problem, const ReynoldsSolution& solution);
 
 // A solver that keeps its SuiteSparse factorisations between solves: repeated solves on the same
 // grid and domain (realisations, time steps, Newton iterations) reuse the symbolic analysis.

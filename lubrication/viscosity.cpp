@@ -57,4 +57,25 @@ double jaeger_temperature_rise_K(double K, double a, double mu_k, double speed_m
   return K * mu_k * speed_m_per_s * std::sqrt(solid_load_N) / denominator;  // thesis (5.2.2)
 }
 
+void validate(const JaegerContact& c) {
+  require(std::isfinite(c.slider_conductivity_W_per_m_K) && c.slider_conductivity_W_per_m_K > 0.0,
+          "jaeger: slider_conductivity_W_per_m_K must be finite and > 0");
+  require(std::isfinite(c.disc_conductivity_W_per_m_K) && c.disc_conductivity_W_per_m_K > 0.0,
+          "jaeger: disc_conductivity_W_per_m_K must be finite and > 0");
+  require(std::isfinite(c.slider_diffusivity_m2_per_s) && c.slider_diffusivity_m2_per_s > 0.0,
+          "jaeger: slider_diffusivity_m2_per_s must be finite and > 0");
+}
+
+double jaeger_flash_temperature_rise_K(const JaegerContact& c, double power_W, double real_area_m2,
+                                       double speed_m_per_s) {
+  require(std::isfinite(power_W) && power_W >= 0.0, "jaeger: power_W must be finite and >= 0");
+  require(std::isfinite(real_area_m2) && real_area_m2 >= 0.0, "jaeger: real_area_m2 must be finite and >= 0");
+  require(std::isfinite(speed_m_per_s) && speed_m_per_s >= 0.0, "jaeger: speed_m_per_s must be finite and >= 0");
+  if (power_W == 0.0 || real_area_m2 == 0.0) return 0.0;
+  const double b = std::sqrt(c.slider_diffusivity_m2_per_s);
+  const double bracket = 1.1 * c.disc_conductivity_W_per_m_K * b +
+                         0.7 * c.slider_conductivity_W_per_m_K * std::pow(real_area_m2, 0.25) * std::sqrt(speed_m_per_s);
+  return power_W * b / (1.9 * std::sqrt(real_area_m2) * bracket);  // thesis (5.2.1), SI
+}
+
 }  // namespace tribo::lubrication

@@ -61,4 +61,24 @@ double crook_peak_speed_m_per_s(double b);
 // Jaeger's reduced flash temperature rise (5.2.2), in K; units of K and a as documented above.
 double jaeger_temperature_rise_K(double K, double a, double mu_k, double speed_m_per_s, double solid_load_N);
 
+// Jaeger's flash temperature (5.2.1) itself, in SI (the thesis' g/J convert lbf·in to heat and
+// drop out): with P = μk v N_s the frictional power (W) released on the real area A,
+//
+//     ΔT = P b / (1.9 √A [1.1 ξ2 b + 0.7 ξ1 A^{1/4} v^{1/2}]),
+//
+// ξ1, ξ2 the thermal conductivities of slider and disc (W/(m K)) and b = √κ1 (m/s^{1/2}) the
+// square root of the slider's thermal diffusivity — the only choice of b for which both terms
+// in the bracket have the same units. Low speed: ΔT → P/(2.09 ξ2 √A) (conduction into the
+// disc); high speed: the slider's moving-source term 0.7 ξ1 A^{1/4} √v takes over.
+struct JaegerContact {
+  double slider_conductivity_W_per_m_K = 46.0;   // ξ1, alloy steel (≈ 1 % C)
+  double disc_conductivity_W_per_m_K = 52.0;     // ξ2, annealed AISI 1020
+  double slider_diffusivity_m2_per_s = 1.2e-5;   // κ1 = ξ1/(ρ c), steel
+};
+void validate(const JaegerContact& contact);
+// ΔT in K for the frictional power P (W) on the real area A (m²) at sliding speed v (m/s);
+// 0 when P = 0 or A = 0 (no heat, or no solid contact to carry it).
+double jaeger_flash_temperature_rise_K(const JaegerContact& contact, double power_W, double real_area_m2,
+                                       double speed_m_per_s);
+
 }  // namespace tribo::lubrication

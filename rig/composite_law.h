@@ -1,5 +1,12 @@
 // The composite friction law: baseline Coulomb / kinetic curve plus friction effects, combined
 // through the fixed channels documented in effect.h (order-independent by construction).
+//
+// With a homogenised base (BaselineLaw::homogenised, rig/homogenised_law.h) the base's state
+// [h̄, ΔT] comes first in the law's state, then the effects' states, and the channels act on the
+// solid load N_s(h̄) instead of W:
+//   F_static = χ(U = 0) · μs(φ̇) · N_s(h̄)
+//   F_k      = χ · (τ_i A_r(h̄) + Σ kinetic_increment_e · N_s(h̄)) + η|U| S(h̄) + Σ fluid_force_e
+// The effects see μs(φ̇) of the table's locus and μk = τ_i A_r(h̄)/N_s(h̄).
 #pragma once
 
 #include <memory>
@@ -34,8 +41,17 @@ class CompositeLaw final : public FrictionLaw {
   double baseline_kinetic_coefficient(double speed_m_per_s) const;
 
  private:
+  // The effects' channel sums at one instant (effect.h): χ = Π solid_fraction, Σ kinetic_increment
+  // (started from `increment_start`, the baseline μk, so the Coulomb path's sum is unchanged), Σ fluid.
+  struct Channels {
+    double solid_fraction = 1.0;
+    double kinetic = 0.0;
+    double fluid_N = 0.0;
+  };
+  Channels channels(const FrictionContext& c, double increment_start) const;
   EffectContext effect_context(const FrictionContext& c, std::size_t i) const;
   double solid_fraction(const FrictionContext& c) const;
+  std::span<const double> base_state(const FrictionContext& c) const { return c.state.first(base_size_); }
   template <class S>
   S slice(S state, std::size_t i) const { return state.subspan(offsets_[i], effects_[i]->state_size()); }
 
@@ -43,6 +59,7 @@ class CompositeLaw final : public FrictionLaw {
   std::optional<contact::JunctionLocus> locus_;
   std::vector<std::unique_ptr<FrictionEffect>> effects_;
   std::vector<std::size_t> offsets_;
+  std::size_t base_size_ = 0;   // 2 with a homogenised base, else 0
   std::size_t state_size_ = 0;
 };
 

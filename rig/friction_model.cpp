@@ -134,6 +134,13 @@ void validate(const FrictionModel& m) {
   if (!std::isfinite(m.baseline.mu_s) || m.baseline.mu_s < 0.0) bad("mu_s must be finite and non-negative");
   if (!m.baseline.kinetic && (!std::isfinite(m.baseline.mu_k) || m.baseline.mu_k < 0.0)) bad("mu_k must be finite and non-negative");
   if (!m.baseline.kinetic && m.baseline.mu_k > m.baseline.mu_s) bad("mu_k must not exceed mu_s");
+  if (m.baseline.homogenised) {
+    for (const char* locus_effect : {"rate_dependent_static", "strain_rate_hardening"}) {
+      if (m.has(locus_effect)) {
+        bad(std::string(locus_effect) + " cannot be combined with the homogenised law (its table's junction block is the static-friction locus)");
+      }
+    }
+  }
   for (const auto& [name, values] : m.effects) {
     const EffectInfo& info = effect_info(name);
     if (values.size() != info.parameters.size()) bad(name + ": expected " + std::to_string(info.parameters.size()) + " parameters");

@@ -36,10 +36,16 @@ const std::vector<EffectInfo>& effect_catalogue();
 // Throws std::invalid_argument listing the known names when `name` is not one.
 const EffectInfo& effect_info(const std::string& name);
 
+class HomogenisedBase;  // rig/homogenised_law.h
+
 struct BaselineLaw {
   double mu_s = 0.3;
   double mu_k = 0.2;                                  // used when `kinetic` is null
   std::shared_ptr<const KineticCurve> kinetic;        // optional velocity-dependent μk(U)
+  // Optional homogenised base from law.json (rig/homogenised_law.h). When set it replaces μs, μk
+  // and `kinetic`: the law integrates [h̄, ΔT] and the effects compose on N_s(h̄) (effect.h).
+  // rate_dependent_static and strain_rate_hardening are then rejected: the table has the locus.
+  std::shared_ptr<const HomogenisedBase> homogenised;
 };
 
 struct FrictionModel {

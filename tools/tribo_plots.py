@@ -4,6 +4,7 @@
     tribo_plots.py demo DIR   phase_plane.png, regime_map.png, mu_s_vs_phidot.png from a demo run
     tribo_plots.py rig DIR    phase_plane.png, trace.png from a `tribo rig` run
     tribo_plots.py gap DIR    gap_by_observable.png, items.png, overlay.png from `tribo gap diagnose`
+    tribo_plots.py homogenise DIR   stribeck.png, area.png from `tribo homogenise`
 """
 import csv
 import os
@@ -235,11 +236,64 @@ def plot_gap(d):
             plt.close(fig)
 
 
+REGIME_SHADES = {"boundary": "tab:red", "mixed": "tab:orange", "full_film": "tab:blue"}
+
+
+def plot_homogenise(d):
+    """Stribeck curve (mu and fluid share against U, regimes shaded) and the load-separation curve."""
+    import json
+
+    with open(os.path.join(d, "law.json")) as f:
+        law = json.load(f)
+    pts = law["stribeck"]
+    if pts:
+        u = [p["U_m_per_s"] for p in pts]
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        for i, p in enumerate(pts):
+            lo = (u[i - 1] * u[i]) ** 0.5 if i > 0 else u[0]
+            hi = (u[i] * u[i + 1]) ** 0.5 if i + 1 < len(u) else u[-1]
+            ax.axvspan(lo, hi, color=REGIME_SHADES[p["regime"]], alpha=0.08, lw=0)
+        ax.semilogx(u, [p["mu"] for p in pts], "k-o", ms=3, label="friction coefficient $\\mu$")
+        ax.set_xlabel("sliding speed U (m/s)")
+        ax.set_ylabel("$\\mu$")
+        ax2 = ax.twinx()
+        ax2.semilogx(u, [p["fluid_share"] for p in pts], "b--", label="share of W on the film")
+        ax2.set_ylabel("fluid load share", color="b")
+        ax2.set_ylim(0, 1.05)
+        for name, colour in REGIME_SHADES.items():
+            ax.axvspan(0, 0, color=colour, alpha=0.25, label=name.replace("_", " "))
+        ax.legend(loc="upper left", fontsize=8)
+        pin = law["pin"]
+        ax.set_title("Stribeck curve at W = %.4g N, %s pin R = %.4g mm" % (pin["normal_load_N"], pin["shape"],
+                                                                        pin["radius_m"] * 1e3), fontsize=10)
+        ax.grid(alpha=0.3, which="both")
+        fig.tight_layout()
+        fig.savefig(os.path.join(d, "stribeck.png"), dpi=110)
+        plt.close(fig)
+    rows = read_csv(os.path.join(d, "area.csv"))
+    h = column(rows, "separation_over_sigma")
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    ax.semilogy(h, [max(a, 1e-12) for a in column(rows, "real_area_fraction")], "r-o", ms=3, label="$A_r/A_0$")
+    ax.set_xlabel("separation $\\bar h/\\sigma$")
+    ax.set_ylabel("real area fraction", color="r")
+    ax2 = ax.twinx()
+    ax2.semilogy(h, [max(n, 1e-12) for n in column(rows, "solid_load_N")], "k-s", ms=3, label="$N_s$ (N)")
+    ax2.set_ylabel("solid load $N_s$ (N)")
+    ax2.axhline(law["pin"]["normal_load_N"], color="gray", ls=":", lw=1)
+    ax.set_xlim(0, min(max(h), 2 * law["cells"]["first_contact_separation_m"] / law["cells"]["sigma_m"]))
+    ax.grid(alpha=0.3, which="both")
+    ax.set_title("BEM load and real area against separation (dotted: the pin load)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "area.png"), dpi=110)
+    plt.close(fig)
+
+
 def main(argv):
-    if len(argv) != 3 or argv[1] not in ("demo", "rig", "gap"):
+    modes = {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap, "homogenise": plot_homogenise}
+    if len(argv) != 3 or argv[1] not in modes:
         sys.stderr.write(__doc__)
         return 2
-    {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap}[argv[1]](argv[2])
+    modes[argv[1]](argv[2])
     return 0
 
 

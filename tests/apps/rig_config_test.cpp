@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "apps/rig_config.h"
 #include "rig/observables.h"
@@ -67,6 +68,47 @@ TEST(RigConfig, DriveTableFromCsvIsInterpolatedAndBadRowsNameTheLine) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("drive.csv:3"), std::string::npos) << e.what();
   }
+}
+
+// A minimal law.json (rig/law_table.h): N_s = 200, 100, 0 N and A_r = 2e-8, 1e-8, 0 m² at
+// h̄ = 1, 2, 3 µm (linear, so PCHIP is the line and N_s(h̄0) = W gives h̄0 = 3 µm − W/(1e8 N/m)).
+std::string law_json(const std::string& solid_load = "[200.0, 100.0, 0.0]") {
+  return R"({"format": "tribo-law-1", "provenance": {"by": "rig_config_test"},
+  "pin": {"shape": "flat", "radius_m": 4.7625e-3, "nominal_area_m2": 7.126e-5, "normal_load_N": 93.86},
+  "lubricant": {"viscosity_Pa_s": 0.021, "temperature_viscosity_per_K": 0.03, "reference_temperature_K": 300.15},
+  "thermal": {"slider_conductivity_W_per_m_K": 46.0, "disc_conductivity_W_per_m_K": 52.0,
+              "slider_diffusivity_m2_per_s": 1.2e-5, "time_constant_s": 1.9},
+  "junction": {"alpha": 25.0, "n": 1.25, "sigma0_over_tau_i": 5.3, "location_per_s": 1.0,
+               "strain_rate_index_m": 0.0, "reference_load_rate_per_s": 1.0, "interface_shear_strength_Pa": 2.2e8},
+  "table": {"separation_m": [1e-6, 2e-6, 3e-6], "solid_load_N": )" +
+         solid_load + R"(, "real_area_m2": [2e-8, 1e-8, 0.0],
+            "lift_per_eta_u_m": [1e3, 1e3, 1e3], "squeeze_per_eta_m": [1e9, 1e9, 1e9], "shear_per_eta_u_m": [70.0, 35.0, 23.0]}})";
+}
+
+TEST(RigConfig, HomogenisedLawReadsItsTableRelativeToTheConfigAndTakesEffects) {
+  write_config("law.json", law_json());
+  const RigRun run = load_rig_run(write_config(
+      "homogenised.toml", "[friction]\nlaw = \"homogenised\"\ntable = \"law.json\"\neffects = [\"viscous_friction\"]\n"));
+  EXPECT_EQ(run.law->name(), "homogenised+viscous_friction");
+  ASSERT_EQ(run.law->state_size(), 2u);
+  std::vector<double> state(2);
+  run.law->initial_state(state);
+  EXPECT_NEAR(state[0], 3e-6 - 93.857 / 1e8, 1e-12 * 3e-6);  // N_s(h̄0) = W on the linear table
+  EXPECT_EQ(state[1], 0.0);
+}
+
+TEST(RigConfig, HomogenisedLawErrorsNameTheTableKeyAndTheReason) {
+  expect_error("[friction]\nlaw = \"homogenised\"\n", {"friction.table"});
+  expect_error("[friction]\nlaw = \"homogenised\"\ntable = \"no_such_law.json\"\n", {"friction.table", "no_such_law.json", "cannot open"});
+  write_config("bad_law.json", law_json("[200.0, 300.0, 0.0]"));
+  expect_error("[friction]\nlaw = \"homogenised\"\ntable = \"bad_law.json\"\n",
+               {"friction.table", "bad_law.json", "table.solid_load_N[1]", "must not increase"});
+  write_config("law.json", law_json());
+  expect_error("[rig]\nnormal_load_N = 250.0\n[friction]\nlaw = \"homogenised\"\ntable = \"law.json\"\n",
+               {"friction.table", "normal_load_N", "(0, 200] N"});
+  expect_error("[friction]\nlaw = \"homogenised\"\ntable = \"law.json\"\nmu_s = 0.3\n", {"friction.mu_s", "unknown key"});
+  expect_error("[friction]\nlaw = \"homogenised\"\ntable = \"law.json\"\neffects = [\"rate_dependent_static\"]\n",
+               {"friction.law", "rate_dependent_static", "homogenised"});
 }
 
 TEST(RigConfig, MissingFileIsAnInputError) {

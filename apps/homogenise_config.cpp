@@ -1,0 +1,119 @@
+#include "apps/homogenise_config.h"
+
+#include <cmath>
+
+#include "apps/config.h"
+
+namespace tribo::cli {
+namespace {
+
+contact::GaussianSurfaceParams read_gaussian(ConfigTable& s, ConfigTable* domain) {
+  contact::GaussianSurfaceParams p;
+  if (domain) {
+    p.size_m = domain->number("size_m", 1e-3, Range::positive);
+    p.grid = domain->integer("grid", 128, 8);
+    domain->finish();
+  } else {
+    p.size_m = 1e-3;
+    p.grid = 128;
+  }
+  const std::string spectrum = s.choice("spectrum", "gaussian_acf", {"gaussian_acf", "self_affine"});
+  p.kind = spectrum == "gaussian_acf" ? contact::SpectrumKind::gaussian_acf : contact::SpectrumKind::self_affine;
+  p.rms_height_m = s.required_number("rms_height_m", Range::positive);
+  p.seed = static_cast<std::uint64_t>(s.integer("seed", 1, 0));
+  if (p.kind == contact::SpectrumKind::gaussian_acf) {
+    p.correlation_length_m = s.required_number("correlation_length_m", Range::positive);
+    p.correlation_length_across_m = s.number("correlation_length_across_m", 0.0, Range::non_negative);
+  } else {
+    p.hurst = s.number("hurst", p.hurst, Range::positive);
+    p.rolloff_wavelength_m = s.number("rolloff_wavelength_m", 0.0, Range::non_negative);
+    p.cutoff_wavelength_m = s.number("cutoff_wavelength_m", 0.0, Range::non_negative);
+  }
+  input_guard(s, "spectrum", [&] { contact::validate(p); return 0; });
+  s.finish();
+  return p;
+}
+
+}  // namespace
+
+HomogeniseRun load_homogenise_run(const std::filesystem::path& path) {
+  const toml::table doc = parse_toml_file(path);
+  ConfigTable root(doc, path.string(), "");
+  HomogeniseRun run;
+  homogenise::HomogeniseOptions& o = run.options;
+
+  auto surface = root.table("surface");
+  if (!surface) root.fail("surface", "table [surface] is required (the composite roughness of the pair)");
+  if (surface->string("kind", "gaussian") != "gaussian") surface->fail("kind", "homogenise needs kind = \"gaussian\"");
+  auto domain = root.table("domain");
+  o.surface = read_gaussian(*surface, domain ? &*domain : nullptr);
+
+  if (auto m = root.table("material")) {
+    o.e_star_Pa = m->number("e_star_Pa", o.e_star_Pa, Range::positive);
+    o.hardness_Pa = m->number("hardness_Pa", o.hardness_Pa, Range::positive);
+    o.alpha = m->number("alpha", o.alpha, Range::positive);
+    o.interface_shear_strength_Pa = m->number("interface_shear_strength_Pa", o.hardness_Pa / 5.3, Range::positive);
+    o.thermal.slider_conductivity_W_per_m_K =
+        m->number("slider_conductivity_W_per_m_K", o.thermal.slider_conductivity_W_per_m_K, Range::positive);
+    o.thermal.disc_conductivity_W_per_m_K =
+        m->number("disc_conductivity_W_per_m_K", o.thermal.disc_conductivity_W_per_m_K, Range::positive);
+    o.thermal.slider_diffusivity_m2_per_s =
+        m->number("slider_diffusivity_m2_per_s", o.thermal.slider_diffusivity_m2_per_s, Range::positive);
+    m->finish();
+  }
+  if (auto j = root.table("junction")) {
+    o.junction_n = j->number("n", o.junction_n, Range::non_negative);
+    o.location_per_s = j->number("location_per_s", o.location_per_s, Range::positive);
+    o.strain_rate_index_m = j->number("strain_rate_index_m", o.strain_rate_index_m, Range::non_negative);
+    o.reference_load_rate_per_s = j->number("reference_load_rate_per_s", o.reference_load_rate_per_s, Range::positive);
+    j->finish();
+  }
+  if (auto l = root.table("lubricant")) {
+    o.lubricant.viscosity_Pa_s = l->number("viscosity_Pa_s", o.lubricant.viscosity_Pa_s, Range::positive);
+    o.lubricant.pressure_viscosity_per_Pa =
+        l->number("pressure_viscosity_per_Pa", o.lubricant.pressure_viscosity_per_Pa, Range::non_negative);
+    o.lubricant.temperature_viscosity_per_K =
+        l->number("temperature_viscosity_per_K", o.lubricant.temperature_viscosity_per_K, Range::non_negative);
+    o.lubricant.reference_temperature_K =
+        l->number("reference_temperature_K", o.lubricant.reference_temperature_K, Range::positive);
+    l->finish();
+  }
+  if (auto p = root.table("pin")) {
+    o.pin.shape = p->choice("shape", "flat", {"flat", "spherical"}) == "flat" ? homogenise::PinShape::flat
+                                                                             : homogenise::PinShape::spherical;
+    o.pin.radius_m = p->number("radius_m", o.pin.radius_m, Range::positive);
+    o.pin.normal_load_N = p->number("normal_load_N", o.pin.normal_load_N, Range::positive);
+    if (o.pin.shape == homogenise::PinShape::spherical) {
+      o.pin.crown_radius_m = p->required_number("crown_radius_m", Range::positive);
+    } else if (p->has("crown_radius_m")) {
+      p->fail("crown_radius_m", "is only used with shape = \"spherical\"");
+    }
+    p->finish();
+  }
+  double u_min = 1e-4, u_max = 1.0;
+  int count = 25;
+  if (auto s = root.table("speeds")) {
+    u_min = s->number("min_m_per_s", u_min, Range::positive);
+    u_max = s->number("max_m_per_s", u_max, Range::positive);
+    count = static_cast<int>(s->integer("count", count, 2));
+    if (!(u_max > u_min)) s->fail("max_m_per_s", "must exceed min_m_per_s");
+    s->finish();
+  }
+  for (int k = 0; k < count; ++k)
+    run.speeds_m_per_s.push_back(u_min * std::pow(u_max / u_min, static_cast<double>(k) / (count - 1)));
+  if (auto h = root.table("homogenise")) {
+    o.realisations = static_cast<int>(h->integer("realisations", o.realisations, 1));
+    if (h->has("separation_ratios")) o.separation_ratios = h->number_array("separation_ratios", Range::positive);
+    o.flow_contact_gap_fraction = h->number("flow_contact_gap_fraction", o.flow_contact_gap_fraction, Range::positive);
+    o.lift_contact_gap_fraction = h->number("lift_contact_gap_fraction", o.lift_contact_gap_fraction, Range::positive);
+    o.bem_tolerance = h->number("bem_tolerance", o.bem_tolerance, Range::positive);
+    o.pin_grid = static_cast<int>(h->integer("pin_grid", o.pin_grid, 9));
+    o.threads = static_cast<int>(h->integer("threads", o.threads, 0));
+    h->finish();
+  }
+  input_guard(root, "homogenise", [&] { homogenise::validate(o); return 0; });
+  root.finish();
+  return run;
+}
+
+}  // namespace tribo::cli

@@ -1,0 +1,21 @@
+// Reading a `tribo homogenise` config: [surface] and [domain] as `tribo contact` reads a Gaussian
+// surface (σ is the composite rms height of the pair), [material], [junction], [lubricant],
+// [pin], [speeds] and [homogenise] (docs/homogenise.md lists every key and its default).
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "homogenise/options.h"
+
+namespace tribo::cli {
+
+struct HomogeniseRun {
+  homogenise::HomogeniseOptions options;
+  std::vector<double> speeds_m_per_s;  // the Stribeck curve's speeds, log-spaced
+};
+
+// Throws InputError naming the file, the key and the reason.
+HomogeniseRun load_homogenise_run(const std::filesystem::path& path);
+
+}  // namespace tribo::cli

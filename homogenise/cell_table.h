@@ -1,0 +1,29 @@
+// The patch results of all realisations, averaged: each column's mean and its standard error
+// s/√n over the realisations (lubrication::Estimate), node by node.
+#pragma once
+
+#include <vector>
+
+#include "homogenise/patch.h"
+#include "lubrication/flow_factors.h"
+
+namespace tribo::homogenise {
+
+using lubrication::Estimate;
+
+struct CellTable {
+  double sigma_m = 0;
+  std::vector<double> separation_m;
+  std::vector<Estimate> solid_pressure_Pa, area_fraction;
+  std::vector<Estimate> phi_x, phi_y, phi_s, film_over_sigma, phi_f, couette_shear_factor, phi_fp, contact_fraction;
+  std::vector<Estimate> lift_per_eta_u_per_m;
+  Estimate mu_s_max, mu_boundary;
+  double first_contact_separation_m = 0;  // the largest over the realisations
+  int realisations = 0;
+  int unconverged = 0;                    // solves left out (NaN) over all realisations
+};
+
+// Throws std::invalid_argument when the patches do not share their nodes or none is given.
+CellTable aggregate(const HomogeniseOptions& options, const std::vector<PatchResult>& patches);
+
+}  // namespace tribo::homogenise

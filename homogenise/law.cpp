@@ -1,0 +1,146 @@
+#include "homogenise/law.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "contact/junction_locus.h"
+
+namespace tribo::homogenise {
+
+std::vector<PatchResult> solve_patches(const HomogeniseOptions& o, const std::vector<std::optional<PatchResult>>& cached,
+                                       const std::function<void(int, const PatchResult&)>& on_patch) {
+  validate(o);
+  std::vector<PatchResult> out(static_cast<std::size_t>(o.realisations));
+  std::vector<int> todo;
+  for (int k = 0; k < o.realisations; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    if (i < cached.size() && cached[i]) {
+      out[i] = *cached[i];
+    } else {
+      todo.push_back(k);
+    }
+  }
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  std::string error;
+#pragma omp parallel for schedule(dynamic) num_threads(threads)
+  for (std::size_t t = 0; t < todo.size(); ++t) {
+    const int k = todo[t];
+    try {
+      PatchResult p = solve_patch(o, k);
+#pragma omp critical(tribo_homogenise_patch)
+      {
+        out[static_cast<std::size_t>(k)] = p;
+        if (on_patch) on_patch(k, p);
+      }
+    } catch (const std::exception& e) {
+#pragma omp critical(tribo_homogenise_patch)
+      error = e.what();
+    }
+  }
+  if (!error.empty()) throw std::runtime_error(error);
+  return out;
+}
+
+JunctionSummary junction(const HomogeniseOptions& o, const CellTable& cells) {
+  JunctionSummary j;
+  j.alpha = o.alpha;
+  j.n = o.junction_n;
+  j.mu_s_max = cells.mu_s_max.mean;
+  j.mu_boundary = cells.mu_boundary.mean;
+  if (!(std::isfinite(j.mu_s_max) && j.mu_s_max > 0))
+    throw std::runtime_error("homogenise: no realisation gave the static friction (every junction solve failed)");
+  j.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(j.mu_s_max, o.alpha);  // thesis (3.1.23)
+  j.location_per_s = o.location_per_s;
+  j.strain_rate_index_m = o.strain_rate_index_m;
+  j.reference_load_rate_per_s = o.reference_load_rate_per_s;
+  j.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
+  return j;
+}
+
+namespace {
+
+nlohmann::json means(const std::vector<Estimate>& c) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const Estimate& e : c) a.push_back(e.mean);
+  return a;
+}
+nlohmann::json errors(const std::vector<Estimate>& c) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const Estimate& e : c) a.push_back(e.standard_error);
+  return a;
+}
+
+}  // namespace
+
+nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, const PinTable& pin) {
+  const JunctionSummary jn = junction(o, cells);
+  std::vector<double> lift(pin.separation_m.size());
+  for (std::size_t m = 0; m < lift.size(); ++m)
+    lift[m] = std::max(pin.wedge_lift_per_eta_u_m[m], 0.0) + pin.rugosity_lift_per_eta_u_m[m];
+  nlohmann::json j;
+  j["format"] = "tribo-law-1";
+  j["pin"] = {{"shape", o.pin.shape == PinShape::flat ? "flat" : "spherical"},
+              {"radius_m", o.pin.radius_m},
+              {"crown_radius_m", o.pin.crown_radius_m},
+              {"nominal_area_m2", pin.nominal_area_m2},
+              {"normal_load_N", o.pin.normal_load_N}};
+  j["lubricant"] = {{"viscosity_Pa_s", o.lubricant.viscosity_Pa_s},
+                    {"pressure_viscosity_per_Pa", o.lubricant.pressure_viscosity_per_Pa},
+                    {"temperature_viscosity_per_K", o.lubricant.temperature_viscosity_per_K},
+                    {"reference_temperature_K", o.lubricant.reference_temperature_K}};
+  // The face's heat diffuses over the pin radius: τ = R²/κ1 (the thermal time of the slider).
+  j["thermal"] = {{"slider_conductivity_W_per_m_K", o.thermal.slider_conductivity_W_per_m_K},
+                  {"disc_conductivity_W_per_m_K", o.thermal.disc_conductivity_W_per_m_K},
+                  {"slider_diffusivity_m2_per_s", o.thermal.slider_diffusivity_m2_per_s},
+                  {"time_constant_s", o.pin.radius_m * o.pin.radius_m / o.thermal.slider_diffusivity_m2_per_s}};
+  j["junction"] = {{"alpha", jn.alpha},
+                   {"n", jn.n},
+                   {"sigma0_over_tau_i", jn.sigma0_over_tau_i},
+                   {"location_per_s", jn.location_per_s},
+                   {"strain_rate_index_m", jn.strain_rate_index_m},
+                   {"reference_load_rate_per_s", jn.reference_load_rate_per_s},
+                   {"interface_shear_strength_Pa", jn.interface_shear_strength_Pa},
+                   {"hardness_Pa", o.hardness_Pa},
+                   {"mu_s_max", jn.mu_s_max},
+                   {"mu_s_max_standard_error", cells.mu_s_max.standard_error},
+                   {"mu_boundary", jn.mu_boundary},
+                   {"mu_boundary_standard_error", cells.mu_boundary.standard_error}};
+  j["table"] = {{"separation_m", pin.separation_m},
+                {"solid_load_N", pin.solid_load_N},
+                {"solid_load_standard_error_N", pin.solid_load_standard_error_N},
+                {"real_area_m2", pin.real_area_m2},
+                {"real_area_standard_error_m2", pin.real_area_standard_error_m2},
+                {"lift_per_eta_u_m", lift},
+                {"wedge_lift_per_eta_u_m", pin.wedge_lift_per_eta_u_m},
+                {"rugosity_lift_per_eta_u_m", pin.rugosity_lift_per_eta_u_m},
+                {"squeeze_per_eta_m", pin.squeeze_per_eta_m},
+                {"shear_per_eta_u_m", pin.shear_per_eta_u_m}};
+  j["cells"] = {{"sigma_m", cells.sigma_m},
+                {"realisations", cells.realisations},
+                {"unconverged", cells.unconverged},
+                {"first_contact_separation_m", cells.first_contact_separation_m},
+                {"separation_m", cells.separation_m},
+                {"solid_pressure_Pa", means(cells.solid_pressure_Pa)},
+                {"solid_pressure_standard_error_Pa", errors(cells.solid_pressure_Pa)},
+                {"area_fraction", means(cells.area_fraction)},
+                {"area_fraction_standard_error", errors(cells.area_fraction)},
+                {"phi_x", means(cells.phi_x)},
+                {"phi_y", means(cells.phi_y)},
+                {"phi_s", means(cells.phi_s)},
+                {"film_over_sigma", means(cells.film_over_sigma)},
+                {"phi_f", means(cells.phi_f)},
+                {"couette_shear_factor", means(cells.couette_shear_factor)},
+                {"phi_fp", means(cells.phi_fp)},
+                {"contact_fraction", means(cells.contact_fraction)},
+                {"lift_per_eta_u_per_m", means(cells.lift_per_eta_u_per_m)},
+                {"lift_per_eta_u_standard_error_per_m", errors(cells.lift_per_eta_u_per_m)}};
+  return j;
+}
+
+}  // namespace tribo::homogenise

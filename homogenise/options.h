@@ -1,0 +1,63 @@
+// What a homogenisation is given: the surface pair, materials, lubricant, pin and load, and the
+// separations at which the micro solves are tabulated (DESIGN §1, §4; issue 14).
+//
+// Separation h̄ (m) is the distance between the mean planes of the composite rough surface and
+// its smooth counterpart — the rigid film is h_T = max(h̄ + z, 0) (Patir & Cheng 1978) and the
+// elastic-plastic BEM is driven to the same h̄ by its approach δ = −min z − h̄, so solid and fluid
+// columns of one table row belong to the same surfaces at the same separation.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "contact/surface.h"
+#include "lubrication/viscosity.h"
+
+namespace tribo::homogenise {
+
+enum class PinShape { flat, spherical };
+
+struct Pin {
+  PinShape shape = PinShape::flat;
+  double radius_m = 4.7625e-3;      // face radius R (thesis 3/16 in, Appendix I)
+  double crown_radius_m = 0.0;      // spherical pin: radius of the crown, h = h̄ + r²/(2 R_c)
+  double normal_load_N = 93.86;     // W (thesis 21.1 lb)
+};
+
+struct HomogeniseOptions {
+  // Composite roughness of the pair (σ = rms_height_m): grid, patch size, spectrum. Realisation k
+  // uses seed surface.seed + k.
+  contact::GaussianSurfaceParams surface;
+  int realisations = 4;
+  double e_star_Pa = 1.137e11;         // composite modulus, steel on steel (DESIGN §5)
+  double hardness_Pa = 1.18e9;         // σ0 of the softer body (disc, Brinell 120)
+  double alpha = 25.0;                 // Tabor's α (3.1.5)
+  // τ_i of the lubricated interface. Hand-set: no solve here gives the shear strength of a
+  // boundary layer; default σ0/5.3 (thesis §5.1, α = 25, μs,max = 0.55 for fully plastic junctions).
+  double interface_shear_strength_Pa = 1.18e9 / 5.3;
+  // Anelastic junction rate law (3.1.13): area exponent n and location L = σ0^{1+n}/(Wⁿ b) at the
+  // reference load rate. Hand-set: b is a material rate constant no quasi-static solve gives.
+  double junction_n = 1.25;
+  double location_per_s = 1.0;
+  double strain_rate_index_m = 0.0;          // σ0 = κ φ̇^m (5.1.2); brass ≈ 0.1
+  double reference_load_rate_per_s = 1.0;
+  lubrication::Lubricant lubricant = lubrication::thesis_white_mineral_oil();
+  lubrication::JaegerContact thermal;
+  Pin pin;
+  // Table nodes h̄/σ, strictly increasing. Nodes above a realisation's first contact (−min z)
+  // carry no solid load; the largest must lie above every realisation's, so the table ends with
+  // N_s = 0 and the fluid columns reach towards full film.
+  std::vector<double> separation_ratios{0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0, 4.0, 6.0, 10.0, 20.0, 50.0};
+  double flow_contact_gap_fraction = 1e-3;   // film floor at contact in the flow-factor cells, × σ
+  double lift_contact_gap_fraction = 0.1;    // film floor in the rugosity-lift cells, × σ
+  double bem_tolerance = 1e-8;               // NormalContactOptions::tolerance
+  int pin_grid = 65;                         // nodes across the pin face (average Reynolds)
+  int threads = 0;                           // realisations in parallel; 0 = all OpenMP threads
+};
+
+// Throws std::invalid_argument naming the first bad field.
+void validate(const HomogeniseOptions& options);
+
+}  // namespace tribo::homogenise

@@ -1,0 +1,197 @@
+#include "homogenise/patch.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "contact/halfspace.h"
+#include "contact/normal_contact.h"
+#include "lubrication/flow_factors.h"
+
+namespace tribo::homogenise {
+namespace {
+
+[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("homogenise: " + what); }
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The cell options of lubrication/flow_factors.h for this one realisation, single-threaded.
+lubrication::HomogenisationOptions cell_options(const HomogeniseOptions& o, std::uint64_t seed, double floor_fraction) {
+  lubrication::HomogenisationOptions c;
+  c.surface = o.surface;
+  c.gap_ratios = o.separation_ratios;
+  c.realisations = 1;
+  c.first_seed = seed;
+  c.viscosity_Pa_s = o.lubricant.viscosity_Pa_s;
+  c.contact_gap_fraction = floor_fraction;
+  c.threads = 1;
+  return c;
+}
+
+}  // namespace
+
+void validate(const HomogeniseOptions& o) {
+  contact::validate(o.surface);
+  if (!(o.surface.rms_height_m > 0)) bad("surface.rms_height_m (σ) must be > 0 (give the rms height, not the slope)");
+  if (o.realisations < 1) bad("realisations must be >= 1");
+  if (!(o.e_star_Pa > 0 && std::isfinite(o.e_star_Pa))) bad("e_star_Pa must be finite and > 0");
+  if (!(o.hardness_Pa > 0 && std::isfinite(o.hardness_Pa))) bad("hardness_Pa must be finite and > 0");
+  if (!(o.alpha > 0 && std::isfinite(o.alpha))) bad("alpha must be finite and > 0");
+  const double tau = o.interface_shear_strength_Pa;
+  if (!(tau > 0 && std::isfinite(tau))) bad("interface_shear_strength_Pa must be finite and > 0");
+  if (!(o.hardness_Pa * o.hardness_Pa > o.alpha * tau * tau))
+    bad("interface_shear_strength_Pa must satisfy alpha tau_i^2 < hardness^2 (thesis 3.1.23: a finite static friction)");
+  if (!(o.junction_n >= 0 && std::isfinite(o.junction_n))) bad("junction n must be finite and >= 0");
+  if (!(o.location_per_s > 0 && std::isfinite(o.location_per_s))) bad("location_per_s must be finite and > 0");
+  lubrication::validate(o.lubricant);
+  lubrication::validate(o.thermal);
+  if (!(o.pin.radius_m > 0 && std::isfinite(o.pin.radius_m))) bad("pin radius_m must be finite and > 0");
+  if (!(o.pin.normal_load_N > 0 && std::isfinite(o.pin.normal_load_N))) bad("pin normal_load_N must be finite and > 0");
+  if (o.pin.shape == PinShape::spherical && !(o.pin.crown_radius_m > 0 && std::isfinite(o.pin.crown_radius_m)))
+    bad("a spherical pin needs crown_radius_m > 0");
+  if (o.separation_ratios.size() < 3) bad("separation_ratios needs at least 3 values");
+  for (std::size_t k = 0; k < o.separation_ratios.size(); ++k)
+    if (!(o.separation_ratios[k] > 0 && std::isfinite(o.separation_ratios[k])) ||
+        (k > 0 && !(o.separation_ratios[k] > o.separation_ratios[k - 1])))
+      bad("separation_ratios must be finite, > 0 and strictly increasing");
+  if (!(o.flow_contact_gap_fraction > 0 && o.flow_contact_gap_fraction <= 0.5))
+    bad("flow_contact_gap_fraction must lie in (0, 0.5]");
+  if (!(o.lift_contact_gap_fraction > 0 && o.lift_contact_gap_fraction <= 0.5))
+    bad("lift_contact_gap_fraction must lie in (0, 0.5]");
+  if (!(o.bem_tolerance > 0 && o.bem_tolerance < 1)) bad("bem_tolerance must lie in (0, 1)");
+  if (o.pin_grid < 9) bad("pin_grid must be >= 9");
+  if (o.threads < 0) bad("threads must be >= 0");
+}
+
+PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
+  validate(o);
+  PatchResult r;
+  r.seed = o.surface.seed + static_cast<std::uint64_t>(realisation);
+  contact::GaussianSurfaceParams sp = o.surface;
+  sp.seed = r.seed;
+  const Eigen::ArrayXXd z = contact::gaussian_surface(sp);
+  const double sigma = o.surface.rms_height_m, side = o.surface.size_m, patch_area = side * side;
+  const std::size_t nodes = o.separation_ratios.size();
+  for (double ratio : o.separation_ratios) r.separation_m.push_back(ratio * sigma);
+  r.first_contact_separation_m = -z.minCoeff();
+  if (!(r.separation_m.back() > r.first_contact_separation_m))
+    bad("the largest separation ratio " + std::to_string(o.separation_ratios.back()) +
+        " lies below the first contact of seed " + std::to_string(r.seed) + " at h/σ = " +
+        std::to_string(r.first_contact_separation_m / sigma) + "; add a larger one");
+
+  // Solid: the rigid film is h̄ + z, so as a profile against a flat gap0 = z − min z and δ = −min z − h̄.
+  const contact::Grid grid{z.rows(), z.cols(), side, side};
+  contact::ElasticHalfSpace halfspace(grid, o.e_star_Pa, true, 1);
+  const Eigen::ArrayXXd gap0 = z - z.minCoeff();
+  contact::NormalContactOptions bem;
+  bem.tolerance = o.bem_tolerance;
+  bem.pressure_cap_Pa = o.hardness_Pa;
+  r.solid_pressure_Pa.assign(nodes, 0.0);
+  r.area_fraction.assign(nodes, 0.0);
+  Eigen::ArrayXXd warm;
+  for (std::size_t m = nodes; m-- > 0;) {  // from light to heavy contact, warm-started
+    const double approach = r.first_contact_separation_m - r.separation_m[m];
+    if (approach <= 0.0) continue;
+    const contact::NormalContactResult c =
+        contact::solve_approach(halfspace, gap0, approach, bem, warm.size() ? &warm : nullptr);
+    r.bem_iterations += c.summary.iterations;
+    if (!c.summary.converged) {
+      ++r.unconverged;
+      r.messages += "BEM at h/σ = " + std::to_string(o.separation_ratios[m]) + ": " + c.summary.message + "; ";
+      r.solid_pressure_Pa[m] = r.area_fraction[m] = kNaN;
+      continue;
+    }
+    r.solid_pressure_Pa[m] = c.normal_load_N / patch_area;
+    r.area_fraction[m] = c.area_fraction;
+    warm = c.pressure_Pa;
+  }
+
+  // Static and dry boundary friction at the pin's nominal pressure.
+  const double pin_area = M_PI * o.pin.radius_m * o.pin.radius_m;
+  const double load = o.pin.normal_load_N / pin_area * patch_area;
+  const double tau = o.interface_shear_strength_Pa;
+  const auto area_at_cap = [&](double cap) {
+    contact::NormalContactOptions capped = bem;
+    capped.pressure_cap_Pa = cap;
+    const contact::NormalContactResult c = contact::solve_normal_load(halfspace, gap0, load, capped);
+    r.bem_iterations += c.summary.iterations;
+    if (!c.summary.converged) {
+      ++r.unconverged;
+      r.messages += "BEM at the pin load with cap " + std::to_string(cap) + " Pa: " + c.summary.message + "; ";
+      return kNaN;
+    }
+    return c.real_area_m2;
+  };
+  r.mu_s_max = tau * area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau)) / load;
+  r.mu_boundary = tau * area_at_cap(o.hardness_Pa) / load;
+
+  // Fluid cells on the same realisation.
+  const auto ff = lubrication::flow_factors(cell_options(o, r.seed, o.flow_contact_gap_fraction));
+  const auto lift = lubrication::rugosity_lift(cell_options(o, r.seed, o.lift_contact_gap_fraction));
+  for (std::size_t m = 0; m < nodes; ++m) {
+    r.phi_x.push_back(ff[m].phi_x.mean);
+    r.phi_y.push_back(ff[m].phi_y.mean);
+    r.phi_s.push_back(ff[m].phi_s.mean);
+    r.film_over_sigma.push_back(ff[m].mean_film_over_sigma.mean);
+    r.phi_f.push_back(ff[m].phi_f.mean);
+    r.couette_shear_factor.push_back(ff[m].couette_shear_factor.mean);
+    r.phi_fp.push_back(ff[m].phi_fp.mean);
+    r.contact_fraction.push_back(ff[m].contact_fraction.mean);
+    r.lift_per_eta_u_per_m.push_back(lift[m].mean_pressure_per_eta_u.mean);
+    if (ff[m].unconverged > 0 || lift[m].unconverged > 0) {
+      ++r.unconverged;
+      r.messages += "Reynolds cell at h/σ = " + std::to_string(o.separation_ratios[m]) + " did not converge; ";
+    }
+  }
+  return r;
+}
+
+nlohmann::json to_json(const PatchResult& p) {
+  return {{"seed", p.seed},
+          {"first_contact_separation_m", p.first_contact_separation_m},
+          {"separation_m", p.separation_m},
+          {"solid_pressure_Pa", p.solid_pressure_Pa},
+          {"area_fraction", p.area_fraction},
+          {"phi_x", p.phi_x},
+          {"phi_y", p.phi_y},
+          {"phi_s", p.phi_s},
+          {"film_over_sigma", p.film_over_sigma},
+          {"phi_f", p.phi_f},
+          {"couette_shear_factor", p.couette_shear_factor},
+          {"phi_fp", p.phi_fp},
+          {"contact_fraction", p.contact_fraction},
+          {"lift_per_eta_u_per_m", p.lift_per_eta_u_per_m},
+          {"mu_s_max", p.mu_s_max},
+          {"mu_boundary", p.mu_boundary},
+          {"bem_iterations", p.bem_iterations},
+          {"unconverged", p.unconverged},
+          {"messages", p.messages}};
+}
+
+PatchResult patch_from_json(const nlohmann::json& j) {
+  PatchResult p;
+  j.at("seed").get_to(p.seed);
+  j.at("first_contact_separation_m").get_to(p.first_contact_separation_m);
+  j.at("separation_m").get_to(p.separation_m);
+  j.at("solid_pressure_Pa").get_to(p.solid_pressure_Pa);
+  j.at("area_fraction").get_to(p.area_fraction);
+  j.at("phi_x").get_to(p.phi_x);
+  j.at("phi_y").get_to(p.phi_y);
+  j.at("phi_s").get_to(p.phi_s);
+  j.at("film_over_sigma").get_to(p.film_over_sigma);
+  j.at("phi_f").get_to(p.phi_f);
+  j.at("couette_shear_factor").get_to(p.couette_shear_factor);
+  j.at("phi_fp").get_to(p.phi_fp);
+  j.at("contact_fraction").get_to(p.contact_fraction);
+  j.at("lift_per_eta_u_per_m").get_to(p.lift_per_eta_u_per_m);
+  j.at("mu_s_max").get_to(p.mu_s_max);
+  j.at("mu_boundary").get_to(p.mu_boundary);
+  j.at("bem_iterations").get_to(p.bem_iterations);
+  j.at("unconverged").get_to(p.unconverged);
+  j.at("messages").get_to(p.messages);
+  return p;
+}
+
+}  // namespace tribo::homogenise

@@ -1,0 +1,118 @@
+#include "homogenise/pin.h"
+
+#include <cmath>
+
+#include "lubrication/geometry.h"
+#include "lubrication/reynolds.h"
+#include "rig/law_table.h"
+
+namespace tribo::homogenise {
+namespace {
+
+// A cell column as a function of the local film h; smooth-film value above the last node.
+class Column {
+ public:
+  Column(const CellTable& t, const std::vector<Estimate>& c, double smooth, double scale = 1.0)
+      : last_(t.separation_m.back()), smooth_(smooth), curve_(t.separation_m, means(c, scale), "separation_m") {}
+  double operator()(double h) const { return h > last_ ? smooth_ : curve_.value(h); }
+  double slope(double h) const { return h > last_ ? 0.0 : curve_.slope(h); }
+
+ private:
+  static std::vector<double> means(const std::vector<Estimate>& c, double scale) {
+    std::vector<double> v;
+    for (const Estimate& e : c) v.push_back(e.mean * scale);
+    return v;
+  }
+  double last_, smooth_;
+  rig::MonotoneTable curve_;
+};
+
+}  // namespace
+
+PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
+  const double sigma = t.sigma_m, radius = o.pin.radius_m;
+  PinTable pin;
+  pin.nominal_area_m2 = M_PI * radius * radius;
+  pin.separation_m = t.separation_m;
+  const Column ps(t, t.solid_pressure_Pa, 0.0), ar(t, t.area_fraction, 0.0);
+  std::vector<Estimate> ps_se, ar_se;
+  for (const Estimate& e : t.solid_pressure_Pa) ps_se.push_back({e.standard_error, 0});
+  for (const Estimate& e : t.area_fraction) ar_se.push_back({e.standard_error, 0});
+  const Column ps_err(t, ps_se, 0.0), ar_err(t, ar_se, 0.0);
+  const Column phix(t, t.phi_x, 1.0), phiy(t, t.phi_y, 1.0), phis(t, t.phi_s, 0.0), phif(t, t.phi_f, 1.0);
+  const Column phifp(t, t.phi_fp, 1.0), lift(t, t.lift_per_eta_u_per_m, 0.0);
+  const Column film(t, t.film_over_sigma, 0.0, sigma);  // h̄_T in m; above the last node h̄_T = h (slope 1)
+  const auto mean_film = [&](double h) { return h > t.separation_m.back() ? h : film(h); };
+  const auto film_slope = [&](double h) { return h > t.separation_m.back() ? 1.0 : film.slope(h); };
+
+  const int n = o.pin_grid;
+  lubrication::ReynoldsSolver solver;
+  for (double centre : t.separation_m) {
+    lubrication::ReynoldsProblem pr = lubrication::parallel_discs_problem(radius, centre, 0.0, 1.0, 1.0, n);
+    const lubrication::Grid& g = pr.grid;
+    const double cx = pr.disc->centre_x_m, cy = pr.disc->centre_y_m;
+    std::vector<double> h(g.size());
+    pr.pressure_flow_factor_x.resize(g.size());
+    pr.pressure_flow_factor_y.resize(g.size());
+    pr.couette_film_m.resize(g.size());
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const std::size_t k = g.index(i, j);
+        const double r2 = std::pow(i * g.dx_m - cx, 2) + std::pow(j * g.dy_m - cy, 2);
+        h[k] = centre + (o.pin.shape == PinShape::spherical ? r2 / (2.0 * o.pin.crown_radius_m) : 0.0);
+        pr.gap_m[k] = h[k];
+        pr.pressure_flow_factor_x[k] = phix(h[k]);
+        pr.pressure_flow_factor_y[k] = phiy(h[k]);
+        pr.couette_film_m[k] = std::max(mean_film(h[k]) - sigma * phis(h[k]), 0.0);
+      }
+    // Wedge: steady sliding at ηU = 1 with cavitation.
+    pr.cavitation = lubrication::Cavitation::mass_conserving;
+    const lubrication::ReynoldsSolution wedge = solver.solve(pr);
+    // Squeeze: U = 0, ∂h̄_T/∂t = (dh̄_T/dh) ḣ with ḣ = −1 m/s, full film.
+    lubrication::ReynoldsProblem sq = pr;
+    sq.sliding_speed_m_per_s = 0.0;
+    sq.cavitation = lubrication::Cavitation::none;
+    sq.gap_rate_m_per_s.assign(g.size(), 0.0);
+    for (std::size_t k = 0; k < g.size(); ++k) sq.gap_rate_m_per_s[k] = -film_slope(h[k]);
+    const lubrication::ReynoldsSolution squeeze = solver.solve(sq);
+    for (const auto* s : {&wedge, &squeeze})
+      if (!s->summary.converged) {
+        ++pin.reynolds_unconverged;
+        pin.messages += "pin-face Reynolds at h = " + std::to_string(centre) + " m: " + s->summary.message + "; ";
+      }
+
+    // Face integrals over the wetted nodes, weights scaled so they sum to πR² exactly.
+    double weight_sum = 0;
+    for (std::size_t k = 0; k < g.size(); ++k) weight_sum += wedge.wetted[k] ? 1.0 : 0.0;
+    const double w = pin.nominal_area_m2 / weight_sum;
+    double ns = 0, ns_se = 0, a = 0, a_se = 0, rug = 0, shear = 0;
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        const std::size_t k = g.index(i, j);
+        if (!wedge.wetted[k]) continue;
+        const double hk = h[k];
+        ns += w * ps(hk);
+        ns_se += w * ps_err(hk);
+        a += w * ar(hk);
+        a_se += w * ar_err(hk);
+        rug += w * lift(hk);
+        // Central difference of the wedge pressure (ambient 0 beyond the rim).
+        const auto p_at = [&](int ii) {
+          return ii >= 0 && ii < g.nx && wedge.wetted[g.index(ii, j)] ? wedge.pressure_Pa[g.index(ii, j)] : 0.0;
+        };
+        const double dpdx = (p_at(i + 1) - p_at(i - 1)) / (2.0 * g.dx_m);
+        shear += w * (phif(hk) / hk - phifp(hk) * 0.5 * hk * dpdx);
+      }
+    pin.solid_load_N.push_back(ns);
+    pin.solid_load_standard_error_N.push_back(ns_se);
+    pin.real_area_m2.push_back(a);
+    pin.real_area_standard_error_m2.push_back(a_se);
+    pin.wedge_lift_per_eta_u_m.push_back(wedge.load_N);
+    pin.rugosity_lift_per_eta_u_m.push_back(rug);
+    pin.squeeze_per_eta_m.push_back(squeeze.load_N);
+    pin.shear_per_eta_u_m.push_back(shear);
+  }
+  return pin;
+}
+
+}  // namespace tribo::homogenise

@@ -1,0 +1,49 @@
+// From the patch to the pin: the homogenised columns integrated over the pin's face, one row per
+// table separation h̄ (the film at the face centre for a spherical pin).
+//
+// Nominal film over the face: h(x, y) = h̄ (flat) or h̄ + r²/(2 R_c) (spherical crown). Per node
+// the cell table gives p_s(h), A_r/A(h), φx, φy, Φs, h̄_T, the shear factors φf and φfp,
+// and the rugosity lift Λ(h) = p̄/(ηU) (interpolated monotonically between nodes; above the last
+// node the film is smooth: φ = 1, Φs = 0, φf = 1, Λ = 0, no contact). Then
+//
+//   solid     N_s = ∫ p_s(h) dA,   A_r = ∫ (A_r/A)(h) dA
+//   wedge     the average Reynolds equation (Patir & Cheng 1978) on the face, rim at p = 0,
+//               ∇·(φx h³/12η ∂p/∂x, φy h³/12η ∂p/∂y) = (U/2) ∂(h̄_T − σΦs)/∂x + (dh̄_T/dh) ∂h/∂t,
+//             with JFO cavitation; p ∝ ηU exactly, so one solve at ηU = 1 gives N_w/(ηU).
+//             A flat pin has uniform coefficients: the Couette divergence vanishes and the steady
+//             film carries no load — its lift is the rugosity lift of the asperity-scale films;
+//   rugosity  N_r = ηU ∫ Λ(h) dA (the cavitating cell solves; superposed on the wedge);
+//   squeeze   the same equation at U = 0, ∂h/∂t = ḣ uniform, full film: N_sq = −η K ḣ; for a
+//             flat pin K = (3π R⁴ / 2) (dh̄_T/dh) / (φ h³) (thesis (3.2.2) with flow factors);
+//   shear     on the stationary pin, τ = (ηU/h) φf − φfp (h/2) ∂p/∂x (Patir & Cheng 1979),
+//             F_f = ∫ τ dA, with p from the wedge solve; at large h̄, F_f → ηU A/h̄ (Petroff).
+//             The shear-induced pressure's part φfs is left out: the cells' measured φf − φfs turns
+//             negative below h̄ ≈ 1.5σ (their nodal pressure gradient cannot resolve the films
+//             next to contact spots), so it is kept in the tables for inspection but not used;
+//             it is 1.5 (σ/h̄)² of φf at large h̄ (lubrication/flow_factors.h).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "homogenise/cell_table.h"
+#include "homogenise/options.h"
+
+namespace tribo::homogenise {
+
+struct PinTable {
+  double nominal_area_m2 = 0;
+  std::vector<double> separation_m;
+  std::vector<double> solid_load_N, solid_load_standard_error_N;
+  std::vector<double> real_area_m2, real_area_standard_error_m2;
+  std::vector<double> wedge_lift_per_eta_u_m;    // N_w / (ηU)
+  std::vector<double> rugosity_lift_per_eta_u_m; // N_r / (ηU)
+  std::vector<double> squeeze_per_eta_m;         // K
+  std::vector<double> shear_per_eta_u_m;         // F_f / (ηU)
+  int reynolds_unconverged = 0;
+  std::string messages;
+};
+
+PinTable pin_scale(const HomogeniseOptions& options, const CellTable& cells);
+
+}  // namespace tribo::homogenise

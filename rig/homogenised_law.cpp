@@ -1,0 +1,143 @@
+#include "rig/homogenised_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "contact/junction_locus.h"
+
+namespace tribo::rig {
+namespace {
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(std::numeric_limits<double>::max_digits10);
+  s << v;
+  return s.str();
+}
+
+const LawTable& validated(const LawTable& t) {
+  validate(t);
+  return t;
+}
+
+// Solves N_s(h) = W on [front, back] for the non-increasing interpolant by bisection to the last
+// representable bit: the bracket keeps N_s(lo) ≥ W > N_s(hi) (or lo = front when W = N_s(front)).
+double equilibrium_separation_m(const MonotoneTable& solid_load, double load_N) {
+  double lo = solid_load.x().front(), hi = solid_load.x().back();
+  if (solid_load.value(lo) <= load_N) return lo;  // W = N_s(front)
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (solid_load.value(mid) >= load_N ? lo : hi) = mid;
+  }
+  // Of the two bracketing neighbours take the one whose load is nearer W.
+  return std::abs(solid_load.value(lo) - load_N) <= std::abs(solid_load.value(hi) - load_N) ? lo : hi;
+}
+
+}  // namespace
+
+HomogenisedBase::HomogenisedBase(LawTable table, double normal_load_N)
+    : table_(std::move(table)),
+      normal_load_N_(normal_load_N),
+      solid_load_(validated(table_).separation_m, table_.solid_load_N, "separation_m"),
+      real_area_(table_.separation_m, table_.real_area_m2, "separation_m"),
+      lift_(table_.separation_m, table_.lift_per_eta_u_m, "separation_m"),
+      squeeze_(table_.separation_m, table_.squeeze_per_eta_m, "separation_m"),
+      shear_(table_.separation_m, table_.shear_per_eta_u_m, "separation_m") {
+  const double n_front = table_.solid_load_N.front();
+  if (!std::isfinite(normal_load_N) || !(normal_load_N > 0.0) || normal_load_N > n_front) {
+    throw std::invalid_argument("normal_load_N = " + fmt(normal_load_N) + " N lies outside the law table's solid-load range (0, " +
+                                fmt(n_front) + "] N (" + (table_.source.empty() ? std::string("table") : table_.source) +
+                                ": table.solid_load_N); the film's equilibrium N_s(h) = W must lie inside the table");
+  }
+  lubricant_.viscosity_Pa_s = table_.lubricant.viscosity_Pa_s;
+  lubricant_.pressure_viscosity_per_Pa = 0.0;  // ambient pressure: the rig's film is not EHL
+  lubricant_.temperature_viscosity_per_K = table_.lubricant.temperature_viscosity_per_K;
+  lubricant_.reference_temperature_K = table_.lubricant.reference_temperature_K;
+  h0_m_ = equilibrium_separation_m(solid_load_, normal_load_N);
+}
+
+void HomogenisedBase::initial_state(std::span<double> state) const {
+  state[kSeparation] = h0_m_;
+  state[kTemperatureRise] = 0.0;
+}
+
+void HomogenisedBase::state_tolerances(std::span<double> atol) const {
+  atol[kSeparation] = 1e-6 * table_.separation_m.front();
+  atol[kTemperatureRise] = 1e-6;
+}
+
+double HomogenisedBase::viscosity_Pa_s(double temperature_rise_K) const {
+  if (lubricant_.viscosity_Pa_s == 0.0) return 0.0;  // dry table (lubrication::validate rejects η0 = 0)
+  return lubrication::viscosity_Pa_s(lubricant_, 0.0, lubricant_.reference_temperature_K + temperature_rise_K);
+}
+
+double HomogenisedBase::static_coefficient(const FrictionContext& c) const {
+  return contact::static_friction_from_load_rate(table_.junction.locus, c.tangential_load_rate_per_s);
+}
+
+double HomogenisedBase::solid_kinetic_coefficient(std::span<const double> state) const {
+  const double h = state[kSeparation], n_s = solid_load_N(h);
+  return n_s > 0.0 ? table_.junction.interface_shear_strength_Pa * real_area_m2(h) / n_s : 0.0;
+}
+
+double HomogenisedBase::static_limit_N(const FrictionContext& c, double solid_fraction) const {
+  return solid_fraction * static_coefficient(c) * solid_load_N(c.state[kSeparation]);
+}
+
+double HomogenisedBase::kinetic_force_N(const FrictionContext& c, double solid_fraction, double kinetic_increment,
+                                        double fluid_force_N) const {
+  const double h = c.state[kSeparation];
+  const double solid = table_.junction.interface_shear_strength_Pa * real_area_m2(h) + kinetic_increment * solid_load_N(h);
+  const double viscous = viscosity_Pa_s(c.state[kTemperatureRise]) * c.relative_speed_m_per_s * shear_per_eta_u_m(h);
+  return solid_fraction * solid + viscous + fluid_force_N;
+}
+
+double HomogenisedBase::separation_rate_m_per_s(double h, double dT, double u, double load_N) const {
+  const double eta = viscosity_Pa_s(dT);
+  if (eta == 0.0) return 0.0;  // dry: the algebraic limit N_s(h̄) = W, h̄ = h̄0
+  return (solid_load_N(h) + eta * u * lift_per_eta_u_m(h) - load_N) / (eta * squeeze_per_eta_m(h));
+}
+
+double HomogenisedBase::jaeger_temperature_rise_K(double power_W, double h, double u) const {
+  if (power_W == 0.0) return 0.0;
+  const LawThermal& th = table_.thermal;
+  const double area = std::max(real_area_m2(h), kJaegerAreaFloorFraction * table_.pin.nominal_area_m2);
+  const double b = std::sqrt(th.slider_diffusivity_m2_per_s);
+  const double bracket = 1.1 * th.disc_conductivity_W_per_m_K * b +
+                         0.7 * th.slider_conductivity_W_per_m_K * std::pow(area, 0.25) * std::sqrt(u);
+  return power_W * b / (1.9 * std::sqrt(area) * bracket);
+}
+
+double HomogenisedBase::film_relaxation_time_s(double h, double dT) const {
+  const double stiffness = -solid_load_slope_N_per_m(h);
+  const double damping = viscosity_Pa_s(dT) * squeeze_per_eta_m(h);
+  if (damping == 0.0) return 0.0;
+  return stiffness > 0.0 ? damping / stiffness : std::numeric_limits<double>::infinity();
+}
+
+void HomogenisedBase::state_rates(const FrictionContext& c, double kinetic_force_N, std::span<double> rates) const {
+  const double h = c.state[kSeparation], dT = c.state[kTemperatureRise], u = c.relative_speed_m_per_s;
+  rates[kSeparation] = separation_rate_m_per_s(h, dT, u, c.normal_load_N);
+  const double power_W = kinetic_force_N * u;
+  rates[kTemperatureRise] = (jaeger_temperature_rise_K(power_W, h, u) - dT) / table_.thermal.time_constant_s;
+}
+
+std::shared_ptr<const HomogenisedBase> load_homogenised_base(const std::filesystem::path& path, double normal_load_N) {
+  return std::make_shared<const HomogenisedBase>(read_law_table(path), normal_load_N);
+}
+
+HomogenisedLaw::HomogenisedLaw(std::shared_ptr<const HomogenisedBase> base) : base_(std::move(base)) {
+  if (!base_) throw std::invalid_argument("homogenised law: no table");
+}
+
+void HomogenisedLaw::state_rates(const FrictionContext& c, std::span<double> rates) const {
+  const double fk = c.relative_speed_m_per_s > 0.0 ? kinetic_force_N(c) : 0.0;
+  base_->state_rates(c, fk, rates);
+}
+
+}  // namespace tribo::rig

@@ -1,0 +1,317 @@
+#include "rig/law_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+namespace tribo::rig {
+namespace {
+
+using nlohmann::json;
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(std::numeric_limits<double>::max_digits10);
+  s << v;
+  return s.str();
+}
+
+std::string where(const std::string& source) { return "law table " + (source.empty() ? std::string("(in memory)") : source); }
+
+[[noreturn]] void fail(const std::string& source, const std::string& key, const std::string& reason) {
+  throw std::invalid_argument(where(source) + ": key '" + key + "': " + reason);
+}
+
+// Reading: each accessor names the dotted key it reads.
+class Reader {
+ public:
+  explicit Reader(std::string source) : source_(std::move(source)) {}
+
+  const json& member(const json& object, const std::string& parent, const std::string& key) const {
+    const std::string dotted = parent.empty() ? key : parent + "." + key;
+    if (!object.is_object()) fail(source_, parent, "is not a JSON object");
+    const auto it = object.find(key);
+    if (it == object.end()) fail(source_, dotted, "is missing");
+    return *it;
+  }
+  const json& object(const json& parent_object, const std::string& parent, const std::string& key) const {
+    const json& j = member(parent_object, parent, key);
+    if (!j.is_object()) fail(source_, dotted(parent, key), "must be a JSON object");
+    return j;
+  }
+  double number(const json& object, const std::string& parent, const std::string& key) const {
+    return as_number(member(object, parent, key), dotted(parent, key));
+  }
+  double number_or(const json& object, const std::string& parent, const std::string& key, double fallback) const {
+    if (object.find(key) == object.end()) return fallback;
+    return number(object, parent, key);
+  }
+  std::string string_or(const json& object, const std::string& parent, const std::string& key, std::string fallback) const {
+    const auto it = object.find(key);
+    if (it == object.end()) return fallback;
+    if (!it->is_string()) fail(source_, dotted(parent, key), "must be a string");
+    return it->get<std::string>();
+  }
+  std::vector<double> column(const json& object, const std::string& parent, const std::string& key) const {
+    const json& j = member(object, parent, key);
+    if (!j.is_array()) fail(source_, dotted(parent, key), "must be an array of numbers");
+    std::vector<double> out;
+    out.reserve(j.size());
+    for (std::size_t i = 0; i < j.size(); ++i) out.push_back(as_number(j[i], dotted(parent, key) + "[" + std::to_string(i) + "]"));
+    return out;
+  }
+
+ private:
+  static std::string dotted(const std::string& parent, const std::string& key) { return parent.empty() ? key : parent + "." + key; }
+  double as_number(const json& j, const std::string& key) const {
+    // JSON has no NaN; a writer that emits null for NaN is caught here too.
+    if (j.is_null()) fail(source_, key, "is null (NaN or missing value)");
+    if (!j.is_number()) fail(source_, key, "must be a number");
+    const double v = j.get<double>();
+    if (!std::isfinite(v)) fail(source_, key, "must be finite");
+    return v;
+  }
+  std::string source_;
+};
+
+void require_finite(const std::string& source, const std::string& key, double v) {
+  if (!std::isfinite(v)) fail(source, key, "must be finite (got " + fmt(v) + ")");
+}
+void require_positive(const std::string& source, const std::string& key, double v) {
+  require_finite(source, key, v);
+  if (!(v > 0.0)) fail(source, key, "must be > 0 (got " + fmt(v) + ")");
+}
+void require_non_negative(const std::string& source, const std::string& key, double v) {
+  require_finite(source, key, v);
+  if (!(v >= 0.0)) fail(source, key, "must be >= 0 (got " + fmt(v) + ")");
+}
+
+enum class Sign { positive, non_negative };
+
+void check_column(const std::string& source, const std::string& key, const std::vector<double>& c, Sign sign) {
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const std::string k = key + "[" + std::to_string(i) + "]";
+    if (sign == Sign::positive) require_positive(source, k, c[i]);
+    else require_non_negative(source, k, c[i]);
+  }
+}
+
+void check_non_increasing_to_zero(const std::string& source, const std::string& key, const std::vector<double>& c) {
+  check_column(source, key, c, Sign::non_negative);
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    if (c[i] > c[i - 1]) {
+      fail(source, key + "[" + std::to_string(i) + "]", "must not increase with separation (" + fmt(c[i - 1]) + " then " + fmt(c[i]) + ")");
+    }
+  }
+  if (c.back() != 0.0) fail(source, key, "last entry must be 0 (the contact vanishes at the largest separation), got " + fmt(c.back()));
+}
+
+}  // namespace
+
+void validate(const LawTable& t) {
+  const std::string& s = t.source;
+  require_positive(s, "pin.nominal_area_m2", t.pin.nominal_area_m2);
+  require_non_negative(s, "pin.radius_m", t.pin.radius_m);
+  require_non_negative(s, "pin.normal_load_N", t.pin.normal_load_N);
+  require_non_negative(s, "lubricant.viscosity_Pa_s", t.lubricant.viscosity_Pa_s);
+  require_non_negative(s, "lubricant.temperature_viscosity_per_K", t.lubricant.temperature_viscosity_per_K);
+  require_positive(s, "lubricant.reference_temperature_K", t.lubricant.reference_temperature_K);
+  require_positive(s, "thermal.slider_conductivity_W_per_m_K", t.thermal.slider_conductivity_W_per_m_K);
+  require_positive(s, "thermal.disc_conductivity_W_per_m_K", t.thermal.disc_conductivity_W_per_m_K);
+  require_positive(s, "thermal.slider_diffusivity_m2_per_s", t.thermal.slider_diffusivity_m2_per_s);
+  require_positive(s, "thermal.time_constant_s", t.thermal.time_constant_s);
+  require_non_negative(s, "junction.interface_shear_strength_Pa", t.junction.interface_shear_strength_Pa);
+  try {
+    contact::validate(t.junction.locus);
+  } catch (const std::invalid_argument& e) {
+    fail(s, "junction", e.what());
+  }
+
+  const std::size_t n = t.separation_m.size();
+  if (n < 3) fail(s, "table.separation_m", "needs at least 3 entries (got " + std::to_string(n) + ")");
+  const std::pair<const char*, const std::vector<double>*> columns[] = {
+      {"table.solid_load_N", &t.solid_load_N},         {"table.real_area_m2", &t.real_area_m2},
+      {"table.lift_per_eta_u_m", &t.lift_per_eta_u_m}, {"table.squeeze_per_eta_m", &t.squeeze_per_eta_m},
+      {"table.shear_per_eta_u_m", &t.shear_per_eta_u_m}};
+  for (const auto& [key, column] : columns) {
+    if (column->size() != n) {
+      fail(s, key, "has " + std::to_string(column->size()) + " entries but table.separation_m has " + std::to_string(n) +
+                       " (all columns must have the same length)");
+    }
+  }
+  check_column(s, "table.separation_m", t.separation_m, Sign::positive);
+  for (std::size_t i = 1; i < n; ++i) {
+    if (!(t.separation_m[i] > t.separation_m[i - 1])) {
+      fail(s, "table.separation_m[" + std::to_string(i) + "]",
+           "must be strictly increasing (" + fmt(t.separation_m[i - 1]) + " then " + fmt(t.separation_m[i]) + ")");
+    }
+  }
+  check_non_increasing_to_zero(s, "table.solid_load_N", t.solid_load_N);
+  check_non_increasing_to_zero(s, "table.real_area_m2", t.real_area_m2);
+  if (!(t.solid_load_N.front() > 0.0)) fail(s, "table.solid_load_N[0]", "must be > 0 (the closest separation must carry load)");
+  check_column(s, "table.lift_per_eta_u_m", t.lift_per_eta_u_m, Sign::non_negative);
+  check_column(s, "table.squeeze_per_eta_m", t.squeeze_per_eta_m, Sign::positive);
+  check_column(s, "table.shear_per_eta_u_m", t.shear_per_eta_u_m, Sign::positive);
+}
+
+LawTable read_law_table(const std::filesystem::path& path) {
+  const std::string source = path.string();
+  std::ifstream in(path);
+  if (!in) throw std::invalid_argument(where(source) + ": cannot open the file");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw std::invalid_argument(where(source) + ": malformed JSON at byte " + std::to_string(e.byte) + ": " + e.what());
+  }
+  return law_table_from_json(doc, source);
+}
+
+LawTable law_table_from_json(const json& doc, const std::string& source) {
+  if (!doc.is_object()) throw std::invalid_argument(where(source) + ": the document must be a JSON object");
+
+  const Reader r(source);
+  LawTable t;
+  t.source = source;
+  const json& format = r.member(doc, "", "format");
+  if (!format.is_string() || format.get<std::string>() != "tribo-law-1") {
+    fail(source, "format", "must be \"tribo-law-1\" (got " + format.dump() + ")");
+  }
+
+  const json& pin = r.object(doc, "", "pin");
+  t.pin.shape = r.string_or(pin, "pin", "shape", "");
+  t.pin.radius_m = r.number_or(pin, "pin", "radius_m", 0.0);
+  t.pin.nominal_area_m2 = r.number(pin, "pin", "nominal_area_m2");
+  t.pin.normal_load_N = r.number_or(pin, "pin", "normal_load_N", 0.0);
+
+  const json& lub = r.object(doc, "", "lubricant");
+  t.lubricant.viscosity_Pa_s = r.number(lub, "lubricant", "viscosity_Pa_s");
+  t.lubricant.temperature_viscosity_per_K = r.number(lub, "lubricant", "temperature_viscosity_per_K");
+  t.lubricant.reference_temperature_K = r.number(lub, "lubricant", "reference_temperature_K");
+
+  const json& th = r.object(doc, "", "thermal");
+  t.thermal.slider_conductivity_W_per_m_K = r.number(th, "thermal", "slider_conductivity_W_per_m_K");
+  t.thermal.disc_conductivity_W_per_m_K = r.number(th, "thermal", "disc_conductivity_W_per_m_K");
+  t.thermal.slider_diffusivity_m2_per_s = r.number(th, "thermal", "slider_diffusivity_m2_per_s");
+  t.thermal.time_constant_s = r.number(th, "thermal", "time_constant_s");
+
+  const json& jn = r.object(doc, "", "junction");
+  contact::JunctionLocus& l = t.junction.locus;
+  l.alpha = r.number(jn, "junction", "alpha");
+  l.n = r.number(jn, "junction", "n");
+  l.sigma0_over_tau_i = r.number(jn, "junction", "sigma0_over_tau_i");
+  l.location_per_s = r.number(jn, "junction", "location_per_s");
+  l.strain_rate_index_m = r.number_or(jn, "junction", "strain_rate_index_m", 0.0);
+  l.reference_load_rate_per_s = r.number_or(jn, "junction", "reference_load_rate_per_s", 1.0);
+  t.junction.interface_shear_strength_Pa = r.number(jn, "junction", "interface_shear_strength_Pa");
+
+  const json& tab = r.object(doc, "", "table");
+  t.separation_m = r.column(tab, "table", "separation_m");
+  t.solid_load_N = r.column(tab, "table", "solid_load_N");
+  t.real_area_m2 = r.column(tab, "table", "real_area_m2");
+  t.lift_per_eta_u_m = r.column(tab, "table", "lift_per_eta_u_m");
+  t.squeeze_per_eta_m = r.column(tab, "table", "squeeze_per_eta_m");
+  t.shear_per_eta_u_m = r.column(tab, "table", "shear_per_eta_u_m");
+
+  validate(t);
+  return t;
+}
+
+// ---- MonotoneTable: Fritsch & Carlson (1980) ------------------------------------------------
+//
+// On [x_k, x_{k+1}] with h_k = x_{k+1} − x_k, Δ_k = (y_{k+1} − y_k)/h_k and t = (x − x_k)/h_k the
+// cubic Hermite form is y = H00 y_k + H10 h_k d_k + H01 y_{k+1} + H11 h_k d_{k+1}. Slopes:
+//   1. interior d_k = (Δ_{k−1} + Δ_k)/2, or 0 where Δ changes sign or vanishes (local extremum);
+//      end slopes from the one-sided three-point formula, set to 0 if of the wrong sign;
+//   2. per interval: Δ_k = 0 ⇒ d_k = d_{k+1} = 0; else with a = d_k/Δ_k, b = d_{k+1}/Δ_k, if
+//      a² + b² > 9 scale both by 3/√(a² + b²) — Fritsch & Carlson's sufficient condition for a
+//      monotone cubic on the interval. Scaling only shrinks slopes, so an earlier interval stays
+//      within its region when a later one shrinks the slope they share.
+// Linear data give Δ_k constant, d_k = Δ_k, a = b = 1: the interpolant is the line itself.
+
+MonotoneTable::MonotoneTable(std::vector<double> x, std::vector<double> y, std::string axis)
+    : x_(std::move(x)), y_(std::move(y)), axis_(std::move(axis)) {
+  const std::size_t n = x_.size();
+  if (n < 2 || y_.size() != n) {
+    throw std::invalid_argument("monotone table over " + axis_ + ": needs x and y of the same length >= 2 (got " +
+                                std::to_string(n) + " and " + std::to_string(y_.size()) + ")");
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!std::isfinite(x_[i]) || !std::isfinite(y_[i])) {
+      throw std::invalid_argument("monotone table over " + axis_ + ": entry " + std::to_string(i) + " is not finite");
+    }
+    if (i > 0 && !(x_[i] > x_[i - 1])) {
+      throw std::invalid_argument("monotone table over " + axis_ + ": x must be strictly increasing at entry " + std::to_string(i));
+    }
+  }
+  std::vector<double> h(n - 1), delta(n - 1);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    h[k] = x_[k + 1] - x_[k];
+    delta[k] = (y_[k + 1] - y_[k]) / h[k];
+  }
+  d_.assign(n, 0.0);
+  if (n == 2) {
+    d_[0] = d_[1] = delta[0];
+    return;
+  }
+  for (std::size_t k = 1; k + 1 < n; ++k) {
+    d_[k] = delta[k - 1] * delta[k] > 0.0 ? 0.5 * (delta[k - 1] + delta[k]) : 0.0;
+  }
+  auto end_slope = [](double h0, double h1, double d0, double d1) {
+    const double d = ((2.0 * h0 + h1) * d0 - h0 * d1) / (h0 + h1);
+    return d * d0 > 0.0 ? d : 0.0;
+  };
+  d_[0] = end_slope(h[0], h[1], delta[0], delta[1]);
+  d_[n - 1] = end_slope(h[n - 2], h[n - 3], delta[n - 2], delta[n - 3]);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    if (delta[k] == 0.0) {
+      d_[k] = d_[k + 1] = 0.0;
+      continue;
+    }
+    const double a = d_[k] / delta[k], b = d_[k + 1] / delta[k];
+    const double r2 = a * a + b * b;
+    if (r2 > 9.0) {
+      const double tau = 3.0 / std::sqrt(r2);
+      d_[k] = tau * a * delta[k];
+      d_[k + 1] = tau * b * delta[k];
+    }
+  }
+}
+
+std::size_t MonotoneTable::interval(double x) const {
+  if (!(x >= x_.front() && x <= x_.back())) {
+    throw std::out_of_range("monotone table: " + axis_ + " = " + fmt(x) + " lies outside the table's range [" + fmt(x_.front()) +
+                            ", " + fmt(x_.back()) + "] (no extrapolation)");
+  }
+  const auto it = std::upper_bound(x_.begin(), x_.end(), x);
+  const std::size_t k = static_cast<std::size_t>(it - x_.begin());
+  return std::min(k == 0 ? 0 : k - 1, x_.size() - 2);
+}
+
+double MonotoneTable::value(double x) const {
+  const std::size_t k = interval(x);
+  if (x == x_[k]) return y_[k];
+  if (x == x_[k + 1]) return y_[k + 1];
+  // Hermite form with H00 = 1 − H01 written out, so constant data come back exactly.
+  const double h = x_[k + 1] - x_[k], t = (x - x_[k]) / h, t2 = t * t, t3 = t2 * t;
+  const double h10 = t3 - 2.0 * t2 + t, h01 = -2.0 * t3 + 3.0 * t2, h11 = t3 - t2;
+  const double y = y_[k] + h01 * (y_[k + 1] - y_[k]) + h * (h10 * d_[k] + h11 * d_[k + 1]);
+  // Every interval's cubic is monotone (step 2 above), so it lies between its end values; the
+  // clamp removes only rounding, e.g. a −1e-30 where a column reaches 0.
+  return std::clamp(y, std::min(y_[k], y_[k + 1]), std::max(y_[k], y_[k + 1]));
+}
+
+double MonotoneTable::slope(double x) const {
+  const std::size_t k = interval(x);
+  const double h = x_[k + 1] - x_[k], t = (x - x_[k]) / h, t2 = t * t;
+  const double g10 = 3.0 * t2 - 4.0 * t + 1.0, g01 = 6.0 * (t - t2), g11 = 3.0 * t2 - 2.0 * t;
+  return g01 * (y_[k + 1] - y_[k]) / h + g10 * d_[k] + g11 * d_[k + 1];
+}
+
+}  // namespace tribo::rig

@@ -1,0 +1,36 @@
+// Steady sliding of the homogenised law (rig/homogenised_law.h) at a constant relative speed U:
+// the state at which the law's own rates vanish — the Stribeck curve the rig integrates.
+//
+//   film         N_s(h̄) + η(ΔT) U L(h̄) = W                  (dh̄/dt = 0, no squeeze)
+//   temperature  ΔT = ΔT_J(F U, h̄, U)                          (dΔT/dt = 0, thesis (5.2.1))
+//   friction     μ = F/W,  F = τ_i A_r(h̄) + η(ΔT) U S(h̄);  fluid share = η U L(h̄) / W
+// h̄ by bisection (N_s + η U L − W falls with h̄), ΔT by damped fixed-point iteration.
+// Regime by the share of W the solids carry: boundary ≥ 95 %, full film ≤ 5 %, mixed between.
+#pragma once
+
+#include <string>
+
+#include "rig/homogenised_law.h"
+
+namespace tribo::rig {
+
+enum class LubricationRegime { boundary, mixed, full_film };
+const char* to_string(LubricationRegime regime);
+
+struct SteadySliding {
+  double speed_m_per_s = 0;
+  double separation_m = 0;
+  double temperature_rise_K = 0;
+  double solid_load_N = 0, lift_N = 0, solid_friction_N = 0, fluid_shear_N = 0;
+  double mu = 0;             // (solid + fluid shear) / W
+  double fluid_share = 0;    // lift / W
+  LubricationRegime regime = LubricationRegime::boundary;
+  bool converged = false;
+  std::string message;       // why not, when not converged
+};
+
+// Throws std::out_of_range when the film would leave the table (lift carries W above its largest
+// separation: extend the table towards full film), std::invalid_argument for U ≤ 0.
+SteadySliding steady_sliding(const HomogenisedBase& base, double speed_m_per_s);
+
+}  // namespace tribo::rig
