@@ -1,0 +1,167 @@
+// Homogenisation against closed forms: the flat pin's squeeze film with flow factors (thesis
+// (3.2.2), Appendix III), no wedge load between parallel faces, Petroff's full-film shear, the
+// fully plastic junction (thesis (3.1.9), (3.1.23)), and the Stribeck curve's ηU scaling and its
+// minimum at the transition to full film.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "homogenise/law.h"
+#include "homogenise/patch.h"
+#include "homogenise/pin.h"
+#include "rig/homogenised_law.h"
+#include "rig/steady_sliding.h"
+
+namespace tribo::homogenise {
+namespace {
+
+constexpr double kSigma = 4e-7;
+
+// A cell table with uniform, known factors: φx = φy = phi, smooth film h̄_T = h, φf = 1, no contact.
+CellTable uniform_cells(double phi) {
+  CellTable t;
+  t.sigma_m = kSigma;
+  for (double r : {1.0, 2.0, 4.0, 8.0, 16.0}) {
+    t.separation_m.push_back(r * kSigma);
+    t.solid_pressure_Pa.push_back({0, 0});
+    t.area_fraction.push_back({0, 0});
+    t.phi_x.push_back({phi, 0});
+    t.phi_y.push_back({phi, 0});
+    t.phi_s.push_back({0, 0});
+    t.film_over_sigma.push_back({r, 0});
+    t.phi_f.push_back({1, 0});
+    t.couette_shear_factor.push_back({1, 0});
+    t.phi_fp.push_back({1, 0});
+    t.contact_fraction.push_back({0, 0});
+    t.lift_per_eta_u_per_m.push_back({0, 0});
+  }
+  return t;
+}
+
+TEST(PinScale, FlatPinSqueezeIsAppendixIIIDividedByThePressureFlowFactor) {
+  // thesis (3.2.2): N_f = −(3/2) π η R⁴ ḣ / h³; with φ the conductance is φ h³/12η, so K = 3πR⁴/(2φh³).
+  // The disc's cut rim is second order (lubrication tests); 65 nodes across leave < 0.5 %.
+  HomogeniseOptions o;
+  const double phi = 0.8;
+  const PinTable pin = pin_scale(o, uniform_cells(phi));
+  for (std::size_t m = 0; m < pin.separation_m.size(); ++m) {
+    const double h = pin.separation_m[m], r = o.pin.radius_m;
+    const double closed = 1.5 * M_PI * std::pow(r, 4) / (phi * h * h * h);
+    EXPECT_NEAR(pin.squeeze_per_eta_m[m] / closed, 1.0, 5e-3) << "h = " << h;
+  }
+}
+
+TEST(PinScale, ParallelFacesCarryNoWedgeLoadAndShearAsPetroff) {
+  // Uniform coefficients: the Couette divergence vanishes, so the steady film carries nothing
+  // (to the Newton tolerance); the shear on the pin is Petroff's ηU A/h exactly.
+  HomogeniseOptions o;
+  const PinTable pin = pin_scale(o, uniform_cells(0.9));
+  for (std::size_t m = 0; m < pin.separation_m.size(); ++m) {
+    const double h = pin.separation_m[m];
+    const double scale = pin.nominal_area_m2 * o.pin.radius_m / (h * h);  // a wedge load of order ηU A R/h²
+    EXPECT_LT(std::abs(pin.wedge_lift_per_eta_u_m[m]), 1e-9 * scale);
+    EXPECT_NEAR(pin.shear_per_eta_u_m[m], pin.nominal_area_m2 / h, 1e-12 * pin.nominal_area_m2 / h);
+  }
+}
+
+TEST(PinScale, ACrownedPinLiftsWhereTheFlatOneDoesNot) {
+  // A spherical crown makes a converging-diverging film: with cavitation it carries a load that
+  // grows as the film thins (≈ 1/h̄ for a sphere near the flat, Hamrock's point-contact scaling).
+  HomogeniseOptions o;
+  o.pin.shape = PinShape::spherical;
+  o.pin.crown_radius_m = 0.5;
+  const PinTable pin = pin_scale(o, uniform_cells(1.0));
+  for (std::size_t m = 0; m + 1 < pin.separation_m.size(); ++m) {
+    EXPECT_GT(pin.wedge_lift_per_eta_u_m[m], pin.wedge_lift_per_eta_u_m[m + 1]);
+    EXPECT_GT(pin.wedge_lift_per_eta_u_m[m + 1], 0.0);
+  }
+}
+
+TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
+  // A nearly rigid body (E* huge) yields on every loaded cell: A = W/p_cap, so the slip area at
+  // p_cap = √(σ0² − α τ_i²) gives μs,max = 1/√(S² − α) (thesis 3.1.23) and the kinetic μ_b = τ_i/σ0.
+  // The last, partly loaded cell adds at most one cell's area: 1/(loaded cells) ≈ 0.3 %.
+  HomogeniseOptions o;
+  o.surface.grid = 64;
+  o.surface.size_m = 2e-4;
+  o.surface.kind = contact::SpectrumKind::gaussian_acf;
+  o.surface.rms_height_m = kSigma;
+  o.surface.correlation_length_m = 2e-5;
+  o.e_star_Pa = 1e16;
+  o.separation_ratios = {1.0, 2.0, 3.0, 5.0, 8.0};
+  // Load so that about 10 % of the patch is loaded at the cap: W/A_nom = 0.1 σ0.
+  o.pin.normal_load_N = 0.1 * o.hardness_Pa * M_PI * o.pin.radius_m * o.pin.radius_m;
+  const PatchResult p = solve_patch(o, 0);
+  ASSERT_EQ(p.unconverged, 0) << p.messages;
+  const double s = o.hardness_Pa / o.interface_shear_strength_Pa;
+  EXPECT_NEAR(p.mu_s_max / (1.0 / std::sqrt(s * s - o.alpha)), 1.0, 5e-3);
+  EXPECT_NEAR(p.mu_boundary / (1.0 / s), 1.0, 5e-3);
+  // No solid load above the first contact; load falls as the separation grows.
+  for (std::size_t m = 0; m < p.separation_m.size(); ++m) {
+    if (p.separation_m[m] >= p.first_contact_separation_m) {
+      EXPECT_EQ(p.solid_pressure_Pa[m], 0.0);
+    }
+    if (m > 0) {
+      EXPECT_LE(p.solid_pressure_Pa[m], p.solid_pressure_Pa[m - 1]);
+    }
+  }
+  // Flow factors reach the smooth film at 8σ: 1 − 1.5 (σ/h)² ≈ 0.977 (Patir–Cheng small-roughness rate).
+  EXPECT_NEAR(p.phi_x.back(), 1.0 - 1.5 / 64.0, 0.02);
+}
+
+// A mixed-lubrication table: N_s falls to 0 at 3σ, lift and squeeze from a rugosity-like law.
+rig::LawTable stribeck_table(double eta) {
+  rig::LawTable t;
+  t.pin.nominal_area_m2 = 7e-5;
+  t.lubricant.viscosity_Pa_s = eta;
+  t.lubricant.temperature_viscosity_per_K = 0.0;  // isothermal: η does not depend on U
+  t.thermal = {46, 52, 1.2e-5, 1.0};
+  t.junction.locus.sigma0_over_tau_i = 5.3;
+  t.junction.interface_shear_strength_Pa = 2e8;
+  for (int k = 0; k <= 40; ++k) {
+    const double r = 0.5 + 0.25 * k, h = r * kSigma;
+    t.separation_m.push_back(h);
+    t.solid_load_N.push_back(r < 3.0 ? 400.0 * std::pow(1.0 - r / 3.0, 3) : 0.0);
+    t.real_area_m2.push_back(r < 3.0 ? 1e-7 * std::pow(1.0 - r / 3.0, 2) : 0.0);
+    t.lift_per_eta_u_m.push_back(1e5 * std::exp(-r));
+    t.squeeze_per_eta_m.push_back(1.5 * M_PI * std::pow(4.76e-3, 4) / std::pow(h, 3));
+    t.shear_per_eta_u_m.push_back(t.pin.nominal_area_m2 / h);
+  }
+  return t;
+}
+
+TEST(Stribeck, IsothermalFrictionDependsOnEtaTimesSpeedAlone) {
+  // All fluid terms are ∝ ηU (rigid-film Reynolds is homogeneous in ηU), so doubling η and halving U
+  // leaves the steady state unchanged (to the bisection tolerance).
+  const rig::HomogenisedBase thin(stribeck_table(0.01), 100.0), thick(stribeck_table(0.02), 100.0);
+  for (double u : {1e-3, 1e-1, 3.0, 30.0}) {
+    const rig::SteadySliding a = rig::steady_sliding(thin, u), b = rig::steady_sliding(thick, u / 2);
+    EXPECT_NEAR(a.mu, b.mu, 1e-9 * a.mu) << "U = " << u;
+    EXPECT_NEAR(a.separation_m, b.separation_m, 1e-9 * a.separation_m);
+  }
+}
+
+TEST(Stribeck, MinimumSitsWhereTheFilmTakesOverTheLoad) {
+  // Boundary → mixed: μ falls as the film unloads the asperities; full film: μ = ηU S/W rises with
+  // U. So the smallest μ over a log sweep lies where the solids' share has just vanished.
+  const rig::HomogenisedBase base(stribeck_table(0.02), 100.0);
+  double best_mu = 1e9, best_u = 0, share_at_best = 0;
+  for (int k = 0; k <= 80; ++k) {
+    const double u = 1e-3 * std::pow(10.0, k / 16.0);
+    const rig::SteadySliding s = rig::steady_sliding(base, u);
+    ASSERT_TRUE(s.converged) << s.message;
+    if (s.mu < best_mu) {
+      best_mu = s.mu;
+      best_u = u;
+      share_at_best = s.solid_load_N / 100.0;
+    }
+  }
+  EXPECT_GT(best_u, 1e-3);
+  EXPECT_LT(best_u, 1e2);
+  EXPECT_LT(share_at_best, 0.05);  // full film at the minimum …
+  // … but only just: at a third of that speed the solids still carry part of the load.
+  EXPECT_GT(rig::steady_sliding(base, best_u / 3).solid_load_N, 0.0);
+}
+
+}  // namespace
+}  // namespace tribo::homogenise
