@@ -123,8 +123,9 @@ void run_homogenise(const Args& args) {
   }
   law["stribeck"] = sj;
   law["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  law["bem_iterations"] = 0;
-  for (const auto& p : patch_results) law["bem_iterations"] = law["bem_iterations"].get<int>() + p.bem_iterations;
+  int bem_iterations = 0;
+  for (const auto& p : patch_results) bem_iterations += p.bem_iterations;
+  law["bem_iterations"] = bem_iterations;
 
   write_area_csv(dir / "area.csv", pin, cells.sigma_m);
   write_stribeck_csv(dir / "stribeck.csv", stribeck);

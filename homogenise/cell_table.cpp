@@ -7,23 +7,12 @@
 namespace tribo::homogenise {
 namespace {
 
-// Mean and standard error of the finite values (NaN marks an unconverged solve).
-Estimate estimate(const std::vector<double>& values) {
+// Mean ± standard error of the finite values (NaN marks an unconverged solve).
+Estimate finite_estimate(const std::vector<double>& values) {
   std::vector<double> v;
   for (double x : values)
     if (std::isfinite(x)) v.push_back(x);
-  Estimate e{std::nan(""), std::nan("")};
-  if (v.empty()) return e;
-  e.mean = 0;
-  for (double x : v) e.mean += x;
-  e.mean /= static_cast<double>(v.size());
-  e.standard_error = 0;
-  if (v.size() > 1) {
-    double ss = 0;
-    for (double x : v) ss += (x - e.mean) * (x - e.mean);
-    e.standard_error = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
-  }
-  return e;
+  return lubrication::estimate(v);
 }
 
 std::vector<Estimate> column(const std::vector<PatchResult>& patches, std::vector<double> PatchResult::*field) {
@@ -32,7 +21,7 @@ std::vector<Estimate> column(const std::vector<PatchResult>& patches, std::vecto
   for (std::size_t m = 0; m < nodes; ++m) {
     std::vector<double> v;
     for (const PatchResult& p : patches) v.push_back((p.*field)[m]);
-    out.push_back(estimate(v));
+    out.push_back(finite_estimate(v));
   }
   return out;
 }
@@ -68,8 +57,8 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
     t.first_contact_separation_m = std::max(t.first_contact_separation_m, p.first_contact_separation_m);
     t.unconverged += p.unconverged;
   }
-  t.mu_s_max = estimate(mus);
-  t.mu_boundary = estimate(mub);
+  t.mu_s_max = finite_estimate(mus);
+  t.mu_boundary = finite_estimate(mub);
   return t;
 }
 

@@ -15,18 +15,6 @@ namespace {
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("homogenisation: " + what); }
 
-Estimate estimate(const std::vector<double>& v) {
-  Estimate e;
-  if (v.empty()) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
-  for (double x : v) e.mean += x;
-  e.mean /= static_cast<double>(v.size());
-  if (v.size() < 2) return e;
-  double ss = 0;
-  for (double x : v) ss += (x - e.mean) * (x - e.mean);
-  e.standard_error = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
-  return e;
-}
-
 // Reynolds cell over one period of the surface: n + 1 nodes along the flow (x = L wraps to 0),
 // n nodes across it (periodic). `transposed` swaps the surface axes (flow along the surface's y).
 ReynoldsProblem cell_problem(const Eigen::ArrayXXd& z, double size_m, double nominal_gap_m, double floor_m,
@@ -112,6 +100,18 @@ constexpr std::array<PatirChengShear, 7> kShearFits{{{1.0 / 9, 2.046, 1.12, 0.78
 bool same_gamma(double a, double b) { return std::abs(a / b - 1.0) < 1e-6; }
 
 }  // namespace
+
+Estimate estimate(const std::vector<double>& v) {
+  Estimate e;
+  if (v.empty()) return {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN()};
+  for (double x : v) e.mean += x;
+  e.mean /= static_cast<double>(v.size());
+  if (v.size() < 2) return e;
+  double ss = 0;
+  for (double x : v) ss += (x - e.mean) * (x - e.mean);
+  e.standard_error = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
+  return e;
+}
 
 double patir_cheng_phi_x(double h, double gamma) {
   if (!(h >= 0.5)) return std::numeric_limits<double>::quiet_NaN();

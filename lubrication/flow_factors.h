@@ -74,6 +74,8 @@ void validate(const HomogenisationOptions& options);
 struct Estimate {
   double mean = 0, standard_error = 0;
 };
+// Mean and its standard error s/√n of the values (NaN, NaN when there are none; error 0 for one).
+Estimate estimate(const std::vector<double>& values);
 
 struct FlowFactorRow {
   double h_over_sigma = 0;

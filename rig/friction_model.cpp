@@ -154,23 +154,25 @@ void validate(const FrictionModel& m) {
   }
 }
 
+std::optional<contact::JunctionLocus> junction_locus(const FrictionModel& m) {
+  if (!m.has("rate_dependent_static") && !m.has("strain_rate_hardening")) return std::nullopt;
+  FrictionModel defaults = m;
+  defaults.add("rate_dependent_static");
+  contact::JunctionLocus l;
+  l.alpha = defaults.get("rate_dependent_static", "alpha");
+  l.n = defaults.get("rate_dependent_static", "n");
+  l.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(defaults.get("rate_dependent_static", "mu_s_max"), l.alpha);
+  l.location_per_s = defaults.get("rate_dependent_static", "location_per_s");
+  if (m.has("strain_rate_hardening")) {
+    l.strain_rate_index_m = m.get("strain_rate_hardening", "m");
+    l.reference_load_rate_per_s = m.get("strain_rate_hardening", "reference_load_rate_per_s");
+  }
+  return l;
+}
+
 std::shared_ptr<const FrictionLaw> make_friction_law(const FrictionModel& m) {
   validate(m);
-  std::optional<contact::JunctionLocus> locus;
-  if (m.has("rate_dependent_static") || m.has("strain_rate_hardening")) {
-    FrictionModel defaults = m;
-    defaults.add("rate_dependent_static");
-    contact::JunctionLocus l;
-    l.alpha = defaults.get("rate_dependent_static", "alpha");
-    l.n = defaults.get("rate_dependent_static", "n");
-    l.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(defaults.get("rate_dependent_static", "mu_s_max"), l.alpha);
-    l.location_per_s = defaults.get("rate_dependent_static", "location_per_s");
-    if (m.has("strain_rate_hardening")) {
-      l.strain_rate_index_m = m.get("strain_rate_hardening", "m");
-      l.reference_load_rate_per_s = m.get("strain_rate_hardening", "reference_load_rate_per_s");
-    }
-    locus = l;
-  }
+  const std::optional<contact::JunctionLocus> locus = junction_locus(m);
   std::vector<std::unique_ptr<FrictionEffect>> effects;
   auto p = [&](const char* effect, const char* parameter) { return m.get(effect, parameter); };
   if (m.has("slip_transient")) {

@@ -15,9 +15,11 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "contact/junction_locus.h"
 #include "rig/effect.h"
 #include "rig/friction_law.h"
 #include "rig/kinetic_laws.h"
@@ -67,6 +69,10 @@ FrictionModel coulomb(double mu_s, double mu_k);
 
 // Checks names, counts and bounds; throws std::invalid_argument naming effect.parameter.
 void validate(const FrictionModel& model);
+
+// The static-friction locus a model's rate_dependent_static / strain_rate_hardening effects imply
+// (catalogue defaults for parameters the model leaves out); nullopt when it has neither.
+std::optional<contact::JunctionLocus> junction_locus(const FrictionModel& model);
 
 // The law the rig integrates. Immutable and thread-safe: build one per parameter set.
 std::shared_ptr<const FrictionLaw> make_friction_law(const FrictionModel& model);

@@ -3,39 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include "contact/junction_locus.h"
+#include "rig/internal/exact_decimal.h"
 
 namespace tribo::rig {
 namespace {
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(std::numeric_limits<double>::max_digits10);
-  s << v;
-  return s.str();
-}
-
 const LawTable& validated(const LawTable& t) {
   validate(t);
   return t;
-}
-
-// Solves N_s(h) = W on [front, back] for the non-increasing interpolant by bisection to the last
-// representable bit: the bracket keeps N_s(lo) ≥ W > N_s(hi) (or lo = front when W = N_s(front)).
-double equilibrium_separation_m(const MonotoneTable& solid_load, double load_N) {
-  double lo = solid_load.x().front(), hi = solid_load.x().back();
-  if (solid_load.value(lo) <= load_N) return lo;  // W = N_s(front)
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    (solid_load.value(mid) >= load_N ? lo : hi) = mid;
-  }
-  // Of the two bracketing neighbours take the one whose load is nearer W.
-  return std::abs(solid_load.value(lo) - load_N) <= std::abs(solid_load.value(hi) - load_N) ? lo : hi;
 }
 
 }  // namespace
@@ -50,15 +29,36 @@ HomogenisedBase::HomogenisedBase(LawTable table, double normal_load_N)
       shear_(table_.separation_m, table_.shear_per_eta_u_m, "separation_m") {
   const double n_front = table_.solid_load_N.front();
   if (!std::isfinite(normal_load_N) || !(normal_load_N > 0.0) || normal_load_N > n_front) {
-    throw std::invalid_argument("normal_load_N = " + fmt(normal_load_N) + " N lies outside the law table's solid-load range (0, " +
-                                fmt(n_front) + "] N (" + (table_.source.empty() ? std::string("table") : table_.source) +
+    throw std::invalid_argument("normal_load_N = " + internal::exact_decimal(normal_load_N) + " N lies outside the law table's solid-load range (0, " +
+                                internal::exact_decimal(n_front) + "] N (" + (table_.source.empty() ? std::string("table") : table_.source) +
                                 ": table.solid_load_N); the film's equilibrium N_s(h) = W must lie inside the table");
   }
   lubricant_.viscosity_Pa_s = table_.lubricant.viscosity_Pa_s;
   lubricant_.pressure_viscosity_per_Pa = 0.0;  // ambient pressure: the rig's film is not EHL
   lubricant_.temperature_viscosity_per_K = table_.lubricant.temperature_viscosity_per_K;
   lubricant_.reference_temperature_K = table_.lubricant.reference_temperature_K;
-  h0_m_ = equilibrium_separation_m(solid_load_, normal_load_N);
+  jaeger_.slider_conductivity_W_per_m_K = table_.thermal.slider_conductivity_W_per_m_K;
+  jaeger_.disc_conductivity_W_per_m_K = table_.thermal.disc_conductivity_W_per_m_K;
+  jaeger_.slider_diffusivity_m2_per_s = table_.thermal.slider_diffusivity_m2_per_s;
+  h0_m_ = balanced_separation_m(0.0);
+}
+
+double HomogenisedBase::balanced_separation_m(double eta_u_Pa_m) const {
+  const auto carried = [&](double h) { return solid_load_N(h) + eta_u_Pa_m * lift_per_eta_u_m(h); };
+  double lo = table_.separation_m.front(), hi = table_.separation_m.back();
+  if (carried(lo) <= normal_load_N_) return lo;  // W = N_s(front) at rest
+  if (carried(hi) > normal_load_N_)
+    throw std::out_of_range("film balance at eta U = " + internal::exact_decimal(eta_u_Pa_m) +
+                            " Pa m: the lift carries the load above the table's largest separation " +
+                            internal::exact_decimal(hi) + " m; extend the table towards full film");
+  // Bisection to the last representable bit: the bracket keeps carried(lo) ≥ W > carried(hi).
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    (carried(mid) >= normal_load_N_ ? lo : hi) = mid;
+  }
+  // Of the two bracketing neighbours take the one whose load is nearer W.
+  return std::abs(carried(lo) - normal_load_N_) <= std::abs(carried(hi) - normal_load_N_) ? lo : hi;
 }
 
 void HomogenisedBase::initial_state(std::span<double> state) const {
@@ -104,13 +104,8 @@ double HomogenisedBase::separation_rate_m_per_s(double h, double dT, double u, d
 }
 
 double HomogenisedBase::jaeger_temperature_rise_K(double power_W, double h, double u) const {
-  if (power_W == 0.0) return 0.0;
-  const LawThermal& th = table_.thermal;
   const double area = std::max(real_area_m2(h), kJaegerAreaFloorFraction * table_.pin.nominal_area_m2);
-  const double b = std::sqrt(th.slider_diffusivity_m2_per_s);
-  const double bracket = 1.1 * th.disc_conductivity_W_per_m_K * b +
-                         0.7 * th.slider_conductivity_W_per_m_K * std::pow(area, 0.25) * std::sqrt(u);
-  return power_W * b / (1.9 * std::sqrt(area) * bracket);
+  return lubrication::jaeger_flash_temperature_rise_K(jaeger_, power_W, area, u);
 }
 
 double HomogenisedBase::film_relaxation_time_s(double h, double dT) const {

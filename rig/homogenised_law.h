@@ -53,6 +53,10 @@ class HomogenisedBase {
   double normal_load_N() const { return normal_load_N_; }
   double initial_separation_m() const { return h0_m_; }   // N_s(h̄0) = W
 
+  // The steady film: h̄ with N_s(h̄) + ηU L(h̄) = W (ηU = 0: the film at rest, h̄0), by bisection to the
+  // last bit. Throws std::out_of_range when the lift carries W above the table's largest separation.
+  double balanced_separation_m(double eta_u_Pa_m) const;
+
   void initial_state(std::span<double> state) const;      // [h̄0, 0]
   void state_tolerances(std::span<double> atol) const;    // [1e-6 h̄_front, 1e-6 K]
 
@@ -93,6 +97,7 @@ class HomogenisedBase {
   double normal_load_N_;
   MonotoneTable solid_load_, real_area_, lift_, squeeze_, shear_;
   lubrication::Lubricant lubricant_;
+  lubrication::JaegerContact jaeger_;
   double h0_m_ = 0.0;
 };
 

@@ -10,17 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rig/internal/exact_decimal.h"
+
 namespace tribo::rig {
 namespace {
 
 using nlohmann::json;
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(std::numeric_limits<double>::max_digits10);
-  s << v;
-  return s.str();
-}
+using internal::exact_decimal;
 
 std::string where(const std::string& source) { return "law table " + (source.empty() ? std::string("(in memory)") : source); }
 
@@ -81,15 +78,15 @@ class Reader {
 };
 
 void require_finite(const std::string& source, const std::string& key, double v) {
-  if (!std::isfinite(v)) fail(source, key, "must be finite (got " + fmt(v) + ")");
+  if (!std::isfinite(v)) fail(source, key, "must be finite (got " + exact_decimal(v) + ")");
 }
 void require_positive(const std::string& source, const std::string& key, double v) {
   require_finite(source, key, v);
-  if (!(v > 0.0)) fail(source, key, "must be > 0 (got " + fmt(v) + ")");
+  if (!(v > 0.0)) fail(source, key, "must be > 0 (got " + exact_decimal(v) + ")");
 }
 void require_non_negative(const std::string& source, const std::string& key, double v) {
   require_finite(source, key, v);
-  if (!(v >= 0.0)) fail(source, key, "must be >= 0 (got " + fmt(v) + ")");
+  if (!(v >= 0.0)) fail(source, key, "must be >= 0 (got " + exact_decimal(v) + ")");
 }
 
 enum class Sign { positive, non_negative };
@@ -106,10 +103,10 @@ void check_non_increasing_to_zero(const std::string& source, const std::string& 
   check_column(source, key, c, Sign::non_negative);
   for (std::size_t i = 1; i < c.size(); ++i) {
     if (c[i] > c[i - 1]) {
-      fail(source, key + "[" + std::to_string(i) + "]", "must not increase with separation (" + fmt(c[i - 1]) + " then " + fmt(c[i]) + ")");
+      fail(source, key + "[" + std::to_string(i) + "]", "must not increase with separation (" + exact_decimal(c[i - 1]) + " then " + exact_decimal(c[i]) + ")");
     }
   }
-  if (c.back() != 0.0) fail(source, key, "last entry must be 0 (the contact vanishes at the largest separation), got " + fmt(c.back()));
+  if (c.back() != 0.0) fail(source, key, "last entry must be 0 (the contact vanishes at the largest separation), got " + exact_decimal(c.back()));
 }
 
 }  // namespace
@@ -149,7 +146,7 @@ void validate(const LawTable& t) {
   for (std::size_t i = 1; i < n; ++i) {
     if (!(t.separation_m[i] > t.separation_m[i - 1])) {
       fail(s, "table.separation_m[" + std::to_string(i) + "]",
-           "must be strictly increasing (" + fmt(t.separation_m[i - 1]) + " then " + fmt(t.separation_m[i]) + ")");
+           "must be strictly increasing (" + exact_decimal(t.separation_m[i - 1]) + " then " + exact_decimal(t.separation_m[i]) + ")");
     }
   }
   check_non_increasing_to_zero(s, "table.solid_load_N", t.solid_load_N);
@@ -286,8 +283,8 @@ MonotoneTable::MonotoneTable(std::vector<double> x, std::vector<double> y, std::
 
 std::size_t MonotoneTable::interval(double x) const {
   if (!(x >= x_.front() && x <= x_.back())) {
-    throw std::out_of_range("monotone table: " + axis_ + " = " + fmt(x) + " lies outside the table's range [" + fmt(x_.front()) +
-                            ", " + fmt(x_.back()) + "] (no extrapolation)");
+    throw std::out_of_range("monotone table: " + axis_ + " = " + exact_decimal(x) + " lies outside the table's range [" + exact_decimal(x_.front()) +
+                            ", " + exact_decimal(x_.back()) + "] (no extrapolation)");
   }
   const auto it = std::upper_bound(x_.begin(), x_.end(), x);
   const std::size_t k = static_cast<std::size_t>(it - x_.begin());

@@ -4,7 +4,7 @@
 //   film         N_s(h̄) + η(ΔT) U L(h̄) = W                  (dh̄/dt = 0, no squeeze)
 //   temperature  ΔT = ΔT_J(F U, h̄, U)                          (dΔT/dt = 0, thesis (5.2.1))
 //   friction     μ = F/W,  F = τ_i A_r(h̄) + η(ΔT) U S(h̄);  fluid share = η U L(h̄) / W
-// h̄ by bisection (N_s + η U L − W falls with h̄), ΔT by damped fixed-point iteration.
+// h̄ by HomogenisedBase::balanced_separation_m, ΔT by damped fixed-point iteration.
 // Regime by the share of W the solids carry: boundary ≥ 95 %, full film ≤ 5 %, mixed between.
 #pragma once
 

@@ -15,6 +15,7 @@
 #include "lubrication/geometry.h"
 #include "lubrication/reference/squeeze_film.h"
 #include "lubrication/reynolds.h"
+#include "tests/lubrication/observed_order.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -22,17 +23,6 @@ namespace {
 constexpr double kEta = 0.021;         // thesis oil, Pa s
 constexpr double kRadius = 4.7625e-3;  // 3/16 in slider radius
 constexpr double kGap = 1e-6, kRate = -1e-6;
-
-// Least-squares slope of log(error) against log(spacing): the observed order of convergence.
-double observed_order(const std::vector<double>& spacing, const std::vector<double>& error) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double n = static_cast<double>(spacing.size());
-  for (std::size_t k = 0; k < spacing.size(); ++k) {
-    const double x = std::log(spacing[k]), y = std::log(error[k]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
 
 // A film that is uniform across y (ny = 3, periodic): the infinitely wide bearing.
 ReynoldsProblem channel(int nx, double length_m, double width_m) {

@@ -31,12 +31,7 @@ namespace {
 contact::JunctionLocus thesis_locus() {
   FrictionModel m;
   m.add("rate_dependent_static");
-  contact::JunctionLocus l;
-  l.alpha = m.get("rate_dependent_static", "alpha");
-  l.n = m.get("rate_dependent_static", "n");
-  l.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(m.get("rate_dependent_static", "mu_s_max"), l.alpha);
-  l.location_per_s = m.get("rate_dependent_static", "location_per_s");
-  return l;
+  return *junction_locus(m);
 }
 
 // A table whose solid load is linear in h̄, N_s = k_s (h_b − h̄), over [h_f, h_b]; the real area
