@@ -4,25 +4,13 @@
 // (law.json "stribeck", stribeck.csv, stribeck.png) and the load–separation curve (area.csv,
 // area.png). Finished realisations are kept in DIR/patches/ and reused when the same command
 // runs again, so a killed run resumes; a changed config starts them afresh.
-#include <chrono>
-#include <cmath>
-#include <cstdio>
-#include <fstream>
-#include <functional>
-#include <optional>
-#include <sstream>
-
-#include <nlohmann/json.hpp>
+#include <memory>
+#include <string>
 
 #include "apps/commands.h"
 #include "apps/config.h"
 #include "apps/homogenise_config.h"
-#include "apps/output.h"
-#include "apps/provenance.h"
-#include "apps/rig_output.h"
-#include "homogenise/law.h"
-#include "rig/law_table.h"
-#include "rig/steady_sliding.h"
+#include "apps/homogenise_run.h"
 
 namespace tribo::cli {
 namespace {
@@ -33,111 +21,10 @@ struct Args {
   bool plots = true;
 };
 
-// A cached patch is reused only when it was made from the same inputs (the config's hash).
-std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& file, const std::string& hash) {
-  std::ifstream in(file);
-  if (!in) return std::nullopt;
-  try {
-    const nlohmann::json j = nlohmann::json::parse(in);
-    if (j.at("config_hash").get<std::string>() != hash) return std::nullopt;
-    return homogenise::patch_from_json(j.at("patch"));
-  } catch (const std::exception&) {
-    return std::nullopt;  // a torn or foreign file: solve the patch again
-  }
-}
-
-void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig::SteadySliding>& points) {
-  AtomicFile f(path);
-  f.stream() << "U_m_per_s,mu,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N\n";
-  for (const rig::SteadySliding& s : points)
-    f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << s.fluid_share << ',' << s.separation_m << ','
-               << s.temperature_rise_K << ',' << s.solid_load_N << ',' << s.lift_N << ',' << s.fluid_shear_N << '\n';
-  f.commit();
-}
-
-void write_area_csv(const std::filesystem::path& path, const homogenise::PinTable& pin, double sigma) {
-  AtomicFile f(path);
-  f.stream() << "separation_m,separation_over_sigma,solid_load_N,solid_load_standard_error_N,real_area_m2,"
-                "real_area_fraction,real_area_standard_error_m2,lift_per_eta_u_m,squeeze_per_eta_m,shear_per_eta_u_m\n";
-  for (std::size_t m = 0; m < pin.separation_m.size(); ++m)
-    f.stream() << pin.separation_m[m] << ',' << pin.separation_m[m] / sigma << ',' << pin.solid_load_N[m] << ','
-               << pin.solid_load_standard_error_N[m] << ',' << pin.real_area_m2[m] << ','
-               << pin.real_area_m2[m] / pin.nominal_area_m2 << ',' << pin.real_area_standard_error_m2[m] << ','
-               << pin.wedge_lift_per_eta_u_m[m] + pin.rugosity_lift_per_eta_u_m[m] << ',' << pin.squeeze_per_eta_m[m]
-               << ',' << pin.shear_per_eta_u_m[m] << '\n';
-  f.commit();
-}
-
 void run_homogenise(const Args& args) {
   if (args.config.empty()) throw InputError("homogenise: a CONFIG.toml is required (see tribo homogenise --help)");
   const HomogeniseRun run = load_homogenise_run(args.config);  // everything checked before anything is written
-  make_output_dir(args.out);
-  const std::filesystem::path dir(args.out), patches = dir / "patches";
-  make_output_dir(patches);
-  const auto start = std::chrono::steady_clock::now();
-  const std::string hash = config_hash(args.config);
-  const homogenise::HomogeniseOptions& o = run.options;
-
-  std::vector<std::optional<homogenise::PatchResult>> cached;
-  int reused = 0;
-  for (int k = 0; k < o.realisations; ++k) {
-    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), hash));
-    reused += cached.back() ? 1 : 0;
-  }
-  Progress progress("homogenise: realisations", o.realisations);
-  for (int k = 0; k < reused; ++k) progress.step("cached");
-  const auto patch_results = homogenise::solve_patches(o, cached, [&](int k, const homogenise::PatchResult& p) {
-    const nlohmann::json j{{"config_hash", hash}, {"patch", homogenise::to_json(p)}};
-    write_file_atomically(patches / ("realisation-" + std::to_string(k) + ".json"), j.dump() + "\n");
-    progress.step("seed " + std::to_string(p.seed));
-  });
-  progress.done();
-
-  const homogenise::CellTable cells = homogenise::aggregate(o, patch_results);
-  const homogenise::PinTable pin = homogenise::pin_scale(o, cells);
-  nlohmann::json law = homogenise::law_json(o, cells, pin);
-  law["provenance"] = provenance_json(args.config, hash);
-  law["provenance"]["seeds"] = nlohmann::json::array();
-  for (const auto& p : patch_results) law["provenance"]["seeds"].push_back(p.seed);
-  law["provenance"]["realisations_reused"] = reused;
-
-  // The Stribeck curve the rig's law implies at the pin's load: steady sliding at each speed.
-  const rig::HomogenisedBase base(rig::law_table_from_json(law, (dir / "law.json").string()), o.pin.normal_load_N);
-  std::vector<rig::SteadySliding> stribeck;
-  nlohmann::json sj = nlohmann::json::array();
-  for (double u : run.speeds_m_per_s) {
-    rig::SteadySliding s;
-    try {
-      s = rig::steady_sliding(base, u);
-    } catch (const std::out_of_range& e) {
-      std::fprintf(stderr, "tribo: warning: Stribeck curve stops at %.4g m/s: %s\n", u, e.what());
-      break;
-    }
-    stribeck.push_back(s);
-    sj.push_back({{"U_m_per_s", u},
-                  {"mu", s.mu},
-                  {"fluid_share", s.fluid_share},
-                  {"separation_m", s.separation_m},
-                  {"temperature_rise_K", s.temperature_rise_K},
-                  {"regime", rig::to_string(s.regime)}});
-  }
-  law["stribeck"] = sj;
-  law["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  int bem_iterations = 0;
-  for (const auto& p : patch_results) bem_iterations += p.bem_iterations;
-  law["bem_iterations"] = bem_iterations;
-
-  write_area_csv(dir / "area.csv", pin, cells.sigma_m);
-  write_stribeck_csv(dir / "stribeck.csv", stribeck);
-  write_file_atomically(dir / "law.json", law.dump(2) + "\n");
-  std::printf("mu_s,max %.4g (BEM, %d realisations), dry mu %.4g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
-              cells.mu_s_max.mean, cells.realisations, cells.mu_boundary.mean, stribeck.size(), o.pin.normal_load_N,
-              law["wall_s"].get<double>(), args.out.c_str());
-  if (cells.unconverged > 0 || pin.reynolds_unconverged > 0)
-    std::fprintf(stderr, "tribo: warning: %d cell and %d pin-face solves did not converge (left out; see law.json)\n",
-                 cells.unconverged, pin.reynolds_unconverged);
-  if (args.plots && run_plot_script("homogenise", args.out) != 0)
-    std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib); CSVs and law.json are written\n");
+  homogenise_into(run, args.config, args.out, args.plots);
 }
 
 }  // namespace

@@ -108,9 +108,10 @@ double HomogenisedBase::jaeger_temperature_rise_K(double power_W, double h, doub
   return lubrication::jaeger_flash_temperature_rise_K(jaeger_, power_W, area, u);
 }
 
-double HomogenisedBase::film_relaxation_time_s(double h, double dT) const {
-  const double stiffness = -solid_load_slope_N_per_m(h);
-  const double damping = viscosity_Pa_s(dT) * squeeze_per_eta_m(h);
+double HomogenisedBase::film_relaxation_time_s(double h, double dT, double u) const {
+  const double eta = viscosity_Pa_s(dT);
+  const double stiffness = -(solid_load_slope_N_per_m(h) + eta * std::abs(u) * lift_.slope(h));
+  const double damping = eta * squeeze_per_eta_m(h);
   if (damping == 0.0) return 0.0;
   return stiffness > 0.0 ? damping / stiffness : std::numeric_limits<double>::infinity();
 }

@@ -16,8 +16,8 @@
 //       dΔT/dt = (ΔT_J − ΔT) / t_T                              (t_T = thermal.time_constant_s)
 //     While stuck |U| = 0, P = 0 and ΔT relaxes to 0.
 //
-// Film stiffness: near h̄ the load balance relaxes with the time constant t_h = η K / (−dN_s/dh̄)
-// (film_relaxation_time_s); the rig integrator (CVODE Adams) is efficient only while t_h is not
+// Film stiffness: near a balanced h̄ the load balance relaxes with the time constant
+// t_h = η K / −d(N_s + η|U| L)/dh̄ (film_relaxation_time_s), over the slip distance |U| t_h; the rig integrator (CVODE Adams) is efficient only while t_h is not
 // far below the rig period 2π/ω_n ≈ 0.06 s.
 //
 // Effects of the catalogue compose on top of this base in CompositeLaw (rig/effect.h channels, with
@@ -86,8 +86,9 @@ class HomogenisedBase {
   double separation_rate_m_per_s(double h_m, double temperature_rise_K, double speed_m_per_s, double normal_load_N) const;
   // Jaeger's ΔT_J (5.2.1) for friction power P (W) at h̄ and |U|; 0 when P = 0.
   double jaeger_temperature_rise_K(double power_W, double h_m, double speed_m_per_s) const;
-  // t_h = η K / (−dN_s/dh̄); +∞ where N_s is flat, 0 when dry.
-  double film_relaxation_time_s(double h_m, double temperature_rise_K) const;
+  // t_h = η K / −d(N_s + η|U| L)/dh̄ (the linearised film ODE about a balanced h̄); +∞ where the
+  // load balance is flat, 0 when dry.
+  double film_relaxation_time_s(double h_m, double temperature_rise_K, double speed_m_per_s = 0.0) const;
 
   // d[h̄, ΔT]/dt given the kinetic force F_k (used for P = F_k |U| while slipping).
   void state_rates(const FrictionContext& c, double kinetic_force_N, std::span<double> rates) const;

@@ -4,7 +4,9 @@
 //   film         N_s(h̄) + η(ΔT) U L(h̄) = W                  (dh̄/dt = 0, no squeeze)
 //   temperature  ΔT = ΔT_J(F U, h̄, U)                          (dΔT/dt = 0, thesis (5.2.1))
 //   friction     μ = F/W,  F = τ_i A_r(h̄) + η(ΔT) U S(h̄);  fluid share = η U L(h̄) / W
-// h̄ by HomogenisedBase::balanced_separation_m, ΔT by damped fixed-point iteration.
+// h̄ by HomogenisedBase::balanced_separation_m, ΔT by damped fixed-point iteration. A film that settles
+// over a slip distance U t_h independent of U decays with slip distance, as the thesis' transient
+// (§5.2a, Figs 5.2.3–5.2.6); one with t_h independent of U decays with time.
 // Regime by the share of W the solids carry: boundary ≥ 95 %, full film ≤ 5 %, mixed between.
 #pragma once
 
@@ -22,6 +24,8 @@ struct SteadySliding {
   double separation_m = 0;
   double temperature_rise_K = 0;
   double solid_load_N = 0, lift_N = 0, solid_friction_N = 0, fluid_shear_N = 0;
+  double film_relaxation_time_s = 0;       // t_h of the film about this state (homogenised_law.h)
+  double film_relaxation_distance_m = 0;   // U t_h: the slip distance over which the film settles
   double mu = 0;             // (solid + fluid shear) / W
   double fluid_share = 0;    // lift / W
   LubricationRegime regime = LubricationRegime::boundary;

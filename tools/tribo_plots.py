@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Plots for tribo outputs (matplotlib, Agg backend).
 
-    tribo_plots.py demo DIR   phase_plane.png, regime_map.png, mu_s_vs_phidot.png from a demo run
+    tribo_plots.py demo DIR   phase_plane.png, regime_map.png, mu_s_vs_phidot.png, thesis_friction.png
+                              from a demo run
     tribo_plots.py rig DIR    phase_plane.png, trace.png from a `tribo rig` run
     tribo_plots.py gap DIR    gap_by_observable.png, items.png, overlay.png from `tribo gap diagnose`
     tribo_plots.py homogenise DIR   stribeck.png, area.png from `tribo homogenise`
@@ -119,6 +120,40 @@ def plot_demo(d):
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(d, "mu_s_vs_phidot.png"), dpi=110)
+    plt.close(fig)
+    plot_thesis_friction(d)
+
+
+def plot_thesis_friction(d):
+    """Friction against speed beside the thesis' chapter-V values: the rig's time-averaged mu at each
+    driven speed and, for a homogenised law, its steady-sliding (Stribeck) curve from law/stribeck.csv."""
+    inch = 0.0254
+    sweep = read_csv(os.path.join(d, "sweep.csv"))
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    for regime, colour in REGIME_COLOURS.items():
+        rs = [r for r in sweep if r["regime"] == regime]
+        if rs:
+            ax.scatter(column(rs, "v_m_per_s"), column(rs, "mean_mu"), c=colour, s=22,
+                       label="rig mean mu, " + regime.replace("_", " "))
+    stribeck = os.path.join(d, "law", "stribeck.csv")
+    if os.path.exists(stribeck):
+        st = read_csv(stribeck)
+        ax.plot(column(st, "U_m_per_s"), column(st, "mu"), "k-", lw=1.2, label="homogenised law, steady sliding")
+    ax.scatter([5.3 * inch], [0.15], marker="*", s=160, c="tab:green", edgecolors="k", zorder=5,
+               label="thesis: mu_k 0.15 at 5.3 in/s (Fig 5.2.8)")
+    ax.scatter([2.8e-2 * inch], [0.26], marker="*", s=160, c="tab:red", edgecolors="k", zorder=5,
+               label="thesis: mu_s 0.26 at 2.8e-2 in/s (Fig 5.2.1)")
+    ax.axhline(0.03, color="tab:blue", ls=":", lw=1, label="thesis: 0.03 at zero relative speed (5.2a)")
+    ax.axvline(1.0 * inch, color="gray", ls="--", lw=0.8, label="thesis: friction maximum at 1 in/s (Fig 5.2.8)")
+    ax.set_xscale("log")
+    ax.set_xlabel("speed (m/s): driven speed v for the rig, sliding speed U for the law")
+    ax.set_ylabel("friction coefficient")
+    ax.set_ylim(bottom=0)
+    ax.set_title("Friction against speed beside the thesis' observations", fontsize=10)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7, loc="best")
+    fig.tight_layout()
+    fig.savefig(os.path.join(d, "thesis_friction.png"), dpi=110)
     plt.close(fig)
 
 

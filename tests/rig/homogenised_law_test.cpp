@@ -369,6 +369,25 @@ TEST(HomogenisedLaw, StuckFilmDrainsAtTheLinearisedSqueezeRate) {
               1e-12 * s.viscosity_Pa_s * s.squeeze_m / s.stiffness_N_per_m);
 }
 
+TEST(HomogenisedLaw, SlidingFilmSettlesOverASlipDistanceThatTendsToKOverTheLiftSlope) {
+  // Linearising η K dh̄/dt = N_s + η U L − W with N_s = k_s (h_b − h̄), L = L0 − L1 h̄ about the balance
+  // gives t_h = η K / (k_s + η U L1): time-like (t_h → η K / k_s) while the solids dominate, and a
+  // settling distance U t_h → K / L1 independent of U once the lift does — the thesis' decay with
+  // slip distance (§5.2a). PCHIP is exact on these linear columns (rounding only).
+  const LinearSpec s;
+  LawTable t = linear_table(s);
+  const double l1 = 4e12;  // 1/m²: the lift falls by 3.6e6 m⁻¹ over the table, stays > 0
+  for (std::size_t i = 0; i < t.separation_m.size(); ++i) t.lift_per_eta_u_m[i] = 4e6 - l1 * t.separation_m[i];
+  const HomogenisedBase base(t, 93.857);
+  const double h = 0.5 * (s.h_front_m + s.h_back_m), eta_k = s.viscosity_Pa_s * s.squeeze_m;
+  for (double u : {0.0, 1e-3, 1.0, 1e3}) {
+    const double expected = eta_k / (s.stiffness_N_per_m + s.viscosity_Pa_s * u * l1);
+    EXPECT_NEAR(base.film_relaxation_time_s(h, 0.0, u), expected, 1e-12 * expected) << "U = " << u;
+  }
+  const double far = 1e6;  // η U L1 = 8.4e16 ≫ k_s: within k_s/(η U L1) = 3e-9 of K/L1
+  EXPECT_NEAR(far * base.film_relaxation_time_s(h, 0.0, far), s.squeeze_m / l1, 1e-8 * s.squeeze_m / l1);
+}
+
 TEST(HomogenisedLaw, FullFilmShearIsPetroff) {
   // Where the solid contact has vanished (A_r = 0 at the last four nodes) the friction is the
   // viscous shear of a film of thickness h̄ over the pin face: Petroff, F = η U A0 / h̄.
