@@ -82,7 +82,7 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
   if (run.surface_kind == "sphere" || run.surface_kind == "gaussian") {
     if (!size_m) root.fail("domain", "[domain] size_m is required for a " + run.surface_kind + " surface");
     if (!grid_n) root.fail("domain", "[domain] grid is required for a " + run.surface_kind + " surface");
-    run.grid = {*grid_n, *grid_n, *size_m, *size_m};
+    run.grid = contact::Grid::patch(*grid_n, *grid_n, *size_m, *size_m);
   }
   if (run.surface_kind == "sphere") {
     run.sphere_radius_m = surface->required_number("radius_m", Range::positive);
@@ -124,7 +124,7 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
     if (grid_n && *grid_n != topo.heights_m.rows()) {
       domain->fail("grid", "does not match the " + std::to_string(topo.heights_m.rows()) + " rows of " + file.string());
     }
-    run.grid = {topo.heights_m.rows(), topo.heights_m.cols(), lx, ly};
+    run.grid = contact::Grid::patch(topo.heights_m.rows(), topo.heights_m.cols(), lx, ly);
     run.stats = contact::surface_statistics(topo.heights_m, lx, ly);
     run.gap0_m = contact::gap_from_heights(topo.heights_m);
   }
@@ -231,7 +231,7 @@ void run_contact(const ContactArgs& args) {
 
   j["surface"] = run.surface_kind;
   j["grid"] = {run.grid.nx, run.grid.ny};
-  j["size_m"] = {run.grid.lx_m, run.grid.ly_m};
+  j["size_m"] = {run.grid.period_x_m(), run.grid.period_y_m()};
   j["periodic"] = run.periodic;
   j["normal_N"] = r.normal_load_N;
   j["tangential_N"] = run.tangential_N;

@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -135,31 +134,31 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
     const double p_in = g->number("inlet_pressure_Pa", 0.0, Range::non_negative);
     const double p_out = g->number("outlet_pressure_Pa", 0.0, Range::non_negative);
     const contact::Topography topo = input_guard(*g, "file", [&] { return contact::read_topography(gap_path, scale); });
-    const auto& h = topo.heights_m;
-    run.problem.grid = lub::Grid{static_cast<int>(h.rows()), static_cast<int>(h.cols()), dx, dy};
-    run.problem.gap_m.assign(h.data(), h.data() + h.size());  // column-major: (i, j) at j·nx + i
-    run.problem.gap_rate_m_per_s.assign(run.problem.gap_m.size(), rate);
+    run.problem.grid = contact::Grid{topo.heights_m.rows(), topo.heights_m.cols(), dx, dy};
+    run.problem.gap_m = topo.heights_m;
+    run.problem.gap_rate_m_per_s = run.problem.grid.field(rate);
     run.problem.boundary_y = periodic ? lub::BoundaryY::periodic : lub::BoundaryY::ambient;
     run.problem.inlet_pressure_Pa = p_in;
     run.problem.outlet_pressure_Pa = p_out;
     run.geometry.update({{"file", gap_path.string()}, {"dx_m", dx}, {"dy_m", dy}, {"gap_rate_m_per_s", rate}});
   } else {
     // Upper surface: the worn slider; lower: the disc (Appendix V). Both Gaussian, the same
-    // spectrum shape, independent seeds (upper = seed + 1). Rigid surfaces at `mean_gap_m`, or
-    // pressed together by `contact_load_N` on an elastic(-plastic) periodic half-space
-    // (contact/normal_contact.h) — the film then fills the deformed gap.
+    // spectrum shape, independent seeds (upper = seed + 1), placed by lubrication::rough_pair_film.
     const bool rigid = g->has("mean_gap_m");
     if (rigid == g->has("contact_load_N"))
       g->fail("mean_gap_m", "give exactly one of mean_gap_m (rigid surfaces) and contact_load_N (deformed by contact)");
-    const double mean_gap = rigid ? g->required_number("mean_gap_m", Range::positive) : 0.0;
-    const double contact_load = rigid ? 0.0 : g->required_number("contact_load_N", Range::positive);
-    const double e_star = g->number("composite_modulus_Pa", contact::composite_modulus_Pa(206.8e9, 0.3, 206.8e9, 0.3),
-                                    Range::positive);
-    const double hardness = g->number("hardness_Pa", std::numeric_limits<double>::infinity(), Range::positive);
-    const double floor_fraction = g->number("contact_gap_fraction", 1e-3, Range::positive);
+    lub::RoughPairFilmOptions placement;
+    if (rigid)
+      placement.mean_gap_m = g->required_number("mean_gap_m", Range::positive);
+    else
+      placement.contact_load_N = g->required_number("contact_load_N", Range::positive);
+    placement.composite_modulus_Pa = g->number("composite_modulus_Pa", placement.composite_modulus_Pa, Range::positive);
+    placement.hardness_Pa = g->number("hardness_Pa", placement.hardness_Pa, Range::positive);
+    placement.contact_gap_fraction = g->number("contact_gap_fraction", placement.contact_gap_fraction, Range::positive);
+    // With one placement and positive values read, only the floor fraction's upper bound is left.
+    if (std::string why; !placement.is_valid(&why)) g->fail("contact_gap_fraction", why);
     const double upper_rq = g->number("upper_rms_height_m", kSliderRq_m, Range::non_negative);
     contact::GaussianSurfaceParams p = read_surface(*g, "lower_rms_height_m", kDiscRq_m, n, 1e-3);
-    const double lower_rq = p.rms_height_m;
     const Eigen::ArrayXXd lower = contact::gaussian_surface(p);
     Eigen::ArrayXXd upper = Eigen::ArrayXXd::Zero(lower.rows(), lower.cols());
     if (upper_rq > 0) {
@@ -168,49 +167,27 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
       q.seed = p.seed + 1;
       upper = contact::gaussian_surface(q);
     }
-    const double sigma = std::hypot(upper_rq, lower_rq);
-    std::vector<double> h;
-    std::size_t touching = 0;
-    if (rigid) {
-      std::vector<double> up(upper.data(), upper.data() + upper.size()), lo(lower.data(), lower.data() + lower.size());
-      h = input_guard(*g, "mean_gap_m", [&] {
-        return lub::rough_pair_gap_m(up, lo, mean_gap, floor_fraction * sigma, &touching);
-      });
-    } else {
-      // Separation s = const + upper − lower; as a rigid profile against a flat its initial gap is
-      // s − min s, i.e. gap_from_heights(lower − upper).
-      contact::ElasticHalfSpace halfspace(contact::Grid{n, n, p.size_m, p.size_m}, e_star, true);
-      contact::NormalContactOptions copt;
-      copt.pressure_cap_Pa = hardness;
-      const Eigen::ArrayXXd gap0 = contact::gap_from_heights(lower - upper);
-      const contact::NormalContactResult c =
-          input_guard(*g, "contact_load_N", [&] { return contact::solve_normal_load(halfspace, gap0, contact_load, copt); });
+    const lub::RoughPairFilm film = input_guard(*g, rigid ? "mean_gap_m" : "contact_load_N", [&] {
+      return lub::rough_pair_film(upper, lower, p.size_m, placement);
+    });
+    if (film.contact) {
+      const contact::NormalContactResult& c = *film.contact;
       if (!c.summary.converged) g->fail("contact_load_N", "contact solve did not converge: " + c.summary.message);
-      h.resize(static_cast<std::size_t>(c.gap_m.size()));
-      for (Eigen::Index k = 0; k < c.gap_m.size(); ++k) {
-        h[static_cast<std::size_t>(k)] = std::max(c.gap_m(k), floor_fraction * sigma);
-        if (c.gap_m(k) < floor_fraction * sigma) ++touching;
-      }
-      run.geometry.update({{"contact_load_N", contact_load},
-                           {"composite_modulus_Pa", e_star},
+      run.geometry.update({{"contact_load_N", *placement.contact_load_N},
+                           {"composite_modulus_Pa", placement.composite_modulus_Pa},
                            {"contact_area_fraction", c.area_fraction},
                            {"contact_mean_gap_m", c.mean_gap_m},
                            {"contact_iterations", c.summary.iterations}});
+    } else {
+      run.geometry["mean_gap_m"] = *placement.mean_gap_m;
     }
-    // The periodic surface wraps along x: one more node closes the period for the p = 0 ends.
-    run.problem.grid = lub::Grid{n + 1, n, p.size_m / n, p.size_m / n};
-    run.problem.gap_m.resize(run.problem.grid.size());
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i <= n; ++i)
-        run.problem.gap_m[run.problem.grid.index(i, j)] = h[static_cast<std::size_t>(j) * n + (i % n)];
-    run.problem.boundary_y = lub::BoundaryY::periodic;
-    if (rigid) run.geometry["mean_gap_m"] = mean_gap;
+    run.problem = film.problem;
     run.geometry.update({{"rigid", rigid},
-                         {"composite_rms_height_m", sigma},
+                         {"composite_rms_height_m", film.composite_rms_height_m},
                          {"upper_rms_height_m", upper_rq},
-                         {"lower_rms_height_m", lower_rq},
+                         {"lower_rms_height_m", p.rms_height_m},
                          {"size_m", p.size_m},
-                         {"contact_nodes", touching}});
+                         {"contact_nodes", film.contact_nodes}});
   }
   g->finish();
   root.finish();
@@ -220,11 +197,6 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
   run.problem.cavitation = cavitation;
   input_guard(root, "geometry", [&] { lub::validate(run.problem); return 0; });
   return run;
-}
-
-// Field (i along x, j along y) as an nx × ny array for write_npy.
-Eigen::ArrayXXd as_array(const lub::Grid& g, const std::vector<double>& v) {
-  return Eigen::Map<const Eigen::ArrayXXd>(v.data(), g.nx, g.ny);
 }
 
 void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayXXd& a) {
@@ -244,7 +216,7 @@ void run_reynolds(const Args& args) {
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
   const lub::ReynoldsSolution s = lub::solve_reynolds(run.problem, run.options);
-  const lub::Grid& g = run.problem.grid;
+  const contact::Grid& g = run.problem.grid;
   nlohmann::json j;
   j["load_N"] = s.load_N;
   j["max_pressure_Pa"] = s.max_pressure_Pa;
@@ -268,9 +240,9 @@ void run_reynolds(const Args& args) {
   }
   j["fields"] = {{"pressure_Pa", "pressure_Pa.npy"}, {"fill_fraction", "fill_fraction.npy"}, {"gap_m", "gap_m.npy"},
                  {"layout", "float64 array of shape (nx, ny): a[i, j] at x = i dx, y = j dy"}};
-  write_npy_atomically(dir / "pressure_Pa.npy", as_array(g, s.pressure_Pa));
-  write_npy_atomically(dir / "fill_fraction.npy", as_array(g, s.fill_fraction));
-  write_npy_atomically(dir / "gap_m.npy", as_array(g, run.problem.gap_m));
+  write_npy_atomically(dir / "pressure_Pa.npy", s.pressure_Pa);
+  write_npy_atomically(dir / "fill_fraction.npy", s.fill_fraction);
+  write_npy_atomically(dir / "gap_m.npy", run.problem.gap_m);
   write_file_atomically(dir / "reynolds.json", j.dump(2) + "\n");
   std::printf("%s: load %.6g N, max pressure %.6g Pa, cavitated %.3g, %d iterations, %.3f s -> %s\n", run.kind.c_str(),
               s.load_N, s.max_pressure_Pa, s.cavitated_fraction, s.summary.iterations, s.summary.wall_s,

@@ -87,7 +87,7 @@ void solve_bench(benchmark::State& state, bool plastic) {
   omp_set_num_threads(threads);
   const Eigen::ArrayXXd z = bench_surface(n);
   const double slope = surface_statistics(z, 1.0, 1.0).rms_slope;
-  const Grid grid{n, n, 1.0, 1.0};
+  const Grid grid = Grid::patch(n, n, 1.0, 1.0);
   ElasticHalfSpace hs(grid, 1.0, true, threads);
   const Eigen::ArrayXXd h = gap_from_heights(z);
   // A ≈ κ W/(E* h'), κ ≈ 2.2: a mean pressure 0.045 E* h' gives ≈ 10 % contact.

@@ -21,13 +21,13 @@ namespace lub = tribo::lubrication;
 lub::ReynoldsProblem textured(int n, lub::Cavitation cavitation) {
   lub::ReynoldsProblem pr;
   const double length = 1e-3, wavelength = length / 4;
-  pr.grid = lub::Grid{n + 1, n, length / n, length / n};
-  pr.gap_m.resize(pr.grid.size());
+  pr.grid = tribo::contact::Grid{n + 1, n, length / n, length / n};
+  pr.gap_m = pr.grid.field();
   for (int j = 0; j < n; ++j)
     for (int i = 0; i <= n; ++i) {
       const double kx = 2 * std::numbers::pi * i * pr.grid.dx_m / wavelength;
       const double ky = 2 * std::numbers::pi * j * pr.grid.dy_m / wavelength;
-      pr.gap_m[pr.grid.index(i, j)] = 1e-6 * (1.0 + 0.4 * std::cos(kx) * std::cos(ky));
+      pr.gap_m(i, j) = 1e-6 * (1.0 + 0.4 * std::cos(kx) * std::cos(ky));
     }
   pr.sliding_speed_m_per_s = 1.0;
   pr.boundary_y = lub::BoundaryY::periodic;

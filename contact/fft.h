@@ -1,8 +1,8 @@
 // Move-only owner of a pair of FFTW plans for a real 2-D grid (r2c forward, c2r inverse).
 //
-// Layout, stated once for all of contact/: a field on an nx × ny grid is an Eigen::ArrayXXd with
-// nx rows (x, index i) and ny columns (y, index j), column-major, so x is the contiguous index.
-// FFTW sees it as a row-major array [ny][nx]; the r2c spectrum is therefore [ny][nx/2 + 1]:
+// Layout: a field on an nx × ny grid is an Eigen::ArrayXXd with nx rows (x, index i) and ny
+// columns (y, index j), column-major, so x is the contiguous index (contact/grid.h). FFTW sees
+// it as a row-major array [ny][nx]; the r2c spectrum is therefore [ny][nx/2 + 1]:
 //   spectrum[j * (nx/2 + 1) + k] = Σ_{i,j'} f(i, j') exp(−2πi (k i / nx + j j' / ny))
 // with wavenumbers q_x = 2π k / L_x (k = 0..nx/2) and q_y = 2π j̃ / L_y, j̃ = j for j ≤ ny/2,
 // j − ny otherwise. Neither direction is normalised: inverse(forward(f)) = nx · ny · f.

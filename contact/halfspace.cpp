@@ -30,16 +30,6 @@ int fft_threads(const Grid& g, bool periodic, int requested) {
 
 }  // namespace
 
-void validate(const Grid& g) {
-  if (g.nx < 1 || g.ny < 1) {
-    throw std::invalid_argument("grid must have at least 1 point per side, got " + std::to_string(g.nx) + " x " +
-                                std::to_string(g.ny));
-  }
-  if (!(std::isfinite(g.lx_m) && g.lx_m > 0.0 && std::isfinite(g.ly_m) && g.ly_m > 0.0)) {
-    throw std::invalid_argument("domain size must be positive and finite");
-  }
-}
-
 double composite_modulus_Pa(double e1, double nu1, double e2, double nu2) {
   auto compliance = [](double e, double nu, const char* which) {
     if (!(e > 0.0) || std::isnan(e)) throw std::invalid_argument(std::string("Young's modulus of ") + which + " must be positive");
@@ -64,7 +54,7 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
   const double inv_size = 1.0 / static_cast<double>(mx * my);
   kernel_.resize(mxh * my);
   if (periodic) {
-    const double dqx = 2.0 * std::numbers::pi / grid.lx_m, dqy = 2.0 * std::numbers::pi / grid.ly_m;
+    const double dqx = 2.0 * std::numbers::pi / grid.period_x_m(), dqy = 2.0 * std::numbers::pi / grid.period_y_m();
     for (Eigen::Index j = 0; j < my; ++j) {
       const double qy = dqy * static_cast<double>(signed_frequency(j, my));
       for (Eigen::Index k = 0; k < mxh; ++k) {
@@ -82,14 +72,14 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
     }
     self_compliance_ = sum;
   } else {
-    const double a = 0.5 * grid.dx_m(), b = 0.5 * grid.dy_m();
+    const double a = 0.5 * grid.dx_m, b = 0.5 * grid.dy_m;
     auto real = fft_.real();
     // Wrapped offsets: index i ↔ offset i for i < nx, i − 2nx above; the padding row/column at
     // exactly ±nx is never reached by a convolution restricted to the nx × ny patch.
     for (Eigen::Index j = 0; j < my; ++j) {
-      const double y = grid.dy_m() * static_cast<double>(signed_frequency(j, my));
+      const double y = grid.dy_m * static_cast<double>(signed_frequency(j, my));
       for (Eigen::Index i = 0; i < mx; ++i) {
-        const double x = grid.dx_m() * static_cast<double>(signed_frequency(i, mx));
+        const double x = grid.dx_m * static_cast<double>(signed_frequency(i, mx));
         real(i, j) = love_influence(x, y, a, b, e_star_Pa);
       }
     }

@@ -18,21 +18,9 @@
 #include <Eigen/Core>
 
 #include "contact/fft.h"
+#include "contact/grid.h"
 
 namespace tribo::contact {
-
-// A grid of nx × ny cells covering L_x × L_y (cell centres at ((i + ½) Δx, (j + ½) Δy)).
-struct Grid {
-  Eigen::Index nx = 0, ny = 0;
-  double lx_m = 0.0, ly_m = 0.0;
-  double dx_m() const { return lx_m / static_cast<double>(nx); }
-  double dy_m() const { return ly_m / static_cast<double>(ny); }
-  double cell_area_m2() const { return dx_m() * dy_m(); }
-  double area_m2() const { return lx_m * ly_m; }
-};
-
-// Throws std::invalid_argument naming the bad field (sizes < 1, non-positive or non-finite sides).
-void validate(const Grid& grid);
 
 // thesis Appendix I materials combine as 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂; a rigid body has E = ∞.
 double composite_modulus_Pa(double e1_Pa, double nu1, double e2_Pa, double nu2);

@@ -18,7 +18,7 @@ constexpr Eigen::Index kParallelMinCells = Eigen::Index{1} << 15;
 
 void check_field(const ElasticHalfSpace& hs, const Eigen::ArrayXXd& f, const char* name) {
   const Grid& g = hs.grid();
-  if (f.rows() != g.nx || f.cols() != g.ny) {
+  if (!g.holds(f)) {
     throw std::invalid_argument(std::string(name) + " is " + std::to_string(f.rows()) + " x " +
                                 std::to_string(f.cols()) + " but the half-space grid is " + std::to_string(g.nx) +
                                 " x " + std::to_string(g.ny));
@@ -345,11 +345,11 @@ Eigen::ArrayXXd gap_from_heights(const Eigen::ArrayXXd& z) {
 Eigen::ArrayXXd sphere_gap(const Grid& grid, double radius_m) {
   validate(grid);
   if (!(std::isfinite(radius_m) && radius_m > 0.0)) throw std::invalid_argument("sphere radius_m must be positive");
-  Eigen::ArrayXXd h(grid.nx, grid.ny);
+  Eigen::ArrayXXd h = grid.field();
   for (Eigen::Index j = 0; j < grid.ny; ++j) {
-    const double y = (static_cast<double>(j) + 0.5) * grid.dy_m() - 0.5 * grid.ly_m;
+    const double y = (static_cast<double>(j) + 0.5) * grid.dy_m - 0.5 * grid.period_y_m();
     for (Eigen::Index i = 0; i < grid.nx; ++i) {
-      const double x = (static_cast<double>(i) + 0.5) * grid.dx_m() - 0.5 * grid.lx_m;
+      const double x = (static_cast<double>(i) + 0.5) * grid.dx_m - 0.5 * grid.period_x_m();
       h(i, j) = (x * x + y * y) / (2.0 * radius_m);
     }
   }

@@ -82,7 +82,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
         std::to_string(r.first_contact_separation_m / sigma) + "; add a larger one");
 
   // Solid: the rigid film is h̄ + z, so as a profile against a flat gap0 = z − min z and δ = −min z − h̄.
-  const contact::Grid grid{z.rows(), z.cols(), side, side};
+  const contact::Grid grid = contact::Grid::patch(z.rows(), z.cols(), side, side);
   contact::ElasticHalfSpace halfspace(grid, o.e_star_Pa, true, 1);
   const Eigen::ArrayXXd gap0 = z - z.minCoeff();
   contact::NormalContactOptions bem;

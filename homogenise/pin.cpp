@@ -49,22 +49,21 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   lubrication::ReynoldsSolver solver;
   for (double centre : t.separation_m) {
     lubrication::ReynoldsProblem pr = lubrication::parallel_discs_problem(radius, centre, 0.0, 1.0, 1.0, n);
-    const lubrication::Grid& g = pr.grid;
+    const contact::Grid& g = pr.grid;
     const double cx = pr.disc->centre_x_m, cy = pr.disc->centre_y_m;
-    std::vector<double> h(g.size());
-    pr.pressure_flow_factor_x.resize(g.size());
-    pr.pressure_flow_factor_y.resize(g.size());
-    pr.couette_film_m.resize(g.size());
+    Eigen::ArrayXXd h = g.field();
+    pr.pressure_flow_factor_x = g.field();
+    pr.pressure_flow_factor_y = g.field();
+    pr.couette_film_m = g.field();
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
-        const std::size_t k = g.index(i, j);
         const double r2 = std::pow(i * g.dx_m - cx, 2) + std::pow(j * g.dy_m - cy, 2);
-        h[k] = centre + (o.pin.shape == PinShape::spherical ? r2 / (2.0 * o.pin.crown_radius_m) : 0.0);
-        pr.gap_m[k] = h[k];
-        pr.pressure_flow_factor_x[k] = phix(h[k]);
-        pr.pressure_flow_factor_y[k] = phiy(h[k]);
-        pr.couette_film_m[k] = std::max(mean_film(h[k]) - sigma * phis(h[k]), 0.0);
+        h(i, j) = centre + (o.pin.shape == PinShape::spherical ? r2 / (2.0 * o.pin.crown_radius_m) : 0.0);
+        pr.pressure_flow_factor_x(i, j) = phix(h(i, j));
+        pr.pressure_flow_factor_y(i, j) = phiy(h(i, j));
+        pr.couette_film_m(i, j) = std::max(mean_film(h(i, j)) - sigma * phis(h(i, j)), 0.0);
       }
+    pr.gap_m = h;
     // Wedge: steady sliding at ηU = 1 with cavitation.
     pr.cavitation = lubrication::Cavitation::mass_conserving;
     const lubrication::ReynoldsSolution wedge = solver.solve(pr);
@@ -72,8 +71,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     lubrication::ReynoldsProblem sq = pr;
     sq.sliding_speed_m_per_s = 0.0;
     sq.cavitation = lubrication::Cavitation::none;
-    sq.gap_rate_m_per_s.assign(g.size(), 0.0);
-    for (std::size_t k = 0; k < g.size(); ++k) sq.gap_rate_m_per_s[k] = -film_slope(h[k]);
+    sq.gap_rate_m_per_s = h.unaryExpr([&](double hk) { return -film_slope(hk); });
     const lubrication::ReynoldsSolution squeeze = solver.solve(sq);
     for (const auto* s : {&wedge, &squeeze})
       if (!s->summary.converged) {
@@ -82,15 +80,12 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
       }
 
     // Face integrals over the wetted nodes, weights scaled so they sum to πR² exactly.
-    double weight_sum = 0;
-    for (std::size_t k = 0; k < g.size(); ++k) weight_sum += wedge.wetted[k] ? 1.0 : 0.0;
-    const double w = pin.nominal_area_m2 / weight_sum;
+    const double w = pin.nominal_area_m2 / static_cast<double>(wedge.wetted.count());
     double ns = 0, ns_se = 0, a = 0, a_se = 0, rug = 0, shear = 0;
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
-        const std::size_t k = g.index(i, j);
-        if (!wedge.wetted[k]) continue;
-        const double hk = h[k];
+        if (!wedge.wetted(i, j)) continue;
+        const double hk = h(i, j);
         ns += w * ps(hk);
         ns_se += w * ps_err(hk);
         a += w * ar(hk);
@@ -98,7 +93,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
         rug += w * lift(hk);
         // Central difference of the wedge pressure (ambient 0 beyond the rim).
         const auto p_at = [&](int ii) {
-          return ii >= 0 && ii < g.nx && wedge.wetted[g.index(ii, j)] ? wedge.pressure_Pa[g.index(ii, j)] : 0.0;
+          return ii >= 0 && ii < g.nx && wedge.wetted(ii, j) ? wedge.pressure_Pa(ii, j) : 0.0;
         };
         const double dpdx = (p_at(i + 1) - p_at(i - 1)) / (2.0 * g.dx_m);
         shear += w * (phif(hk) / hk - phifp(hk) * 0.5 * hk * dpdx);

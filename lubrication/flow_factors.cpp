@@ -1,5 +1,6 @@
 #include "lubrication/flow_factors.h"
 
+#include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
 
 #include <omp.h>
@@ -15,33 +16,23 @@ namespace {
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("homogenisation: " + what); }
 
-// Reynolds cell over one period of the surface: n + 1 nodes along the flow (x = L wraps to 0),
-// n nodes across it (periodic). `transposed` swaps the surface axes (flow along the surface's y).
+// Reynolds cell over one period of the surface (periodic_film_cell) on the film
+// max(h + z, floor). `transposed` swaps the surface axes (flow along the surface's y).
 ReynoldsProblem cell_problem(const Eigen::ArrayXXd& z, double size_m, double nominal_gap_m, double floor_m,
                              bool transposed, double viscosity_Pa_s, std::size_t* touching) {
-  const int n = static_cast<int>(z.rows());
-  ReynoldsProblem pr;
-  pr.grid = Grid{n + 1, n, size_m / n, size_m / n};
-  pr.gap_m.resize(pr.grid.size());
-  std::size_t count = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const double h = nominal_gap_m + (transposed ? z(j, i % n) : z(i % n, j));
-      pr.gap_m[pr.grid.index(i, j)] = std::max(h, floor_m);
-      if (i < n && h <= floor_m) ++count;
-    }
-  if (touching) *touching = count;
+  const Eigen::ArrayXXd h = nominal_gap_m + (transposed ? Eigen::ArrayXXd(z.transpose()) : z);
+  if (touching) *touching = static_cast<std::size_t>((h <= floor_m).count());
+  ReynoldsProblem pr = periodic_film_cell(h.max(floor_m), size_m);
   pr.viscosity_Pa_s = viscosity_Pa_s;
-  pr.boundary_y = BoundaryY::periodic;
   return pr;
 }
 
 // Mean local film h̄_T over one period (the wrapped column counted once).
 double mean_film_m(const ReynoldsProblem& pr) {
   double sum = 0;
-  for (int j = 0; j < pr.grid.ny; ++j)
-    for (int i = 0; i + 1 < pr.grid.nx; ++i) sum += pr.gap_m[pr.grid.index(i, j)];
-  return sum / ((pr.grid.nx - 1) * pr.grid.ny);
+  for (Eigen::Index j = 0; j < pr.grid.ny; ++j)
+    for (Eigen::Index i = 0; i + 1 < pr.grid.nx; ++i) sum += pr.gap_m(i, j);
+  return sum / static_cast<double>((pr.grid.nx - 1) * pr.grid.ny);
 }
 
 // Mean shears on the stationary (rough) wall of a solved cell, over the n × n surface nodes (the
@@ -55,17 +46,16 @@ struct WallShear {
 };
 
 WallShear stationary_wall_shear(const ReynoldsProblem& pr, const ReynoldsSolution& s, double floor_m) {
-  const Grid& g = pr.grid;
-  const int n = g.nx - 1;
-  const std::vector<double> q = x_face_flow_m2_per_s(pr, s);
+  const contact::Grid& g = pr.grid;
+  const Eigen::Index n = g.nx - 1;
+  const Eigen::ArrayXXd q = x_face_flow_m2_per_s(pr, s);
   const double eta = pr.viscosity_Pa_s, u = pr.sliding_speed_m_per_s;
   WallShear w;
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i < n; ++i) {
-      const double h = pr.gap_m[g.index(i, j)];
+  for (Eigen::Index j = 0; j < g.ny; ++j)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const double h = pr.gap_m(i, j);
       if (h <= floor_m) continue;
-      const std::size_t row = static_cast<std::size_t>(j) * n;
-      const double qbar = 0.5 * (q[row + (i + n - 1) % n] + q[row + i]);
+      const double qbar = 0.5 * (q((i + n - 1) % n, j) + q(i, j));
       w.couette_Pa += eta * u / h;
       w.pressure_Pa += 6.0 * eta * (0.5 * u * h - qbar) / (h * h);
     }

@@ -14,9 +14,9 @@ ReynoldsProblem parallel_discs_problem(double radius_m, double gap_m, double gap
     throw std::invalid_argument("parallel discs: radius_m must be finite and > 0");
   ReynoldsProblem pr;
   const double d = 2.0 * radius_m / (n - 3);
-  pr.grid = Grid{n, n, d, d};
-  pr.gap_m.assign(pr.grid.size(), gap_m);
-  pr.gap_rate_m_per_s.assign(pr.grid.size(), gap_rate_m_per_s);
+  pr.grid = contact::Grid{n, n, d, d};
+  pr.gap_m = pr.grid.field(gap_m);
+  pr.gap_rate_m_per_s = pr.grid.field(gap_rate_m_per_s);
   pr.viscosity_Pa_s = viscosity_Pa_s;
   pr.sliding_speed_m_per_s = sliding_speed_m_per_s;
   const double c = 0.5 * (n - 1) * d;
@@ -24,28 +24,50 @@ ReynoldsProblem parallel_discs_problem(double radius_m, double gap_m, double gap
   return pr;
 }
 
-std::vector<double> rough_pair_gap_m(const std::vector<double>& upper, const std::vector<double>& lower,
-                                     double mean_gap_m, double min_gap_m, std::size_t* contact_nodes) {
-  if (upper.size() != lower.size() || upper.empty())
+namespace {
+
+// Mean of a field, summed in storage order.
+double mean(const Eigen::ArrayXXd& f) {
+  return std::accumulate(f.data(), f.data() + f.size(), 0.0) / static_cast<double>(f.size());
+}
+
+}  // namespace
+
+Eigen::ArrayXXd rough_pair_gap_m(const Eigen::ArrayXXd& upper, const Eigen::ArrayXXd& lower, double mean_gap_m,
+                                 double min_gap_m, std::size_t* contact_nodes) {
+  if (upper.rows() != lower.rows() || upper.cols() != lower.cols() || upper.size() == 0)
     throw std::invalid_argument("rough pair: the two surfaces must be non-empty and on the same grid");
   if (!(std::isfinite(mean_gap_m) && mean_gap_m > 0)) throw std::invalid_argument("rough pair: mean_gap_m must be > 0");
   if (!(std::isfinite(min_gap_m) && min_gap_m > 0 && min_gap_m < mean_gap_m))
     throw std::invalid_argument("rough pair: min_gap_m must be in (0, mean_gap_m)");
-  const double n = static_cast<double>(upper.size());
-  const double mu = std::accumulate(upper.begin(), upper.end(), 0.0) / n;
-  const double ml = std::accumulate(lower.begin(), lower.end(), 0.0) / n;
-  std::vector<double> h(upper.size());
+  if (!upper.allFinite() || !lower.allFinite()) throw std::invalid_argument("rough pair: non-finite height");
+  const double mu = mean(upper), ml = mean(lower);
+  Eigen::ArrayXXd h(upper.rows(), upper.cols());
   std::size_t touching = 0;
-  for (std::size_t k = 0; k < h.size(); ++k) {
-    if (!std::isfinite(upper[k]) || !std::isfinite(lower[k])) throw std::invalid_argument("rough pair: non-finite height");
-    h[k] = mean_gap_m + (upper[k] - mu) - (lower[k] - ml);
-    if (h[k] < min_gap_m) {
-      h[k] = min_gap_m;
+  for (Eigen::Index k = 0; k < h.size(); ++k) {
+    h(k) = mean_gap_m + (upper(k) - mu) - (lower(k) - ml);
+    if (h(k) < min_gap_m) {
+      h(k) = min_gap_m;
       ++touching;
     }
   }
   if (contact_nodes) *contact_nodes = touching;
   return h;
+}
+
+ReynoldsProblem periodic_film_cell(const Eigen::ArrayXXd& film, double size_m) {
+  const Eigen::Index n = film.rows();
+  if (n < 3 || film.cols() != n)
+    throw std::invalid_argument("periodic film cell: the film must be n x n with n >= 3 (got " +
+                                std::to_string(film.rows()) + " x " + std::to_string(film.cols()) + ")");
+  if (!(std::isfinite(size_m) && size_m > 0)) throw std::invalid_argument("periodic film cell: size_m must be > 0");
+  ReynoldsProblem pr;
+  pr.grid = contact::Grid{n + 1, n, size_m / static_cast<double>(n), size_m / static_cast<double>(n)};
+  pr.gap_m.resize(n + 1, n);
+  pr.gap_m.topRows(n) = film;
+  pr.gap_m.row(n) = film.row(0);
+  pr.boundary_y = BoundaryY::periodic;
+  return pr;
 }
 
 bool RoughPairFilmOptions::is_valid(std::string* why) const {
@@ -88,37 +110,25 @@ RoughPairFilm rough_pair_film(const Eigen::ArrayXXd& upper, const Eigen::ArrayXX
   film.composite_rms_height_m = std::hypot(rq(upper), rq(lower));
   film.floor_m = o.contact_gap_fraction * film.composite_rms_height_m;
   if (!(film.floor_m > 0)) bad("both surfaces are flat: the film floor (a fraction of the rms height) is zero");
-  // h per surface node, column-major as the arrays: (i, j) at j·n + i, i along x.
-  std::vector<double> h;
+  // The film h on the n × n surface grid.
+  Eigen::ArrayXXd h;
   if (o.mean_gap_m) {
     if (!(*o.mean_gap_m > film.floor_m)) bad("mean_gap_m must exceed the film floor contact_gap_fraction * sigma");
-    const std::vector<double> up(upper.data(), upper.data() + upper.size());
-    const std::vector<double> lo(lower.data(), lower.data() + lower.size());
-    h = rough_pair_gap_m(up, lo, *o.mean_gap_m, film.floor_m, &film.contact_nodes);
+    h = rough_pair_gap_m(upper, lower, *o.mean_gap_m, film.floor_m, &film.contact_nodes);
   } else {
     // Separation s = const + upper − lower; as a rigid profile against a flat its initial gap is
     // s − min s, i.e. gap_from_heights(lower − upper).
-    contact::ElasticHalfSpace halfspace(contact::Grid{n, n, size_m, size_m}, o.composite_modulus_Pa, true);
+    contact::ElasticHalfSpace halfspace(contact::Grid::patch(n, n, size_m, size_m), o.composite_modulus_Pa, true);
     contact::NormalContactOptions copt = o.contact;
     copt.pressure_cap_Pa = o.hardness_Pa;
     const Eigen::ArrayXXd gap0 = contact::gap_from_heights(lower - upper);
     film.contact = contact::solve_normal_load(halfspace, gap0, *o.contact_load_N, copt);
     const Eigen::ArrayXXd& g = film.contact->gap_m;
-    h.resize(static_cast<std::size_t>(g.size()));
-    for (Eigen::Index k = 0; k < g.size(); ++k) {
-      h[static_cast<std::size_t>(k)] = std::max(g(k), film.floor_m);
-      if (g(k) < film.floor_m) ++film.contact_nodes;
-    }
+    h = g.max(film.floor_m);
+    film.contact_nodes = static_cast<std::size_t>((g < film.floor_m).count());
   }
-  film.mean_film_m = std::accumulate(h.begin(), h.end(), 0.0) / static_cast<double>(h.size());
-  // The periodic surface wraps along x: one more node closes the period for the p = 0 ends.
-  const int m = static_cast<int>(n);
-  ReynoldsProblem& pr = film.problem;
-  pr.grid = Grid{m + 1, m, size_m / m, size_m / m};
-  pr.gap_m.resize(pr.grid.size());
-  for (int j = 0; j < m; ++j)
-    for (int i = 0; i <= m; ++i) pr.gap_m[pr.grid.index(i, j)] = h[static_cast<std::size_t>(j) * m + (i % m)];
-  pr.boundary_y = BoundaryY::periodic;
+  film.mean_film_m = mean(h);
+  film.problem = periodic_film_cell(h, size_m);
   return film;
 }
 

@@ -9,11 +9,14 @@
 //                      the mean gap. Where this falls below `min_gap_m` the surfaces touch; the
 //                      gap is floored there (the contact spots carry the load elastically, and
 //                      the Reynolds flux through them is negligible as h³ → 0).
-//   rough pair film  — the Reynolds cell of a periodic rough pair (rough_pair_film): rigid at a
-//                      mean gap, or pressed together by a solid load on an elastic(-plastic)
-//                      periodic half-space (contact/normal_contact.h) with the film filling the
-//                      deformed gap. The n × n surfaces wrap along x: the grid has n + 1 nodes
-//                      along x (x = L ≡ 0, for p prescribed at both ends) and n across, periodic.
+//   periodic cell    — an n × n periodic film on a patch of side L as a Reynolds problem
+//                      (periodic_film_cell): the film wraps along x, so the grid has n + 1 nodes
+//                      along x (x = L ≡ 0, for p prescribed at both ends) and n across, periodic,
+//                      at the surface's spacing L/n (contact/grid.h).
+//   rough pair film  — the periodic cell of a rough pair (rough_pair_film): rigid at a mean gap,
+//                      or pressed together by a solid load on an elastic(-plastic) periodic
+//                      half-space (contact/normal_contact.h) with the film filling the deformed
+//                      gap (`tribo reynolds` geometry kind "rough_pair").
 #pragma once
 
 #include "contact/normal_contact.h"
@@ -24,17 +27,20 @@
 #include <limits>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace tribo::lubrication {
 
 ReynoldsProblem parallel_discs_problem(double radius_m, double gap_m, double gap_rate_m_per_s, double viscosity_Pa_s,
                                        double sliding_speed_m_per_s, int n);
 
-// h = h̄ + (z₁ − mean z₁) − (z₂ − mean z₂), floored at min_gap_m; z fields row-major as the grid.
-// Returns the number of floored (contacting) nodes through `contact_nodes` when non-null.
-std::vector<double> rough_pair_gap_m(const std::vector<double>& upper_height_m, const std::vector<double>& lower_height_m,
-                                     double mean_gap_m, double min_gap_m, std::size_t* contact_nodes = nullptr);
+// h = h̄ + (z₁ − mean z₁) − (z₂ − mean z₂), floored at min_gap_m, on the grid of the two height
+// fields. Returns the number of floored (contacting) nodes through `contact_nodes` when non-null.
+Eigen::ArrayXXd rough_pair_gap_m(const Eigen::ArrayXXd& upper_height_m, const Eigen::ArrayXXd& lower_height_m,
+                                 double mean_gap_m, double min_gap_m, std::size_t* contact_nodes = nullptr);
+
+// The Reynolds cell of an n × n periodic film h (rows along x, n ≥ 3) on a patch of side size_m:
+// grid (n + 1) × n at spacing size_m/n, gap(i, j) = h(i mod n, j), periodic y; nothing else set.
+ReynoldsProblem periodic_film_cell(const Eigen::ArrayXXd& film_m, double size_m);
 
 // How the two rough surfaces of rough_pair_film are placed. Exactly one of mean_gap_m and
 // contact_load_N is given.
@@ -60,7 +66,7 @@ struct RoughPairFilmOptions {
 };
 
 struct RoughPairFilm {
-  ReynoldsProblem problem;            // grid (n + 1) × n, gap_m, periodic y; nothing else set
+  ReynoldsProblem problem;            // periodic_film_cell of the film: nothing else set
   std::size_t contact_nodes = 0;      // surface nodes (of n × n) where the film is at the floor
   double composite_rms_height_m = 0;  // σ = √(Rq(upper)² + Rq(lower)²), each about its mean
   double floor_m = 0;                 // contact_gap_fraction · σ

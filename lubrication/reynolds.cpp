@@ -7,6 +7,7 @@
 #include <deque>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace tribo::lubrication {
 namespace {
@@ -20,7 +21,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 enum class LinkKind { unknown, dirichlet, rim };
 struct Link {
   LinkKind kind;
-  std::size_t node;    // neighbour node N (outside the film for rim links)
+  Eigen::Index node;   // neighbour node N (outside the film for rim links)
   int unknown;         // unknown index of N, or −1
   double theta;        // fraction of the spacing to the boundary value (1 except rim links)
   double value_Pa;     // boundary pressure for dirichlet and rim links
@@ -31,11 +32,11 @@ struct Link {
 // Grid topology: which nodes are unknowns, and the four links of each.
 struct Topology {
   std::vector<int> unknown_of;             // per node, −1 where p is prescribed
-  std::vector<std::size_t> node_of;        // per unknown
+  std::vector<Eigen::Index> node_of;       // per unknown
   std::vector<std::array<Link, 4>> links;  // per unknown
-  std::vector<bool> wetted;                // per node
-  std::vector<double> boundary_Pa;         // per node, prescribed p (0 inside)
-  std::vector<double> weight_m2;           // per node, load-integration weight
+  Eigen::ArrayXX<bool> wetted;             // per node
+  Eigen::ArrayXXd boundary_Pa;             // per node, prescribed p (0 inside)
+  Eigen::ArrayXXd weight_m2;               // per node, load-integration weight
 };
 
 // Smallest fraction of a link kept between a node and the rim; nodes closer to the rim than
@@ -56,13 +57,13 @@ double rim_fraction(const DiscDomain& disc, double x, double y, double ex, doubl
 }
 
 Topology build_topology(const ReynoldsProblem& pr) {
-  const Grid& g = pr.grid;
+  const contact::Grid& g = pr.grid;
   const bool periodic = pr.boundary_y == BoundaryY::periodic && !pr.disc;
   Topology t;
   t.unknown_of.assign(g.size(), -1);
-  t.wetted.assign(g.size(), false);
-  t.boundary_Pa.assign(g.size(), 0.0);
-  t.weight_m2.assign(g.size(), 0.0);
+  t.wetted = Eigen::ArrayXX<bool>::Constant(g.nx, g.ny, false);
+  t.boundary_Pa = g.field();
+  t.weight_m2 = g.field();
   auto inside_disc = [&](int i, int j) {
     const double x = i * g.dx_m - pr.disc->centre_x_m, y = j * g.dy_m - pr.disc->centre_y_m;
     return x * x + y * y < pr.disc->radius_m * pr.disc->radius_m;
@@ -70,7 +71,7 @@ Topology build_topology(const ReynoldsProblem& pr) {
   const int dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
   for (int j = 0; j < g.ny; ++j)
     for (int i = 0; i < g.nx; ++i) {
-      const std::size_t n = g.index(i, j);
+      const Eigen::Index n = g.index(i, j);
       bool unknown;
       if (pr.disc) {
         unknown = inside_disc(i, j);
@@ -80,16 +81,16 @@ Topology build_topology(const ReynoldsProblem& pr) {
           const double len = d[0] ? g.dx_m : g.dy_m;
           if (rim_fraction(*pr.disc, i * g.dx_m, j * g.dy_m, d[0], d[1], len) < kMinRimFraction) unknown = false;
         }
-        t.wetted[n] = unknown;
+        t.wetted(n) = unknown;
       } else {
         const bool x_end = i == 0 || i == g.nx - 1;
         const bool y_end = !periodic && (j == 0 || j == g.ny - 1);
         unknown = !x_end && !y_end;
-        t.wetted[n] = true;
-        if (x_end && !y_end) t.boundary_Pa[n] = i == 0 ? pr.inlet_pressure_Pa : pr.outlet_pressure_Pa;
+        t.wetted(n) = true;
+        if (x_end && !y_end) t.boundary_Pa(n) = i == 0 ? pr.inlet_pressure_Pa : pr.outlet_pressure_Pa;
         const double wx = x_end ? 0.5 * g.dx_m : g.dx_m;
         const double wy = periodic ? g.dy_m : ((j == 0 || j == g.ny - 1) ? 0.5 * g.dy_m : g.dy_m);
-        t.weight_m2[n] = wx * wy;
+        t.weight_m2(n) = wx * wy;
       }
       if (unknown) {
         t.unknown_of[n] = static_cast<int>(t.node_of.size());
@@ -99,14 +100,14 @@ Topology build_topology(const ReynoldsProblem& pr) {
   if (t.node_of.empty()) bad("the film domain holds no interior grid node; refine the grid");
   t.links.resize(t.node_of.size());
   for (std::size_t u = 0; u < t.node_of.size(); ++u) {
-    const std::size_t n = t.node_of[u];
+    const Eigen::Index n = t.node_of[u];
     const int i = static_cast<int>(n % g.nx), j = static_cast<int>(n / g.nx);
     double len_x = 0;  // row length of the cell for the disc's load weights
     for (int k = 0; k < 4; ++k) {
       const int ni = i + dirs[k][0];
       int nj = j + dirs[k][1];
       if (periodic) nj = (nj + g.ny) % g.ny;
-      const std::size_t m = g.index(ni, nj);
+      const Eigen::Index m = g.index(ni, nj);
       const bool along_x = dirs[k][0] != 0;
       const double len = along_x ? g.dx_m : g.dy_m;
       Link link{LinkKind::unknown, m, t.unknown_of[m], 1.0, 0.0, along_x, along_x ? dirs[k][0] : dirs[k][1]};
@@ -118,13 +119,13 @@ Topology build_topology(const ReynoldsProblem& pr) {
           if (inside_disc(ni, nj)) link.theta = 1.0;
         } else {
           link.kind = LinkKind::dirichlet;
-          link.value_Pa = t.boundary_Pa[m];
+          link.value_Pa = t.boundary_Pa(m);
         }
       }
       if (along_x) len_x += 0.5 * link.theta * g.dx_m;
       t.links[u][k] = link;
     }
-    if (pr.disc) t.weight_m2[n] = len_x * g.dy_m;
+    if (pr.disc) t.weight_m2(n) = len_x * g.dy_m;
   }
   return t;
 }
@@ -139,18 +140,19 @@ struct Face {
 };
 
 // φ of a node along the link's direction (1 when the field is empty).
-double flow_factor(const ReynoldsProblem& pr, std::size_t node, bool along_x) {
-  const std::vector<double>& phi = along_x ? pr.pressure_flow_factor_x : pr.pressure_flow_factor_y;
-  return phi.empty() ? 1.0 : phi[node];
+double flow_factor(const ReynoldsProblem& pr, Eigen::Index node, bool along_x) {
+  const Eigen::ArrayXXd& phi = along_x ? pr.pressure_flow_factor_x : pr.pressure_flow_factor_y;
+  return phi.size() == 0 ? 1.0 : phi(node);
 }
 
 bool average_flow_model(const ReynoldsProblem& pr) {
-  return !pr.pressure_flow_factor_x.empty() || !pr.pressure_flow_factor_y.empty() || !pr.couette_film_m.empty();
+  return pr.pressure_flow_factor_x.size() != 0 || pr.pressure_flow_factor_y.size() != 0 ||
+         pr.couette_film_m.size() != 0;
 }
 
-Face face_of(const ReynoldsProblem& pr, std::size_t p_node, const Link& link) {
-  const Grid& g = pr.grid;
-  const double hp = pr.gap_m[p_node], hn = pr.gap_m[link.node];
+Face face_of(const ReynoldsProblem& pr, Eigen::Index p_node, const Link& link) {
+  const contact::Grid& g = pr.grid;
+  const double hp = pr.gap_m(p_node), hn = pr.gap_m(link.node);
   const double d = link.along_x ? g.dx_m : g.dy_m, area = link.along_x ? g.dy_m : g.dx_m;
   // The diffusive face runs from P to the rim point (gap interpolated there) for rim links.
   const bool rim = link.kind == LinkKind::rim;
@@ -175,8 +177,8 @@ Face face_of(const ReynoldsProblem& pr, std::size_t p_node, const Link& link) {
   Face f{k * area / (link.theta * d), 0.0};
   if (link.along_x && pr.sliding_speed_m_per_s != 0.0) {
     const double an = 1.0 / (phi_n * hn * hn * hn);
-    const double tp = pr.couette_film_m.empty() ? hp : pr.couette_film_m[p_node];
-    const double tn = pr.couette_film_m.empty() ? hn : pr.couette_film_m[link.node];
+    const double tp = pr.couette_film_m.size() == 0 ? hp : pr.couette_film_m(p_node);
+    const double tn = pr.couette_film_m.size() == 0 ? hn : pr.couette_film_m(link.node);
     f.couette_m3_per_s = link.sign * 0.5 * pr.sliding_speed_m_per_s * ((tp * ap + tn * an) / (ap + an)) * area;
   }
   return f;
@@ -190,13 +192,15 @@ double reduced_pressure(double p_Pa, double psi_per_Pa) {
 // Whether the Couette flux through this link takes ϑ from P (else from the neighbour).
 bool upwind_is_p(const ReynoldsProblem& pr, const Link& link) { return link.sign * pr.sliding_speed_m_per_s >= 0.0; }
 
-double gap_rate(const ReynoldsProblem& pr, std::size_t node) {
-  return pr.gap_rate_m_per_s.empty() ? 0.0 : pr.gap_rate_m_per_s[node];
+double gap_rate(const ReynoldsProblem& pr, Eigen::Index node) {
+  return pr.gap_rate_m_per_s.size() == 0 ? 0.0 : pr.gap_rate_m_per_s(node);
 }
+
+std::string shape(const Eigen::ArrayXXd& f) { return std::to_string(f.rows()) + " x " + std::to_string(f.cols()); }
 
 // Pattern signature: a new symbolic analysis is needed only when it changes.
 struct Signature {
-  int nx = 0, ny = 0;
+  Eigen::Index nx = 0, ny = 0;
   BoundaryY by = BoundaryY::ambient;
   bool disc = false;
   double cx = 0, cy = 0, r = 0, dx = 0, dy = 0;
@@ -236,36 +240,35 @@ Ncp minimum_function(double a, double b) { return a < b ? Ncp{a, 1.0, 0.0} : Ncp
 }  // namespace
 
 void validate(const ReynoldsProblem& pr) {
-  const Grid& g = pr.grid;
+  const contact::Grid& g = pr.grid;
   if (g.nx < 3 || g.ny < 3)
     bad("grid must have at least 3 nodes in x and y (got " + std::to_string(g.nx) + " x " + std::to_string(g.ny) + ")");
   if (!(std::isfinite(g.dx_m) && g.dx_m > 0 && std::isfinite(g.dy_m) && g.dy_m > 0))
     bad("grid spacing dx_m, dy_m must be finite and > 0");
-  if (pr.gap_m.size() != g.size())
-    bad("gap_m has " + std::to_string(pr.gap_m.size()) + " values, the grid " + std::to_string(g.size()));
-  for (std::size_t n = 0; n < pr.gap_m.size(); ++n)
-    if (!std::isfinite(pr.gap_m[n]) || pr.gap_m[n] <= 0.0) {
+  const std::string grid_shape = std::to_string(g.nx) + " x " + std::to_string(g.ny);
+  if (!g.holds(pr.gap_m)) bad("gap_m is " + shape(pr.gap_m) + ", the grid " + grid_shape);
+  for (Eigen::Index n = 0; n < pr.gap_m.size(); ++n)
+    if (!std::isfinite(pr.gap_m(n)) || pr.gap_m(n) <= 0.0) {
       std::ostringstream m;
       m << "gap_m must be finite and > 0 everywhere; node (i=" << n % g.nx << ", j=" << n / g.nx << ") has h = "
-        << pr.gap_m[n] << " m";
+        << pr.gap_m(n) << " m";
       bad(m.str());
     }
-  if (!pr.gap_rate_m_per_s.empty()) {
-    if (pr.gap_rate_m_per_s.size() != g.size()) bad("gap_rate_m_per_s must be empty or have one value per node");
-    for (double v : pr.gap_rate_m_per_s)
-      if (!std::isfinite(v)) bad("gap_rate_m_per_s holds a non-finite value");
+  if (pr.gap_rate_m_per_s.size() != 0) {
+    if (!g.holds(pr.gap_rate_m_per_s)) bad("gap_rate_m_per_s must be empty or have one value per node");
+    if (!pr.gap_rate_m_per_s.allFinite()) bad("gap_rate_m_per_s holds a non-finite value");
   }
   // Average flow fields: empty, or one finite value per node, φ > 0 and t ≥ 0.
-  auto check_field = [&](const std::vector<double>& v, const char* name, bool zero_allowed) {
-    if (v.empty()) return;
-    if (v.size() != g.size())
-      bad(std::string(name) + " must be empty or have one value per node (got " + std::to_string(v.size()) +
-          " values, the grid " + std::to_string(g.size()) + ")");
-    for (std::size_t n = 0; n < v.size(); ++n)
-      if (!std::isfinite(v[n]) || v[n] < 0.0 || (!zero_allowed && v[n] == 0.0)) {
+  auto check_field = [&](const Eigen::ArrayXXd& v, const char* name, bool zero_allowed) {
+    if (v.size() == 0) return;
+    if (!g.holds(v))
+      bad(std::string(name) + " must be empty or have one value per node (got " + shape(v) + ", the grid " +
+          grid_shape + ")");
+    for (Eigen::Index n = 0; n < v.size(); ++n)
+      if (!std::isfinite(v(n)) || v(n) < 0.0 || (!zero_allowed && v(n) == 0.0)) {
         std::ostringstream m;
         m << name << " must be finite and " << (zero_allowed ? ">= 0" : "> 0") << " everywhere; node (i=" << n % g.nx
-          << ", j=" << n / g.nx << ") has " << v[n];
+          << ", j=" << n / g.nx << ") has " << v(n);
         bad(m.str());
       }
   };
@@ -285,8 +288,8 @@ void validate(const ReynoldsProblem& pr) {
     const DiscDomain& d = *pr.disc;
     if (!(std::isfinite(d.radius_m) && d.radius_m > 0)) bad("disc radius_m must be finite and > 0");
     if (!(std::isfinite(d.centre_x_m) && std::isfinite(d.centre_y_m))) bad("disc centre must be finite");
-    if (d.centre_x_m - d.radius_m <= 0 || d.centre_x_m + d.radius_m >= g.length_x_m() ||
-        d.centre_y_m - d.radius_m <= 0 || d.centre_y_m + d.radius_m >= (g.ny - 1) * g.dy_m)
+    if (d.centre_x_m - d.radius_m <= 0 || d.centre_x_m + d.radius_m >= g.span_x_m() ||
+        d.centre_y_m - d.radius_m <= 0 || d.centre_y_m + d.radius_m >= g.span_y_m())
       bad("the disc must lie strictly inside the grid");
   }
 }
@@ -305,9 +308,9 @@ struct ReynoldsSolver::Impl {
     std::vector<Eigen::Triplet<double, int>> triplets;
     triplets.reserve(5 * n);
     Eigen::VectorXd b = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(n));
-    const double cell = pr.grid.dx_m * pr.grid.dy_m;
+    const double cell = pr.grid.cell_area_m2();
     for (std::size_t u = 0; u < n; ++u) {
-      const std::size_t node = t.node_of[u];
+      const Eigen::Index node = t.node_of[u];
       double diag = 0;
       for (const Link& link : t.links[u]) {
         const Face f = face_of(pr, node, link);
@@ -359,10 +362,10 @@ struct ReynoldsSolver::Impl {
                 double p_scale, Eigen::VectorXd& f, std::vector<MassRow>* mass_rows,
                 std::vector<NcpRow>* ncp_rows) const {
     const std::size_t n = t.node_of.size();
-    const double cell = pr.grid.dx_m * pr.grid.dy_m;
+    const double cell = pr.grid.cell_area_m2();
     f.resize(static_cast<Eigen::Index>(2 * n));
     for (std::size_t u = 0; u < n; ++u) {
-      const std::size_t node = t.node_of[u];
+      const Eigen::Index node = t.node_of[u];
       const int row = static_cast<int>(2 * u);
       const double p = z[row], th = z[row + 1];
       double mass = gap_rate(pr, node) * cell * th;
@@ -449,13 +452,13 @@ struct ReynoldsSolver::Impl {
     sol.load_N = 0;
     sol.max_pressure_Pa = -std::numeric_limits<double>::infinity();
     bool blow_up = false;
-    for (std::size_t node = 0; node < pr.grid.size(); ++node) {
-      const double x = psi * sol.pressure_Pa[node];
+    for (Eigen::Index node = 0; node < pr.grid.size(); ++node) {
+      const double x = psi * sol.pressure_Pa(node);
       if (x >= 1.0) blow_up = true;
-      sol.pressure_Pa[node] = x >= 1.0 ? std::numeric_limits<double>::infinity() : -std::log1p(-x) / psi;
-      if (!t.wetted[node]) continue;
-      sol.load_N += t.weight_m2[node] * sol.pressure_Pa[node];
-      sol.max_pressure_Pa = std::max(sol.max_pressure_Pa, sol.pressure_Pa[node]);
+      sol.pressure_Pa(node) = x >= 1.0 ? std::numeric_limits<double>::infinity() : -std::log1p(-x) / psi;
+      if (!t.wetted(node)) continue;
+      sol.load_N += t.weight_m2(node) * sol.pressure_Pa(node);
+      sol.max_pressure_Pa = std::max(sol.max_pressure_Pa, sol.pressure_Pa(node));
     }
     if (blow_up) {
       sol.summary.converged = false;
@@ -473,7 +476,7 @@ struct ReynoldsSolver::Impl {
     ReynoldsSolution sol;
     sol.wetted = t.wetted;
     sol.pressure_Pa = t.boundary_Pa;
-    sol.fill_fraction.assign(pr.grid.size(), 1.0);
+    sol.fill_fraction = pr.grid.field(1.0);
     ReynoldsSummary& sum = sol.summary;
     sum.linear_solver = "cholmod";
 
@@ -580,18 +583,18 @@ struct ReynoldsSolver::Impl {
       }
       for (std::size_t u = 0; u < n; ++u) {
         p[u] = z[2 * u];
-        sol.fill_fraction[t.node_of[u]] = z[2 * u + 1];
+        sol.fill_fraction(t.node_of[u]) = z[2 * u + 1];
       }
     }
-    for (std::size_t u = 0; u < n; ++u) sol.pressure_Pa[t.node_of[u]] = p[u];
+    for (std::size_t u = 0; u < n; ++u) sol.pressure_Pa(t.node_of[u]) = p[u];
     double wetted_area = 0, cavitated_area = 0;
     sol.max_pressure_Pa = -std::numeric_limits<double>::infinity();
-    for (std::size_t node = 0; node < pr.grid.size(); ++node) {
-      if (!t.wetted[node]) continue;
-      sol.load_N += t.weight_m2[node] * sol.pressure_Pa[node];
-      sol.max_pressure_Pa = std::max(sol.max_pressure_Pa, sol.pressure_Pa[node]);
-      wetted_area += t.weight_m2[node];
-      if (sol.fill_fraction[node] < 1.0 - 1e-9) cavitated_area += t.weight_m2[node];
+    for (Eigen::Index node = 0; node < pr.grid.size(); ++node) {
+      if (!t.wetted(node)) continue;
+      sol.load_N += t.weight_m2(node) * sol.pressure_Pa(node);
+      sol.max_pressure_Pa = std::max(sol.max_pressure_Pa, sol.pressure_Pa(node));
+      wetted_area += t.weight_m2(node);
+      if (sol.fill_fraction(node) < 1.0 - 1e-9) cavitated_area += t.weight_m2(node);
     }
     sol.cavitated_fraction = wetted_area > 0 ? cavitated_area / wetted_area : 0.0;
     sum.linear_solver_s = linear_s;
@@ -623,25 +626,25 @@ FilmFlow film_flow(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
   validate(pr);
   const Topology t = build_topology(pr);
   FilmFlow flow;
-  const double cell = pr.grid.dx_m * pr.grid.dy_m;
+  const double cell = pr.grid.cell_area_m2();
   for (std::size_t u = 0; u < t.node_of.size(); ++u) {
-    const std::size_t node = t.node_of[u];
+    const Eigen::Index node = t.node_of[u];
     const double psi = pr.pressure_viscosity_per_Pa;
-    const double p = reduced_pressure(sol.pressure_Pa[node], psi), th = sol.fill_fraction[node];
+    const double p = reduced_pressure(sol.pressure_Pa(node), psi), th = sol.fill_fraction(node);
     const double storage = gap_rate(pr, node) * cell * th;
     flow.squeeze_storage_m3_per_s += storage;
     double balance = storage;
     for (const Link& link : t.links[u]) {
       const bool known = link.kind != LinkKind::unknown;
-      const double pn = reduced_pressure(known ? link.value_Pa : sol.pressure_Pa[link.node], psi);
-      const double thn = known ? 1.0 : sol.fill_fraction[link.node];
+      const double pn = reduced_pressure(known ? link.value_Pa : sol.pressure_Pa(link.node), psi);
+      const double thn = known ? 1.0 : sol.fill_fraction(link.node);
       const Face f = face_of(pr, node, link);
       const double out = f.conductance_per_Pa * (p - pn) + f.couette_m3_per_s * (upwind_is_p(pr, link) ? th : thn);
       balance += out;
       if (!known) continue;
       flow.net_outflow_m3_per_s += out;
       if (!pr.disc && link.along_x && link.sign < 0 && link.node % pr.grid.nx == 0) flow.inflow_x0_m3_per_s -= out;
-      if (!pr.disc && link.along_x && link.sign > 0 && link.node % pr.grid.nx == static_cast<std::size_t>(pr.grid.nx - 1))
+      if (!pr.disc && link.along_x && link.sign > 0 && link.node % pr.grid.nx == pr.grid.nx - 1)
         flow.outflow_xL_m3_per_s += out;
     }
     flow.max_cell_imbalance_m3_per_s = std::max(flow.max_cell_imbalance_m3_per_s, std::abs(balance));
@@ -649,22 +652,22 @@ FilmFlow film_flow(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
   return flow;
 }
 
-std::vector<double> x_face_flow_m2_per_s(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
+Eigen::ArrayXXd x_face_flow_m2_per_s(const ReynoldsProblem& pr, const ReynoldsSolution& sol) {
   validate(pr);
   if (pr.disc) bad("x_face_flow_m2_per_s needs a rectangular domain (the problem has a disc domain)");
-  const Grid& g = pr.grid;
-  if (sol.pressure_Pa.size() != g.size() || sol.fill_fraction.size() != g.size())
+  const contact::Grid& g = pr.grid;
+  if (!g.holds(sol.pressure_Pa) || !g.holds(sol.fill_fraction))
     bad("x_face_flow_m2_per_s: the solution does not belong to this problem's grid");
   const double psi = pr.pressure_viscosity_per_Pa;
-  std::vector<double> q(static_cast<std::size_t>(g.nx - 1) * static_cast<std::size_t>(g.ny));
-  for (int j = 0; j < g.ny; ++j)
-    for (int i = 0; i + 1 < g.nx; ++i) {
-      const std::size_t p = g.index(i, j), n = g.index(i + 1, j);
+  Eigen::ArrayXXd q(g.nx - 1, g.ny);
+  for (Eigen::Index j = 0; j < g.ny; ++j)
+    for (Eigen::Index i = 0; i + 1 < g.nx; ++i) {
+      const Eigen::Index p = g.index(i, j), n = g.index(i + 1, j);
       const Link link{LinkKind::unknown, n, -1, 1.0, 0.0, true, +1};
       const Face f = face_of(pr, p, link);
-      const double th = upwind_is_p(pr, link) ? sol.fill_fraction[p] : sol.fill_fraction[n];
-      const double dp = reduced_pressure(sol.pressure_Pa[n], psi) - reduced_pressure(sol.pressure_Pa[p], psi);
-      q[static_cast<std::size_t>(j) * (g.nx - 1) + i] = (-f.conductance_per_Pa * dp + f.couette_m3_per_s * th) / g.dy_m;
+      const double th = upwind_is_p(pr, link) ? sol.fill_fraction(p) : sol.fill_fraction(n);
+      const double dp = reduced_pressure(sol.pressure_Pa(n), psi) - reduced_pressure(sol.pressure_Pa(p), psi);
+      q(i, j) = (-f.conductance_per_Pa * dp + f.couette_m3_per_s * th) / g.dy_m;
     }
   return q;
 }

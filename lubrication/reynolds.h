@@ -53,25 +53,21 @@
 // which for φ ≡ 1, t ≡ h is the plain face above. Rim links (disc domain) interpolate φ like the
 // gap. With all three fields empty the plain equation is solved bit for bit as without them.
 //
-// Field layout: row-major, value (i, j) at index j·nx + i, i along x (sliding direction).
+// Grid and fields (contact/grid.h, read as nodes): nx × ny nodes (≥ 3 each) at x_i = i·dx,
+// y_j = j·dy, i along x (the sliding direction); every field is an nx × ny Eigen::ArrayXXd, value
+// (i, j) at linear index j·nx + i. An optional field is empty (size 0).
 #pragma once
 
+#include "contact/grid.h"
 #include "lubrication/linear_solver.h"
+
+#include <Eigen/Core>
 
 #include <memory>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace tribo::lubrication {
-
-struct Grid {
-  int nx = 0, ny = 0;        // nodes along x and y (≥ 3 each)
-  double dx_m = 0, dy_m = 0;  // node spacing
-  double length_x_m() const { return (nx - 1) * dx_m; }
-  std::size_t size() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
-  std::size_t index(int i, int j) const { return static_cast<std::size_t>(j) * nx + i; }
-};
 
 enum class BoundaryY { ambient, periodic };
 enum class Cavitation { none, mass_conserving };
@@ -84,9 +80,9 @@ struct DiscDomain {
 };
 
 struct ReynoldsProblem {
-  Grid grid;
-  std::vector<double> gap_m;                // size nx·ny, every value finite and > 0
-  std::vector<double> gap_rate_m_per_s;     // ∂h/∂t per node; empty means 0
+  contact::Grid grid;
+  Eigen::ArrayXXd gap_m;                    // nx × ny, every value finite and > 0
+  Eigen::ArrayXXd gap_rate_m_per_s;         // ∂h/∂t per node; empty means 0
   double viscosity_Pa_s = 0.021;            // η₀ at ambient pressure
   double pressure_viscosity_per_Pa = 0.0;   // Barus ψ (≥ 0); 0 = isoviscous
   double sliding_speed_m_per_s = 0.0;       // U = U₁ + U₂ along +x
@@ -98,9 +94,9 @@ struct ReynoldsProblem {
   // Average flow model (Patir & Cheng 1978): the Poiseuille conductance of a node is
   // φx h³/(12η) along x and φy h³/(12η) along y, and the Couette flux transports the film
   // t (m) instead of h:  q̄x = −φx h³/(12η) ∂p/∂x + (U/2) t,  q̄y = −φy h³/(12η) ∂p/∂y.
-  std::vector<double> pressure_flow_factor_x;   // φx per node (> 0); empty = 1
-  std::vector<double> pressure_flow_factor_y;   // φy per node (> 0); empty = 1
-  std::vector<double> couette_film_m;           // t per node (≥ 0); empty = gap_m
+  Eigen::ArrayXXd pressure_flow_factor_x;   // φx per node (> 0); empty = 1
+  Eigen::ArrayXXd pressure_flow_factor_y;   // φy per node (> 0); empty = 1
+  Eigen::ArrayXXd couette_film_m;           // t per node (≥ 0); empty = gap_m
 };
 
 // Throws std::invalid_argument naming the first bad input (grid < 3, h ≤ 0, NaN, η ≤ 0, a flow
@@ -132,9 +128,9 @@ struct ReynoldsSummary {
 };
 
 struct ReynoldsSolution {
-  std::vector<double> pressure_Pa;    // per node (boundary values included)
-  std::vector<double> fill_fraction;  // ϑ per node (1 outside cavitated zones)
-  std::vector<bool> wetted;           // node inside the film domain
+  Eigen::ArrayXXd pressure_Pa;        // per node (boundary values included)
+  Eigen::ArrayXXd fill_fraction;      // ϑ per node (1 outside cavitated zones)
+  Eigen::ArrayXX<bool> wetted;        // node inside the film domain
   double load_N = 0;                  // ∫ p dA (trapezoid along rows, with cut rims for discs)
   double max_pressure_Pa = 0;
   double cavitated_fraction = 0;      // share of wetted area with ϑ < 1
@@ -155,9 +151,9 @@ FilmFlow film_flow(const ReynoldsProblem& problem, const ReynoldsSolution& solut
 
 // Flow per unit width (m²/s) along +x through the face between nodes (i, j) and (i + 1, j) — the
 // discrete face flux the solver balances, −k_f (p_N − p_P)/dx + (U/2) t̃_f ϑ_upwind (reduced
-// pressure under Barus) — at index j·(nx − 1) + i, i = 0 … nx − 2. Rectangular domains only
-// (throws std::invalid_argument for a disc domain).
-std::vector<double> x_face_flow_m2_per_s(const ReynoldsProblem& problem, const ReynoldsSolution& solution);
+// pressure under Barus) — as an (nx − 1) × ny array, face (i, j) at linear index j·(nx − 1) + i.
+// Rectangular domains only (throws std::invalid_argument for a disc domain).
+Eigen::ArrayXXd x_face_flow_m2_per_s(const ReynoldsProblem& problem, const ReynoldsSolution& solution);
 
 // A solver that keeps its SuiteSparse factorisations between solves: repeated solves on the same
 // grid and domain (realisations, time steps, Newton iterations) reuse the symbolic analysis.

@@ -19,19 +19,19 @@ namespace {
 constexpr double kEStar = 1e11;
 
 struct RoughCase {
-  Grid grid{96, 96, 1e-3, 1e-3};
+  Grid grid = Grid::patch(96, 96, 1e-3, 1e-3);
   Eigen::ArrayXXd gap;
   double slope = 0.0;
   RoughCase() {
     GaussianSurfaceParams p;
     p.grid = grid.nx;
-    p.size_m = grid.lx_m;
+    p.size_m = grid.period_x_m();
     p.rms_height_m = 1e-6;
-    p.rolloff_wavelength_m = grid.lx_m / 4;
-    p.cutoff_wavelength_m = grid.lx_m / 24;
+    p.rolloff_wavelength_m = grid.period_x_m() / 4;
+    p.cutoff_wavelength_m = grid.period_x_m() / 24;
     p.seed = 5;
     const Eigen::ArrayXXd z = gaussian_surface(p);
-    slope = surface_statistics(z, grid.lx_m, grid.ly_m).rms_slope;
+    slope = surface_statistics(z, grid.period_x_m(), grid.period_y_m()).rms_slope;
     gap = gap_from_heights(z);
   }
 };
@@ -59,7 +59,7 @@ TEST(JunctionGrowthBem, FullyPlasticGrowthFollowsTabor) {
 // Elastic-plastic sphere: only the plastic core feels the lowered cap, so the area grows, but
 // less than Tabor's factor √(1 + α (F/W)²) — the difference `tribo contact junction` reports.
 TEST(JunctionGrowthBem, PartlyElasticContactGrowsLessThanTabor) {
-  const Grid grid{96, 96, 1e-3, 1e-3};
+  const Grid grid = Grid::patch(96, 96, 1e-3, 1e-3);
   ElasticHalfSpace hs(grid, kEStar, false);
   const double radius = 0.01, w = 50.0;
   TangentialContactOptions opt;
@@ -198,7 +198,7 @@ TEST(GreenwoodWilliamson, TrendAgainstBemOnTheSameSurface) {
   const double w = 0.01 * kEStar * rc.slope * rc.grid.area_m2();
   const NormalContactResult bem = solve_normal_load(hs, rc.gap, w);
   ASSERT_TRUE(bem.summary.converged);
-  const SurfaceStatistics st = surface_statistics(-rc.gap, rc.grid.lx_m, rc.grid.ly_m);
+  const SurfaceStatistics st = surface_statistics(-rc.gap, rc.grid.period_x_m(), rc.grid.period_y_m());
   const GwState gw = gw_at_pressure(gw_from_statistics(st, kEStar), w / rc.grid.area_m2());
   const double ratio = gw.area_fraction / bem.area_fraction;
   EXPECT_GT(ratio, 0.7);

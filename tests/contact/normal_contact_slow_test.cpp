@@ -15,7 +15,7 @@ namespace {
 // the counted area is ~0.4 % in radius and the collocation error of the peak ~Δx/a; 1 % bounds both.
 TEST(NormalContactSlow, HertzSphereNonPeriodic512) {
   const double e_star = 1.137e11, radius = 0.01;
-  const Grid grid{512, 512, 1e-3, 1e-3};
+  const Grid grid = Grid::patch(512, 512, 1e-3, 1e-3);
   const double a_target = 0.25e-3;
   const double load = 4.0 * e_star * std::pow(a_target, 3) / (3.0 * radius);
   ElasticHalfSpace hs(grid, e_star, false);

@@ -25,7 +25,8 @@ class HertzCoarse : public ::testing::TestWithParam<Eigen::Index> {};
 
 TEST_P(HertzCoarse, SphereNonPeriodicRadiusPeakAndApproach) {
   const Eigen::Index n = GetParam();
-  const Grid grid{n, n, 1e-3 * static_cast<double>(n) / 128.0, 1e-3 * static_cast<double>(n) / 128.0};
+  const double side = 1e-3 * static_cast<double>(n) / 128.0;
+  const Grid grid = Grid::patch(n, n, side, side);
   const double radius = 0.01, a_target = 0.25e-3;
   const double load = 4.0 * kEStar * std::pow(a_target, 3) / (3.0 * radius);
   ElasticHalfSpace hs(grid, kEStar, /*periodic=*/false);
@@ -45,14 +46,14 @@ INSTANTIATE_TEST_SUITE_P(OddAndEvenGrids, HertzCoarse, ::testing::Values(127, 12
 class Westergaard : public ::testing::TestWithParam<Eigen::Index> {
  protected:
   static constexpr double amplitude = 1e-6, wavelength = 1e-3;
-  Grid grid() const { return {GetParam(), 3, wavelength, 3 * wavelength / GetParam()}; }
+  Grid grid() const { return Grid::patch(GetParam(), 3, wavelength, 3 * wavelength / GetParam()); }
   Eigen::ArrayXXd profile() const {
     const Grid g = grid();
     Eigen::ArrayXXd h(g.nx, g.ny);
     for (Eigen::Index i = 0; i < g.nx; ++i) h.row(i).setConstant(amplitude * (1.0 - std::cos(2 * std::numbers::pi * x(i) / wavelength)));
     return h;
   }
-  double x(Eigen::Index i) const { return (static_cast<double>(i) + 0.5) * grid().dx_m(); }
+  double x(Eigen::Index i) const { return (static_cast<double>(i) + 0.5) * grid().dx_m; }
 };
 
 TEST_P(Westergaard, CompleteContactPressureIsExact) {
@@ -88,7 +89,7 @@ INSTANTIATE_TEST_SUITE_P(OddAndEvenGrids, Westergaard, ::testing::Values(255, 25
 // Load and approach control are the same problem: solving at the approach a load solve found
 // must give back that load.
 TEST(NormalContact, ApproachControlReproducesLoadControl) {
-  const Grid grid{96, 96, 1e-3, 1e-3};
+  const Grid grid = Grid::patch(96, 96, 1e-3, 1e-3);
   ElasticHalfSpace hs(grid, kEStar, false);
   const Eigen::ArrayXXd h = sphere_gap(grid, 0.01);
   NormalContactOptions opt;
@@ -114,7 +115,7 @@ GaussianSurfaceParams rough(Eigen::Index n, std::uint64_t seed = 3) {
 
 TEST(NormalContact, MeanGapControlHitsTheTargetOnAPeriodicGrid) {
   const auto sp = rough(64);
-  const Grid grid{64, 64, sp.size_m, sp.size_m};
+  const Grid grid = Grid::patch(64, 64, sp.size_m, sp.size_m);
   ElasticHalfSpace hs(grid, kEStar, true);
   const Eigen::ArrayXXd h = gap_from_heights(gaussian_surface(sp));
   const NormalContactResult r = solve_mean_gap(hs, h, 1.0e-6);
@@ -127,7 +128,7 @@ TEST(NormalContact, MeanGapControlHitsTheTargetOnAPeriodicGrid) {
 // point's mean gap gives back its load (to the solver tolerance, 1e-6 relative here).
 TEST(NormalContact, LoadGapCurveIsMonotoneAndConsistentWithGapControl) {
   const auto sp = rough(64);
-  const Grid grid{64, 64, sp.size_m, sp.size_m};
+  const Grid grid = Grid::patch(64, 64, sp.size_m, sp.size_m);
   ElasticHalfSpace hs(grid, kEStar, true);
   const Eigen::ArrayXXd h = gap_from_heights(gaussian_surface(sp));
   NormalContactOptions opt;
@@ -160,7 +161,7 @@ TEST(NormalContact, SmallLoadAreaIsProportionalToLoad) {
   sp.rms_height_m = 1e-6;
   sp.cutoff_wavelength_m = 4.0 * sp.size_m / 256.0;  // no roll-off: the broadest spectrum on the grid
   sp.seed = 3;
-  const Grid grid{sp.grid, sp.grid, sp.size_m, sp.size_m};
+  const Grid grid = Grid::patch(sp.grid, sp.grid, sp.size_m, sp.size_m);
   const Eigen::ArrayXXd z = gaussian_surface(sp);
   const double slope = surface_statistics(z, sp.size_m, sp.size_m).rms_slope;
   ElasticHalfSpace hs(grid, kEStar, true);
@@ -181,7 +182,7 @@ TEST(NormalContact, SmallLoadAreaIsProportionalToLoad) {
 // A = W/σ0 (thesis (3.1.9) at F = 0) up to the few cells carrying the remainder below the cap.
 TEST(NormalContact, FullyPlasticRoughContactAreaIsLoadOverHardness) {
   const auto sp = rough(128);
-  const Grid grid{sp.grid, sp.grid, sp.size_m, sp.size_m};
+  const Grid grid = Grid::patch(sp.grid, sp.grid, sp.size_m, sp.size_m);
   const Eigen::ArrayXXd z = gaussian_surface(sp);
   ElasticHalfSpace hs(grid, kEStar, true);
   NormalContactOptions opt;
@@ -203,7 +204,7 @@ TEST(NormalContact, FullyPlasticRoughContactAreaIsLoadOverHardness) {
 // σ0 = 0.1 E* h'_rms so that the contact is partly elastic (where FFT codes are known to stall).
 TEST(NormalContact, ElasticPlasticConvergesUpToSaturation) {
   const auto sp = rough(64, 11);
-  const Grid grid{sp.grid, sp.grid, sp.size_m, sp.size_m};
+  const Grid grid = Grid::patch(sp.grid, sp.grid, sp.size_m, sp.size_m);
   const Eigen::ArrayXXd z = gaussian_surface(sp);
   ElasticHalfSpace hs(grid, kEStar, true);
   NormalContactOptions opt;
@@ -225,7 +226,7 @@ TEST(NormalContact, ElasticPlasticConvergesUpToSaturation) {
 // Loading–unloading: the flattened profile (h + plastic increment) carries the peak load
 // elastically with the same pressure; at a lower load the contact shrinks without new flow.
 TEST(NormalContact, PlasticFlatteningMakesUnloadingAndReloadingElastic) {
-  const Grid grid{96, 96, 1e-3, 1e-3};
+  const Grid grid = Grid::patch(96, 96, 1e-3, 1e-3);
   ElasticHalfSpace hs(grid, kEStar, false);
   const double radius = 0.01, peak = 100.0;
   const Eigen::ArrayXXd h = sphere_gap(grid, radius);
@@ -260,7 +261,7 @@ TEST(NormalContact, PlasticFlatteningMakesUnloadingAndReloadingElastic) {
 // FFT contact codes are reported to stall: converges, keeps the load, leaves a few open cells.
 TEST(NormalContact, NearCompleteElasticContactConverges) {
   const auto sp = rough(128, 17);
-  const Grid grid{sp.grid, sp.grid, sp.size_m, sp.size_m};
+  const Grid grid = Grid::patch(sp.grid, sp.grid, sp.size_m, sp.size_m);
   const Eigen::ArrayXXd z = gaussian_surface(sp);
   const double slope = surface_statistics(z, sp.size_m, sp.size_m).rms_slope;
   ElasticHalfSpace hs(grid, kEStar, true);
@@ -274,7 +275,7 @@ TEST(NormalContact, NearCompleteElasticContactConverges) {
 
 TEST(NormalContact, NonConvergenceIsReportedWithTheResidual) {
   const auto sp = rough(64);
-  const Grid grid{64, 64, sp.size_m, sp.size_m};
+  const Grid grid = Grid::patch(64, 64, sp.size_m, sp.size_m);
   ElasticHalfSpace hs(grid, kEStar, true);
   NormalContactOptions opt;
   opt.max_iterations = 2;
@@ -286,7 +287,7 @@ TEST(NormalContact, NonConvergenceIsReportedWithTheResidual) {
 }
 
 TEST(NormalContact, BadInputsAreRejectedWithTheirName) {
-  const Grid grid{16, 16, 1e-3, 1e-3};
+  const Grid grid = Grid::patch(16, 16, 1e-3, 1e-3);
   ElasticHalfSpace hs(grid, kEStar, true);
   const Eigen::ArrayXXd h = sphere_gap(grid, 0.01);
   auto message = [](auto&& f) -> std::string {
@@ -297,8 +298,8 @@ TEST(NormalContact, BadInputsAreRejectedWithTheirName) {
     }
     return "(accepted)";
   };
-  EXPECT_NE(message([&] { ElasticHalfSpace bad(Grid{16, 16, -1e-3, 1e-3}, kEStar, true); }).find("size"), std::string::npos);
-  EXPECT_NE(message([&] { ElasticHalfSpace bad(Grid{0, 16, 1e-3, 1e-3}, kEStar, true); }).find("grid"), std::string::npos);
+  EXPECT_NE(message([&] { ElasticHalfSpace bad(Grid::patch(16, 16, -1e-3, 1e-3), kEStar, true); }).find("size"), std::string::npos);
+  EXPECT_NE(message([&] { ElasticHalfSpace bad(Grid::patch(0, 16, 1e-3, 1e-3), kEStar, true); }).find("grid"), std::string::npos);
   EXPECT_NE(message([&] { ElasticHalfSpace bad(grid, std::nan(""), true); }).find("e_star"), std::string::npos);
   EXPECT_NE(message([&] { solve_normal_load(hs, h, std::nan("")); }).find("normal load"), std::string::npos);
   EXPECT_NE(message([&] { solve_normal_load(hs, h, -1.0); }).find("normal load"), std::string::npos);
@@ -330,12 +331,12 @@ TEST(HalfSpace, CompositeModulusOfSteelOnSteel) {
 // cells' influence coefficients sum to Love's solution for the whole square, so agreement is to
 // round-off — which also checks that zero padding removes the periodic images.
 TEST(HalfSpace, UniformSquareLoadMatchesLoveAtTheCentre) {
-  const Grid grid{64, 64, 1e-3, 1e-3};
+  const Grid grid = Grid::patch(64, 64, 1e-3, 1e-3);
   ElasticHalfSpace hs(grid, kEStar, false);
   Eigen::ArrayXXd p = Eigen::ArrayXXd::Zero(64, 64), u;
   p.block(16, 16, 33, 33).setConstant(1e6);  // square of 33 cells centred on cell (32, 32)
   hs.displacement(p, u);
-  const double c = 16.5 * grid.dx_m();
+  const double c = 16.5 * grid.dx_m;
   const double centre = 4.0 * c * 1e6 / (std::numbers::pi * kEStar) * 2.0 * std::log(1.0 + std::sqrt(2.0));
   EXPECT_NEAR(u(32, 32) / centre, 1.0, 1e-10);
 }

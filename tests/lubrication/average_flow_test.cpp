@@ -29,12 +29,12 @@ constexpr double kGap = 1e-6, kRate = -1e-6;
 ReynoldsProblem wavy_pad(int nx, int ny, Cavitation cavitation) {
   ReynoldsProblem pr;
   const double lx = 2e-3, ly = 1e-3;
-  pr.grid = Grid{nx, ny, lx / (nx - 1), ly / (ny - 1)};
-  pr.gap_m.resize(pr.grid.size());
+  pr.grid = contact::Grid{nx, ny, lx / (nx - 1), ly / (ny - 1)};
+  pr.gap_m = pr.grid.field();
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const double x = i * pr.grid.dx_m / lx, y = j * pr.grid.dy_m / ly;
-      pr.gap_m[pr.grid.index(i, j)] =
+      pr.gap_m(i, j) =
           kGap * (1.0 + 0.8 * (1.0 - x) + 0.5 * std::cos(6 * std::numbers::pi * x) + 0.2 * std::sin(2 * std::numbers::pi * y));
     }
   pr.viscosity_Pa_s = kEta;
@@ -52,8 +52,8 @@ TEST_P(AverageFlowIdentity, UnitFactorsAndGapFilmReproduceThePlainSolve) {
   const auto [cavitation, nx] = GetParam();
   const ReynoldsProblem plain = wavy_pad(nx, nx / 2 + 1, cavitation);
   ReynoldsProblem average = plain;
-  average.pressure_flow_factor_x.assign(plain.grid.size(), 1.0);
-  average.pressure_flow_factor_y.assign(plain.grid.size(), 1.0);
+  average.pressure_flow_factor_x = plain.grid.field(1.0);
+  average.pressure_flow_factor_y = plain.grid.field(1.0);
   average.couette_film_m = plain.gap_m;
   const ReynoldsSolution a = solve_reynolds(plain), b = solve_reynolds(average);
   ASSERT_TRUE(a.summary.converged) << a.summary.message;
@@ -82,10 +82,10 @@ TEST(AverageFlowIdentityDisc, UnitFactorsThroughTheRimLinks) {
   for (int n : {40, 41}) {
     ReynoldsProblem plain = parallel_discs_problem(kRadius, kGap, kRate, kEta, 0.2, n);
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) plain.gap_m[plain.grid.index(i, j)] = kGap * (1.0 + 0.3 * i / (n - 1.0) + 0.1 * j / (n - 1.0));
+      for (int i = 0; i < n; ++i) plain.gap_m(i, j) = kGap * (1.0 + 0.3 * i / (n - 1.0) + 0.1 * j / (n - 1.0));
     ReynoldsProblem average = plain;
-    average.pressure_flow_factor_x.assign(plain.grid.size(), 1.0);
-    average.pressure_flow_factor_y.assign(plain.grid.size(), 1.0);
+    average.pressure_flow_factor_x = plain.grid.field(1.0);
+    average.pressure_flow_factor_y = plain.grid.field(1.0);
     average.couette_film_m = plain.gap_m;
     const ReynoldsSolution a = solve_reynolds(plain), b = solve_reynolds(average);
     EXPECT_NEAR(b.load_N, a.load_N, 1e-13 * std::abs(a.load_N)) << "n = " << n;
@@ -103,8 +103,8 @@ TEST(AverageFlowSqueezeFilm, UniformFactorDividesTheAppendixIIILoad) {
   std::vector<double> dx, err;
   for (int n : {23, 43, 83, 163}) {
     ReynoldsProblem pr = parallel_discs_problem(kRadius, kGap, kRate, kEta, 0.0, n);
-    pr.pressure_flow_factor_x.assign(pr.grid.size(), phi);
-    pr.pressure_flow_factor_y.assign(pr.grid.size(), phi);
+    pr.pressure_flow_factor_x = pr.grid.field(phi);
+    pr.pressure_flow_factor_y = pr.grid.field(phi);
     const ReynoldsSolution s = solve_reynolds(pr);
     ASSERT_TRUE(s.summary.converged) << s.summary.message;
     dx.push_back(pr.grid.dx_m);
@@ -138,17 +138,17 @@ TEST(AverageFlowInclinedPad, MatchesTheClosedFormWithFactorAndFilmOffset) {
   double q_err = 0;
   for (int nx : {51, 101, 201, 401}) {
     ReynoldsProblem pr;
-    pr.grid = Grid{nx, 3, length / (nx - 1), 1e-4 / 3};
-    pr.gap_m.resize(pr.grid.size());
-    pr.couette_film_m.resize(pr.grid.size());
+    pr.grid = contact::Grid{nx, 3, length / (nx - 1), 1e-4 / 3};
+    pr.gap_m = pr.grid.field();
+    pr.couette_film_m = pr.grid.field();
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < nx; ++i) {
         const double h = h0 * (1.0 + k * (1.0 - i * pr.grid.dx_m / length));
-        pr.gap_m[pr.grid.index(i, j)] = h;
-        pr.couette_film_m[pr.grid.index(i, j)] = beta * h + c;
+        pr.gap_m(i, j) = h;
+        pr.couette_film_m(i, j) = beta * h + c;
       }
-    pr.pressure_flow_factor_x.assign(pr.grid.size(), phi);
-    pr.pressure_flow_factor_y.assign(pr.grid.size(), 0.3);
+    pr.pressure_flow_factor_x = pr.grid.field(phi);
+    pr.pressure_flow_factor_y = pr.grid.field(0.3);
     pr.viscosity_Pa_s = kEta;
     pr.boundary_y = BoundaryY::periodic;
     pr.sliding_speed_m_per_s = u;
@@ -156,9 +156,9 @@ TEST(AverageFlowInclinedPad, MatchesTheClosedFormWithFactorAndFilmOffset) {
     ASSERT_TRUE(s.summary.converged) << s.summary.message;
     dx.push_back(pr.grid.dx_m);
     err.push_back(std::abs(s.load_N / (pr.grid.ny * pr.grid.dy_m) / load_ref - 1.0));
-    const std::vector<double> q = x_face_flow_m2_per_s(pr, s);
-    for (double qf : q) EXPECT_NEAR(qf, q.front(), 1e-12 * q_ref);
-    q_err = std::abs(q.front() / q_ref - 1.0);
+    const Eigen::ArrayXXd q = x_face_flow_m2_per_s(pr, s);
+    for (double qf : q.reshaped()) EXPECT_NEAR(qf, q(0), 1e-12 * q_ref);
+    q_err = std::abs(q(0) / q_ref - 1.0);
   }
   const double order = observed_order(dx, err);
   std::printf("  inclined pad with phi_x %.2f, t = %.1f h + %.1f h0: load error %.2e at nx = 401 (order %.2f), "
@@ -173,15 +173,15 @@ TEST(AverageFlowInclinedPad, MatchesTheClosedFormWithFactorAndFilmOffset) {
 // Couette flux scale U t̄ dy / 2 (observed ≈ 1e-14), and the film's net outflow equals −storage.
 TEST(AverageFlowConservation, CellsBalanceWithVariableFactorsAndCavitation) {
   ReynoldsProblem pr = wavy_pad(81, 41, Cavitation::mass_conserving);
-  pr.gap_rate_m_per_s.assign(pr.grid.size(), -2e-7);
-  pr.pressure_flow_factor_x.resize(pr.grid.size());
-  pr.pressure_flow_factor_y.resize(pr.grid.size());
-  pr.couette_film_m.resize(pr.grid.size());
-  for (std::size_t n = 0; n < pr.grid.size(); ++n) {
+  pr.gap_rate_m_per_s = pr.grid.field(-2e-7);
+  pr.pressure_flow_factor_x = pr.grid.field();
+  pr.pressure_flow_factor_y = pr.grid.field();
+  pr.couette_film_m = pr.grid.field();
+  for (Eigen::Index n = 0; n < pr.grid.size(); ++n) {
     const double s = std::sin(0.37 * static_cast<double>(n));
-    pr.pressure_flow_factor_x[n] = 0.8 + 0.3 * s;
-    pr.pressure_flow_factor_y[n] = 0.6 - 0.2 * s;
-    pr.couette_film_m[n] = pr.gap_m[n] * (1.0 + 0.1 * s);
+    pr.pressure_flow_factor_x(n) = 0.8 + 0.3 * s;
+    pr.pressure_flow_factor_y(n) = 0.6 - 0.2 * s;
+    pr.couette_film_m(n) = pr.gap_m(n) * (1.0 + 0.1 * s);
   }
   const ReynoldsSolution s = solve_reynolds(pr);
   ASSERT_TRUE(s.summary.converged) << s.summary.message;
@@ -206,22 +206,22 @@ TEST(AverageFlowInput, RejectsBadFieldsNamingFieldAndNode) {
   };
   const ReynoldsProblem good = wavy_pad(11, 5, Cavitation::none);
   ReynoldsProblem p = good;
-  p.pressure_flow_factor_x.assign(7, 1.0);
+  p.pressure_flow_factor_x = Eigen::ArrayXXd::Ones(7, 1);
   expect_message(p, "pressure_flow_factor_x must be empty or have one value per node");
   p = good;
-  p.pressure_flow_factor_y.assign(good.grid.size(), 1.0);
-  p.pressure_flow_factor_y[13] = 0.0;
+  p.pressure_flow_factor_y = good.grid.field(1.0);
+  p.pressure_flow_factor_y(13) = 0.0;
   expect_message(p, "pressure_flow_factor_y must be finite and > 0 everywhere; node (i=2, j=1)");
   p = good;
-  p.pressure_flow_factor_x.assign(good.grid.size(), 1.0);
-  p.pressure_flow_factor_x[4] = std::numeric_limits<double>::quiet_NaN();
+  p.pressure_flow_factor_x = good.grid.field(1.0);
+  p.pressure_flow_factor_x(4) = std::numeric_limits<double>::quiet_NaN();
   expect_message(p, "pressure_flow_factor_x must be finite and > 0 everywhere; node (i=4, j=0)");
   p = good;
   p.couette_film_m = good.gap_m;
-  p.couette_film_m[25] = -1e-9;
+  p.couette_film_m(25) = -1e-9;
   expect_message(p, "couette_film_m must be finite and >= 0 everywhere; node (i=3, j=2)");
   p = good;
-  p.couette_film_m.assign(good.grid.size(), 0.0);
+  p.couette_film_m = good.grid.field(0.0);
   EXPECT_NO_THROW(validate(p));  // t = 0 is allowed: no Couette transport
 }
 

@@ -40,16 +40,16 @@ struct FourStep {
 ReynoldsProblem four_step_problem(int nx, FourStep& s) {
   ReynoldsProblem pr;
   const double length = 1e-3;
-  pr.grid = Grid{nx, 3, length / (nx - 1), 1e-5};
+  pr.grid = contact::Grid{nx, 3, length / (nx - 1), 1e-5};
   const double dx = pr.grid.dx_m;
   auto snap = [&](double x) { return (std::round(x / dx - 0.5) + 0.5) * dx; };
   const double a = snap(0.3 * length), b = snap(0.5 * length), c = snap(0.9 * length);
   s = FourStep{a, b - a, c - b, length - c, 2e-6, 1e-6, 3e-6, 1e-6, 0.5};
-  pr.gap_m.resize(pr.grid.size());
+  pr.gap_m = pr.grid.field();
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < nx; ++i) {
       const double x = i * dx;
-      pr.gap_m[pr.grid.index(i, j)] = x < a ? s.ha : x < b ? s.hb : x < c ? s.hc : s.hd;
+      pr.gap_m(i, j) = x < a ? s.ha : x < b ? s.hb : x < c ? s.hc : s.hd;
     }
   pr.viscosity_Pa_s = kEta;
   pr.sliding_speed_m_per_s = s.u;
@@ -71,16 +71,15 @@ FourStepResult solve_four_step(int nx, Complementarity complementarity = Complem
   ReynoldsOptions options;
   options.complementarity = complementarity;
   r.solution = solve_reynolds(r.problem, options);
-  const Grid& g = r.problem.grid;
+  const contact::Grid& g = r.problem.grid;
   r.theta_min = 1.0;
   int last_cavitated = -1;
   for (int i = 0; i < nx; ++i) {
-    const std::size_t k = g.index(i, 1);
-    if (r.solution.fill_fraction[k] < 1.0 - 1e-9) {
+    if (r.solution.fill_fraction(i, 1) < 1.0 - 1e-9) {
       last_cavitated = i;
-      r.theta_min = std::min(r.theta_min, r.solution.fill_fraction[k]);
+      r.theta_min = std::min(r.theta_min, r.solution.fill_fraction(i, 1));
     }
-    if (i * g.dx_m > r.ref.la + r.ref.lb) r.second_peak_Pa = std::max(r.second_peak_Pa, r.solution.pressure_Pa[k]);
+    if (i * g.dx_m > r.ref.la + r.ref.lb) r.second_peak_Pa = std::max(r.second_peak_Pa, r.solution.pressure_Pa(i, 1));
   }
   r.front_m = (last_cavitated + 0.5) * g.dx_m;  // the front lies between the last cavitated node and the next
   r.flow_per_width = film_flow(r.problem, r.solution).inflow_x0_m3_per_s / (g.ny * g.dy_m);
@@ -125,12 +124,12 @@ TEST_P(JfoCavitation, ConservesMassThroughRuptureAndReformation) {
   EXPECT_NEAR(f.outflow_xL_m3_per_s / f.inflow_x0_m3_per_s, 1.0, 1e-8);
   EXPECT_LT(f.max_cell_imbalance_m3_per_s, 1e-8 * f.inflow_x0_m3_per_s);
   EXPECT_GT(r.solution.cavitated_fraction, 0.1);
-  for (double p : r.solution.pressure_Pa) EXPECT_GE(p, -1e-9 * r.solution.max_pressure_Pa);
+  for (double p : r.solution.pressure_Pa.reshaped()) EXPECT_GE(p, -1e-9 * r.solution.max_pressure_Pa);
 
   ReynoldsProblem full = r.problem;
   full.cavitation = Cavitation::none;
   ReynoldsSolution half_sommerfeld = solve_reynolds(full);
-  for (double& p : half_sommerfeld.pressure_Pa) p = std::max(p, 0.0);
+  for (double& p : half_sommerfeld.pressure_Pa.reshaped()) p = std::max(p, 0.0);
   const FilmFlow hs = film_flow(full, half_sommerfeld);
   std::printf("  largest cell imbalance / through-flow: JFO %.1e, half-Sommerfeld %.1e\n",
               f.max_cell_imbalance_m3_per_s / f.inflow_x0_m3_per_s, hs.max_cell_imbalance_m3_per_s / hs.inflow_x0_m3_per_s);
@@ -181,10 +180,10 @@ TEST(JfoCavitationJournal, LongBearingMatchesSwiftStieber) {
 
   const int nx = 801;
   ReynoldsProblem pr;
-  pr.grid = Grid{nx, 3, 2 * std::numbers::pi * radius / (nx - 1), 1e-5};
-  pr.gap_m.resize(pr.grid.size());
+  pr.grid = contact::Grid{nx, 3, 2 * std::numbers::pi * radius / (nx - 1), 1e-5};
+  pr.gap_m = pr.grid.field();
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < nx; ++i) pr.gap_m[pr.grid.index(i, j)] = gap(i * pr.grid.dx_m / radius);
+    for (int i = 0; i < nx; ++i) pr.gap_m(i, j) = gap(i * pr.grid.dx_m / radius);
   pr.viscosity_Pa_s = kEta;
   pr.sliding_speed_m_per_s = u;
   pr.boundary_y = BoundaryY::periodic;
@@ -193,7 +192,7 @@ TEST(JfoCavitationJournal, LongBearingMatchesSwiftStieber) {
   ASSERT_TRUE(s.summary.converged) << s.summary.message;
   int first_cavitated = -1;
   for (int i = 0; i < nx && first_cavitated < 0; ++i)
-    if (s.fill_fraction[pr.grid.index(i, 1)] < 1.0 - 1e-9) first_cavitated = i;
+    if (s.fill_fraction(i, 1) < 1.0 - 1e-9) first_cavitated = i;
   const double theta_rupture = (first_cavitated - 0.5) * pr.grid.dx_m / radius;
   const double width = pr.grid.ny * pr.grid.dy_m;
   std::printf("  rupture %.4f rad (Swift-Stieber %.4f), peak %.4e Pa (%.4e), load %.4e N/m (%.4e), %d Newton\n",
@@ -205,7 +204,7 @@ TEST(JfoCavitationJournal, LongBearingMatchesSwiftStieber) {
   // In the cavitated zone the film carries the rupture flow: ϑ h = h_c (to the upwind scheme's
   // O(dx) smearing, 1 %).
   const int probe = (first_cavitated + nx) / 2;
-  EXPECT_NEAR(s.fill_fraction[pr.grid.index(probe, 1)] * pr.gap_m[pr.grid.index(probe, 1)] / gap(theta_c), 1.0, 1e-2);
+  EXPECT_NEAR(s.fill_fraction(probe, 1) * pr.gap_m(probe, 1) / gap(theta_c), 1.0, 1e-2);
 }
 
 // Outcomes are data: a Newton budget too small to converge is reported (converged = false with
@@ -245,21 +244,21 @@ TEST(JfoCavitationOutcome, SymbolicAnalysesReusedAcrossSolves) {
 ReynoldsProblem symmetric_rough_gap(Cavitation cavitation) {
   const int nx = 81, ny = 40;
   ReynoldsProblem pr;
-  pr.grid = Grid{nx, ny, 1e-3 / (nx - 1), 1e-3 / ny};
-  pr.gap_m.resize(pr.grid.size());
+  pr.grid = contact::Grid{nx, ny, 1e-3 / (nx - 1), 1e-3 / ny};
+  pr.gap_m = pr.grid.field();
   std::mt19937_64 rng(7);
   std::normal_distribution<double> noise(0.0, 1.0);
-  std::vector<double> z(pr.grid.size());
-  for (double& v : z) v = noise(rng);
+  Eigen::ArrayXXd z = pr.grid.field();
+  for (double& v : z.reshaped()) v = noise(rng);
   const double mean_gap = 1e-6, sigma = 0.3e-6;
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       // three-point smoothing along x gives the asperities a slope the wedge terms can feel
-      auto zz = [&](int ii) { return z[pr.grid.index(std::clamp(ii, 0, nx - 1), j)]; };
+      auto zz = [&](int ii) { return z(std::clamp(ii, 0, nx - 1), j); };
       const double a = (zz(i - 1) + 2 * zz(i) + zz(i + 1)) / 4, b = (zz(nx - i - 2) + 2 * zz(nx - 1 - i) + zz(nx - i)) / 4;
-      pr.gap_m[pr.grid.index(i, j)] = mean_gap + sigma * 0.5 * (a + b);
+      pr.gap_m(i, j) = mean_gap + sigma * 0.5 * (a + b);
     }
-  for (double& h : pr.gap_m) h = std::max(h, 0.05 * mean_gap);
+  for (double& h : pr.gap_m.reshaped()) h = std::max(h, 0.05 * mean_gap);
   pr.viscosity_Pa_s = kEta;
   pr.sliding_speed_m_per_s = 0.1;
   pr.boundary_y = BoundaryY::periodic;
@@ -273,12 +272,12 @@ TEST(RugosityLift, SymmetricRoughGapLiftsOnlyWithCavitation) {
   const ReynoldsSolution cav = solve_reynolds(cav_problem);
   ASSERT_TRUE(cav.summary.converged) << cav.summary.message;
   double abs_integral = 0;
-  for (double p : full.pressure_Pa) abs_integral += std::abs(p) * cav_problem.grid.dx_m * cav_problem.grid.dy_m;
+  for (double p : full.pressure_Pa.reshaped()) abs_integral += std::abs(p) * cav_problem.grid.dx_m * cav_problem.grid.dy_m;
   std::printf("  lift: full film %.3e N, JFO %.3e N, integral |p| %.3e N, cavitated %.1f %%\n", full.load_N, cav.load_N,
               abs_integral, 100 * cav.cavitated_fraction);
   EXPECT_NEAR(full.load_N, 0.0, 1e-9 * abs_integral);
   EXPECT_GT(cav.load_N, 0.2 * abs_integral);
-  for (double p : cav.pressure_Pa) EXPECT_GE(p, -1e-9 * cav.max_pressure_Pa);
+  for (double p : cav.pressure_Pa.reshaped()) EXPECT_GE(p, -1e-9 * cav.max_pressure_Pa);
 }
 
 // Complementarity is homogeneous: p → λp with ϑ unchanged solves the problem with ηU → ληU.

@@ -27,8 +27,8 @@ constexpr double kGap = 1e-6, kRate = -1e-6;
 // A film that is uniform across y (ny = 3, periodic): the infinitely wide bearing.
 ReynoldsProblem channel(int nx, double length_m, double width_m) {
   ReynoldsProblem pr;
-  pr.grid = Grid{nx, 3, length_m / (nx - 1), width_m / 3};
-  pr.gap_m.assign(pr.grid.size(), kGap);
+  pr.grid = contact::Grid{nx, 3, length_m / (nx - 1), width_m / 3};
+  pr.gap_m = pr.grid.field(kGap);
   pr.viscosity_Pa_s = kEta;
   pr.boundary_y = BoundaryY::periodic;
   return pr;
@@ -48,10 +48,9 @@ TEST(SqueezeFilmDiscs, ConvergesToAppendixIIIAtSecondOrder) {
     const double p0 = squeeze_film_pressure_Pa(kEta, kRadius, kGap, kRate, 0.0);
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const std::size_t k = pr.grid.index(i, j);
-        if (!s.wetted[k]) continue;
+        if (!s.wetted(i, j)) continue;
         const double r = std::hypot(i * pr.grid.dx_m - pr.disc->centre_x_m, j * pr.grid.dy_m - pr.disc->centre_y_m);
-        e = std::max(e, std::abs(s.pressure_Pa[k] - squeeze_film_pressure_Pa(kEta, kRadius, kGap, kRate, r)) / p0);
+        e = std::max(e, std::abs(s.pressure_Pa(i, j) - squeeze_film_pressure_Pa(kEta, kRadius, kGap, kRate, r)) / p0);
       }
     dx.push_back(pr.grid.dx_m);
     load_err.push_back(std::abs(s.load_N / load_ref - 1.0));
@@ -108,7 +107,7 @@ TEST(ChannelFlow, PlaneCouette) {
   ReynoldsProblem pr = channel(41, 1e-3, 1e-4);
   pr.sliding_speed_m_per_s = 0.2;
   const ReynoldsSolution s = solve_reynolds(pr);
-  for (double p : s.pressure_Pa) EXPECT_NEAR(p, 0.0, 1e-9);
+  for (double p : s.pressure_Pa.reshaped()) EXPECT_NEAR(p, 0.0, 1e-9);
   const FilmFlow f = film_flow(pr, s);
   const double width = pr.grid.ny * pr.grid.dy_m;
   EXPECT_NEAR(f.inflow_x0_m3_per_s / width, 0.5 * 0.2 * kGap, 1e-12 * 0.5 * 0.2 * kGap);
@@ -123,7 +122,7 @@ TEST(ChannelFlow, PlanePoiseuille) {
   const ReynoldsSolution s = solve_reynolds(pr);
   for (int i = 0; i < pr.grid.nx; ++i) {
     const double x = i * pr.grid.dx_m;
-    EXPECT_NEAR(s.pressure_Pa[pr.grid.index(i, 1)], 3e5 * (1.0 - x / 2e-3), 1e-10 * 3e5);
+    EXPECT_NEAR(s.pressure_Pa(i, 1), 3e5 * (1.0 - x / 2e-3), 1e-10 * 3e5);
   }
   const double q_ref = kGap * kGap * kGap * 3e5 / (12.0 * kEta * 2e-3);
   const FilmFlow f = film_flow(pr, s);
@@ -144,7 +143,7 @@ TEST(ChannelFlow, PiezoviscousPoiseuille) {
   const double a = -std::expm1(-psi * p_in);
   for (int i = 0; i < pr.grid.nx; ++i) {
     const double x = i * pr.grid.dx_m;
-    EXPECT_NEAR(s.pressure_Pa[pr.grid.index(i, 1)], -std::log1p(-a * (1.0 - x / 2e-3)) / psi, 1e-10 * p_in);
+    EXPECT_NEAR(s.pressure_Pa(i, 1), -std::log1p(-a * (1.0 - x / 2e-3)) / psi, 1e-10 * p_in);
   }
   const double q_ref = kGap * kGap * kGap * a / (12.0 * kEta * 2e-3 * psi);
   EXPECT_NEAR(film_flow(pr, s).inflow_x0_m3_per_s / (pr.grid.ny * pr.grid.dy_m), q_ref, 1e-10 * q_ref);
@@ -155,7 +154,7 @@ TEST(ChannelFlow, PiezoviscousPoiseuille) {
 TEST(ChannelFlow, PiezoviscousBlowUpIsReported) {
   ReynoldsProblem pr = channel(101, 5e-3, 1e-4);
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < pr.grid.nx; ++i) pr.gap_m[pr.grid.index(i, j)] = 2e-7 * (1.0 + 1.5 * (1.0 - i / 100.0));
+    for (int i = 0; i < pr.grid.nx; ++i) pr.gap_m(i, j) = 2e-7 * (1.0 + 1.5 * (1.0 - i / 100.0));
   pr.sliding_speed_m_per_s = 1.0;
   pr.pressure_viscosity_per_Pa = 2e-8;  // isoviscous peak here ≈ 6.8e8 Pa > 1/ψ = 5e7 Pa
   const ReynoldsSolution s = solve_reynolds(pr);
@@ -174,7 +173,7 @@ TEST(InclinedPad, LoadMatchesClosedForm) {
   for (int nx : {51, 101, 201, 401}) {
     ReynoldsProblem pr = channel(nx, length, 1e-4);
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < nx; ++i) pr.gap_m[pr.grid.index(i, j)] = h0 * (1.0 + k * (1.0 - i * pr.grid.dx_m / length));
+      for (int i = 0; i < nx; ++i) pr.gap_m(i, j) = h0 * (1.0 + k * (1.0 - i * pr.grid.dx_m / length));
     pr.sliding_speed_m_per_s = u;
     const ReynoldsSolution s = solve_reynolds(pr);
     dx.push_back(pr.grid.dx_m);
@@ -195,12 +194,12 @@ TEST(RayleighStep, PeakPressureExact) {
   const int step_face = 50;  // step between nodes 49 and 50, at a = 49.5 dx
   const double a = (step_face - 0.5) * pr.grid.dx_m;
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < nx; ++i) pr.gap_m[pr.grid.index(i, j)] = i < step_face ? h1 : h2;
+    for (int i = 0; i < nx; ++i) pr.gap_m(i, j) = i < step_face ? h1 : h2;
   pr.sliding_speed_m_per_s = u;
   const ReynoldsSolution s = solve_reynolds(pr);
   const double pa = 6.0 * kEta * u * (h1 - h2) / (h1 * h1 * h1 / a + h2 * h2 * h2 / (length - a));
   // The peak lies between the two nodes either side of the step: linear profiles on each side.
-  const double p49 = s.pressure_Pa[pr.grid.index(49, 1)], p50 = s.pressure_Pa[pr.grid.index(50, 1)];
+  const double p49 = s.pressure_Pa(49, 1), p50 = s.pressure_Pa(50, 1);
   EXPECT_NEAR(p49, pa * 49.0 / 49.5, 1e-10 * pa);
   EXPECT_NEAR(p50, pa * (nx - 1 - 50) / (nx - 1 - 49.5), 1e-10 * pa);
 }
@@ -217,13 +216,13 @@ TEST(ReynoldsInput, RejectsBadInputWithClearMessage) {
   };
   const ReynoldsProblem good = channel(11, 1e-3, 1e-4);
   ReynoldsProblem p = good;
-  p.gap_m[7] = 0.0;
+  p.gap_m(7) = 0.0;
   expect_message(p, "gap_m must be finite and > 0");
   p = good;
-  p.gap_m[7] = -1e-6;
+  p.gap_m(7) = -1e-6;
   expect_message(p, "node (i=7, j=0)");
   p = good;
-  p.gap_m[3] = std::numeric_limits<double>::quiet_NaN();
+  p.gap_m(3) = std::numeric_limits<double>::quiet_NaN();
   expect_message(p, "gap_m");
   p = good;
   p.viscosity_Pa_s = 0.0;
@@ -239,7 +238,7 @@ TEST(ReynoldsInput, RejectsBadInputWithClearMessage) {
   expect_message(p, "pressure_viscosity_per_Pa");
   p = good;
   p.grid.ny = 2;
-  p.gap_m.resize(p.grid.size(), kGap);
+  p.gap_m = p.grid.field(kGap);
   expect_message(p, "at least 3 nodes");
   EXPECT_THROW(parallel_discs_problem(kRadius, kGap, kRate, kEta, 0.0, 2), std::invalid_argument);
   EXPECT_THROW(solve_reynolds(parallel_discs_problem(kRadius, -kGap, kRate, kEta, 0.0, 21)), std::invalid_argument);

@@ -40,20 +40,18 @@ TEST(RoughPairFilm, RigidModeIsTheWrappedRoughPairGap) {
     const double sigma = std::hypot(0.1e-6, 0.4e-6);
     EXPECT_NEAR(f.composite_rms_height_m, sigma, 1e-12 * sigma);
     std::size_t touching = 0;
-    const std::vector<double> h =
-        rough_pair_gap_m(std::vector<double>(upper.data(), upper.data() + upper.size()),
-                         std::vector<double>(lower.data(), lower.data() + lower.size()), 0.5e-6, f.floor_m, &touching);
-    const Grid& g = f.problem.grid;
+    const Eigen::ArrayXXd h = rough_pair_gap_m(upper, lower, 0.5e-6, f.floor_m, &touching);
+    const contact::Grid& g = f.problem.grid;
     ASSERT_EQ(g.nx, n + 1);
     ASSERT_EQ(g.ny, n);
     EXPECT_DOUBLE_EQ(g.dx_m, kSize / n);
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i <= n; ++i) ASSERT_EQ(f.problem.gap_m[g.index(i, j)], h[static_cast<std::size_t>(j) * n + i % n]);
+      for (int i = 0; i <= n; ++i) ASSERT_EQ(f.problem.gap_m(i, j), h(i % n, j));
     EXPECT_EQ(f.contact_nodes, touching);
     EXPECT_GT(touching, 0u);  // h̄ = 1.2σ: some contact
     EXPECT_EQ(f.problem.boundary_y, BoundaryY::periodic);
     EXPECT_FALSE(f.contact.has_value());
-    EXPECT_TRUE(f.problem.gap_rate_m_per_s.empty());
+    EXPECT_EQ(f.problem.gap_rate_m_per_s.size(), 0);
     EXPECT_EQ(f.problem.sliding_speed_m_per_s, 0.0);
     EXPECT_NO_THROW(validate(f.problem));
   }
@@ -83,8 +81,8 @@ TEST(RoughPairFilm, DeformedModeIsTheFlooredContactGap) {
   EXPECT_EQ(f.contact_nodes, below);
   EXPECT_GT(f.contact_nodes, 0u);
   for (int j = 0; j < n; ++j) {
-    EXPECT_EQ(f.problem.gap_m[f.problem.grid.index(n, j)], f.problem.gap_m[f.problem.grid.index(0, j)]);
-    EXPECT_EQ(f.problem.gap_m[f.problem.grid.index(5, j)], std::max(c.gap_m(5, j), f.floor_m));
+    EXPECT_EQ(f.problem.gap_m(n, j), f.problem.gap_m(0, j));
+    EXPECT_EQ(f.problem.gap_m(5, j), std::max(c.gap_m(5, j), f.floor_m));
   }
   RoughPairFilmOptions harder = o;
   harder.contact_load_N = 2.0;
