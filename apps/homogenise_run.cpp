@@ -109,8 +109,13 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   law["stribeck"] = sj;
   law["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int bem_iterations = 0;
-  for (const auto& p : patch_results) bem_iterations += p.bem_iterations;
+  double bem_s = 0, flow_s = 0, lift_s = 0;  // summed over realisations (CPU-thread seconds)
+  for (const auto& p : patch_results) {
+    bem_iterations += p.bem_iterations;
+    bem_s += p.bem_s, flow_s += p.flow_cells_s, lift_s += p.lift_cells_s;
+  }
   law["bem_iterations"] = bem_iterations;
+  law["stage_thread_s"] = {{"bem", bem_s}, {"flow_cells", flow_s}, {"lift_cells", lift_s}};
 
   write_area_csv(dir / "area.csv", pin, cells.sigma_m);
   write_stribeck_csv(dir / "stribeck.csv", stribeck);

@@ -1,5 +1,6 @@
 #include "homogenise/patch.h"
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -81,6 +82,10 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
         " lies below the first contact of seed " + std::to_string(r.seed) + " at h/σ = " +
         std::to_string(r.first_contact_separation_m / sigma) + "; add a larger one");
 
+  using Clock = std::chrono::steady_clock;
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const auto bem_start = Clock::now();
+
   // Solid: the rigid film is h̄ + z, so as a profile against a flat gap0 = z − min z and δ = −min z − h̄.
   const contact::Grid grid = contact::Grid::patch(z.rows(), z.cols(), side, side);
   contact::ElasticHalfSpace halfspace(grid, o.e_star_Pa, true, 1);
@@ -127,9 +132,15 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   r.mu_s_max = tau * area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau)) / load;
   r.mu_boundary = tau * area_at_cap(o.hardness_Pa) / load;
 
+  r.bem_s = seconds_since(bem_start);
+
   // Fluid cells on the same realisation.
+  const auto flow_start = Clock::now();
   const auto ff = lubrication::flow_factors(cell_options(o, r.seed, o.flow_contact_gap_fraction));
+  r.flow_cells_s = seconds_since(flow_start);
+  const auto lift_start = Clock::now();
   const auto lift = lubrication::rugosity_lift(cell_options(o, r.seed, o.lift_contact_gap_fraction));
+  r.lift_cells_s = seconds_since(lift_start);
   for (std::size_t m = 0; m < nodes; ++m) {
     r.phi_x.push_back(ff[m].phi_x.mean);
     r.phi_y.push_back(ff[m].phi_y.mean);
@@ -166,6 +177,7 @@ nlohmann::json to_json(const PatchResult& p) {
           {"mu_s_max", p.mu_s_max},
           {"mu_boundary", p.mu_boundary},
           {"bem_iterations", p.bem_iterations},
+          {"stage_wall_s", {{"bem", p.bem_s}, {"flow_cells", p.flow_cells_s}, {"lift_cells", p.lift_cells_s}}},
           {"unconverged", p.unconverged},
           {"messages", p.messages}};
 }
@@ -189,6 +201,10 @@ PatchResult patch_from_json(const nlohmann::json& j) {
   j.at("mu_s_max").get_to(p.mu_s_max);
   j.at("mu_boundary").get_to(p.mu_boundary);
   j.at("bem_iterations").get_to(p.bem_iterations);
+  const nlohmann::json& t = j.at("stage_wall_s");
+  t.at("bem").get_to(p.bem_s);
+  t.at("flow_cells").get_to(p.flow_cells_s);
+  t.at("lift_cells").get_to(p.lift_cells_s);
   j.at("unconverged").get_to(p.unconverged);
   j.at("messages").get_to(p.messages);
   return p;

@@ -35,6 +35,9 @@ struct PatchResult {
   double mu_s_max = 0;                     // at the pin's nominal pressure
   double mu_boundary = 0;                  // τ_i A_r / W at the same pressure
   int bem_iterations = 0;                  // CG iterations summed over the solid solves
+  // Wall time of the stages (s): BEM load–separation and junction solves, flow- and shear-factor
+  // cells, cavitating lift cells.
+  double bem_s = 0, flow_cells_s = 0, lift_cells_s = 0;
   int unconverged = 0;                     // solves that did not converge (their nodes are NaN)
   std::string messages;                    // why, for each unconverged solve
 };
