@@ -11,5 +11,6 @@ void add_contact_command(CLI::App& app);
 void add_reynolds_command(CLI::App& app);
 void add_gap_command(CLI::App& app);
 void add_homogenise_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 
 }  // namespace tribo::cli

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   tribo::cli::add_contact_command(app);
   tribo::cli::add_reynolds_command(app);
   tribo::cli::add_homogenise_command(app);
+  tribo::cli::add_sweep_command(app);
   tribo::cli::add_gap_command(app);
   try {
     app.parse(argc, argv);

@@ -1,0 +1,59 @@
+# `tribo sweep` survives kills: a sweep of 12 rig points is killed (SIGKILL via TIMEOUT) four times
+# at different moments and restarted, then finished; its results.csv must hold the same rows with the
+# same values (the wall_s column aside) as an uninterrupted run. A point whose config is bad becomes a
+# `failed` row naming the key, and the sweep goes on; a changed spec on resume is refused (status 2).
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(WRITE ${WORK}/rig.toml "[rig]\ndrive_speed_m_per_s = 1e-3\n[friction]\nlaw = \"coulomb\"\nmu_s = 0.3\nmu_k = 0.2\n[run]\nduration_s = 3.0\n")
+file(WRITE ${WORK}/spec.toml "[base]\ncommand = \"rig\"\nconfig = \"rig.toml\"\n"
+  "[[axis]]\nkey = \"rig.drive_speed_m_per_s\"\nfrom = 1e-3\nto = 1e-1\ncount = 4\nscale = \"log\"\n"
+  "[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [0.99822, 2.0, -1.0]\n"
+  "[sweep]\njobs = 2\n[outputs]\ncolumns = [\"summary.json:regime\", \"summary.json:peak_to_peak_m\", \"summary.json:breakaways\"]\n")
+
+# The results without the wall_s column (6th field) and with the output folder's name taken out of
+# the error messages, one list entry per line.
+function(rows_without_wall file out)
+  file(STRINGS ${file} lines)
+  get_filename_component(dir ${file} DIRECTORY)
+  set(result "")
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE "^([^,]*,[^,]*,[^,]*,[^,]*,[^,]*,)[^,]*" "\\1" line "${line}")
+    string(REPLACE "${dir}" "DIR" line "${line}")
+    list(APPEND result "${line}")
+  endforeach()
+  set(${out} "${result}" PARENT_SCOPE)
+endfunction()
+
+execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/full RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "uninterrupted sweep failed (${status}): ${err}")
+endif()
+rows_without_wall(${WORK}/full/results.csv full)
+list(LENGTH full n)
+if(NOT n EQUAL 13)
+  message(FATAL_ERROR "expected a header and 12 rows, got ${n}: ${full}")
+endif()
+list(FILTER full INCLUDE REGEX ",-1,failed,\"[^\"]*mass_kg")
+list(LENGTH full nfailed)
+if(NOT nfailed EQUAL 4)
+  message(FATAL_ERROR "expected the 4 points with mass -1 to fail naming rig.mass_kg, found ${nfailed}")
+endif()
+
+foreach(t 0.15 0.3 0.5 0.8)
+  execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/killed TIMEOUT ${t} RESULT_VARIABLE ignored)
+endforeach()
+execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/killed RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "resumed sweep failed (${status}): ${err}")
+endif()
+rows_without_wall(${WORK}/full/results.csv full)
+rows_without_wall(${WORK}/killed/results.csv killed)
+if(NOT full STREQUAL killed)
+  message(FATAL_ERROR "killed-and-resumed results differ:\n${full}\n---\n${killed}")
+endif()
+
+file(APPEND ${WORK}/spec.toml "# changed\n")
+execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/killed RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 2 OR NOT err MATCHES "different spec")
+  message(FATAL_ERROR "a changed spec on resume: expected status 2 saying so, got ${status}: ${err}")
+endif()
