@@ -106,7 +106,7 @@ void write_comparison(const std::filesystem::path& path, const std::vector<Compa
 void write_report(const std::filesystem::path& path, const rig::RigParameters& rig, const std::string& law_label,
                   const std::vector<SpeedRun>& sweep, const std::vector<ComparisonRow>& rows, double wall_s) {
   std::ostringstream md;
-  md << "# tribo demo — the thesis rig, steel on steel\n\n"
+  md << "# tribo demo — the thesis rig\n\n"
      << "Rig (thesis Appendix I): M = " << rig.mass_kg << " kg, k = " << rig.stiffness_N_per_m << " N/m, r = "
      << rig.damping_N_s_per_m << " N s/m, W = " << rig.normal_load_N << " N; omega_d = "
      << fmt(rig.damped_frequency_rad_per_s()) << " rad/s, r/2M = " << fmt(rig.decay_rate_per_s()) << " 1/s.\n\n"
