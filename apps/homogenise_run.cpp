@@ -123,6 +123,9 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   std::printf("mu_s,max %.4g (BEM, %d realisations), dry mu %.4g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
               cells.mu_s_max.mean, cells.realisations, cells.mu_boundary.mean, stribeck.size(), o.pin.normal_load_N,
               law["wall_s"].get<double>(), out.string().c_str());
+  if (!law["table"]["dropped_separations_m"].empty())
+    std::fprintf(stderr, "tribo: warning: %zu separations left out of the law table (no converged solve there): %s\n",
+                 law["table"]["dropped_separations_m"].size(), law["table"]["dropped_separations_m"].dump().c_str());
   if (cells.unconverged > 0 || pin.reynolds_unconverged > 0)
     std::fprintf(stderr, "tribo: warning: %d cell and %d pin-face solves did not converge (left out; see law.json)\n",
                  cells.unconverged, pin.reynolds_unconverged);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -54,7 +55,11 @@ SweepOutput read_output(const ConfigTable& t, const std::string& spec) {
   o.path = spec.substr(colon + 1);
   if (o.file.find('/') != std::string::npos || o.file.find("..") != std::string::npos)
     t.fail("columns", "\"" + o.file + "\" must name a file of the point's output folder, without a path");
-  o.column = split_dotted(o.path).back();
+  // The path's last name, with the array indices on the way appended ("stribeck.12.mu" → "mu_12").
+  for (const std::string& part : split_dotted(o.path))
+    if (part.find_first_not_of("0123456789") != std::string::npos) o.column = part;
+  for (const std::string& part : split_dotted(o.path))
+    if (part.find_first_not_of("0123456789") == std::string::npos) o.column += "_" + part;
   return o;
 }
 
@@ -116,7 +121,15 @@ SweepSpec load_sweep_spec(const std::filesystem::path& path) {
                                        std::to_string(a.values.size()) + ", '" + spec.axes.front().key + "' " +
                                        std::to_string(spec.axes.front().values.size()) + ")");
   if (auto o = root.table("outputs")) {
-    for (const std::string& c : o->string_array("columns")) spec.outputs.push_back(read_output(*o, c));
+    std::set<std::string> taken = {"point_id", "status", "error", "wall_s"};
+    for (const SweepAxis& a : spec.axes) taken.insert(a.key);
+    for (const std::string& c : o->string_array("columns")) {
+      spec.outputs.push_back(read_output(*o, c));
+      SweepOutput& out = spec.outputs.back();
+      // A name already in the table gets its file's stem in front ("law.json:wall_s" → "law_wall_s").
+      if (taken.count(out.column)) out.column = std::filesystem::path(out.file).stem().string() + "_" + out.column;
+      if (!taken.insert(out.column).second) o->fail("columns", "two outputs would both be the column '" + out.column + "'");
+    }
     o->finish();
   }
   root.finish();
@@ -174,8 +187,14 @@ std::string json_field(const std::filesystem::path& file, const std::string& pat
   if (j.is_discarded()) throw std::runtime_error(file.string() + ": malformed JSON");
   const nlohmann::json* at = &j;
   for (const std::string& part : split_dotted(path)) {
-    if (!at->is_object() || !at->contains(part)) throw std::runtime_error(file.string() + ": no value at '" + path + "'");
-    at = &(*at)[part];
+    if (at->is_array() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&
+        std::stoul(part) < at->size()) {
+      at = &(*at)[std::stoul(part)];
+    } else if (at->is_object() && at->contains(part)) {
+      at = &(*at)[part];
+    } else {
+      throw std::runtime_error(file.string() + ": no value at '" + path + "'");
+    }
   }
   if (at->is_number()) {
     char buf[32];

@@ -11,6 +11,7 @@
 //             jobs = 0 (points run at once; 0 = one per core)
 //   [outputs] columns = ["summary.json:regime", "summary.json:peak_to_peak_m", …]
 //             FILE:path — a value of the point's JSON output FILE, path dotted into its objects
+//             and arrays ("law.json:stribeck.12.mu")
 #pragma once
 
 #include <toml++/toml.h>
@@ -29,7 +30,7 @@ struct SweepAxis {
 struct SweepOutput {
   std::string file;             // e.g. "summary.json"
   std::string path;             // dotted, e.g. "rig.normal_load_N"
-  std::string column;           // the results.csv column: the path's last name
+  std::string column;           // the results.csv column: the path's last name (+ index: "mu_12")
 };
 
 struct SweepSpec {

@@ -26,6 +26,30 @@ std::vector<Estimate> column(const std::vector<PatchResult>& patches, std::vecto
   return out;
 }
 
+// Removes the nodes where any column's mean is NaN (no realisation converged there), keeping
+// their separations in dropped_separation_m.
+void drop_unresolved_nodes(CellTable& t) {
+  std::vector<std::vector<Estimate>*> columns = {&t.solid_pressure_Pa, &t.area_fraction, &t.phi_x, &t.phi_y,
+                                                 &t.phi_s, &t.film_over_sigma, &t.phi_f, &t.couette_shear_factor,
+                                                 &t.phi_fp, &t.contact_fraction, &t.lift_per_eta_u_per_m};
+  std::vector<double> kept_separation;
+  std::vector<std::vector<Estimate>> kept(columns.size());
+  for (std::size_t m = 0; m < t.separation_m.size(); ++m) {
+    bool finite = true;
+    for (const auto* c : columns) finite = finite && std::isfinite((*c)[m].mean);
+    if (!finite) {
+      t.dropped_separation_m.push_back(t.separation_m[m]);
+      continue;
+    }
+    kept_separation.push_back(t.separation_m[m]);
+    for (std::size_t c = 0; c < columns.size(); ++c) kept[c].push_back((*columns[c])[m]);
+  }
+  if (kept_separation.size() < 2)
+    throw std::invalid_argument("homogenise: fewer than two separations have a converged solve in every column");
+  t.separation_m = kept_separation;
+  for (std::size_t c = 0; c < columns.size(); ++c) *columns[c] = std::move(kept[c]);
+}
+
 }  // namespace
 
 CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& patches) {
@@ -59,6 +83,7 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
   }
   t.mu_s_max = finite_estimate(mus);
   t.mu_boundary = finite_estimate(mub);
+  drop_unresolved_nodes(t);
   return t;
 }
 

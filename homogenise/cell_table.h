@@ -21,9 +21,13 @@ struct CellTable {
   double first_contact_separation_m = 0;  // the largest over the realisations
   int realisations = 0;
   int unconverged = 0;                    // solves left out (NaN) over all realisations
+  // Separations where some column converged in no realisation: left out of the table (the pin
+  // scale and the rig interpolate over finite nodes only).
+  std::vector<double> dropped_separation_m;
 };
 
-// Throws std::invalid_argument when the patches do not share their nodes or none is given.
+// Throws std::invalid_argument when the patches do not share their nodes or none is given, or when
+// fewer than two nodes keep a finite value in every column.
 CellTable aggregate(const HomogeniseOptions& options, const std::vector<PatchResult>& patches);
 
 }  // namespace tribo::homogenise

@@ -120,7 +120,8 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                 {"wedge_lift_per_eta_u_m", pin.wedge_lift_per_eta_u_m},
                 {"rugosity_lift_per_eta_u_m", pin.rugosity_lift_per_eta_u_m},
                 {"squeeze_per_eta_m", pin.squeeze_per_eta_m},
-                {"shear_per_eta_u_m", pin.shear_per_eta_u_m}};
+                {"shear_per_eta_u_m", pin.shear_per_eta_u_m},
+                {"dropped_separations_m", cells.dropped_separation_m}};
   j["cells"] = {{"sigma_m", cells.sigma_m},
                 {"realisations", cells.realisations},
                 {"unconverged", cells.unconverged},

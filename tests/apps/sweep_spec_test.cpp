@@ -61,6 +61,20 @@ TEST(SweepSpec, PointConfigSetsDottedKeysCreatesTablesAndMakesFilePathsAbsolute)
   EXPECT_EQ(c["friction"]["law"].value<std::string>(), "homogenised");  // not a file: unchanged
 }
 
+TEST(SweepSpec, OutputsReadJsonObjectsAndArraysAndNameTheColumnAfterTheLastKeyAndIndex) {
+  const auto file = folder() / "out.json";
+  std::ofstream(file) << R"({"regime": "stick_slip", "ok": true, "s": [{"mu": 0.25}, {"mu": 0.125}], "nan": null})";
+  EXPECT_EQ(json_field(file, "regime"), "stick_slip");
+  EXPECT_EQ(json_field(file, "ok"), "1");
+  EXPECT_EQ(json_field(file, "s.1.mu"), "0.125");
+  EXPECT_EQ(json_field(file, "nan"), "");  // a NaN written by nlohmann-json as null: an empty field
+  EXPECT_THROW(json_field(file, "s.2.mu"), std::runtime_error);
+  const SweepSpec s = spec_from("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[outputs]\ncolumns = [\"law.json:stribeck.13.mu\"]\n");
+  EXPECT_EQ(s.outputs.front().column, "mu_13");
+  const SweepSpec t = spec_from("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[outputs]\ncolumns = [\"law.json:wall_s\"]\n");
+  EXPECT_EQ(t.outputs.front().column, "law_wall_s");  // the sweep's own wall_s keeps its name
+}
+
 TEST(SweepSpec, BadSpecsNameTheKey) {
   auto expect_error = [](const std::string& text, const std::string& fragment) {
     try {

@@ -6,10 +6,13 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "homogenise/law.h"
 #include "homogenise/patch.h"
 #include "homogenise/pin.h"
 #include "rig/homogenised_law.h"
+#include "rig/law_table.h"
 #include "rig/steady_sliding.h"
 
 namespace tribo::homogenise {
@@ -107,6 +110,35 @@ TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
   }
   // Flow factors reach the smooth film at 8σ: 1 − 1.5 (σ/h)² ≈ 0.977 (Patir–Cheng small-roughness rate).
   EXPECT_NEAR(p.phi_x.back(), 1.0 - 1.5 / 64.0, 0.02);
+}
+
+TEST(LawFile, SeparationsWithoutAConvergedSolveAreLeftOutOfTheTableAndListed) {
+  // A lift cell that converged in no realisation leaves NaN at its separation; the pin scale and the
+  // rig's monotone interpolant need finite nodes, so the table omits that separation (every column
+  // alike), names it, and the law still reads back.
+  HomogeniseOptions o;
+  o.surface.rms_height_m = kSigma;
+  PatchResult p;
+  for (double r : {1.0, 2.0, 3.0, 4.0, 8.0}) {
+    p.separation_m.push_back(r * kSigma);
+    p.solid_pressure_Pa.push_back(r < 4.0 ? 1e8 * std::pow(1.0 - r / 4.0, 2) : 0.0);
+    p.area_fraction.push_back(r < 4.0 ? 0.1 * std::pow(1.0 - r / 4.0, 2) : 0.0);
+    for (auto* c : {&p.phi_x, &p.phi_y, &p.phi_f, &p.couette_shear_factor, &p.phi_fp}) c->push_back(1.0);
+    for (auto* c : {&p.phi_s, &p.contact_fraction}) c->push_back(0.0);
+    p.film_over_sigma.push_back(r);
+    p.lift_per_eta_u_per_m.push_back(r == 2.0 ? std::nan("") : 1e6 / r);
+  }
+  p.mu_s_max = 0.55;
+  p.mu_boundary = 0.19;
+  const CellTable cells = aggregate(o, {p});
+  ASSERT_EQ(cells.separation_m.size(), 4u);
+  ASSERT_EQ(cells.dropped_separation_m, std::vector<double>{2.0 * kSigma});
+  const nlohmann::json law = law_json(o, cells, pin_scale(o, cells));
+  const auto& table = law.at("table");
+  ASSERT_EQ(table.at("separation_m").size(), 4u);
+  EXPECT_EQ(table.at("separation_m")[1].get<double>(), 3.0 * kSigma);
+  EXPECT_EQ(table.at("dropped_separations_m")[0].get<double>(), 2.0 * kSigma);
+  EXPECT_NO_THROW(rig::law_table_from_json(law, "law.json"));
 }
 
 // A mixed-lubrication table: N_s falls to 0 at 3σ, lift and squeeze from a rugosity-like law.
