@@ -29,6 +29,7 @@ struct SelftestArgs {
   std::string out = "out/gap-selftest";
   std::uint64_t seed = 1;
   bool quick = false;
+  std::string generator = "both";  // rig, independent or both
 };
 
 gap::DiagnosisOptions fitting_options(bool quick, std::uint64_t seed) {
@@ -185,7 +186,8 @@ void run_diagnose(const DiagnoseArgs& args) {
 }
 
 nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
-  return {{"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
+  return {{"generator", row.c.generator},   {"form", row.form},
+          {"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
           {"heldout_gap_after", row.heldout_gap_after}, {"confidence", row.confidence},
@@ -206,6 +208,8 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.c.true_effect = j.at("true_effect").get<std::string>();
       r.c.model_effects = j.at("model_effects").get<std::vector<std::string>>();
       r.c.seed = j.at("seed").get<std::uint64_t>();
+      r.c.generator = j.value("generator", std::string(gap::kRigGenerator));  // journals before issue 15: the rig's
+      r.form = j.value("form", std::string());
       r.verdict = j.at("verdict").get<std::string>();
       r.heldout_gap_before = j.at("heldout_gap_before").get<double>();
       r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
@@ -222,7 +226,9 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
 void run_selftest(const SelftestArgs& args) {
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
-  const std::vector<gap::SelftestCase> cases = gap::selftest_cases(args.quick, args.seed);
+  std::vector<gap::SelftestCase> cases = gap::selftest_cases(args.quick, args.seed);
+  if (args.generator != "both")
+    std::erase_if(cases, [&](const gap::SelftestCase& c) { return c.generator != args.generator; });
   const std::vector<gap::SelftestRow> finished = finished_rows(dir / "cases.jsonl", args.quick);
   int resumed = 0;
   for (const auto& c : cases)
@@ -238,19 +244,31 @@ void run_selftest(const SelftestArgs& args) {
       },
       finished);
   progress.done();
-  std::set<std::string> verdicts;
-  for (const auto& [t, row] : r.confusion)
-    for (const auto& [v, n] : row) verdicts.insert(v);
-  std::ostringstream table;
-  table << "true \\ verdict";
-  for (const auto& v : verdicts) table << "," << v;
-  table << "\n";
-  for (const auto& [t, row] : r.confusion) {
-    table << t;
-    for (const auto& v : verdicts) table << "," << (row.count(v) ? row.at(v) : 0);
+  // One confusion matrix per generator (rows: true effect, columns: verdict).
+  auto confusion_csv = [](const std::map<std::string, std::map<std::string, int>>& confusion) {
+    std::set<std::string> verdicts;
+    for (const auto& [t, row] : confusion)
+      for (const auto& [v, n] : row) verdicts.insert(v);
+    std::ostringstream table;
+    table << "true \\ verdict";
+    for (const auto& v : verdicts) table << "," << v;
     table << "\n";
-  }
-  write_file_atomically(dir / "confusion.csv", table.str());
+    for (const auto& [t, row] : confusion) {
+      table << t;
+      for (const auto& v : verdicts) table << "," << (row.count(v) ? row.at(v) : 0);
+      table << "\n";
+    }
+    return table.str();
+  };
+  write_file_atomically(dir / "confusion.csv", confusion_csv(r.by_generator.count(gap::kRigGenerator) ? r.by_generator.at(gap::kRigGenerator).confusion : r.confusion));
+  if (r.by_generator.count(gap::kIndependentGenerator))
+    write_file_atomically(dir / "confusion_independent.csv", confusion_csv(r.by_generator.at(gap::kIndependentGenerator).confusion));
+  std::ostringstream reliability;
+  reliability << "confidence_from,confidence_to,verdicts,right,fraction_right\n";
+  for (const auto& b : r.reliability)
+    reliability << b.lower << "," << b.upper << "," << b.verdicts << "," << b.right << ","
+                << (b.verdicts ? static_cast<double>(b.right) / b.verdicts : std::nan("")) << "\n";
+  write_file_atomically(dir / "reliability.csv", reliability.str());
   nlohmann::json j;
   j["quick"] = args.quick;
   j["seed"] = args.seed;
@@ -258,20 +276,33 @@ void run_selftest(const SelftestArgs& args) {
   j["controls_none_fraction"] = r.controls_none_fraction;
   j["mean_heldout_shrink"] = r.mean_shrink;
   j["confusion"] = r.confusion;
+  for (const auto& [g, sum] : r.by_generator)
+    j["by_generator"][g] = {{"identified_fraction", sum.identified_fraction}, {"controls_none_fraction", sum.controls_none_fraction},
+                            {"effect_cases", sum.effect_cases}, {"controls", sum.controls},
+                            {"mean_heldout_shrink", sum.mean_shrink}, {"confusion", sum.confusion}};
+  j["reliability"] = nlohmann::json::array();
+  for (const auto& b : r.reliability)
+    j["reliability"].push_back({{"confidence_from", b.lower}, {"confidence_to", b.upper}, {"verdicts", b.verdicts}, {"right", b.right}});
   j["cases"] = nlohmann::json::array();
   for (const auto& row : r.rows) j["cases"].push_back(row_json(row, args.quick));
   write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");
-  std::printf("%-24s %-18s %-40s %10s %10s\n", "true effect", "model has", "verdict", "gap before", "gap after");
+  std::printf("%-12s %-24s %-18s %-40s %10s %10s %6s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after", "conf");
   for (const auto& row : r.rows) {
     std::string has;
     for (const auto& e : row.c.model_effects) has += (has.empty() ? "" : "+") + e;
-    std::printf("%-24s %-18s %-40s %10.4f %10.4f %s\n", row.c.true_effect.c_str(), has.empty() ? "-" : has.c_str(), row.verdict.c_str(),
-                row.heldout_gap_before, row.heldout_gap_after, row.correct ? "" : "  <- wrong");
+    std::printf("%-12s %-24s %-18s %-40s %10.4f %10.4f %5.0f%%%s\n", row.c.generator.c_str(), row.c.true_effect.c_str(), has.empty() ? "-" : has.c_str(),
+                row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, 100.0 * row.confidence, row.correct ? "" : "  <- wrong");
   }
-  std::printf("\nconfusion matrix (rows: true effect, columns: verdict)\n%s", table.str().c_str());
-  std::printf("\nidentified %.0f %% of withheld effects; controls answering none %.0f %%\n", 100.0 * r.identified_fraction,
-              100.0 * r.controls_none_fraction);
-  for (const auto& [e, s] : r.mean_shrink) std::printf("  mean held-out gap shrink, %s: %.0f %%\n", e.c_str(), 100.0 * s);
+  for (const auto& [g, sum] : r.by_generator) {
+    std::printf("\ngenerator %s: confusion matrix (rows: true effect, columns: verdict)\n%s", g.c_str(), confusion_csv(sum.confusion).c_str());
+    std::printf("identified %.0f %% of %d withheld effects; controls answering none %.0f %% of %d\n", 100.0 * sum.identified_fraction, sum.effect_cases,
+                100.0 * sum.controls_none_fraction, sum.controls);
+    for (const auto& [e, s] : sum.mean_shrink) std::printf("  mean held-out gap shrink, %s: %.0f %%\n", e.c_str(), 100.0 * s);
+  }
+  std::printf("\nreliability over both generators (confidence bin -> fraction of verdicts right)\n");
+  for (const auto& b : r.reliability)
+    std::printf("  [%.1f, %.1f%s  %3d verdicts, %3d right%s\n", b.lower, b.upper, b.upper >= 1.0 ? "]" : ")", b.verdicts, b.right,
+                b.verdicts ? fmt(" (%.0f %%)", 100.0 * b.right / b.verdicts).c_str() : "");
   std::printf("-> %s\n", args.out.c_str());
 }
 
@@ -295,7 +326,10 @@ void add_gap_command(CLI::App& app) {
   CLI::App* selftest = gap->add_subcommand("selftest", "Withheld-effect validation on synthetic bundles: confusion matrix and gap shrink");
   selftest->add_option("--out", selftest_args->out, "Output directory (an interrupted run resumes from OUT/cases.jsonl)")->capture_default_str();
   selftest->add_option("--seed", selftest_args->seed, "Seed of the synthetic cases")->capture_default_str();
-  selftest->add_flag("--quick", selftest_args->quick, "The reduced CI set (one seed, four effects, two controls)");
+  selftest->add_flag("--quick", selftest_args->quick, "The reduced CI set (one seed: four effects and two controls from the rig's simulator, one effect and one control from the independent generator)");
+  selftest->add_option("--generator", selftest_args->generator, "Cases of one generator only: rig (the rig's simulator), independent (gap/independent/) or both")
+      ->check(CLI::IsMember({"rig", "independent", "both"}))
+      ->capture_default_str();
   selftest->callback([selftest_args] { run_selftest(*selftest_args); });
 }
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "contact/junction_locus.h"
+#include "gap/independent/generator.h"
 #include "rig/drive.h"
 #include "rig/instrument.h"
 #include "rig/simulator.h"
@@ -137,22 +138,54 @@ std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed) {
     if (!quick) cases.push_back({"strain_rate_hardening", {"rate_dependent_static"}, seed + 100 * s + 60});
   }
   if (quick) cases.push_back({"none", {}, seed + 77});
+  // The independent generator (gap/independent/): its seeds are a stream of their own.
+  if (quick) {
+    // The full set's first independent case and first control (same seeds).
+    cases.push_back({"rate_dependent_static", {}, seed + 300, kIndependentGenerator});
+    cases.push_back({"none", {}, seed + 350, kIndependentGenerator});
+  } else {
+    for (int s = 0; s < 2; ++s) {
+      int k = 0;
+      for (const auto& e : independent::independent_effects())
+        cases.push_back({e, {}, seed + 300 + 100 * static_cast<std::uint64_t>(s) + static_cast<std::uint64_t>(k++), kIndependentGenerator});
+    }
+    for (int s = 0; s < 3; ++s) cases.push_back({"none", {}, seed + 350 + 100 * static_cast<std::uint64_t>(s), kIndependentGenerator});
+  }
   return cases;
 }
 
 bool same_case(const SelftestCase& a, const SelftestCase& b) {
-  return a.true_effect == b.true_effect && a.model_effects == b.model_effects && a.seed == b.seed;
+  return a.true_effect == b.true_effect && a.model_effects == b.model_effects && a.seed == b.seed && a.generator == b.generator;
 }
 
 namespace {
 
 SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis) {
-  const SyntheticCase c = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
+  SyntheticCase c;
+  std::string form;
+  if (sc.generator == kIndependentGenerator) {
+    if (!sc.model_effects.empty()) throw std::invalid_argument("selftest: the independent generator takes no model effects");
+    independent::GeneratorOptions go;
+    go.speeds_m_per_s = synthetic.speeds_m_per_s;
+    go.duration_s = synthetic.duration_s;
+    go.noise_fraction = synthetic.noise_fraction;
+    independent::IndependentCase ic = independent::make_independent_case(sc.true_effect, sc.seed, go);
+    c.true_effect = sc.true_effect;
+    c.model = rig::coulomb(ic.model_mu_s, ic.model_mu_k);
+    c.bundle = std::move(ic.bundle);
+    form = ic.form;
+  } else if (sc.generator == kRigGenerator) {
+    c = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
+    form = "catalogue";
+  } else {
+    throw std::invalid_argument("selftest: unknown generator '" + sc.generator + "'");
+  }
   diagnosis.seed = sc.seed;
   const rig::RigParameters rig = apply_bundle_rig(c.bundle, rig::RigParameters{});
   const Diagnosis d = diagnose(c.bundle, rig, c.model, diagnosis);
   SelftestRow row;
   row.c = sc;
+  row.form = form;
   row.verdict = verdict_name(d.verdict.effects);
   row.heldout_gap_before = d.verdict.heldout_gap_before;
   row.heldout_gap_after = d.verdict.heldout_gap_after;
@@ -163,31 +196,64 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
 
 }  // namespace
 
+SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
+  SelftestSummary out;
+  int effect_right = 0, controls_none = 0;
+  std::map<std::string, std::pair<double, int>> shrink;
+  for (const SelftestRow& row : rows) {
+    ++out.confusion[row.c.true_effect][row.verdict];
+    if (row.c.true_effect == "none") {
+      ++out.controls, controls_none += row.correct;
+    } else {
+      ++out.effect_cases, effect_right += row.correct;
+      if (row.correct && row.heldout_gap_before > 0.0) {
+        shrink[row.c.true_effect].first += 1.0 - row.heldout_gap_after / row.heldout_gap_before;
+        ++shrink[row.c.true_effect].second;
+      }
+    }
+  }
+  out.identified_fraction = out.effect_cases ? static_cast<double>(effect_right) / out.effect_cases : 1.0;
+  out.controls_none_fraction = out.controls ? static_cast<double>(controls_none) / out.controls : 1.0;
+  for (const auto& [e, sh] : shrink) out.mean_shrink[e] = sh.first / sh.second;
+  return out;
+}
+
+std::vector<ReliabilityBin> reliability_table(const std::vector<SelftestRow>& rows) {
+  std::vector<ReliabilityBin> bins{{0.0, 0.5}, {0.5, 0.7}, {0.7, 0.9}, {0.9, 1.0}};
+  for (const SelftestRow& row : rows) {
+    for (std::size_t b = 0; b < bins.size(); ++b) {
+      const bool last = b + 1 == bins.size();
+      if (row.confidence >= bins[b].lower && (row.confidence < bins[b].upper || last)) {
+        ++bins[b].verdicts, bins[b].right += row.correct;
+        break;
+      }
+    }
+  }
+  return bins;
+}
+
 SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis,
                             const std::function<void(const SelftestRow&)>& on_row, const std::vector<SelftestRow>& finished) {
   SelftestResult out;
-  int effect_cases = 0, effect_right = 0, controls = 0, controls_none = 0;
-  std::map<std::string, std::pair<double, int>> shrink;
   for (const SelftestCase& sc : cases) {
     const auto earlier = std::find_if(finished.begin(), finished.end(), [&](const SelftestRow& r) { return same_case(r.c, sc); });
     const bool fresh = earlier == finished.end();
     const SelftestRow row = fresh ? diagnose_case(sc, synthetic, diagnosis) : *earlier;
-    ++out.confusion[sc.true_effect][row.verdict];
-    if (sc.true_effect == "none") {
-      ++controls, controls_none += row.correct;
-    } else {
-      ++effect_cases, effect_right += row.correct;
-      if (row.correct) {
-        shrink[sc.true_effect].first += 1.0 - row.heldout_gap_after / row.heldout_gap_before;
-        ++shrink[sc.true_effect].second;
-      }
-    }
     out.rows.push_back(row);
     if (fresh && on_row) on_row(row);
   }
-  out.identified_fraction = effect_cases ? static_cast<double>(effect_right) / effect_cases : 1.0;
-  out.controls_none_fraction = controls ? static_cast<double>(controls_none) / controls : 1.0;
-  for (const auto& [e, s] : shrink) out.mean_shrink[e] = s.first / s.second;
+  const SelftestSummary all = summarise(out.rows);
+  out.confusion = all.confusion;
+  out.identified_fraction = all.identified_fraction;
+  out.controls_none_fraction = all.controls_none_fraction;
+  out.mean_shrink = all.mean_shrink;
+  for (const char* g : {kRigGenerator, kIndependentGenerator}) {
+    std::vector<SelftestRow> mine;
+    for (const SelftestRow& r : out.rows)
+      if (r.c.generator == g) mine.push_back(r);
+    if (!mine.empty()) out.by_generator[g] = summarise(mine);
+  }
+  out.reliability = reliability_table(out.rows);
   return out;
 }
 

@@ -2,6 +2,14 @@
 // full model with exactly one catalogue effect switched on (random physical parameters, sensor
 // noise, several seeds) plus controls with none; the diagnosis gets the model without that effect
 // (and with a miscalibrated baseline) and must name it — or "none" for the controls.
+//
+// Two generators (issue 15):
+//   "rig"          the rig's own simulator, the catalogue's effect code and instrument (below);
+//   "independent"  gap/independent/: another integrator, each mechanism in another published
+//                  form, a measuring chain (gain, lag, anti-alias filter at a recorder rate,
+//                  drift, AR(1) noise, quantisation), rig constants a few per cent off the told
+//                  ones. A verdict on these is right when it names the catalogue mechanism the
+//                  alternative form stands for.
 #pragma once
 
 #include <cstdint>
@@ -42,28 +50,58 @@ struct SyntheticCase {
 SyntheticCase make_synthetic_case(const std::string& true_effect, const std::vector<std::string>& model_effects, std::uint64_t seed,
                                   const SyntheticOptions& options);
 
+inline constexpr const char* kRigGenerator = "rig";
+inline constexpr const char* kIndependentGenerator = "independent";
+
 struct SelftestCase {
   std::string true_effect;
-  std::vector<std::string> model_effects;
+  std::vector<std::string> model_effects;  // first generator only
   std::uint64_t seed = 1;
+  std::string generator = kRigGenerator;
 };
 
 struct SelftestRow {
   SelftestCase c;
   std::string verdict;
+  std::string form;  // independent generator: the form the mechanism was written in
   double heldout_gap_before = 0.0, heldout_gap_after = 0.0, confidence = 0.0;
   bool correct = false;
 };
 
-struct SelftestResult {
-  std::vector<SelftestRow> rows;
+// Confusion matrix and shrink over one generator's cases (or all).
+struct SelftestSummary {
   std::map<std::string, std::map<std::string, int>> confusion;  // true → verdict → count
+  int effect_cases = 0, controls = 0;
   double identified_fraction = 0.0;   // effect cases with the right verdict
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink;  // per true effect, of correctly identified cases: 1 − after/before
 };
 
-// The quick set (CI) or the full set: every effect × seeds, controls, and the second-effect case.
+// Reliability of the reported confidence: verdicts with confidence in [lower, upper) (the last
+// bin includes 1), and how many of them were right.
+struct ReliabilityBin {
+  double lower = 0.0, upper = 1.0;
+  int verdicts = 0, right = 0;
+};
+
+struct SelftestResult {
+  std::vector<SelftestRow> rows;
+  // Over all cases (both generators), kept for callers of the one-generator selftest.
+  std::map<std::string, std::map<std::string, int>> confusion;
+  double identified_fraction = 0.0;
+  double controls_none_fraction = 0.0;
+  std::map<std::string, double> mean_shrink;
+  std::map<std::string, SelftestSummary> by_generator;  // "rig", "independent"
+  std::vector<ReliabilityBin> reliability;              // over both generators
+};
+
+// Summaries from rows (used by run_selftest; exposed for tests and resumed journals).
+SelftestSummary summarise(const std::vector<SelftestRow>& rows);
+std::vector<ReliabilityBin> reliability_table(const std::vector<SelftestRow>& rows);
+
+// The quick set (CI) or the full set. First generator: every effect × seeds, controls, and the
+// second-effect case. Independent generator: quick — one effect and one control; full — every
+// effect it has a form for × 2 seeds and 3 controls.
 std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed);
 
 // `finished` holds rows of an earlier, interrupted run: a case found there (same true effect,

@@ -1,0 +1,72 @@
+// Selftest bookkeeping (issue 15), without diagnosing anything: per-generator confusion matrices
+// and shrink, the reliability table's bins, and the case lists of both generators.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "gap/selftest.h"
+
+namespace tribo::gap {
+namespace {
+
+SelftestRow row(const std::string& truth, const std::string& verdict, double confidence, const char* generator, double before = 0.1,
+                double after = 0.02) {
+  SelftestRow r;
+  r.c.true_effect = truth;
+  r.c.generator = generator;
+  r.verdict = verdict;
+  r.confidence = confidence;
+  r.heldout_gap_before = before, r.heldout_gap_after = after;
+  r.correct = verdict == truth;
+  return r;
+}
+
+TEST(SelftestSummary, ConfusionShrinkAndFractionsPerRowSet) {
+  const std::vector<SelftestRow> rows{row("slip_transient", "slip_transient", 0.95, kIndependentGenerator, 0.1, 0.04),
+                                      row("viscous_friction", "none", 0.6, kIndependentGenerator),
+                                      row("none", "none", 1.0, kIndependentGenerator), row("none", "squeeze_film", 0.9, kIndependentGenerator)};
+  const SelftestSummary s = summarise(rows);
+  EXPECT_EQ(s.effect_cases, 2);
+  EXPECT_EQ(s.controls, 2);
+  EXPECT_DOUBLE_EQ(s.identified_fraction, 0.5);
+  EXPECT_DOUBLE_EQ(s.controls_none_fraction, 0.5);
+  EXPECT_EQ(s.confusion.at("none").at("squeeze_film"), 1);
+  EXPECT_EQ(s.confusion.at("viscous_friction").at("none"), 1);
+  EXPECT_NEAR(s.mean_shrink.at("slip_transient"), 0.6, 1e-12);  // 1 − 0.04/0.1
+  EXPECT_FALSE(s.mean_shrink.count("viscous_friction"));       // shrink only of right verdicts
+}
+
+TEST(SelftestSummary, ReliabilityBinsCoverZeroToOneInclusive) {
+  const std::vector<SelftestRow> rows{row("a", "a", 0.0, kRigGenerator), row("a", "b", 0.5, kRigGenerator), row("a", "a", 0.89, kRigGenerator),
+                                      row("a", "a", 0.9, kRigGenerator), row("a", "b", 1.0, kIndependentGenerator)};
+  const std::vector<ReliabilityBin> bins = reliability_table(rows);
+  ASSERT_EQ(bins.size(), 4u);
+  EXPECT_EQ(bins[0].verdicts, 1);
+  EXPECT_EQ(bins[1].verdicts, 1);
+  EXPECT_EQ(bins[1].right, 0);
+  EXPECT_EQ(bins[2].verdicts, 1);
+  EXPECT_EQ(bins[3].verdicts, 2);  // 0.9 and 1.0
+  EXPECT_EQ(bins[3].right, 1);
+}
+
+TEST(SelftestSummary, QuickSetHoldsIndependentEffectAndControl) {
+  const std::vector<SelftestCase> quick = selftest_cases(true, 1);
+  auto count = [&](const std::vector<SelftestCase>& cs, const char* g, bool control) {
+    return std::count_if(cs.begin(), cs.end(), [&](const SelftestCase& c) { return c.generator == g && (c.true_effect == "none") == control; });
+  };
+  EXPECT_GE(count(quick, kIndependentGenerator, true), 1);
+  EXPECT_GE(count(quick, kIndependentGenerator, false), 1);
+  EXPECT_GE(count(quick, kRigGenerator, true), 2);
+  // The quick set's independent cases are cases of the full set (same seeds), so their journals agree.
+  const std::vector<SelftestCase> full = selftest_cases(false, 1);
+  for (const SelftestCase& c : quick) {
+    if (c.generator != kIndependentGenerator) continue;
+    EXPECT_TRUE(std::any_of(full.begin(), full.end(), [&](const SelftestCase& f) { return same_case(f, c); })) << c.true_effect;
+  }
+  SelftestCase other = quick.front();
+  other.generator = kIndependentGenerator;
+  EXPECT_FALSE(same_case(other, quick.front()));
+}
+
+}  // namespace
+}  // namespace tribo::gap
