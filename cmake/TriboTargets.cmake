@@ -6,9 +6,10 @@ function(tribo_add_library name)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS})
 endfunction()
 
-# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow] [TIMEOUT s]): one GoogleTest
+# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s]): one GoogleTest
 # executable registered with CTest. Label `slow` marks tests the sanitizer build skips
-# (ctest -LE slow); TIMEOUT overrides ctest's --timeout for a test known to run long.
+# (ctest -LE slow), `mpi` those that start Open MPI (sanitized without leak detection);
+# TIMEOUT overrides ctest's --timeout for a test known to run long.
 function(tribo_add_test name)
   cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})

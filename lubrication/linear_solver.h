@@ -1,14 +1,34 @@
-// Sparse direct solvers for the Reynolds systems, behind a small factory (STYLE §7).
+// Sparse linear solvers for the Reynolds systems, behind a small factory (STYLE §7).
 //
 //   CHOLMOD  — the no-cavitation Reynolds operator −∇·(h³/12η ∇) with Dirichlet or periodic
 //              boundaries is symmetric positive definite: supernodal LLᵀ with AMD/METIS ordering.
 //   UMFPACK  — unsymmetric multifrontal LU for the cavitation (Fischer–Burmeister–Newton)
 //              Jacobians.
+//   AMG-PCG  — the same SPD operator by conjugate gradients preconditioned with one V-cycle of
+//              hypre's BoomerAMG (algebraic multigrid: Falgout coarsening, classical
+//              interpolation, symmetric hybrid Gauss–Seidel smoothing; Henson & Yang, Appl.
+//              Numer. Math. 41, 2002). Cost O(n) per iteration and a grid-independent iteration
+//              count, against the super-linear fill of a direct factor. It stops when
+//                  ‖b − A x‖₂ ≤ relative_tolerance · ‖b‖₂
+//              (two-norm of the true residual, recomputed after the solve) or after
+//              max_iterations; a solve that does not reach the tolerance returns ok = false with
+//              its iterate in x, its iteration count and its relative residual.
+//   AMG-GMRES — the same preconditioner and stopping rule for nonsymmetric matrices (the reduced
+//              cavitation Newton systems): restarted GMRES(50), right-preconditioned.
 //
 // analyze() runs the symbolic phase (ordering, elimination tree / symbolic LU) once; factorize()
-// may be called again for any matrix with the same sparsity pattern and reuses it. Every
-// SuiteSparse status is checked: a failure is returned as a message, never ignored. The solvers
-// own their C handles and are move-only (STYLE §12).
+// may be called again for any matrix with the same sparsity pattern and reuses it (for AMG-PCG
+// factorize() is the multigrid setup: coarse grids and interpolation of this matrix). Every
+// SuiteSparse and hypre status is checked: a failure is returned as a message, never ignored.
+// The solvers own their C handles and are move-only (STYLE §12).
+//
+// hypre on Debian 12 (libhypre-dev 2.26) is built with MPI (Open MPI) and needs MPI_Init before
+// its first call. The AMG backend initialises MPI itself on first use (MPI_Init_thread with
+// MPI_THREAD_SERIALIZED, unless the program already did; Open MPI's singleton start needs no
+// mpirun), calls HYPRE_Init once, and finalises both at exit. Every matrix lives on
+// MPI_COMM_SELF: one process, no communication. hypre keeps global state (error flag, memory
+// handle), so all hypre calls in the process are serialised by one mutex: AMG solves on several
+// OpenMP threads are correct but run one at a time.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -20,14 +40,23 @@ namespace tribo::lubrication {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-enum class LinearSolverKind { cholmod, umfpack };
+enum class LinearSolverKind { cholmod, umfpack, amg_pcg, amg_gmres };
 
 std::string to_string(LinearSolverKind kind);
 
-// Outcome of one phase; `message` names the SuiteSparse routine and status on failure.
+// Stopping rule of the iterative backends (ignored by the direct ones).
+struct IterativeSolveOptions {
+  // Stops when ‖b − A x‖₂ ≤ relative_tolerance · ‖b‖₂ (x₀ = 0).
+  double relative_tolerance = 1e-10;
+  int max_iterations = 200;
+};
+
+// Outcome of one phase; `message` names the SuiteSparse or hypre routine and status on failure.
 struct LinearSolveStatus {
   bool ok = true;
   std::string message;
+  int iterations = 0;              // Krylov iterations of an iterative solve (0 for direct)
+  double relative_residual = 0.0;  // ‖b − A x‖₂ / ‖b‖₂ after an iterative solve
 };
 
 class SparseLinearSolver {
@@ -45,6 +74,7 @@ class SparseLinearSolver {
   virtual bool analyzed() const = 0;
 };
 
-std::unique_ptr<SparseLinearSolver> make_linear_solver(LinearSolverKind kind);
+std::unique_ptr<SparseLinearSolver> make_linear_solver(LinearSolverKind kind,
+                                                       const IterativeSolveOptions& iterative = {});
 
 }  // namespace tribo::lubrication

@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <deque>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +15,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// A small residual in scientific notation (std::to_string prints 1e-10 as 0.000000).
+std::string scientific(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3e", v);
+  return text;
+}
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("reynolds: " + what); }
 
@@ -298,11 +306,20 @@ struct ReynoldsSolver::Impl {
   ReynoldsOptions options;
   std::unique_ptr<SparseLinearSolver> cholmod = make_linear_solver(LinearSolverKind::cholmod);
   std::unique_ptr<SparseLinearSolver> umfpack = make_linear_solver(LinearSolverKind::umfpack);
+  std::unique_ptr<SparseLinearSolver> multigrid;        // created on first use (starts MPI and hypre)
+  std::unique_ptr<SparseLinearSolver> multigrid_newton;  // GMRES + AMG for the reduced Newton system
   std::optional<Signature> cholmod_signature, umfpack_signature;
   int analyses = 0;
   double linear_s = 0;
 
+  bool use_multigrid(std::size_t unknowns) const {
+    if (options.pressure_solver == PressureSolver::automatic)
+      return unknowns >= static_cast<std::size_t>(options.multigrid_min_unknowns);
+    return options.pressure_solver == PressureSolver::multigrid;
+  }
+
   // Solves the linear (ϑ ≡ 1) problem into p (per unknown); returns the SPD system's rhs scale.
+  // With multigrid, a solve that misses its tolerance returns ok = false with its iterate in p.
   LinearSolveStatus solve_linear(const ReynoldsProblem& pr, const Topology& t, Eigen::VectorXd& p, double& rhs_scale) {
     const std::size_t n = t.node_of.size();
     std::vector<Eigen::Triplet<double, int>> triplets;
@@ -333,6 +350,20 @@ struct ReynoldsSolver::Impl {
     sig.cav = Cavitation::none;
     sig.upwind = 0;
     LinearSolveStatus s;
+    if (use_multigrid(n)) {
+      if (!multigrid) {
+        IterativeSolveOptions io;
+        io.relative_tolerance = options.multigrid_tolerance;
+        io.max_iterations = options.multigrid_max_iterations;
+        multigrid = make_linear_solver(LinearSolverKind::amg_pcg, io);
+      }
+      // AMG has no reusable symbolic phase: every solve sets up the hierarchy of its matrix.
+      s = multigrid->analyze(a);
+      if (s.ok) s = multigrid->factorize(a);
+      if (s.ok) s = multigrid->solve(b, p);
+      linear_s += seconds_since(t0);
+      return s;
+    }
     if (!cholmod_signature || !(*cholmod_signature == sig) || !cholmod->analyzed()) {
       cholmod_signature.reset();
       s = cholmod->analyze(a);
@@ -478,25 +509,39 @@ struct ReynoldsSolver::Impl {
     sol.pressure_Pa = t.boundary_Pa;
     sol.fill_fraction = pr.grid.field(1.0);
     ReynoldsSummary& sum = sol.summary;
-    sum.linear_solver = "cholmod";
+    const bool multigrid_path = use_multigrid(n);
+    sum.linear_solver = multigrid_path ? to_string(LinearSolverKind::amg_pcg) : to_string(LinearSolverKind::cholmod);
 
     Eigen::VectorXd p;
     double rhs_scale = 0;
     LinearSolveStatus s = solve_linear(pr, t, p, rhs_scale);
+    sum.linear_iterations = s.iterations;
+    sum.linear_residual = s.relative_residual;
     if (!s.ok) {
       sum.message = s.message;
+      // A multigrid solve that missed its tolerance still returns its iterate: reported as not
+      // converged, with its residual, never as an answer.
+      if (multigrid_path && s.iterations > 0 && p.size() == static_cast<Eigen::Index>(n)) {
+        sum.residual = s.relative_residual;
+        sum.iterations = 1;
+        for (std::size_t u = 0; u < n; ++u) sol.pressure_Pa(t.node_of[u]) = p[u];
+      }
       sum.wall_s = seconds_since(start);
       sum.linear_solver_s = linear_s;
       return sol;
     }
     sum.converged = true;
     sum.iterations = 1;
-    sum.message = "linear solve (no cavitation)";
+    sum.residual = s.relative_residual;
+    sum.message = multigrid_path ? "linear solve (no cavitation), multigrid PCG: " + std::to_string(s.iterations) +
+                                       " iterations, relative residual " + scientific(s.relative_residual)
+                                 : "linear solve (no cavitation)";
     // The linear solution satisfies the complementarity conditions wherever it is ≥ 0; only a
     // sub-ambient pressure calls for the Newton solve.
     const bool cavitates = pr.cavitation == Cavitation::mass_conserving && p.minCoeff() < 0.0;
     if (cavitates) {
-      sum.linear_solver = "umfpack";
+      sum.linear_solver = multigrid_path ? to_string(LinearSolverKind::amg_gmres) : to_string(LinearSolverKind::umfpack);
+      int direct_fallbacks = 0;
       sum.converged = false;
       const double p_scale = std::max(p.cwiseAbs().maxCoeff(), 1e-300);
       const double mass_scale = std::max(rhs_scale, 1e-300);
@@ -526,17 +571,47 @@ struct ReynoldsSolver::Impl {
         }
         residual(pr, t, z, mass_scale, p_scale, f, &mass_rows, &ncp_rows);
         reduced_system(mass_rows, ncp_rows, f, p_scale, keeps_p, triplets, rhs);
-        jac.setFromTriplets(triplets.begin(), triplets.end());
         const auto t0 = Clock::now();
         LinearSolveStatus ls;
-        if (!umfpack_signature || !(*umfpack_signature == sig) || !umfpack->analyzed()) {
+        bool solved = false;
+        if (multigrid_path) {
+          // GMRES + AMG on the reduced system with the cavitated unknowns scaled to pressures,
+          // y = p_s·Δϑ, so that every column has the units of Δp (AMG's strength of connection
+          // compares entries of a row). A step GMRES cannot solve falls back to UMFPACK.
+          std::vector<Eigen::Triplet<double, int>> scaled;
+          scaled.reserve(triplets.size());
+          for (const auto& tr : triplets)
+            scaled.emplace_back(tr.row(), tr.col(), keeps_p[tr.col()] ? tr.value() : tr.value() / p_scale);
+          jac.setFromTriplets(scaled.begin(), scaled.end());
+          if (!multigrid_newton) {
+            IterativeSolveOptions io;
+            io.relative_tolerance = options.multigrid_tolerance;
+            io.max_iterations = options.multigrid_max_iterations;
+            multigrid_newton = make_linear_solver(LinearSolverKind::amg_gmres, io);
+          }
+          ls = multigrid_newton->analyze(jac);
+          if (ls.ok) ls = multigrid_newton->factorize(jac);
+          if (ls.ok) ls = multigrid_newton->solve(rhs, x);
+          sum.linear_iterations += ls.iterations;
+          if (ls.ok) {
+            sum.linear_residual = std::max(sum.linear_residual, ls.relative_residual);
+            for (std::size_t u = 0; u < n; ++u)
+              if (!keeps_p[u]) x[static_cast<Eigen::Index>(u)] /= p_scale;
+            solved = true;
+          } else {
+            ++direct_fallbacks;
+            ls = {};
+          }
+        }
+        if (!solved) jac.setFromTriplets(triplets.begin(), triplets.end());
+        if (!solved && (!umfpack_signature || !(*umfpack_signature == sig) || !umfpack->analyzed())) {
           umfpack_signature.reset();
           ls = umfpack->analyze(jac);
           ++analyses;
           if (ls.ok) umfpack_signature = sig;
         }
-        if (ls.ok) ls = umfpack->factorize(jac);
-        if (ls.ok) ls = umfpack->solve(rhs, x);
+        if (!solved && ls.ok) ls = umfpack->factorize(jac);
+        if (!solved && ls.ok) ls = umfpack->solve(rhs, x);
         linear_s += seconds_since(t0);
         if (!ls.ok) {
           sum.message = ls.message;
@@ -581,6 +656,8 @@ struct ReynoldsSolver::Impl {
           sum.message = "converged: scaled residual " + std::to_string(sum.residual);
         }
       }
+      if (direct_fallbacks > 0)
+        sum.message += " (" + std::to_string(direct_fallbacks) + " Newton steps fell back from GMRES to UMFPACK)";
       for (std::size_t u = 0; u < n; ++u) {
         p[u] = z[2 * u];
         sol.fill_fraction(t.node_of[u]) = z[2 * u + 1];
@@ -605,10 +682,13 @@ struct ReynoldsSolver::Impl {
 
 ReynoldsSolver::ReynoldsSolver(ReynoldsOptions options) : impl_(std::make_unique<Impl>()) {
   if (!(options.newton_tolerance > 0) || options.max_newton_iterations < 1 || !(options.armijo_constant > 0) ||
-      !(options.armijo_constant < 0.5) || !(options.min_step > 0) || !(options.min_step <= 1))
+      !(options.armijo_constant < 0.5) || !(options.min_step > 0) || !(options.min_step <= 1) ||
+      !(options.multigrid_tolerance > 0) || !(options.multigrid_tolerance < 1) ||
+      options.multigrid_max_iterations < 1 || options.multigrid_min_unknowns < 0)
     throw std::invalid_argument(
         "reynolds options: need newton_tolerance > 0, max_newton_iterations >= 1, 0 < armijo_constant < 0.5, "
-        "0 < min_step <= 1");
+        "0 < min_step <= 1, 0 < multigrid_tolerance < 1, multigrid_max_iterations >= 1, "
+        "multigrid_min_unknowns >= 0");
   impl_->options = options;
 }
 ReynoldsSolver::~ReynoldsSolver() = default;

@@ -23,7 +23,10 @@
 // node P to the rim, cut at fraction θ of the spacing, carries the conductance k/θ towards the
 // rim pressure. The matrix stays symmetric and the solution second-order accurate.
 //
-// Without cavitation the pressure system is SPD and solved by CHOLMOD. With cavitation the
+// Without cavitation the pressure system is SPD and solved by CHOLMOD, or on large grids by
+// conjugate gradients preconditioned with algebraic multigrid (hypre BoomerAMG; see
+// linear_solver.h and ReynoldsOptions::pressure_solver); on the multigrid path the cavitation
+// Newton steps below use GMRES + BoomerAMG instead of UMFPACK. With cavitation the
 // Jakobsson–Floberg–Olsson conditions are imposed as the complementarity problem
 //     p ≥ 0,  1 − ϑ ≥ 0,  p (1 − ϑ) = 0
 // (Giacopini, Fowell, Dini & Strozzi, J. Tribol. 132, 2010) and solved by Fischer–Burmeister–
@@ -73,6 +76,9 @@ enum class BoundaryY { ambient, periodic };
 enum class Cavitation { none, mass_conserving };
 // NCP function of the cavitation Newton solve (see above).
 enum class Complementarity { minimum, fischer_burmeister };
+// Backend of the full-film (SPD) pressure solve: CHOLMOD, BoomerAMG-preconditioned CG, or the
+// latter from ReynoldsOptions::multigrid_min_unknowns unknowns on (automatic).
+enum class PressureSolver { automatic, direct, multigrid };
 
 // Circular film domain (parallel discs): nodes with |x − c| < R are wetted, the rim is at p = 0.
 struct DiscDomain {
@@ -115,15 +121,37 @@ struct ReynoldsOptions {
   // Armijo back-tracking on ½‖F‖² (sufficient-decrease constant, smallest step).
   double armijo_constant = 1e-4;
   double min_step = 1e-8;
+  // Full-film pressure system A p = b (also the cavitating solve's starting point): direct
+  // (CHOLMOD LLᵀ) or multigrid (PCG + one BoomerAMG V-cycle, O(n) per iteration; the cavitation
+  // Newton steps then use GMRES + BoomerAMG with the same stopping rule). automatic uses
+  // multigrid from multigrid_min_unknowns unknowns on (≈ 200² nodes). Multigrid is already 2×
+  // faster at 128² and 7× at 1024² (bench/README.md), but hypre calls are serialised process-wide
+  // (linear_solver.h) while CHOLMOD solves run in parallel, so the threshold sits above the
+  // 96²–128² homogenisation cells that flow_factors spreads over OpenMP threads.
+  PressureSolver pressure_solver = PressureSolver::automatic;
+  int multigrid_min_unknowns = 40000;
+  // Multigrid PCG stops when ‖b − A p‖₂ ≤ multigrid_tolerance · ‖b‖₂ (true residual, checked
+  // after the solve; b holds the Couette, squeeze and boundary fluxes of each cell). A solve that
+  // misses it within multigrid_max_iterations is reported as not converged with that residual.
+  // The pressure error is then ‖δp‖₂/‖p‖₂ ≤ κ(A)·tolerance; κ(A) ≈ 8k_max/(k_min·(π/nx)²).
+  double multigrid_tolerance = 1e-10;
+  int multigrid_max_iterations = 200;
 };
 
 struct ReynoldsSummary {
   bool converged = false;
   int iterations = 0;          // Newton iterations (1 for the linear no-cavitation solve)
   double residual = 0.0;       // final scaled residual (see ReynoldsOptions)
-  std::string message;         // why it stopped, or the SuiteSparse failure
-  std::string linear_solver;   // "cholmod" or "umfpack"
-  double linear_solver_s = 0;  // wall time inside SuiteSparse (analyse + factorise + solve)
+  std::string message;         // why it stopped, or the SuiteSparse / hypre failure
+  std::string linear_solver;   // "cholmod" / "umfpack", or "boomeramg-pcg" / "boomeramg-gmres" (last used)
+  double linear_solver_s = 0;  // wall time inside the linear solvers (analyse/setup + factorise + solve)
+  // Multigrid path: Krylov iterations summed over the solve (PCG of the full film + GMRES of each
+  // cavitation Newton step) and the largest relative residual ‖b − A x‖₂/‖b‖₂ they ended with
+  // (0 on the direct path). A full-film multigrid solve that misses its tolerance sets
+  // converged = false, residual = its relative residual and says so in message; a Newton step
+  // whose GMRES misses it is redone by UMFPACK (message counts these fallbacks).
+  int linear_iterations = 0;
+  double linear_residual = 0.0;
   double wall_s = 0;           // total wall time of the solve
 };
 
@@ -155,7 +183,7 @@ FilmFlow film_flow(const ReynoldsProblem& problem, const ReynoldsSolution& solut
 // Rectangular domains only (throws std::invalid_argument for a disc domain).
 Eigen::ArrayXXd x_face_flow_m2_per_s(const ReynoldsProblem& problem, const ReynoldsSolution& solution);
 
-// A solver that keeps its SuiteSparse factorisations between solves: repeated solves on the same
+// A solver that keeps its SuiteSparse factorisations (or multigrid setup) between solves: repeated solves on the same
 // grid and domain (realisations, time steps, Newton iterations) reuse the symbolic analysis.
 class ReynoldsSolver {
  public:

@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(
   cmake g++ make pkg-config git
-  libeigen3-dev libsuitesparse-dev libfftw3-dev libsundials-dev libceres-dev
+  libeigen3-dev libsuitesparse-dev libhypre-dev libfftw3-dev libsundials-dev libceres-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
