@@ -16,6 +16,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// A hypre backend with the options' stopping rule (made on first use: it starts MPI).
+std::unique_ptr<SparseLinearSolver> make_multigrid_solver(LinearSolverKind kind, const ReynoldsOptions& options) {
+  IterativeSolveOptions io;
+  io.relative_tolerance = options.multigrid_tolerance;
+  io.max_iterations = options.multigrid_max_iterations;
+  return make_linear_solver(kind, io);
+}
+
 // A small residual in scientific notation (std::to_string prints 1e-10 as 0.000000).
 std::string scientific(double v) {
   char text[32];
@@ -351,12 +359,7 @@ struct ReynoldsSolver::Impl {
     sig.upwind = 0;
     LinearSolveStatus s;
     if (use_multigrid(n)) {
-      if (!multigrid) {
-        IterativeSolveOptions io;
-        io.relative_tolerance = options.multigrid_tolerance;
-        io.max_iterations = options.multigrid_max_iterations;
-        multigrid = make_linear_solver(LinearSolverKind::amg_pcg, io);
-      }
+      if (!multigrid) multigrid = make_multigrid_solver(LinearSolverKind::amg_pcg, options);
       // AMG has no reusable symbolic phase: every solve sets up the hierarchy of its matrix.
       s = multigrid->analyze(a);
       if (s.ok) s = multigrid->factorize(a);
@@ -583,12 +586,7 @@ struct ReynoldsSolver::Impl {
           for (const auto& tr : triplets)
             scaled.emplace_back(tr.row(), tr.col(), keeps_p[tr.col()] ? tr.value() : tr.value() / p_scale);
           jac.setFromTriplets(scaled.begin(), scaled.end());
-          if (!multigrid_newton) {
-            IterativeSolveOptions io;
-            io.relative_tolerance = options.multigrid_tolerance;
-            io.max_iterations = options.multigrid_max_iterations;
-            multigrid_newton = make_linear_solver(LinearSolverKind::amg_gmres, io);
-          }
+          if (!multigrid_newton) multigrid_newton = make_multigrid_solver(LinearSolverKind::amg_gmres, options);
           ls = multigrid_newton->analyze(jac);
           if (ls.ok) ls = multigrid_newton->factorize(jac);
           if (ls.ok) ls = multigrid_newton->solve(rhs, x);
