@@ -40,13 +40,6 @@ struct DemoArgs {
 
 using SpeedRun = rig::SweepPoint;
 
-std::string fmt(double v, const char* f = "%.4g") {
-  if (!std::isfinite(v)) return "";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 void write_sweep(const std::filesystem::path& path, const rig::RigParameters& rig, const std::vector<SpeedRun>& runs) {
   AtomicFile f(path);
   f.stream() << "v_m_per_s,v_in_per_s,load_rate_per_s,regime,period_s,peak_to_peak_m,stick_time_s,slip_time_s,"
@@ -114,13 +107,11 @@ void write_report(const std::filesystem::path& path, const rig::RigParameters& r
      << "Swept " << sweep.size() << " driven speeds from 3e-5 to 12 in/s; " << fmt(wall_s, "%.1f") << " s wall in all.\n\n"
      << "## The thesis' observations (chapter V) beside the simulation\n\n"
      << "| observation | thesis | tribo | tolerance | verdict | how tribo's value was obtained |\n|---|---|---|---|---|---|\n";
-  int agree = 0;
   for (const ComparisonRow& r : rows) {
     md << "| " << r.observation << " (" << r.source << ") | " << r.thesis << " | " << (r.tribo.empty() ? "—" : r.tribo)
        << " | " << r.tolerance << " | " << r.verdict << " | " << r.note << " |\n";
-    agree += r.verdict == "agrees" ? 1 : 0;
   }
-  md << "\n" << agree << " of " << rows.size() << " observations agree.\n\n"
+  md << "\n" << agreeing(rows) << " of " << rows.size() << " observations agree.\n\n"
      << "## Regime by driven speed\n\n| v (in/s) | v (m/s) | phi_dot (1/s) | regime | period (s) | peak-to-peak (m) | mean mu_s | mean mu |\n"
      << "|---|---|---|---|---|---|---|---|\n";
   for (const SpeedRun& r : sweep) {
@@ -197,10 +188,8 @@ void run_demo(const DemoArgs& args) {
   if (args.plots && run_plot_script("demo", args.out) != 0) {
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib); CSVs and report are written\n");
   }
-  int agree = 0;
-  for (const ComparisonRow& r : rows) agree += r.verdict == "agrees" ? 1 : 0;
   std::printf("tribo demo: %zu speeds in %.1f s; %d of %zu thesis observations agree -> %s (report.md)\n", sweep.size(),
-              wall, agree, rows.size(), args.out.c_str());
+              wall, agreeing(rows), rows.size(), args.out.c_str());
 }
 
 }  // namespace

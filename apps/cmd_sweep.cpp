@@ -43,10 +43,11 @@ std::string csv_quoted(std::string s) {
   return '"' + s + '"';
 }
 
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+// DIR/points/NNNNN: the folder of point `id`.
+std::filesystem::path point_dir(const std::filesystem::path& dir, int id) {
+  char name[16];
+  std::snprintf(name, sizeof name, "%05d", id);
+  return dir / "points" / name;
 }
 
 std::string header(const SweepSpec& spec) {
@@ -168,9 +169,7 @@ void run_sweep(const Args& args) {
   while (next < pending.size() || !running.empty()) {
     while (next < pending.size() && static_cast<int>(running.size()) < jobs) {
       const int id = pending[next++];
-      char name[16];
-      std::snprintf(name, sizeof name, "%05d", id);
-      const auto pdir = dir / "points" / name;
+      const auto pdir = point_dir(dir, id);
       make_output_dir(pdir);
       std::ostringstream config;
       config << point_config(spec, points[id]) << "\n";
@@ -184,9 +183,7 @@ void run_sweep(const Args& args) {
     if (it == running.end()) continue;
     const Running r = it->second;
     running.erase(it);
-    char name[16];
-    std::snprintf(name, sizeof name, "%05d", r.id);
-    const auto pdir = dir / "points" / name;
+    const auto pdir = point_dir(dir, r.id);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
     std::string error, values;
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
@@ -200,9 +197,9 @@ void run_sweep(const Args& args) {
     }
     if (!error.empty()) values = std::string(spec.outputs.size(), ',');
     std::string row = std::to_string(r.id);
-    for (double v : points[r.id]) row += "," + number(v);
+    for (double v : points[r.id]) row += "," + exact(v);
     row += std::string(",") + (error.empty() ? "ok" : "failed") + "," + (error.empty() ? "" : csv_quoted(error)) + "," +
-           number(wall) + values;
+           exact(wall) + values;
     append << row << '\n' << std::flush;  // the row is kept the moment the point is done
     rows[r.id] = row;
     failed += error.empty() ? 0 : 1;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <random>
 #include <stdexcept>
 
@@ -32,6 +33,19 @@ void AtomicFile::commit() {
   stream_.close();
   std::filesystem::rename(tmp_, path_);
   committed_ = true;
+}
+
+std::string fmt(double v, const char* format) {
+  if (!std::isfinite(v)) return "";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+std::string exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {

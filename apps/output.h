@@ -29,6 +29,13 @@ class AtomicFile {
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
+// A number printed with the printf `format` for reports and CSV fields; "" for NaN or ±∞ (an
+// observable that does not exist, e.g. the period of a run that never oscillates).
+std::string fmt(double v, const char* format = "%.4g");
+
+// A number with all 17 significant digits: read back, it is the same double.
+std::string exact(double v);
+
 // Creates DIR (and parents); an error names DIR.
 void make_output_dir(const std::filesystem::path& dir);
 

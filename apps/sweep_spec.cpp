@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/config.h"
+#include "apps/output.h"
 
 namespace tribo::cli {
 namespace {
@@ -196,11 +197,7 @@ std::string json_field(const std::filesystem::path& file, const std::string& pat
       throw std::runtime_error(file.string() + ": no value at '" + path + "'");
     }
   }
-  if (at->is_number()) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", at->get<double>());
-    return buf;
-  }
+  if (at->is_number()) return exact(at->get<double>());
   if (at->is_boolean()) return at->get<bool>() ? "1" : "0";
   if (at->is_string()) return at->get<std::string>();
   if (at->is_null()) return "";

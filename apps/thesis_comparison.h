@@ -46,6 +46,9 @@ std::vector<ComparisonRow> compare_with_thesis(const rig::RigParameters& rig, co
 // μs of the law at load rate φ̇ with the contact at rest (the law's initial state): static limit / W.
 double static_coefficient_at_rest(const rig::FrictionLaw& law, double normal_load_N, double load_rate_per_s);
 
+// How many rows say "agrees".
+int agreeing(const std::vector<ComparisonRow>& rows);
+
 // Verdict of a value against a thesis number: "agrees" when |tribo/thesis − 1| ≤ relative_tolerance,
 // else "off by +x %" (or "−x %"); "not evaluated" for a non-finite value.
 std::string numeric_verdict(double tribo, double thesis, double relative_tolerance);

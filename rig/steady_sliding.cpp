@@ -37,7 +37,6 @@ SteadySliding steady_sliding(const HomogenisedBase& b, double u) {
   }
   if (!s.converged) s.message = "temperature fixed point did not settle in 500 iterations";
   s.film_relaxation_time_s = b.film_relaxation_time_s(s.separation_m, s.temperature_rise_K, u);
-  s.film_relaxation_distance_m = u * s.film_relaxation_time_s;
   s.mu = (s.solid_friction_N + s.fluid_shear_N) / w;
   s.fluid_share = s.lift_N / w;
   const double solid_share = s.solid_load_N / w;

@@ -24,8 +24,8 @@ struct SteadySliding {
   double separation_m = 0;
   double temperature_rise_K = 0;
   double solid_load_N = 0, lift_N = 0, solid_friction_N = 0, fluid_shear_N = 0;
-  double film_relaxation_time_s = 0;       // t_h of the film about this state (homogenised_law.h)
-  double film_relaxation_distance_m = 0;   // U t_h: the slip distance over which the film settles
+  double film_relaxation_time_s = 0;  // t_h of the film about this state (homogenised_law.h); it
+                                      // settles over the slip distance U t_h
   double mu = 0;             // (solid + fluid shear) / W
   double fluid_share = 0;    // lift / W
   LubricationRegime regime = LubricationRegime::boundary;

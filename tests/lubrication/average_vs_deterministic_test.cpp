@@ -71,11 +71,8 @@ struct Sample {
   double mean = 0, scatter = 0;  // over the seeds: mean and standard deviation
 };
 Sample sample(const std::vector<double>& v) {
-  Sample s;
-  for (double x : v) s.mean += x / static_cast<double>(v.size());
-  for (double x : v) s.scatter += (x - s.mean) * (x - s.mean) / static_cast<double>(v.size() - 1);
-  s.scatter = std::sqrt(s.scatter);
-  return s;
+  const Estimate e = estimate(v);  // standard error s/√n → the standard deviation s
+  return {e.mean, e.standard_error * std::sqrt(static_cast<double>(v.size()))};
 }
 
 // Runs `per_pad(correlations, seed)` over the pad sizes and seeds; prints and returns the samples.
