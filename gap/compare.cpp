@@ -19,6 +19,7 @@ constexpr double kWindowStartFraction = 0.3;  // analysis skips the first 30 % o
 constexpr int kSlipDropPoints = 4;
 constexpr int kStepBins = 24;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
+constexpr int kNoiseBlocks = 4;        // repeats a run's window is cut into for its items' noise
 constexpr const char* kFrictionLevel = "friction level";
 
 bool is_friction_level(const std::string& observable) {
@@ -84,6 +85,27 @@ class SmoothedSignal {
 double mean(const std::vector<double>& v) {
   if (v.empty()) return kNaN;
   return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+// Standard deviation of independent repeats / √repeats: the standard error of their average
+// (NaN for fewer than two).
+double standard_error(const std::vector<double>& v) {
+  if (v.size() < 2) return kNaN;
+  const double m = mean(v);
+  double ss = 0.0;
+  for (double x : v) ss += (x - m) * (x - m);
+  return std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
+}
+
+// Sensor noise of a record: the median absolute second difference, which is 0.6745 √6 σ for white
+// noise of std σ (a signal smooth at the sampling rate adds little to it, impulsive spikes do not
+// move a median).
+double high_pass_noise(const std::vector<double>& y) {
+  std::vector<double> d;
+  for (std::size_t i = 1; i + 1 < y.size(); ++i) d.push_back(std::abs(y[i + 1] - 2.0 * y[i] + y[i - 1]));
+  if (d.empty()) return 0.0;
+  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
+  return d[d.size() / 2] / (0.6745 * std::sqrt(6.0));
 }
 
 // Time average of y over [t_a, t_b] from the samples inside it.
@@ -227,6 +249,36 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
   return f;
 }
 
+// The noise of a constant-speed run's features: its analysis window cut into kNoiseBlocks
+// contiguous blocks, each analysed as a run of its own (same sampling, same slip-drop Δ); the
+// blocks' scatter / √blocks is the standard error of the whole window's feature.
+Features block_noise(const Signal& s, double spacing_s, double slip_step_s) {
+  const double t0 = s.t.front() + kWindowStartFraction * (s.t.back() - s.t.front());
+  const double block = (s.t.back() - t0) / kNoiseBlocks;
+  // The analysis skips the first kWindowStartFraction of what it is given: each block's signal
+  // starts that much earlier, so that the part analysed is the block itself.
+  const double lead = block * kWindowStartFraction / (1.0 - kWindowStartFraction);
+  std::map<std::string, std::vector<double>> values;
+  for (int b = 0; b < kNoiseBlocks; ++b) {
+    const double from = t0 + b * block - lead, to = t0 + (b + 1) * block;
+    Signal part;
+    for (std::size_t i = 0; i < s.t.size(); ++i) {
+      if (s.t[i] < from || s.t[i] > to) continue;
+      part.t.push_back(s.t[i]);
+      part.mu.push_back(s.mu[i]);
+      if (!s.x.empty()) part.x.push_back(s.x[i]);
+    }
+    if (part.t.size() < 3) continue;
+    double step = slip_step_s;
+    for (const auto& [key, value] : analyse_constant_speed(part, spacing_s, step, nullptr))
+      if (std::isfinite(value)) values[key].push_back(value);
+  }
+  Features out;
+  for (const auto& [key, v] : values)
+    if (const double e = standard_error(v); std::isfinite(e)) out[key] = e;
+  return out;
+}
+
 // The ratio q ≥ 1 with 1 + q + … + q^(n−1) = total (in units of the first term): bisection.
 double geometric_ratio(double total, int n) {
   if (total <= n) return 1.0;
@@ -241,8 +293,11 @@ double geometric_ratio(double total, int n) {
 }
 
 // Velocity steps: steady μ per drive segment and μ − μ_before binned in load-point displacement.
-Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector<std::vector<double>>* edges_out) {
+// With `noise`, the standard error of every feature from the record itself (see compare.h).
+Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector<std::vector<double>>* edges_out,
+                               Features* noise = nullptr) {
   Features f;
+  const double sample_noise = noise ? high_pass_noise(s.mu) : 0.0;
   const std::size_t segments = plan.step_times_s.size();
   const double t_first = s.t.front();
   auto segment_end = [&](std::size_t k) { return k + 1 < segments ? t_first + plan.step_times_s[k + 1] : s.t.back(); };
@@ -251,6 +306,13 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
     const double a = t_first + plan.step_times_s[k], b = segment_end(k);
     steady[k] = steady_mu(s, a, b);
     f["steady_mu_" + std::to_string(k)] = steady[k];
+    if (noise) {
+      std::vector<double> parts;
+      const double from = b - 0.3 * (b - a), width = (b - from) / kNoiseBlocks;
+      for (int j = 0; j < kNoiseBlocks; ++j)
+        if (const double m = window_mean(s.t, s.mu, from + j * width, from + (j + 1) * width); std::isfinite(m)) parts.push_back(m);
+      (*noise)["steady_mu_" + std::to_string(k)] = standard_error(parts);
+    }
   }
   for (std::size_t k = 1; k < segments; ++k) {
     const double t_step = t_first + plan.step_times_s[k], t_end = segment_end(k);
@@ -280,8 +342,13 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
       sum[b] += s.mu[i] - steady[k - 1];
       ++count[b];
     }
-    for (int j = 0; j < kStepBins; ++j)
-      if (count[static_cast<std::size_t>(j)]) f["after_step_" + std::to_string(k) + "_" + std::to_string(j)] = sum[static_cast<std::size_t>(j)] / count[static_cast<std::size_t>(j)];
+    for (int j = 0; j < kStepBins; ++j) {
+      const int in_bin = count[static_cast<std::size_t>(j)];
+      if (!in_bin) continue;
+      const std::string key = "after_step_" + std::to_string(k) + "_" + std::to_string(j);
+      f[key] = sum[static_cast<std::size_t>(j)] / in_bin;
+      if (noise) (*noise)[key] = sample_noise / std::sqrt(static_cast<double>(in_bin));
+    }
   }
   return f;
 }
@@ -403,7 +470,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bundle.runs[a].v_m_per_s < bundle.runs[b].v_m_per_s; });
   auto add = [&](const std::string& observable, int index, const std::string& where, const std::string& regime, double v,
-                 int unit, double value, const std::string& key) {
+                 int unit, double value, const std::string& key, const Features& noise) {
     Item it;
     it.observable = observable;
     it.where = where;
@@ -412,6 +479,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     it.v_m_per_s = v;
     it.unit = unit;
     it.measured = value;
+    if (const auto n = noise.find(key); n != noise.end() && std::isfinite(n->second)) it.noise = n->second;
     it.plan = static_cast<int>(plans_.size()) - 1;
     it.key = key;
     items_.push_back(it);
@@ -454,14 +522,15 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
         for (std::size_t i = 1; i < tr.t_s.size(); ++i)
           s.x_drive[i] = s.x_drive[i - 1] + 0.5 * (tr.v_drive_m_per_s[i] + tr.v_drive_m_per_s[i - 1]) * (tr.t_s[i] - tr.t_s[i - 1]);
       }
-      const Features f = analyse_drive_history(s, plan, &plan.step_bin_edges_m);
+      Features noise;
+      const Features f = analyse_drive_history(s, plan, &plan.step_bin_edges_m, &noise);
       if (!std::isfinite(step_response_.peak_rise)) step_response_ = read_step_response(s, plan, W);
       plans_.push_back(plan);
       for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
         const std::string key = "steady_mu_" + std::to_string(k);
         if (f.count(key) && std::isfinite(f.at(key)))
           add("steady_mu", 0, plan.label + ", v = " + fmt("%.3g", plan.step_speeds_m_per_s[k]) + " m/s", "steady_sliding",
-              plan.step_speeds_m_per_s[k], units_++, f.at(key), key);
+              plan.step_speeds_m_per_s[k], units_++, f.at(key), key, noise);
         if (k == 0) continue;
         const auto& edges = plan.step_bin_edges_m[k - 1];
         for (int j = 0; j < kStepBins; ++j) {
@@ -470,7 +539,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
           add("mu_after_step", j,
               fmt("%.3g", edges[static_cast<std::size_t>(j)] * 1e6) + "-" + fmt("%.3g", edges[static_cast<std::size_t>(j) + 1] * 1e6) +
                   " um after step " + std::to_string(k),
-              "steady_sliding", plan.step_speeds_m_per_s[k], units_++, f.at(bin_key), bin_key);
+              "steady_sliding", plan.step_speeds_m_per_s[k], units_++, f.at(bin_key), bin_key, noise);
         }
       }
     } else {
@@ -480,6 +549,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       double step = 0.0;
       const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime);
       plan.slip_step_s = step;
+      const Features noise = block_noise(s, plan.sample_spacing_s, step);
       plans_.push_back(plan);
       const std::string where = "v = " + fmt("%.3g", run.v_m_per_s) + " m/s";
       const int unit = units_++;
@@ -487,9 +557,9 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
         if (!std::isfinite(value)) continue;
         if (key.rfind("slip_drop_", 0) == 0) {
           const int j = std::stoi(key.substr(10));
-          add("slip_drop", j, where + ", slip onset + " + std::to_string(j) + " x " + fmt("%.3g", step) + " s", regime, run.v_m_per_s, unit, value, key);
+          add("slip_drop", j, where + ", slip onset + " + std::to_string(j) + " x " + fmt("%.3g", step) + " s", regime, run.v_m_per_s, unit, value, key, noise);
         } else {
-          add(key, 0, where, regime, run.v_m_per_s, unit, value, key);
+          add(key, 0, where, regime, run.v_m_per_s, unit, value, key, noise);
         }
       }
     }
@@ -504,7 +574,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.v_m_per_s = p.phi_dot_per_s;  // a load rate; the speed follows from the simulated rig's k and W
     plan.duration_s = (2.0 * p.mu_s + 0.2) / p.phi_dot_per_s;
     plans_.push_back(plan);
-    add("mu_s_vs_load_rate", 0, plan.label, "static", p.phi_dot_per_s * W / rig.stiffness_N_per_m, units_++, p.mu_s, "mu_s");
+    add("mu_s_vs_load_rate", 0, plan.label, "static", p.phi_dot_per_s * W / rig.stiffness_N_per_m, units_++, p.mu_s, "mu_s", {});
   }
 
   std::vector<RegimePoint> regimes = bundle.regimes;
@@ -517,11 +587,11 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.v_m_per_s = p.v_m_per_s;
     plans_.push_back(plan);
     const int unit = units_++;
-    add("regime_mismatch", 0, plan.label + " (" + p.regime + ")", p.regime, p.v_m_per_s, unit, 0.0, "regime_mismatch");
+    add("regime_mismatch", 0, plan.label + " (" + p.regime + ")", p.regime, p.v_m_per_s, unit, 0.0, "regime_mismatch", {});
     if (std::isfinite(p.amplitude_m) && p.amplitude_m > 0.0)
-      add("amplitude_m", 0, plan.label, p.regime, p.v_m_per_s, unit, p.amplitude_m, "amplitude_m");
+      add("amplitude_m", 0, plan.label, p.regime, p.v_m_per_s, unit, p.amplitude_m, "amplitude_m", {});
     if (std::isfinite(p.frequency_rad_per_s) && p.frequency_rad_per_s > 0.0)
-      add("frequency_rad_per_s", 0, plan.label, p.regime, p.v_m_per_s, unit, p.frequency_rad_per_s, "frequency_rad_per_s");
+      add("frequency_rad_per_s", 0, plan.label, p.regime, p.v_m_per_s, unit, p.frequency_rad_per_s, "frequency_rad_per_s", {});
   }
 
   if (items_.empty()) throw std::invalid_argument("bundle " + bundle.name + ": no usable measurement (no trace long enough to analyse)");

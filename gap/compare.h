@@ -23,6 +23,10 @@
 //   steady_mu          μ over the last 30 % of each drive segment (velocity steps)
 //   mu_after_step      μ − μ_before-step, averaged over bins of load-point displacement after a
 //                      step (bins finer near the step)
+// Noise: a constant-speed run's analysis window is also cut into four contiguous blocks, each
+// analysed as a run of its own; an item's noise is the blocks' standard deviation / √blocks. A
+// step bin's is the record's high-pass noise / √(samples in the bin); a steady level's the
+// scatter of four sub-window means / 2.
 // Runs use the part of the trace after 30 % of its duration (start-up transient excluded), with μ
 // averaged over ±2 measured sample spacings in time; extrema are the maxima and minima of that
 // smoothed μ, located between samples, and an extremum cut by the window's start is left out.
@@ -49,6 +53,11 @@ struct Item {
   double v_m_per_s = 0.0;   // driven speed the item was measured at
   int unit = 0;         // split unit: items of one unit go to the same split
   double measured = 0.0;
+  // Standard error of `measured` read off the data itself (0 where the data cannot tell): the
+  // scatter of the run's blocks analysed as repeats, or the record's high-pass noise averaged
+  // over the samples of a bin. It holds whatever a deterministic model cannot follow — sensor
+  // noise, cycle-to-cycle scatter, a track whose friction changes along its length.
+  double noise = 0.0;
   int plan = 0;         // the simulation that produces it
   std::string key;      // its name in that simulation's analysis
 };

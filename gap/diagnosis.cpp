@@ -361,7 +361,7 @@ struct Standing {
   bool earns;
 };
 
-int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o) {
+int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cs.size(); ++i)
     if (st[i].earns) order.push_back(i);
@@ -375,10 +375,51 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
     if (cs[i].extra_parameters <= cs[chosen].extra_parameters) continue;
     const Standing &c = st[i], &s = st[chosen];
     if (c.criterion < s.criterion - kIndifferentCriterion && c.heldout_gap <= (1.0 - o.min_relative_shrink) * s.heldout_gap &&
-        s.heldout_gap - c.heldout_gap >= o.min_gap_reduction)
+        s.heldout_gap - c.heldout_gap >= margin)
       chosen = i;
   }
   return static_cast<int>(chosen);
+}
+
+// The verdict's rule on one set of standings (the data's, or a bootstrap resample's): the index of
+// the named candidate, or −1 — "unexplained" when the held-out gap lies above unexplained_floors
+// noise floors and no earning candidate halves its excess over the floor, else "none". Without a
+// floor (data that cannot tell their own noise) nothing is called unexplained.
+struct Decision {
+  int index = -1;
+  bool unexplained = false;
+};
+
+Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin,
+                double gap_before, double floor) {
+  const int k = verdict_index(cs, st, o, margin);
+  if (!(floor > 0.0)) return {k, false};
+  const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
+  const auto real = [&](double g) { return g > o.unexplained_floors * floor; };
+  if (k >= 0 && (!real(st[static_cast<std::size_t>(k)].heldout_gap) ||
+                 excess(st[static_cast<std::size_t>(k)].heldout_gap) <= 0.5 * excess(gap_before)))
+    return {k, false};
+  return {-1, real(gap_before)};
+}
+
+// An effect must cut the held-out gap by this much: the fixed minimum or floor_margin floors.
+double gap_margin(const DiagnosisOptions& o, double floor) { return std::max(o.min_gap_reduction, o.floor_margin * floor); }
+
+// Share of the summed squared residuals by (observable, phase + speed class), largest first.
+std::vector<Localization> localize(const std::vector<Item>& items, const std::vector<double>& r) {
+  std::map<std::pair<std::string, std::string>, std::pair<double, std::size_t>> acc;
+  double total = 0.0;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const double r2 = r[i] * r[i];
+    auto& a = acc[{items[i].observable, items[i].phase + ", " + items[i].speed_class}];
+    if (a.first == 0.0 || r2 > r[a.second] * r[a.second]) a.second = i;
+    a.first += r2;
+    total += r2;
+  }
+  std::vector<Localization> out;
+  for (const auto& [key, a] : acc) out.push_back({key.first, key.second, items[a.second].where, total > 0.0 ? a.first / total : 0.0});
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.share > b.share; });
+  return out;
 }
 
 std::string join(const std::vector<std::string>& v, const std::string& sep) {
@@ -394,6 +435,8 @@ std::string DiagnosisOptions::invalid_reason() const {
   if (max_iterations < 1) return "max_iterations must be at least 1";
   if (!(min_relative_shrink >= 0.0 && min_relative_shrink < 1.0)) return "min_relative_shrink must lie in [0, 1)";
   if (!(min_gap_reduction >= 0.0)) return "min_gap_reduction must not be negative";
+  if (!(floor_margin >= 0.0)) return "floor_margin must not be negative";
+  if (!(unexplained_floors > 1.0)) return "unexplained_floors must exceed 1";
   if (bootstrap_samples < 0) return "bootstrap_samples must not be negative";
   for (const auto& k : calibrate_rig)
     if (k != "stiffness_N_per_m" && k != "damping_N_s_per_m" && k != "damping_ratio" && k != "mass_kg")
@@ -403,6 +446,8 @@ std::string DiagnosisOptions::invalid_reason() const {
 }
 
 std::string verdict_name(const std::vector<std::string>& effects) { return effects.empty() ? "none" : join(effects, "+"); }
+
+std::string verdict_name(const Verdict& v) { return v.unexplained ? "unexplained" : verdict_name(v.effects); }
 
 rig::RigParameters apply_bundle_rig(const ExperimentBundle& b, rig::RigParameters rig) {
   if (b.mass_kg) rig.mass_kg = *b.mass_kg;
@@ -430,6 +475,11 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     train[i] = d.has_heldout ? !d.heldout[i] : true;
   }
   for (const Item& it : d.items) d.measured.push_back(it.measured);
+  // The data's own noise in gap units, and the floor it puts under any model's held-out gap.
+  std::vector<double> noise_r(n);
+  for (std::size_t i = 0; i < n; ++i) noise_r[i] = d.items[i].noise / comparison.scale(d.items[i].observable);
+  d.verdict.noise_floor = breakdown(d.items, noise_r, d.heldout).gap;
+  const double margin = gap_margin(o, d.verdict.noise_floor);
   std::mutex progress_mutex;
   auto report = [&](const std::string& what) {
     if (!o.progress) return;
@@ -492,7 +542,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     const double sse_after = weighted_sse(c.residuals, w_held);
     c.criterion = n_held * std::log(std::max(sse_after, 1e-300) / std::max(sse_before, 1e-300)) + c.extra_parameters * std::log(std::max(n_held, 2));
     c.earns = c.criterion < 0.0 && c.heldout_gap_after <= (1.0 - o.min_relative_shrink) * c.heldout_gap_before &&
-              c.heldout_gap_before - c.heldout_gap_after >= o.min_gap_reduction;
+              c.heldout_gap_before - c.heldout_gap_after >= margin;
   };
 
   // 2. Candidates.
@@ -625,27 +675,16 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   }
 
   // Localization: share of the baseline's squared residuals by observable, phase and speed class.
-  {
-    std::map<std::pair<std::string, std::string>, std::pair<double, std::size_t>> acc;
-    double total = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double r2 = d.baseline_residuals[i] * d.baseline_residuals[i];
-      auto& a = acc[{d.items[i].observable, d.items[i].phase + ", " + d.items[i].speed_class}];
-      if (a.first == 0.0 || r2 > d.baseline_residuals[a.second] * d.baseline_residuals[a.second]) a.second = i;
-      a.first += r2;
-      total += r2;
-    }
-    for (const auto& [key, a] : acc)
-      d.localization.push_back({key.first, key.second, d.items[a.second].where, total > 0.0 ? a.first / total : 0.0});
-    std::stable_sort(d.localization.begin(), d.localization.end(), [](const auto& a, const auto& b) { return a.share > b.share; });
-  }
+  d.localization = localize(d.items, d.baseline_residuals);
 
   // 3. Verdict with bootstrap over held-out units.
   const Candidate* chosen = nullptr;
   {
     std::vector<Standing> standing;
     for (const Candidate& c : d.candidates) standing.push_back({c.criterion, c.heldout_gap_after, c.earns});
-    if (const int k = verdict_index(d.candidates, standing, o); k >= 0) chosen = &d.candidates[static_cast<std::size_t>(k)];
+    const Decision decision = decide(d.candidates, standing, o, margin, d.baseline_heldout.gap, d.verdict.noise_floor);
+    if (decision.index >= 0) chosen = &d.candidates[static_cast<std::size_t>(decision.index)];
+    d.verdict.unexplained = decision.unexplained;
   }
   d.verdict.heldout_gap_before = d.baseline_heldout.gap;
   if (chosen) {
@@ -654,6 +693,16 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     d.best_simulated = comparison.predict(chosen->rig, chosen->model, o.seed);
   } else {
     d.verdict.heldout_gap_after = d.baseline_heldout.gap;
+  }
+  d.verdict.remaining_floors = d.verdict.noise_floor > 0.0 ? d.verdict.heldout_gap_after / d.verdict.noise_floor
+                                                           : std::numeric_limits<double>::quiet_NaN();
+  {
+    const std::vector<double>& remaining = chosen ? chosen->residuals : d.baseline_residuals;
+    std::vector<double> held(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (d.heldout[i]) held[i] = remaining[i];
+    if (const std::vector<Localization> l = localize(d.items, held); !l.empty())
+      d.verdict.remaining_where = l.front().observable + " (" + l.front().where + ", worst " + l.front().worst_item + ")";
   }
   {
     std::vector<int> units;
@@ -688,15 +737,16 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
         return acc.empty() ? 0.0 : g / static_cast<double>(acc.size());
       };
       const double before = sse(d.baseline_residuals), gap_before = gap_of(d.baseline_residuals);
+      const double floor = gap_of(noise_r), resample_margin = gap_margin(o, floor);
       std::vector<Standing> standing;
       for (const Candidate& c : d.candidates) {
         const double crit = nh * std::log(std::max(sse(c.residuals), 1e-300) / std::max(before, 1e-300)) + c.extra_parameters * std::log(std::max(nh, 2));
         const double after = gap_of(c.residuals);
-        standing.push_back({crit, after, crit < 0.0 && after <= (1.0 - o.min_relative_shrink) * gap_before && gap_before - after >= o.min_gap_reduction});
+        standing.push_back({crit, after, crit < 0.0 && after <= (1.0 - o.min_relative_shrink) * gap_before && gap_before - after >= resample_margin});
       }
-      const int k = verdict_index(d.candidates, standing, o);
-      const std::string winner = k < 0 ? "none" : verdict_name(d.candidates[static_cast<std::size_t>(k)].effects);
-      agree += winner == verdict_name(d.verdict.effects);
+      const Decision k = decide(d.candidates, standing, o, resample_margin, gap_before, floor);
+      const std::string winner = k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(d.candidates[static_cast<std::size_t>(k.index)].effects);
+      agree += winner == verdict_name(d.verdict);
       const double g = gap_of(chosen ? chosen->residuals : d.baseline_residuals);
       s1 += g, s2 += g * g;
     }
@@ -705,8 +755,14 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     d.verdict.heldout_gap_after_std = B > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / B) / (B - 1))) : 0.0;
   }
 
-  char buf[600];
+  char buf[900];
   const Localization* top = d.localization.empty() ? nullptr : &d.localization.front();
+  char floor_text[160] = "";
+  if (d.verdict.noise_floor > 0.0)
+    std::snprintf(floor_text, sizeof floor_text, " (%.1f noise floors; the data's own noise leaves %.3g)", d.verdict.remaining_floors,
+                  d.verdict.noise_floor);
+  const std::string closest = d.candidates.empty() ? std::string("-") : verdict_name(d.candidates.front().effects);
+  const double closest_gap = d.candidates.empty() ? d.verdict.heldout_gap_before : d.candidates.front().heldout_gap_after;
   if (chosen) {
     std::string params;
     for (const auto& [k, v] : chosen->params)
@@ -716,20 +772,26 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
         params += p;
       }
     std::snprintf(buf, sizeof buf,
-                  "Add %s to the model (%s): it cuts the held-out gap from %.3g to %.3g (%.0f %% smaller, bootstrap confidence %.0f %%); "
+                  "Add %s to the model (%s): it cuts the held-out gap from %.3g to %.3g%s (%.0f %% smaller, bootstrap confidence %.0f %%); "
                   "the baseline misses most in %s (%s, %.0f %% of the squared residual).",
                   join(chosen->effects, " and ").c_str(), params.c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
-                  100.0 * (1.0 - d.verdict.heldout_gap_after / std::max(d.verdict.heldout_gap_before, 1e-300)), 100.0 * d.verdict.confidence,
-                  top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0);
+                  floor_text, 100.0 * (1.0 - d.verdict.heldout_gap_after / std::max(d.verdict.heldout_gap_before, 1e-300)),
+                  100.0 * d.verdict.confidence, top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
+                  top ? 100.0 * top->share : 0.0);
+  } else if (d.verdict.unexplained) {
+    std::snprintf(buf, sizeof buf,
+                  "Unexplained: the calibrated baseline (mu_s = %.3g, mu_k = %.3g) leaves a held-out gap of %.3g%s, and no catalogue "
+                  "effect halves its excess over the floor (closest %s at %.3g); most of it lies in %s. Look for a mechanism outside "
+                  "the catalogue there (bootstrap confidence %.0f %%).",
+                  d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, floor_text, closest.c_str(), closest_gap,
+                  d.verdict.remaining_where.c_str(), 100.0 * d.verdict.confidence);
   } else {
     std::snprintf(buf, sizeof buf,
                   "No catalogue effect earns its parameters on held-out data: keep the calibrated baseline (mu_s = %.3g, mu_k = %.3g), "
-                  "whose held-out gap is %.3g; the largest remaining share is %s (%s, %.0f %%)%s.",
-                  d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, top ? top->observable.c_str() : "-",
-                  top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0,
-                  d.candidates.empty() ? "" : (", closest candidate " + verdict_name(d.candidates.front().effects) + " at held-out gap " +
-                                               std::to_string(d.candidates.front().heldout_gap_after).substr(0, 5))
-                                              .c_str());
+                  "whose held-out gap is %.3g%s; the largest remaining share is %s (%s, %.0f %%), closest candidate %s at held-out gap %.3g.",
+                  d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, floor_text,
+                  top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0, closest.c_str(),
+                  closest_gap);
   }
   d.verdict.conclusion = buf;
   return d;
@@ -765,13 +827,19 @@ nlohmann::json report_json(const Diagnosis& d) {
                                {"criterion", c.criterion},
                                {"earns_parameters", c.earns}});
   }
-  json effect = d.verdict.effects.empty() ? json("none") : d.verdict.effects.size() == 1 ? json(d.verdict.effects.front()) : json(d.verdict.effects);
+  json effect = d.verdict.effects.size() > 1 ? json(d.verdict.effects) : json(verdict_name(d.verdict));
   j["verdict"] = {{"effect", effect},
                   {"heldout_gap_before", d.verdict.heldout_gap_before},
                   {"heldout_gap_after", d.verdict.heldout_gap_after},
                   {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},
                   {"confidence", d.verdict.confidence},
+                  {"noise_floor", d.verdict.noise_floor},
+                  {"remaining_gap_in_floors", std::isfinite(d.verdict.remaining_floors) ? json(d.verdict.remaining_floors) : json(nullptr)},
+                  {"remaining_where", d.verdict.remaining_where},
                   {"conclusion", d.verdict.conclusion}};
+  j["noise_floor_definition"] =
+      "gap of the items' standard errors read off the data (blocks of each run analysed as repeats; a step bin's high-pass noise / "
+      "sqrt(samples)): the held-out gap a model right in every mechanism would still leave";
   j["items"] = json::array();
   for (std::size_t i = 0; i < d.items.size(); ++i)
     j["items"].push_back({{"observable", d.items[i].observable},
@@ -779,6 +847,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                           {"phase", d.items[i].phase},
                           {"heldout", static_cast<bool>(d.heldout[i])},
                           {"measured", d.measured[i]},
+                          {"noise", d.items[i].noise},
                           {"baseline", std::isfinite(d.baseline_simulated[i]) ? json(d.baseline_simulated[i]) : json(nullptr)},
                           {"best", std::isfinite(d.best_simulated[i]) ? json(d.best_simulated[i]) : json(nullptr)}});
   return j;

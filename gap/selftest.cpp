@@ -186,7 +186,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   SelftestRow row;
   row.c = sc;
   row.form = form;
-  row.verdict = verdict_name(d.verdict.effects);
+  row.verdict = verdict_name(d.verdict);
   row.heldout_gap_before = d.verdict.heldout_gap_before;
   row.heldout_gap_after = d.verdict.heldout_gap_after;
   row.confidence = d.verdict.confidence;
