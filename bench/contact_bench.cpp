@@ -6,14 +6,23 @@
 //   per_iter_over_fft    wall time per iteration / wall time of one r2c + c2r pair, same grid
 //   per_iter_over_fft_cpu the same ratio in process CPU time (robust on a shared machine)
 //   fft_pair_ms          that FFT pair, measured in the same process with the same thread count
-//   fft_pairs            half-space evaluations of the solve (1 per iteration + recomputations)
+//   fft_pairs            half-space evaluations of the solve (1 per iteration + re-synchronisations)
+//   pairs_per_iter       fft_pairs / iterations (the floor is 1)
+//   resyncs              exact recomputations u = G p (NormalContactOptions::resync_drift)
+//   carried_error        error of the carried u found by the re-sync that confirmed convergence,
+//                        ‖Δu‖₂/‖u − ū‖₂ (carried_error_max: the largest, early in the solve)
+//   solve_cpu_s, solve_s the whole solve, process CPU and wall time
 //   peak_rss_MiB         the process' peak resident memory so far (VmHWM)
+// and, to locate the floor, BM_Product (one half-space product with its energy, as the solve
+// does it, over an FFT pair) and BM_GridPass (one fused update pass — 4 grids read, 2 written,
+// the solve's heaviest — over an FFT pair), both in CPU time and measured in the same process.
 // Arguments: grid side n, threads. The elastic-plastic case caps the pressure so that the mean
 // pressure is 0.6 × hardness (where public FFT codes are reported to stall).
 // Run: build/bench/contact_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <fstream>
@@ -110,6 +119,13 @@ void solve_bench(benchmark::State& state, bool plastic) {
   const double runs = static_cast<double>(state.iterations()) * r.summary.iterations;
   state.counters["iterations"] = r.summary.iterations;
   state.counters["fft_pairs"] = r.summary.fft_pairs;
+  state.counters["pairs_per_iter"] = static_cast<double>(r.summary.fft_pairs) / r.summary.iterations;
+  state.counters["resyncs"] = r.summary.resyncs;
+  state.counters["carried_error"] = r.summary.carried_error;
+  state.counters["carried_error_max"] = r.summary.carried_error_max;
+  state.counters["solve_cpu_s"] = solve_cpu_s / static_cast<double>(state.iterations());
+  state.counters["solve_s"] = solve_s / static_cast<double>(state.iterations());
+  state.counters["fft_pair_cpu_ms"] = 1e3 * fft.cpu_s;
   state.counters["area_fraction"] = r.area_fraction;
   state.counters["fft_pair_ms"] = 1e3 * fft.wall_s;
   state.counters["per_iter_over_fft"] = solve_s / runs / fft.wall_s;
@@ -129,6 +145,63 @@ void BM_FftPair(benchmark::State& state) {
   }
 }
 
+// One half-space product as the solve does it (r2c, kernel multiply with the energy sum, c2r,
+// on the caller's arrays), against the bare FFT pair.
+void BM_Product(benchmark::State& state) {
+  const Eigen::Index n = state.range(0);
+  const int threads = static_cast<int>(state.range(1));
+  omp_set_num_threads(threads);
+  ElasticHalfSpace hs(Grid::patch(n, n, 1.0, 1.0), 1.0, true, threads);
+  const Eigen::ArrayXXd t = Eigen::ArrayXXd::Random(n, n);
+  Eigen::ArrayXXd r(n, n);
+  double energy = hs.displacement_and_energy(t, r);  // first touch of r outside the timing
+  double cpu = 0.0;
+  for (auto _ : state) {
+    const double c0 = cpu_seconds();
+    energy += hs.displacement_and_energy(t, r);
+    cpu += cpu_seconds() - c0;
+  }
+  benchmark::DoNotOptimize(energy);
+  const PairTime fft = fft_pair_time(n, threads);
+  state.counters["over_fft_cpu"] = cpu / static_cast<double>(state.iterations()) / fft.cpu_s;
+}
+
+// A pass shaped like the solve's update pass: 4 grids read, 2 written, a few flops per cell and
+// two reductions — the memory traffic of one of the two fused passes per iteration.
+void BM_GridPass(benchmark::State& state) {
+  const Eigen::Index n = state.range(0);
+  const int threads = static_cast<int>(state.range(1));
+  omp_set_num_threads(threads);
+  const Eigen::Index cells = n * n;
+  Eigen::ArrayXd a = Eigen::ArrayXd::Random(cells), b = Eigen::ArrayXd::Random(cells),
+                 c = Eigen::ArrayXd::Random(cells), d = Eigen::ArrayXd::Random(cells);
+  double* ap = a.data();
+  double* bp = b.data();
+  const double* cp = c.data();
+  const double* dp = d.data();
+  double cpu = 0.0, sink = 0.0;
+  for (auto _ : state) {
+    const double c0 = cpu_seconds();
+    double s1 = 0.0, s2 = 0.0;
+#pragma omp parallel for if (cells >= Eigen::Index{1} << 15) reduction(+ : s1, s2) schedule(static)
+    for (Eigen::Index i = 0; i < cells; ++i) {
+      const double y = std::clamp(ap[i] - 1e-3 * cp[i], 0.0, 10.0);
+      const double v = bp[i] - 1e-3 * dp[i];
+      s1 += y;
+      s2 += v * v;
+      ap[i] = y;
+      bp[i] = v;
+    }
+    sink += s1 + s2;
+    cpu += cpu_seconds() - c0;
+  }
+  benchmark::DoNotOptimize(sink);
+  const PairTime fft = fft_pair_time(n, threads);
+  state.counters["over_fft_cpu"] = cpu / static_cast<double>(state.iterations()) / fft.cpu_s;
+  state.counters["GB_per_s"] = 6.0 * 8.0 * static_cast<double>(cells) * static_cast<double>(state.iterations()) /
+                               std::max(cpu, 1e-12) * 1e-9 * threads;
+}
+
 void BM_ElasticSolve(benchmark::State& state) { solve_bench(state, false); }
 void BM_ElasticPlasticSolve(benchmark::State& state) { solve_bench(state, true); }
 
@@ -140,6 +213,18 @@ void grids(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(BM_FftPair)->Apply([](benchmark::internal::Benchmark* b) {
+  for (int n : {256, 512, 1024, 2048}) {
+    for (int t : {1, 2}) b->Args({n, t});
+  }
+  b->ArgNames({"n", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime();
+});
+BENCHMARK(BM_Product)->Apply([](benchmark::internal::Benchmark* b) {
+  for (int n : {256, 512, 1024, 2048}) {
+    for (int t : {1, 2}) b->Args({n, t});
+  }
+  b->ArgNames({"n", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime();
+});
+BENCHMARK(BM_GridPass)->Apply([](benchmark::internal::Benchmark* b) {
   for (int n : {256, 512, 1024, 2048}) {
     for (int t : {1, 2}) b->Args({n, t});
   }

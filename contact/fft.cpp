@@ -107,4 +107,31 @@ void RealFft2d::inverse() {
   fftw_execute(static_cast<fftw_plan>(inverse_plan_));
 }
 
+void RealFft2d::forward(const double* in) {
+  assert(forward_plan_ != nullptr && "RealFft2d used after move");
+  // FFTW plans are only valid on arrays with the planning arrays' alignment (fftw3 manual,
+  // "New-array Execute Functions"); Eigen's heap arrays usually match fftw_malloc's.
+  double* src = const_cast<double*>(in);  // fftw's signature is non-const; r2c out-of-place preserves it
+  if (src == real_) {
+    forward();
+  } else if (fftw_alignment_of(src) == fftw_alignment_of(real_)) {
+    fftw_execute_dft_r2c(static_cast<fftw_plan>(forward_plan_), src, reinterpret_cast<fftw_complex*>(spectrum_));
+  } else {
+    real() = Eigen::Map<const Eigen::ArrayXXd>(in, nx_, ny_);
+    forward();
+  }
+}
+
+void RealFft2d::inverse(double* out) {
+  assert(inverse_plan_ != nullptr && "RealFft2d used after move");
+  if (out == real_) {
+    inverse();
+  } else if (fftw_alignment_of(out) == fftw_alignment_of(real_)) {
+    fftw_execute_dft_c2r(static_cast<fftw_plan>(inverse_plan_), reinterpret_cast<fftw_complex*>(spectrum_), out);
+  } else {
+    inverse();
+    Eigen::Map<Eigen::ArrayXXd>(out, nx_, ny_) = real();
+  }
+}
+
 }  // namespace tribo::contact

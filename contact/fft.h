@@ -40,6 +40,11 @@ class RealFft2d {
 
   void forward();  // real() → spectrum()
   void inverse();  // spectrum() → real(); overwrites spectrum() (FFTW c2r destroys its input)
+  // The same transforms on caller-owned nx × ny arrays (x contiguous), saving the copy into and
+  // out of real(): FFTW's new-array execute when `in`/`out` share real()'s SIMD alignment, a copy
+  // through real() otherwise. `in` is left unchanged (out-of-place r2c preserves its input).
+  void forward(const double* in);
+  void inverse(double* out);
 
  private:
   void release() noexcept;

@@ -91,22 +91,54 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
 }
 
 void ElasticHalfSpace::displacement(const Eigen::ArrayXXd& p, Eigen::ArrayXXd& u) {
+  if (u.rows() != grid_.nx || u.cols() != grid_.ny) u.resize(grid_.nx, grid_.ny);
+  displacement_and_energy(p, u);
+}
+
+double ElasticHalfSpace::displacement_and_energy(const Eigen::ArrayXXd& p, Eigen::ArrayXXd& u) {
   const Eigen::Index nx = grid_.nx, ny = grid_.ny;
   assert(p.rows() == nx && p.cols() == ny && "pressure field does not match the half-space grid");
-  auto real = fft_.real();
+  assert(u.rows() == nx && u.cols() == ny && "displacement field does not match the half-space grid");
+  assert(p.data() != u.data() && "displacement_and_energy cannot work in place");
   if (periodic_) {
-    real = p;
+    fft_.forward(p.data());
   } else {
-    real.setZero();
+    // The c2r of the previous product filled the padding; the zero padding is what makes the
+    // circular convolution the linear one.
+    auto real = fft_.real();
     real.topLeftCorner(nx, ny) = p;
+    real.bottomRows(fft_.nx() - nx).leftCols(ny).setZero();
+    real.rightCols(fft_.ny() - ny).setZero();
+    fft_.forward();
   }
-  fft_.forward();
+  // Multiply by the kernel and sum the energy Σ_q K(q) |p̂(q)|² over the full spectrum: the half
+  // spectrum counts its k = 0 and Nyquist columns once and the others twice (Hermitian symmetry).
   std::complex<double>* s = fft_.spectrum();
-  const Eigen::Index count = fft_.spectrum_size();
-#pragma omp parallel for if (count >= Eigen::Index{1} << 15) schedule(static)
-  for (Eigen::Index m = 0; m < count; ++m) s[m] *= kernel_[m];
-  fft_.inverse();
-  u = real.topLeftCorner(nx, ny);
+  const Eigen::Index mxh = fft_.nx_half(), my = fft_.ny();
+  const bool even_x = fft_.nx() % 2 == 0;
+  double energy = 0.0;
+#pragma omp parallel for if (mxh * my >= Eigen::Index{1} << 15) reduction(+ : energy) schedule(static)
+  for (Eigen::Index j = 0; j < my; ++j) {
+    std::complex<double>* col = s + j * mxh;
+    const double* k = kernel_.data() + j * mxh;
+    // The k = 0 and (even nx) Nyquist bins have no mirror image: counted once, the rest twice.
+    double edge = k[0] * std::norm(col[0]);
+    if (even_x && mxh > 1) edge += k[mxh - 1] * std::norm(col[mxh - 1]);
+    double e = 0.0;
+    for (Eigen::Index m = 0; m < mxh; ++m) {
+      e += k[m] * std::norm(col[m]);
+      col[m] *= k[m];
+    }
+    e = 2.0 * e - edge;
+    energy += e;
+  }
+  if (periodic_) {
+    fft_.inverse(u.data());
+  } else {
+    fft_.inverse();
+    u = fft_.real().topLeftCorner(nx, ny);
+  }
+  return energy;
 }
 
 }  // namespace tribo::contact

@@ -38,6 +38,11 @@ class ElasticHalfSpace {
 
   // u = G p on the nx × ny grid. Not const: uses the owned FFT buffers (one instance per thread).
   void displacement(const Eigen::ArrayXXd& pressure_Pa, Eigen::ArrayXXd& displacement_m);
+  // The same product, also returning the energy product p·(G p) = Σ_i p_i u_i (m³/Pa · Pa² per
+  // cell area, i.e. m·Pa) from the spectrum by Parseval, so a caller that needs it (the CG line
+  // step) saves a pass over the grid. On a periodic grid p and u are transformed in place of the
+  // FFT buffers (no copies); `u` must already have the grid's shape and must not alias `p`.
+  double displacement_and_energy(const Eigen::ArrayXXd& pressure_Pa, Eigen::ArrayXXd& displacement_m);
   // Number of r2c + c2r pairs per displacement() — one on the (padded) FFT grid.
   const RealFft2d& fft() const { return fft_; }
 

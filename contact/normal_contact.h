@@ -36,9 +36,21 @@ struct NormalContactOptions {
   int max_iterations = 0;
   // Local pressure cap p_cap (Pa): the hardness σ0 for surface plasticity; ∞ for elastic contact.
   double pressure_cap_Pa = std::numeric_limits<double>::infinity();
+  // Exact against incremental displacement. A CG iteration needs one half-space product, G t of
+  // its search direction t (the FFT floor); u = G p is then carried as u − τ G t, which stays exact
+  // (to round-off) while the step is a pure CG step. Cells that change set (clamped at 0 or the cap,
+  // or re-entering contact) and the load-control shift move p off that step, an error in u that the
+  // iteration tolerates (it only steers the next steps) until it must be removed by a fresh product
+  // u = G p: when the estimated error ‖G e‖₂, e the accumulated off-direction pressure change,
+  // exceeds `resync_drift` × the current rms residual ‖r‖₂ (both gap errors, m), or after
+  // `resync_interval` incremental steps (bounds the round-off of the updates). Convergence is only
+  // declared on a freshly computed u, so these settings change the cost, never the answer.
+  // resync_interval = 1 recomputes u every iteration (two products per iteration: the reference).
+  int resync_interval = 64;
+  double resync_drift = 0.2;
 
   // False with a reason when an option is out of range (tolerance in (0, 1), cap > 0, iterations ≥ 0).
-  bool is_valid(std::string* why) const;
+  bool is_valid(std::string* why) const;  // also resync_interval ≥ 1, resync_drift ≥ 0
 };
 
 struct NormalContactSummary {
@@ -46,6 +58,12 @@ struct NormalContactSummary {
   int iterations = 0;
   double residual = 0.0;  // ε at exit (see NormalContactOptions::tolerance)
   int fft_pairs = 0;      // half-space evaluations (r2c + c2r pairs on the FFT grid)
+  int resyncs = 0;        // of which exact recomputations u = G p (the rest: one G t per iteration)
+  // Error of the incrementally carried u found by a re-synchronisation, ‖u_carried − G p‖₂ /
+  // ‖u − ū‖₂ (the scale of `residual`): at the last one (the one that confirmed convergence), and
+  // the largest (early, while the contact set still moves a lot).
+  double carried_error = 0.0;
+  double carried_error_max = 0.0;
   std::string message;
 };
 

@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# Regenerates a benchmark section of bench/README.md from one run.
+#
+#   tools/bench.sh contact [BUILD_DIR]     (BUILD_DIR defaults to build/, configured Release)
+#
+# contact: builds bench/contact_bench, runs it on 1 thread (OMP_NUM_THREADS=1) and on 2 threads
+# (OMP_NUM_THREADS=2, OMP_WAIT_POLICY=passive: spinning threads are descheduled on a shared
+# machine, see bench/README.md), keeps the JSON in out/bench/, and rewrites the block between
+# <!-- bench:contact:begin --> and <!-- bench:contact:end --> in bench/README.md with the tables,
+# the date and the machine load (uptime before and after, which the tables must be read against).
+# Ratios are in process CPU time against an FFTW r2c + c2r pair measured in the same process.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+what="${1:-}"
+build="${2:-build}"
+case "$what" in
+  contact) ;;
+  *) echo "usage: tools/bench.sh contact [BUILD_DIR]" >&2; exit 2 ;;
+esac
+
+if [ ! -f "$build/CMakeCache.txt" ]; then cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release; fi
+cmake --build "$build" --target contact_bench -j2
+mkdir -p out/bench
+load_before="$(uptime)"
+started="$(date -u '+%Y-%m-%d %H:%M UTC')"
+OMP_NUM_THREADS=1 "$build/bench/contact_bench" --benchmark_filter='threads:1' \
+  --benchmark_format=json --benchmark_out=out/bench/contact-t1.json --benchmark_out_format=json >/dev/null
+OMP_NUM_THREADS=2 OMP_WAIT_POLICY=passive "$build/bench/contact_bench" --benchmark_filter='threads:2' \
+  --benchmark_format=json --benchmark_out=out/bench/contact-t2.json --benchmark_out_format=json >/dev/null
+load_after="$(uptime)"
+
+STARTED="$started" LOAD_BEFORE="$load_before" LOAD_AFTER="$load_after" python3 - <<'EOF'
+import json, os, re
+
+rows = {}
+for f in ("out/bench/contact-t1.json", "out/bench/contact-t2.json"):
+    for b in json.load(open(f))["benchmarks"]:
+        m = re.match(r"BM_(\w+)/n:(\d+)/threads:(\d+)", b["name"])
+        if m and b.get("run_type", "iteration") == "iteration":
+            rows[(m.group(1), int(m.group(2)), int(m.group(3)))] = b
+
+def g(kind, n, t, key, fmt="{:.2f}"):
+    b = rows.get((kind, n, t))
+    if b is None or key not in b:
+        return "—"
+    return fmt.format(b[key])
+
+grids = (256, 512, 1024, 2048)
+out = []
+out.append(f"Measured {os.environ['STARTED']} by `tools/bench.sh contact`. Machine load — before: "
+           f"`{os.environ['LOAD_BEFORE'].strip()}`; after: `{os.environ['LOAD_AFTER'].strip()}`.")
+out.append("")
+out.append("Per CG iteration, as a multiple of one FFTW r2c + c2r pair on the same grid and thread count "
+           "(process CPU time, both measured in the same process):")
+out.append("")
+out.append("| grid | threads | FFT pair CPU | product / pair | update pass / pair | elastic: iterations | pairs / iter | resyncs | **per iter / pair** | plastic: iterations | pairs / iter | **per iter / pair** |")
+out.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
+for n in grids:
+    for t in (1, 2):
+        out.append("| {}² | {} | {} ms | {} | {} | {} | {} | {} | **{}** | {} | {} | **{}** |".format(
+            n, t, g("ElasticSolve", n, t, "fft_pair_cpu_ms", "{:.3g}"),
+            g("Product", n, t, "over_fft_cpu"), g("GridPass", n, t, "over_fft_cpu"),
+            g("ElasticSolve", n, t, "iterations", "{:.0f}"), g("ElasticSolve", n, t, "pairs_per_iter"),
+            g("ElasticSolve", n, t, "resyncs", "{:.0f}"), g("ElasticSolve", n, t, "per_iter_over_fft_cpu"),
+            g("ElasticPlasticSolve", n, t, "iterations", "{:.0f}"), g("ElasticPlasticSolve", n, t, "pairs_per_iter"),
+            g("ElasticPlasticSolve", n, t, "per_iter_over_fft_cpu")))
+out.append("")
+out.append("Whole solves (10 % contact, relative residual 1e-8):")
+out.append("")
+out.append("| grid | threads | elastic CPU | elastic wall | plastic CPU | plastic wall | carried-u error at the final re-sync (largest) | peak RSS |")
+out.append("|---|---|---|---|---|---|---|---|")
+for n in grids:
+    for t in (1, 2):
+        out.append("| {}² | {} | {} s | {} s | {} s | {} s | {} | {} MiB |".format(
+            n, t, g("ElasticSolve", n, t, "solve_cpu_s", "{:.3g}"), g("ElasticSolve", n, t, "solve_s", "{:.3g}"),
+            g("ElasticPlasticSolve", n, t, "solve_cpu_s", "{:.3g}"), g("ElasticPlasticSolve", n, t, "solve_s", "{:.3g}"),
+            g("ElasticSolve", n, t, "carried_error", "{:.1e}") + " (" + g("ElasticSolve", n, t, "carried_error_max", "{:.1f}") + ")",
+            g("ElasticSolve", n, t, "peak_rss_MiB", "{:.0f}")))
+table = "\n".join(out)
+open("out/bench/contact.md", "w").write(table + "\n")
+
+readme = open("bench/README.md").read()
+begin, end = "<!-- bench:contact:begin -->", "<!-- bench:contact:end -->"
+if begin in readme and end in readme:
+    a = readme.index(begin) + len(begin)
+    b = readme.index(end)
+    readme = readme[:a] + "\n" + table + "\n" + readme[b:]
+    open("bench/README.md", "w").write(readme)
+    print("bench/README.md: contact tables rewritten (copy in out/bench/contact.md)")
+else:
+    print("bench/README.md has no contact markers; tables in out/bench/contact.md")
+EOF
