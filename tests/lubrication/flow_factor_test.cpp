@@ -44,21 +44,31 @@ TEST(FlowFactors, TendToOneAtTheSmallRoughnessRate) {
   }
 }
 
-// Against Patir & Cheng's fits for isotropic roughness (γ = 1): φ_x = 1 − 0.90 e^{−0.56H}
-// and Φ_s = 1.899 H^0.98 e^{−0.92H + 0.05H²}. Their fits come from few realisations on coarse
-// grids and scatter by several per cent about later recomputations: φ_x and φ_y within 0.05 of
-// the fit at H = 3 and 6, and Φ_s at H = 6, plus three standard errors of our 6-realisation mean.
-TEST(FlowFactors, AgreeWithPatirChengIsotropicFits) {
-  const auto rows = flow_factors(cell(96, 1.0, {3.0, 6.0}, 6));
+// Against Patir & Cheng's fit for isotropic roughness (γ = 1), φ_x = 1 − 0.90 e^{−0.56H} (J. Lubr.
+// Technol. 100, 1978, Table 1, H > 0.5), where the roughness effect 1 − φ is large (0.29 at H = 2,
+// 0.17 at H = 3), compared as that effect: for isotropic roughness φ_x and φ_y estimate the same
+// factor, so their mean φ̄ is used. The band is three standard errors of φ̄ over 8 realisations
+// plus 30 % of Patir–Cheng's effect for the difference in surface model and grid (their fits
+// come from few coarse realisations; ours land at 0.7–0.75 of their effect here, a systematic
+// shortfall this band admits and does not hide: see the printout). Unlike the former ±0.05
+// absolute band at H = 6 — wider than the effect 0.03 it checked — this fails for a roughness
+// effect lost, doubled or of the wrong sign, and for a film floored at σ instead of 1e-3 σ
+// (effect 0.11 at H = 2), which the former test passed. Φ_s (Patir & Cheng 1979) at H = 3 likewise: within
+// 3 SE + 15 % of the fit's 0.55.
+TEST(FlowFactors, RoughnessEffectAgreesWithPatirChengIsotropicFit) {
+  const auto rows = flow_factors(cell(96, 1.0, {2.0, 3.0}, 8));
   for (const auto& r : rows) {
-    const double pc = patir_cheng_phi_x(r.h_over_sigma, 1.0);
-    std::printf("  H = %.0f: phi_x %.4f +- %.4f, phi_y %.4f +- %.4f (PC %.4f); Phi_s %.4f +- %.4f (PC %.4f)\n",
-                r.h_over_sigma, r.phi_x.mean, r.phi_x.standard_error, r.phi_y.mean, r.phi_y.standard_error, pc,
-                r.phi_s.mean, r.phi_s.standard_error, patir_cheng_shear_factor(r.h_over_sigma, 1.0));
-    EXPECT_NEAR(r.phi_x.mean, pc, 0.05 + 3 * r.phi_x.standard_error);
-    EXPECT_NEAR(r.phi_y.mean, pc, 0.05 + 3 * r.phi_y.standard_error);
+    const double pc_effect = 1.0 - patir_cheng_phi_x(r.h_over_sigma, 1.0);
+    const double effect = 1.0 - 0.5 * (r.phi_x.mean + r.phi_y.mean);
+    const double se = 0.5 * std::hypot(r.phi_x.standard_error, r.phi_y.standard_error);
+    std::printf("  H = %.0f: 1 - phi %.4f +- %.4f (PC %.4f, ratio %.2f); Phi_s %.4f +- %.4f (PC %.4f)\n", r.h_over_sigma,
+                effect, se, pc_effect, effect / pc_effect, r.phi_s.mean, r.phi_s.standard_error,
+                patir_cheng_shear_factor(r.h_over_sigma, 1.0));
+    EXPECT_NEAR(effect, pc_effect, 3 * se + 0.3 * pc_effect) << "H = " << r.h_over_sigma;
+    EXPECT_EQ(r.unconverged, 0);
   }
-  EXPECT_NEAR(rows[1].phi_s.mean, patir_cheng_shear_factor(6.0, 1.0), 0.05 + 3 * rows[1].phi_s.standard_error);
+  const double pc_shear = patir_cheng_shear_factor(3.0, 1.0);
+  EXPECT_NEAR(rows[1].phi_s.mean, pc_shear, 3 * rows[1].phi_s.standard_error + 0.15 * pc_shear);
 }
 
 // Anisotropy (Patir–Cheng 1978, Fig. 6): ridges along the flow (γ = 3) pass more pressure flow
@@ -87,21 +97,24 @@ TEST(FlowFactors, PatirChengFitTable) {
 
 // Rugosity lift on nominally parallel rough surfaces (DESIGN §3; thesis §5.2): with cavitation
 // the mean film pressure is positive, more than 3 standard errors above zero over 6
-// realisations at H = 3, and exactly proportional to ηU (mean_pressure_per_eta_u). Contact spots
-// are floored at 0.1 σ here: a thinner floor lets the rare touching nodes dominate the mean with
-// pressures that the solids, not the film, would carry.
-TEST(RugosityLift, RoughParallelSurfacesLiftWithCavitation) {
+// realisations at H = 3. Contact spots are floored at 0.1 σ here: a thinner floor lets the rare
+// touching nodes dominate the mean with pressures that the solids, not the film, would carry.
+// Reynolds' equation with JFO cavitation at zero cavity pressure is homogeneous in ηU (p and the
+// cavity both scale with the Couette forcing), so a second, independent solve at 3U must give
+// exactly 3 p̄ — to the Newton tolerance, 1e-6 relative here.
+TEST(RugosityLift, RoughParallelSurfacesLiftWithCavitationInProportionToSpeed) {
   HomogenisationOptions o = cell(48, 1.0, {3.0}, 6);
   o.contact_gap_fraction = 0.1;
-  const auto rows = rugosity_lift(o);
-  const LiftRow& r = rows[0];
+  const LiftRow r = rugosity_lift(o)[0];
   std::printf("  H = 3: mean pressure %.3e +- %.1e Pa (full film %.2e +- %.1e), cavitated %.2f, Newton %.1f\n",
               r.mean_pressure_Pa.mean, r.mean_pressure_Pa.standard_error, r.mean_pressure_full_film_Pa.mean,
               r.mean_pressure_full_film_Pa.standard_error, r.cavitated_fraction.mean, r.newton_iterations.mean);
   EXPECT_EQ(r.unconverged, 0);
   EXPECT_GT(r.mean_pressure_Pa.mean, 3.0 * r.mean_pressure_Pa.standard_error);
-  EXPECT_NEAR(r.mean_pressure_per_eta_u.mean * o.viscosity_Pa_s * o.sliding_speed_m_per_s, r.mean_pressure_Pa.mean,
-              1e-12 * r.mean_pressure_Pa.mean);
+  o.sliding_speed_m_per_s *= 3.0;
+  const LiftRow fast = rugosity_lift(o)[0];
+  EXPECT_NEAR(fast.mean_pressure_Pa.mean / r.mean_pressure_Pa.mean, 3.0, 3e-6);
+  EXPECT_NEAR(fast.cavitated_fraction.mean, r.cavitated_fraction.mean, 1e-6);
 }
 
 }  // namespace
