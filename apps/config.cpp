@@ -20,6 +20,16 @@ toml::table parse_toml_file(const std::filesystem::path& path) {
   }
 }
 
+toml::table parse_toml_text(std::string_view text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream os;
+    os << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": malformed TOML: " << e.description();
+    throw InputError(os.str());
+  }
+}
+
 ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string prefix)
     : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)) {}
 
@@ -82,12 +92,13 @@ std::optional<double> ConfigTable::optional_number(const std::string& key, Range
   return checked(key, *n, range);
 }
 
-long long ConfigTable::integer(const std::string& key, long long fallback, long long min_value) {
+long long ConfigTable::integer(const std::string& key, long long fallback, long long min_value, long long max_value) {
   const toml::node* n = node(key);
   if (!n) return fallback;
   auto i = n->value_exact<int64_t>();
   if (!i) fail(key, "expected an integer");
   if (*i < min_value) fail(key, "must be at least " + std::to_string(min_value) + " (got " + std::to_string(*i) + ")");
+  if (*i > max_value) fail(key, "must be at most " + std::to_string(max_value) + " (got " + std::to_string(*i) + ")");
   return *i;
 }
 

@@ -6,10 +6,12 @@
 #include <toml++/toml.h>
 
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace tribo::cli {
@@ -24,6 +26,8 @@ enum class Range { any, positive, non_negative, unit_interval };
 
 // Parses a TOML file; a missing, unreadable or malformed file is an InputError naming line and column.
 toml::table parse_toml_file(const std::filesystem::path& path);
+// The same for TOML text already in memory; `source` names it in the error (the fuzz harnesses).
+toml::table parse_toml_text(std::string_view text, const std::string& source);
 
 // A view of one TOML table that records which keys were read, so that finish() can reject
 // unknown keys (typos must not silently fall back to defaults).
@@ -35,7 +39,10 @@ class ConfigTable {
   double number(const std::string& key, double fallback, Range range = Range::any);
   double required_number(const std::string& key, Range range = Range::any);
   std::optional<double> optional_number(const std::string& key, Range range = Range::any);
-  long long integer(const std::string& key, long long fallback, long long min_value);
+  // An integer in [min_value, max_value]: counts that size allocations or are narrowed to int
+  // need an upper bound, or a typo like 1e9 becomes a giant allocation or wraps around.
+  long long integer(const std::string& key, long long fallback, long long min_value,
+                    long long max_value = std::numeric_limits<long long>::max());
   bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key, const std::string& fallback);
   std::string required_string(const std::string& key);

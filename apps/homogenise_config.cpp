@@ -11,7 +11,7 @@ contact::GaussianSurfaceParams read_gaussian(ConfigTable& s, ConfigTable* domain
   contact::GaussianSurfaceParams p;
   if (domain) {
     p.size_m = domain->number("size_m", 1e-3, Range::positive);
-    p.grid = domain->integer("grid", 128, 8);
+    p.grid = domain->integer("grid", 128, 8, 16384);  // 16384² = the largest surface contact/ reads
     domain->finish();
   } else {
     p.size_m = 1e-3;
@@ -37,7 +37,10 @@ contact::GaussianSurfaceParams read_gaussian(ConfigTable& s, ConfigTable* domain
 }  // namespace
 
 HomogeniseRun load_homogenise_run(const std::filesystem::path& path) {
-  const toml::table doc = parse_toml_file(path);
+  return load_homogenise_run(parse_toml_file(path), path);
+}
+
+HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem::path& path) {
   ConfigTable root(doc, path.string(), "");
   HomogeniseRun run;
   homogenise::HomogeniseOptions& o = run.options;
@@ -95,20 +98,20 @@ HomogeniseRun load_homogenise_run(const std::filesystem::path& path) {
   if (auto s = root.table("speeds")) {
     u_min = s->number("min_m_per_s", u_min, Range::positive);
     u_max = s->number("max_m_per_s", u_max, Range::positive);
-    count = static_cast<int>(s->integer("count", count, 2));
+    count = static_cast<int>(s->integer("count", count, 2, 100'000));
     if (!(u_max > u_min)) s->fail("max_m_per_s", "must exceed min_m_per_s");
     s->finish();
   }
   for (int k = 0; k < count; ++k)
     run.speeds_m_per_s.push_back(u_min * std::pow(u_max / u_min, static_cast<double>(k) / (count - 1)));
   if (auto h = root.table("homogenise")) {
-    o.realisations = static_cast<int>(h->integer("realisations", o.realisations, 1));
+    o.realisations = static_cast<int>(h->integer("realisations", o.realisations, 1, 1'000'000));
     if (h->has("separation_ratios")) o.separation_ratios = h->number_array("separation_ratios", Range::positive);
     o.flow_contact_gap_fraction = h->number("flow_contact_gap_fraction", o.flow_contact_gap_fraction, Range::positive);
     o.lift_contact_gap_fraction = h->number("lift_contact_gap_fraction", o.lift_contact_gap_fraction, Range::positive);
     o.bem_tolerance = h->number("bem_tolerance", o.bem_tolerance, Range::positive);
-    o.pin_grid = static_cast<int>(h->integer("pin_grid", o.pin_grid, 9));
-    o.threads = static_cast<int>(h->integer("threads", o.threads, 0));
+    o.pin_grid = static_cast<int>(h->integer("pin_grid", o.pin_grid, 9, 16384));
+    o.threads = static_cast<int>(h->integer("threads", o.threads, 0, 1'000'000));
     h->finish();
   }
   input_guard(root, "homogenise", [&] { homogenise::validate(o); return 0; });

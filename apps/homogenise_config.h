@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <vector>
 
+#include <toml++/toml.h>
+
 #include "homogenise/options.h"
 
 namespace tribo::cli {
@@ -17,5 +19,7 @@ struct HomogeniseRun {
 
 // Throws InputError naming the file, the key and the reason.
 HomogeniseRun load_homogenise_run(const std::filesystem::path& path);
+// The same on a parsed document; `path` names it in errors.
+HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem::path& path);
 
 }  // namespace tribo::cli

@@ -17,6 +17,9 @@ constexpr double kDefaultDriveSpeed_m_per_s = 7.112e-4;
 
 // A drive history as CSV with a header naming t_s and v_m_per_s (other columns ignored).
 void read_drive_table_csv(const std::filesystem::path& path, std::vector<double>& times, std::vector<double>& speeds) {
+  // Only a regular file: a config naming /dev/zero or a FIFO would never finish reading.
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": cannot read drive table (missing or not a regular file)");
   std::ifstream in(path);
   if (!in) throw InputError(path.string() + ": cannot read drive table");
   std::string line;
@@ -113,6 +116,8 @@ rig::FrictionModel read_friction_model(ConfigTable* t, std::optional<double> nor
     const std::string table = t->required_string("table");
     if (!normal_load_N) t->fail("law", "\"homogenised\" needs the rig's normal load, which this command does not provide");
     const std::filesystem::path path = std::filesystem::path(t->file()).parent_path() / table;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) t->fail("table", "cannot open '" + path.string() + "' (missing or not a regular file)");
     model.baseline.homogenised = input_guard(*t, "table", [&] { return rig::load_homogenised_base(path, *normal_load_N); });
   } else if (law == "coulomb") {
     model.baseline.mu_k = t->number("mu_k", model.baseline.mu_k, Range::non_negative);
@@ -159,8 +164,9 @@ rig::FrictionModel read_friction_model(ConfigTable* t, std::optional<double> nor
   return model;
 }
 
-RigRun load_rig_run(const std::filesystem::path& path) {
-  const toml::table doc = parse_toml_file(path);
+RigRun load_rig_run(const std::filesystem::path& path) { return load_rig_run(parse_toml_file(path), path); }
+
+RigRun load_rig_run(const toml::table& doc, const std::filesystem::path& path) {
   ConfigTable root(doc, path.string(), "");
   RigRun run;
 
@@ -178,7 +184,7 @@ RigRun load_rig_run(const std::filesystem::path& path) {
   if (auto t = root.table("run")) {
     run.options.duration_s = t->number("duration_s", run.options.duration_s, Range::positive);
     run.options.samples_per_period =
-        static_cast<int>(t->integer("samples_per_period", run.options.samples_per_period, 8));
+        static_cast<int>(t->integer("samples_per_period", run.options.samples_per_period, 8, 1'000'000));
     run.options.relative_tolerance = t->number("relative_tolerance", run.options.relative_tolerance, Range::positive);
     if (run.options.relative_tolerance >= 1e-2) t->fail("relative_tolerance", "must be below 1e-2");
     run.options.start_in_steady_sliding = t->choice("start", "stuck", {"stuck", "sliding"}) == "sliding";

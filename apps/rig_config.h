@@ -39,6 +39,8 @@ struct RigRun {
 
 // Reads and validates a whole config; throws InputError ("file: key 'a.b': reason") on bad input.
 RigRun load_rig_run(const std::filesystem::path& path);
+// The same on a parsed document; `path` names it in errors and anchors relative file names.
+RigRun load_rig_run(const toml::table& doc, const std::filesystem::path& path);
 
 // The pieces, for other commands that embed a rig (demo, gap): each reads its table and rejects
 // unknown keys. `friction` may be absent (the Coulomb defaults μs = 0.3, μk = 0.2 then apply).

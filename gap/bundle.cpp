@@ -129,6 +129,15 @@ Trace read_trace(const fs::path& file, std::vector<std::string>& warnings) {
   return tr;
 }
 
+// A file of the bundle is read only when it is a regular file: a FIFO or a device under a data
+// file's name (runs.csv -> /dev/zero) would block or never end.
+bool present(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::exists(file, ec)) return false;
+  if (!fs::is_regular_file(file, ec)) fail(file, 0, "not a regular file");
+  return true;
+}
+
 std::optional<double> rig_key(const toml::table& rig, const std::string& key, const fs::path& file) {
   const toml::node* n = rig.get(key);
   if (!n) return std::nullopt;
@@ -150,7 +159,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
   if (b.name.empty()) b.name = fs::absolute(dir).lexically_normal().parent_path().filename().string();
 
   const fs::path toml_file = dir / "experiment.toml";
-  if (fs::exists(toml_file)) {
+  if (present(toml_file)) {
     toml::table doc;
     try {
       doc = toml::parse_file(toml_file.string());
@@ -182,7 +191,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
   }
 
   const fs::path static_file = dir / "static_friction.csv";
-  if (fs::exists(static_file)) {
+  if (present(static_file)) {
     const CsvTable t = read_csv(static_file, {"phi_dot_per_s", "mu_s"}, b.warnings);
     const int cp = t.required("phi_dot_per_s"), cm = t.required("mu_s");
     for (const auto& [line, row] : t.rows) {
@@ -194,7 +203,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
   }
 
   const fs::path runs_file = dir / "runs.csv";
-  if (fs::exists(runs_file)) {
+  if (present(runs_file)) {
     const CsvTable t = read_csv(runs_file, {"run_id", "v_m_per_s", "file"}, b.warnings);
     const int ci = t.required("run_id"), cv = t.required("v_m_per_s"), cf = t.required("file");
     std::set<std::string> ids;
@@ -206,8 +215,15 @@ ExperimentBundle read_bundle(const fs::path& dir) {
       if (r.v_m_per_s < 0.0) fail(runs_file, line, "negative driven speed v_m_per_s");
       r.file = row[static_cast<std::size_t>(cf)];
       if (r.file.empty()) fail(runs_file, line, "empty file name");
-      const fs::path trace_file = dir / r.file;
-      if (!fs::exists(trace_file)) fail(runs_file, line, "trace file '" + r.file + "' does not exist");
+      // A bundle is self-contained: a trace is named relative to it and stays inside it (an
+      // absolute path or '..' would read any file of the machine, /dev/zero included).
+      const fs::path rel = fs::path(r.file).lexically_normal();
+      if (rel.is_absolute() || rel.has_root_name() || rel.empty() || *rel.begin() == "..")
+        fail(runs_file, line, "trace file '" + r.file + "' must be a path inside the bundle");
+      const fs::path trace_file = dir / rel;
+      std::error_code ec;
+      if (!fs::exists(trace_file, ec)) fail(runs_file, line, "trace file '" + r.file + "' does not exist");
+      if (!fs::is_regular_file(trace_file, ec)) fail(runs_file, line, "trace file '" + r.file + "' is not a regular file");
       r.trace = read_trace(trace_file, b.warnings);
       if (!r.trace.has_drive_history() && r.trace.xdot_m_per_s.empty() && r.trace.x_m.empty() && !(r.v_m_per_s > 0.0))
         fail(runs_file, line, "driven speed must be positive");
@@ -216,7 +232,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
   }
 
   const fs::path regimes_file = dir / "regimes.csv";
-  if (fs::exists(regimes_file)) {
+  if (present(regimes_file)) {
     const CsvTable t = read_csv(regimes_file, {"v_m_per_s", "regime", "amplitude_m", "frequency_rad_per_s"}, b.warnings);
     const int cv = t.required("v_m_per_s"), cr = t.required("regime");
     const int ca = t.column("amplitude_m"), cw = t.column("frequency_rad_per_s");

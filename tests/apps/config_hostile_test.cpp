@@ -1,0 +1,95 @@
+// Config loaders on hostile input (issue 18, fuzz/): counts that size allocations are bounded,
+// files a config names must be regular files, and TOML parsed from memory reports the source.
+// Inputs also in fuzz/corpus/{rig_config,homogenise_config}/.
+#include <gtest/gtest.h>
+
+#include <initializer_list>
+#include <string>
+
+#include "apps/config.h"
+#include "apps/homogenise_config.h"
+#include "apps/rig_config.h"
+#include "apps/sweep_spec.h"
+
+#include <filesystem>
+#include <fstream>
+
+namespace tribo::cli {
+namespace {
+
+const std::string kRig = "/nonexistent/tribo-tests/rig.toml";
+const std::string kHomogenise = "/nonexistent/tribo-tests/homogenise.toml";
+
+template <class Load>
+std::string error_of(const std::string& text, const std::string& source, Load load) {
+  try {
+    load(parse_toml_text(text, source), source);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string rig_error(const std::string& text) {
+  return error_of(text, kRig, [](const toml::table& d, const std::string& p) { return load_rig_run(d, p); });
+}
+std::string homogenise_error(const std::string& text) {
+  return error_of(text, kHomogenise, [](const toml::table& d, const std::string& p) { return load_homogenise_run(d, p); });
+}
+
+void expect_all(const std::string& message, std::initializer_list<std::string> fragments) {
+  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
+}
+
+TEST(ConfigHostile, MalformedTomlNamesSourceLineAndColumn) {
+  expect_all(rig_error("[rig]\nmass_kg = = 1\n"), {kRig + ":2:", "malformed TOML"});
+}
+
+TEST(ConfigHostile, DriveTableMustBeARegularFile) {
+  // file = "/dev/zero" was read line by line: one endless line, memory until killed.
+  expect_all(rig_error("[drive]\nkind = \"table\"\nfile = \"/dev/zero\"\n"), {"/dev/zero", "not a regular file"});
+  expect_all(rig_error("[drive]\nkind = \"table\"\nfile = \"/tmp\"\n"), {"/tmp", "not a regular file"});
+}
+
+TEST(ConfigHostile, HomogenisedLawTableMustBeARegularFile) {
+  expect_all(rig_error("[friction]\nlaw = \"homogenised\"\ntable = \"/dev/zero\"\n"),
+             {kRig, "key 'friction.table'", "not a regular file"});
+}
+
+TEST(ConfigHostile, CountsThatSizeAllocationsAreBounded) {
+  // count = 1e9 speeds: an 8 GB vector before any check.
+  const std::string surface = "[surface]\nrms_height_m = 1e-7\ncorrelation_length_m = 1e-5\n";
+  expect_all(homogenise_error(surface + "[speeds]\ncount = 1000000000\n"), {"key 'speeds.count'", "must be at most 100000"});
+  expect_all(homogenise_error(surface + "[domain]\ngrid = 1000000\n"), {"key 'domain.grid'", "must be at most 16384"});
+  // Narrowed to int: 2^32 + 1 wrapped around to 1.
+  expect_all(homogenise_error(surface + "[homogenise]\nrealisations = 4294967297\n"), {"key 'homogenise.realisations'", "at most"});
+  expect_all(rig_error("[run]\nsamples_per_period = 4294967304\n"), {"key 'run.samples_per_period'", "at most"});
+  EXPECT_EQ(homogenise_error(surface + "[speeds]\ncount = 3\n"), "");
+}
+
+TEST(ConfigHostile, SweepSizeIsBounded) {
+  // count = 1e12 pushed 1e12 values; three axes of 1000 would enumerate 1e9 point configs.
+  const auto dir = std::filesystem::temp_directory_path() / "tribo_cli_hostile_sweep";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "base.toml") << "[rig]\ndrive_speed_m_per_s = 1e-3\n";
+  const auto error = [&](const std::string& axes) {
+    std::ofstream(dir / "spec.toml") << "[base]\ncommand = \"rig\"\nconfig = \"base.toml\"\n" << axes;
+    try {
+      load_sweep_spec(dir / "spec.toml");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  expect_all(error("[[axis]]\nkey = \"rig.mass_kg\"\nfrom = 1\nto = 2\ncount = 1000000000000\n"),
+             {"key 'axis[0].count'", "at most 1000000"});
+  std::string three;
+  for (const char* k : {"rig.mass_kg", "rig.stiffness_N_per_m", "rig.damping_N_s_per_m"})
+    three += std::string("[[axis]]\nkey = \"") + k + "\"\nfrom = 1\nto = 2\ncount = 1000\n";
+  expect_all(error(three), {"key 'axis'", "more than 1000000 points"});
+  EXPECT_EQ(error("[[axis]]\nkey = \"rig.mass_kg\"\nfrom = 1\nto = 2\ncount = 1000\n"), "");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tribo::cli
