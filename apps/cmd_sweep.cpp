@@ -1,17 +1,35 @@
 // `tribo sweep SPEC.toml --out DIR`: a parameter study (apps/sweep_spec.h). Each point is its own
-// `tribo COMMAND` process (DIR/points/NNNNN/: config.toml, the command's outputs, log.txt), run
-// `jobs` at a time with one OpenMP thread each; its row is appended to DIR/results.csv and flushed
-// as soon as it finishes. Started again with the same command after a kill, the sweep skips the
-// points already in results.csv (a torn last line is dropped); a changed spec or base config is
-// refused. At the end results.csv is rewritten sorted by point id.
+// `tribo COMMAND` process (DIR/points/NNNNN/: config.toml, the command's outputs, log.txt) — or, for
+// the chain "homogenise+rig", two processes one after the other in DIR/points/NNNNN/homogenise/ and
+// .../rig/ — run `jobs` at a time with one OpenMP thread each; its row is appended to
+// DIR/results.csv and flushed as soon as it finishes. Started again with the same command after a
+// kill, the sweep skips the points already in results.csv (a torn last line is dropped); a changed
+// spec or base config is refused. At the end results.csv is rewritten sorted by point id.
+//
+// Under `mpirun -np N` (detected from OMPI_COMM_WORLD_SIZE > 1, or forced with --mpi) the points
+// are shared out dynamically: rank 0 owns the queue, results.csv and sweep.json, and runs points
+// itself; every other rank asks rank 0 for a point id whenever one of its `jobs` slots is free and
+// sends back the finished row. Points differ in cost by orders of magnitude, so a static split would
+// leave ranks idle. The point folders must be on a file system all ranks see.
+#ifndef OMPI_SKIP_MPICXX
+#define OMPI_SKIP_MPICXX 1
+#endif
+#ifndef MPICH_SKIP_MPICXX
+#define MPICH_SKIP_MPICXX 1
+#endif
+#include <mpi.h>
+
 #include <fcntl.h>
+#include <sched.h>
 #include <spawn.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -35,6 +53,8 @@ namespace {
 struct Args {
   std::string spec;
   std::string out = "out/sweep";
+  bool mpi = false;
+  bool dry_run = false;
 };
 
 std::string csv_quoted(std::string s) {
@@ -69,6 +89,7 @@ std::map<int, std::string> finished_rows(const std::filesystem::path& file, cons
   bool first = true;
   for (std::size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1) {
     const std::string line = text.substr(start, nl - start);
+    if (first && line.rfind('#', 0) == 0) continue;  // "# key: value" provenance lines above the columns
     if (first) {
       if (line != expected) throw InputError(file.string() + ": its columns differ from this spec's; use another --out");
       first = false;
@@ -85,24 +106,38 @@ void write_rows(const std::filesystem::path& file, const std::string& head, cons
   write_file_atomically(file, text);
 }
 
-// The folder holds the sweep of exactly this spec and base config, or nothing yet.
-void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::size_t points) {
+// The folder holds the sweep of exactly this spec and these configs, or nothing yet. Every start is
+// logged in sweep.json's "runs" (date, ranks, jobs per rank), so a week-long study shows its history.
+void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::size_t points, int ranks, int jobs) {
   const std::string spec_hash = config_hash(spec.spec_file), base_hash = config_hash(spec.base_config);
+  const std::string rig_hash = spec.steps.size() > 1 ? config_hash(spec.steps[1].config) : "";
   const auto file = dir / "sweep.json";
+  nlohmann::json j;
   if (std::ifstream in(file); in) {
-    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (j.is_discarded() || j.value("spec_hash", "") != spec_hash || j.value("base_config_hash", "") != base_hash)
+    j = nlohmann::json::parse(in, nullptr, false);
+    if (j.is_discarded() || j.value("spec_hash", "") != spec_hash || j.value("base_config_hash", "") != base_hash ||
+        j.value("rig_config_hash", "") != rig_hash)
       throw InputError(dir.string() + ": holds a sweep of a different spec or base config (sweep.json); "
                        "resume only with the same files, or use another --out");
-    return;
+  } else {
+    j = provenance_json(spec.spec_file, spec_hash);
+    j["spec_hash"] = spec_hash;
+    j["base_config"] = spec.base_config.string();
+    j["base_config_hash"] = base_hash;
+    if (spec.steps.size() > 1) {
+      j["rig_config"] = spec.steps[1].config.string();
+      j["rig_config_hash"] = rig_hash;
+    }
+    j["command"] = spec.command;
+    j["points"] = points;
+    j["combine"] = spec.zip ? "zip" : "product";
+    j["threads_per_point"] = 1;
+    for (const SweepAxis& a : spec.axes) j["axes"].push_back({{"key", a.key}, {"values", a.values}});
+    for (const SweepOutput& o : spec.outputs) j["outputs"].push_back({{"column", o.column}, {"file", o.file}, {"path", o.path}});
   }
-  nlohmann::json j = provenance_json(spec.spec_file, spec_hash);
-  j["spec_hash"] = spec_hash;
-  j["base_config"] = spec.base_config.string();
-  j["base_config_hash"] = base_hash;
-  j["command"] = spec.command;
-  j["points"] = points;
-  for (const SweepAxis& a : spec.axes) j["axes"].push_back({{"key", a.key}, {"values", a.values}});
+  nlohmann::json run = provenance_json(spec.spec_file, spec_hash);
+  j["runs"].push_back({{"date_utc", run["date_utc"]}, {"git_commit", run["git_commit"]}, {"mpi_ranks", ranks},
+                       {"jobs_per_rank", jobs}});
   write_file_atomically(file, j.dump(2) + "\n");
 }
 
@@ -114,22 +149,30 @@ std::string last_line(const std::filesystem::path& log) {
   return last.empty() ? "no message" : last;
 }
 
-struct Running {
-  int id = 0;
-  std::chrono::steady_clock::time_point start;
-};
+// The environment of a point process: one OpenMP thread when points run side by side, and none of
+// the MPI launcher's variables — a child that inherited OMPI_COMM_WORLD_RANK & co. would take itself
+// for a rank of the sweep's job when hypre calls MPI_Init in it, and hang or abort the job.
+std::vector<std::string> child_environment(bool one_thread) {
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string s(*e);
+    const auto starts = [&s](const char* p) { return s.rfind(p, 0) == 0; };
+    if (one_thread && starts("OMP_NUM_THREADS=")) continue;
+    if ((starts("OMPI_") && !starts("OMPI_ALLOW_RUN_AS_ROOT")) || starts("PMIX_") || starts("PMI_")) continue;
+    env.push_back(s);
+  }
+  if (one_thread) env.emplace_back("OMP_NUM_THREADS=1");
+  return env;
+}
 
-// Starts `tribo COMMAND config --out dir` with stdout and stderr in dir/log.txt.
-pid_t spawn_point(const SweepSpec& spec, const std::filesystem::path& dir, bool one_thread) {
-  std::vector<std::string> args{"/proc/self/exe", spec.command, (dir / "config.toml").string(), "--out", dir.string()};
-  if (spec.command == "homogenise") args.push_back("--no-plots");
+// Starts `tribo COMMAND dir/config.toml --out dir` with stdout and stderr in dir/log.txt.
+pid_t spawn_step(const std::string& command, const std::filesystem::path& dir, const std::vector<std::string>& env) {
+  std::vector<std::string> args{"/proc/self/exe", command, (dir / "config.toml").string(), "--out", dir.string()};
+  if (command == "homogenise") args.push_back("--no-plots");
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
-  std::vector<std::string> env_strings;
-  for (char** e = environ; *e; ++e)
-    if (!one_thread || std::string(*e).rfind("OMP_NUM_THREADS=", 0) != 0) env_strings.emplace_back(*e);
-  if (one_thread) env_strings.emplace_back("OMP_NUM_THREADS=1");
+  std::vector<std::string> env_strings = env;
   std::vector<char*> envp;
   for (std::string& e : env_strings) envp.push_back(e.data());
   envp.push_back(nullptr);
@@ -145,12 +188,296 @@ pid_t spawn_point(const SweepSpec& spec, const std::filesystem::path& dir, bool 
   return pid;
 }
 
-void run_sweep(const Args& args) {
+struct Finished {
+  int id = 0;
+  std::string row;
+  bool failed = false;
+};
+
+// The points running on this process: up to `jobs` at a time, each a `tribo` child (the chain's
+// second step starts when the first exits cleanly).
+class PointPool {
+ public:
+  PointPool(const SweepSpec& spec, const std::vector<std::vector<double>>& points, std::filesystem::path dir, int jobs)
+      : spec_(spec), points_(points), dir_(std::move(dir)), jobs_(jobs), env_(child_environment(jobs > 1)) {}
+
+  bool full() const { return static_cast<int>(running_.size()) >= jobs_; }
+  bool empty() const { return running_.empty(); }
+
+  void start(int id) {
+    const auto pdir = point_dir(dir_, id);
+    for (std::size_t s = 0; s < spec_.steps.size(); ++s) {
+      const auto sdir = pdir / step_folder(spec_, s);
+      make_output_dir(sdir);
+      std::ostringstream config;
+      config << point_config(spec_, points_[id], s) << "\n";
+      write_file_atomically(sdir / "config.toml", config.str());
+    }
+    running_[spawn_step(spec_.steps[0].command, pdir / step_folder(spec_, 0), env_)] = {id, 0, std::chrono::steady_clock::now()};
+  }
+
+  // The points finished since the last call. `block`: wait until at least one is (the pool must not
+  // be empty); otherwise only collect those already done.
+  std::vector<Finished> reap(bool block) {
+    std::vector<Finished> done;
+    while (done.empty() && !running_.empty()) {
+      bool any = false;
+      if (block) {
+        int status = 0;
+        const pid_t pid = waitpid(-1, &status, 0);
+        if (pid < 0) throw std::runtime_error("sweep: waitpid failed");
+        any = exited(pid, status, done);
+      } else {
+        // Only our own children: an MPI library may have children of its own.
+        std::vector<pid_t> pids;
+        for (const auto& [pid, r] : running_) pids.push_back(pid);
+        for (pid_t pid : pids) {
+          int status = 0;
+          const pid_t got = waitpid(pid, &status, WNOHANG);
+          if (got < 0) throw std::runtime_error("sweep: waitpid failed");
+          if (got == pid) any = exited(pid, status, done) || any;
+        }
+        if (!any) break;
+      }
+    }
+    return done;
+  }
+
+ private:
+  struct Running {
+    int id = 0;
+    std::size_t step = 0;
+    std::chrono::steady_clock::time_point start;
+  };
+
+  // Bookkeeping for an exited child: the next step, or the point's row.
+  bool exited(pid_t pid, int status, std::vector<Finished>& done) {
+    const auto it = running_.find(pid);
+    if (it == running_.end()) return false;
+    const Running r = it->second;
+    running_.erase(it);
+    const auto pdir = point_dir(dir_, r.id);
+    const auto sdir = pdir / step_folder(spec_, r.step);
+    std::string error, values;
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+      error = last_line(sdir / "log.txt");
+      if (spec_.steps.size() > 1) error = spec_.steps[r.step].command + ": " + error;
+    } else if (r.step + 1 < spec_.steps.size()) {
+      running_[spawn_step(spec_.steps[r.step + 1].command, pdir / step_folder(spec_, r.step + 1), env_)] = {
+          r.id, r.step + 1, r.start};
+      return true;
+    } else {
+      try {
+        for (const SweepOutput& o : spec_.outputs) values += "," + json_field(output_file(pdir, o), o.path);
+      } catch (const std::exception& e) {
+        error = e.what();
+      }
+    }
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
+    if (!error.empty()) values = std::string(spec_.outputs.size(), ',');
+    std::string row = std::to_string(r.id);
+    for (double v : points_[r.id]) row += "," + exact(v);
+    row += std::string(",") + (error.empty() ? "ok" : "failed") + "," + (error.empty() ? "" : csv_quoted(error)) + "," +
+           exact(wall) + values;
+    done.push_back({r.id, row, !error.empty()});
+    return true;
+  }
+
+  // An output's file: in a chain "STEP/FILE" as written, else FILE of the last step that has it.
+  std::filesystem::path output_file(const std::filesystem::path& pdir, const SweepOutput& o) const {
+    if (spec_.steps.size() == 1 || o.file.find('/') != std::string::npos) return pdir / o.file;
+    for (std::size_t s = spec_.steps.size(); s-- > 0;) {
+      const auto f = pdir / step_folder(spec_, s) / o.file;
+      if (std::filesystem::exists(f)) return f;
+    }
+    return pdir / step_folder(spec_, spec_.steps.size() - 1) / o.file;  // absent: the error names it
+  }
+
+  const SweepSpec& spec_;
+  const std::vector<std::vector<double>>& points_;
+  std::filesystem::path dir_;
+  int jobs_;
+  std::vector<std::string> env_;
+  std::map<pid_t, Running> running_;
+};
+
+// results.csv on rank 0: each row appended and flushed the moment its point is done.
+class ResultsWriter {
+ public:
+  ResultsWriter(std::filesystem::path file, std::map<int, std::string> rows, int total)
+      : file_(std::move(file)), rows_(std::move(rows)),
+        progress_("sweep: " + std::to_string(total) + " points", total), append_(file_, std::ios::app) {
+    if (!append_) throw std::runtime_error(file_.string() + ": cannot append");
+    for (std::size_t k = 0; k < rows_.size(); ++k) progress_.step("done before");
+  }
+  void record(const Finished& f) {
+    append_ << f.row << '\n' << std::flush;  // the row is kept the moment the point is done
+    if (!append_) throw std::runtime_error(file_.string() + ": cannot append");
+    rows_[f.id] = f.row;
+    failed_ += f.failed ? 1 : 0;
+    progress_.step("point " + std::to_string(f.id) + (f.failed ? " failed" : ""));
+  }
+  // Rewrites results.csv sorted by point id.
+  void finish(const std::string& head) {
+    progress_.done();
+    append_.close();
+    write_rows(file_, head, rows_);
+  }
+  int failed() const { return failed_; }
+
+ private:
+  std::filesystem::path file_;
+  std::map<int, std::string> rows_;
+  Progress progress_;
+  std::ofstream append_;
+  int failed_ = 0;
+};
+
+// Points run at once on this process: the spec's jobs, else the cores this process may use. The
+// point processes inherit its CPU affinity, so that is what counts: a rank mpirun bound to one core
+// runs one point at a time; an unbound rank shares the node's cores with the other ranks on it
+// (so N ranks on one machine do not oversubscribe it). A Slurm or taskset mask counts the same way.
+int local_jobs(const SweepSpec& spec) {
+  if (spec.jobs > 0) return spec.jobs;
+  const int node_cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  int cores = node_cores;
+  cpu_set_t mask;
+  CPU_ZERO(&mask);
+  if (sched_getaffinity(0, sizeof mask, &mask) == 0) cores = std::max(1, CPU_COUNT(&mask));
+  if (cores < node_cores) return cores;  // bound: the mask is this process's share
+  int local_ranks = 1;
+  if (const char* s = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE")) local_ranks = std::max(1, std::atoi(s));
+  return std::max(1, cores / local_ranks);
+}
+
+// ---- MPI ----------------------------------------------------------------------------------------
+
+void mpi_check(int rc, const char* what) {
+  if (rc == MPI_SUCCESS) return;
+  char text[MPI_MAX_ERROR_STRING];
+  int len = 0;
+  MPI_Error_string(rc, text, &len);
+  std::fprintf(stderr, "tribo: failed: sweep: %s: %.*s\n", what, len, text);
+  MPI_Abort(MPI_COMM_WORLD, 1);  // a rank that cannot talk would leave the others waiting forever
+}
+
+// MPI for the lifetime of an MPI sweep. The thread level hypre's backend asks for
+// (lubrication/linear_solver.cpp), should anything in this process ever reach it.
+class MpiSession {
+ public:
+  MpiSession() {
+    int provided = 0;
+    mpi_check(MPI_Init_thread(nullptr, nullptr, MPI_THREAD_SERIALIZED, &provided), "MPI_Init_thread");
+    // Errors come back as codes, so mpi_check can say which call failed before the job is aborted
+    // (the default handler would abort without naming it).
+    mpi_check(MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN), "MPI_Comm_set_errhandler");
+    mpi_check(MPI_Comm_rank(MPI_COMM_WORLD, &rank), "MPI_Comm_rank");
+    mpi_check(MPI_Comm_size(MPI_COMM_WORLD, &size), "MPI_Comm_size");
+  }
+  ~MpiSession() {
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (!finalized) MPI_Finalize();
+  }
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int rank = 0, size = 1;
+};
+
+constexpr int kTagRequest = 1;  // worker → 0: a slot is free (payload: int 0)
+constexpr int kTagAssign = 2;   // 0 → worker: a point id, or -1 for "no more"
+constexpr int kTagRow = 3;      // worker → 0: a finished row, first char 'o' (ok) or 'f' (failed)
+
+bool mpi_requested(const Args& args) {
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  return args.mpi || (size && std::atoi(size) > 1);
+}
+
+// Rank 0: its own pool plus the other ranks' requests, until every point is recorded.
+void mpi_master(PointPool& pool, ResultsWriter& results, const std::vector<int>& pending, int size) {
+  std::size_t next = 0;
+  int told_done = 0;    // workers sent -1 (they ask no more)
+  long outstanding = 0;  // points handed out whose rows have not come back
+  while (true) {
+    bool busy = false;
+    while (next < pending.size() && !pool.full()) pool.start(pending[next++]);
+    for (const Finished& f : pool.reap(false)) {
+      results.record(f);
+      busy = true;
+    }
+    for (int flag = 1; flag;) {
+      MPI_Status st;
+      mpi_check(MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st), "MPI_Iprobe");
+      if (!flag) break;
+      busy = true;
+      if (st.MPI_TAG == kTagRequest) {
+        int ignored = 0;
+        mpi_check(MPI_Recv(&ignored, 1, MPI_INT, st.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
+        const int id = next < pending.size() ? pending[next++] : -1;
+        if (id < 0) {
+          ++told_done;
+        } else {
+          ++outstanding;
+        }
+        mpi_check(MPI_Send(&id, 1, MPI_INT, st.MPI_SOURCE, kTagAssign, MPI_COMM_WORLD), "MPI_Send");
+      } else if (st.MPI_TAG == kTagRow) {
+        int count = 0;
+        mpi_check(MPI_Get_count(&st, MPI_CHAR, &count), "MPI_Get_count");
+        std::string msg(static_cast<std::size_t>(count), '\0');
+        mpi_check(MPI_Recv(msg.data(), count, MPI_CHAR, st.MPI_SOURCE, kTagRow, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
+        const std::string row = msg.substr(1);
+        results.record({std::stoi(row.substr(0, row.find(','))), row, msg[0] == 'f'});
+        --outstanding;
+      } else {
+        std::fprintf(stderr, "tribo: failed: sweep: unexpected MPI message tag %d from rank %d\n", st.MPI_TAG, st.MPI_SOURCE);
+        MPI_Abort(MPI_COMM_WORLD, 1);
+      }
+    }
+    if (next >= pending.size() && pool.empty() && outstanding == 0 && told_done == size - 1) return;
+    // Nothing to do: a short nap instead of spinning on a core the points need. 1 ms is far below
+    // any point's cost and the per-point overhead budget.
+    if (!busy) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
+// Ranks > 0: ask for a point whenever a slot is free, run it, send its row back.
+void mpi_worker(PointPool& pool) {
+  bool more = true;
+  while (true) {
+    while (more && !pool.full()) {
+      int id = 0;
+      mpi_check(MPI_Send(&id, 1, MPI_INT, 0, kTagRequest, MPI_COMM_WORLD), "MPI_Send");
+      mpi_check(MPI_Recv(&id, 1, MPI_INT, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE), "MPI_Recv");
+      if (id < 0) {
+        more = false;
+      } else {
+        pool.start(id);
+      }
+    }
+    if (pool.empty()) return;
+    for (const Finished& f : pool.reap(true)) {
+      std::string msg = (f.failed ? "f" : "o") + f.row;
+      mpi_check(MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_CHAR, 0, kTagRow, MPI_COMM_WORLD), "MPI_Send");
+    }
+  }
+}
+
+// CPU time of this process alone (not its children): what the sweep itself costs, whatever the load.
+double own_cpu_ms() {
+  rusage u{};
+  if (getrusage(RUSAGE_SELF, &u) != 0) return 0.0;
+  return 1e3 * (u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-3 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+// ---- the sweep ----------------------------------------------------------------------------------
+
+void run_serial(const Args& args) {
   const SweepSpec spec = load_sweep_spec(args.spec);
   const auto points = sweep_points(spec);
   const std::filesystem::path dir(args.out), results = dir / "results.csv";
+  const int jobs = local_jobs(spec);
   make_output_dir(dir);
-  claim_output(dir, spec, points.size());
+  claim_output(dir, spec, points.size(), 1, jobs);
   const std::string head = header(spec);
   std::map<int, std::string> rows = finished_rows(results, head);
   write_rows(results, head, rows);  // drops a torn line before appending
@@ -158,69 +485,125 @@ void run_sweep(const Args& args) {
   std::vector<int> pending;
   for (int k = 0; k < static_cast<int>(points.size()); ++k)
     if (!rows.count(k)) pending.push_back(k);
-  const int jobs = spec.jobs > 0 ? spec.jobs : std::max(1u, std::thread::hardware_concurrency());
-  Progress progress("sweep: " + std::to_string(points.size()) + " points", static_cast<int>(points.size()));
-  for (std::size_t k = 0; k < rows.size(); ++k) progress.step("done before");
-
-  std::ofstream append(results, std::ios::app);
-  std::map<pid_t, Running> running;
+  ResultsWriter writer(results, std::move(rows), static_cast<int>(points.size()));
+  PointPool pool(spec, points, dir, jobs);
   std::size_t next = 0;
-  int failed = 0;
-  while (next < pending.size() || !running.empty()) {
-    while (next < pending.size() && static_cast<int>(running.size()) < jobs) {
-      const int id = pending[next++];
-      const auto pdir = point_dir(dir, id);
-      make_output_dir(pdir);
-      std::ostringstream config;
-      config << point_config(spec, points[id]) << "\n";
-      write_file_atomically(pdir / "config.toml", config.str());
-      running[spawn_point(spec, pdir, jobs > 1)] = {id, std::chrono::steady_clock::now()};
-    }
-    int status = 0;
-    const pid_t pid = waitpid(-1, &status, 0);
-    if (pid < 0) throw std::runtime_error("sweep: waitpid failed");
-    const auto it = running.find(pid);
-    if (it == running.end()) continue;
-    const Running r = it->second;
-    running.erase(it);
-    const auto pdir = point_dir(dir, r.id);
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
-    std::string error, values;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-      error = last_line(pdir / "log.txt");
-    } else {
-      try {
-        for (const SweepOutput& o : spec.outputs) values += "," + json_field(pdir / o.file, o.path);
-      } catch (const std::exception& e) {
-        error = e.what();
-      }
-    }
-    if (!error.empty()) values = std::string(spec.outputs.size(), ',');
-    std::string row = std::to_string(r.id);
-    for (double v : points[r.id]) row += "," + exact(v);
-    row += std::string(",") + (error.empty() ? "ok" : "failed") + "," + (error.empty() ? "" : csv_quoted(error)) + "," +
-           exact(wall) + values;
-    append << row << '\n' << std::flush;  // the row is kept the moment the point is done
-    rows[r.id] = row;
-    failed += error.empty() ? 0 : 1;
-    progress.step("point " + std::to_string(r.id) + (error.empty() ? "" : " failed"));
+  while (next < pending.size() || !pool.empty()) {
+    while (next < pending.size() && !pool.full()) pool.start(pending[next++]);
+    for (const Finished& f : pool.reap(true)) writer.record(f);
   }
-  progress.done();
-  append.close();
-  write_rows(results, head, rows);
-  std::printf("sweep: %zu points (%d failed this run) -> %s\n", points.size(), failed, results.string().c_str());
+  writer.finish(head);
+  std::printf("sweep: %zu points (%d failed this run) -> %s\n", points.size(), writer.failed(), results.string().c_str());
+  // What the sweep itself cost (bench/README.md: the per-point overhead), start-up included.
+  if (!pending.empty())
+    std::printf("sweep: %zu points run; the sweep's own CPU time %.2f ms per point run\n", pending.size(),
+                own_cpu_ms() / static_cast<double>(pending.size()));
+}
+
+void run_mpi(const Args& args) {
+  MpiSession mpi;
+  const std::filesystem::path dir(args.out), results = dir / "results.csv";
+  // Rank 0 checks the spec and claims DIR first; the others learn whether to go on, so a bad spec
+  // gives one message and status 2 from rank 0, not one per rank.
+  int ok = 1;
+  std::unique_ptr<SweepSpec> spec;
+  std::vector<std::vector<double>> points;
+  std::map<int, std::string> rows;
+  std::string head;
+  if (mpi.rank == 0) {
+    try {
+      spec = std::make_unique<SweepSpec>(load_sweep_spec(args.spec));
+      points = sweep_points(*spec);
+      make_output_dir(dir);
+      claim_output(dir, *spec, points.size(), mpi.size, local_jobs(*spec));
+      head = header(*spec);
+      rows = finished_rows(results, head);
+      write_rows(results, head, rows);  // drops a torn line before appending
+    } catch (...) {
+      ok = 0;
+      mpi_check(MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Bcast");
+      throw;  // main prints it; MpiSession finalises
+    }
+  }
+  mpi_check(MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Bcast");
+  if (!ok) {
+    // Rank 0 has the message and exits 2; this rank leaves quietly with the same status.
+    mpi_check(MPI_Finalize(), "MPI_Finalize");
+    std::exit(2);
+  }
+  try {
+    if (mpi.rank != 0) {
+      spec = std::make_unique<SweepSpec>(load_sweep_spec(args.spec));
+      points = sweep_points(*spec);
+    }
+    PointPool pool(*spec, points, dir, local_jobs(*spec));
+    if (mpi.rank == 0) {
+      std::vector<int> pending;
+      for (int k = 0; k < static_cast<int>(points.size()); ++k)
+        if (!rows.count(k)) pending.push_back(k);
+      ResultsWriter writer(results, std::move(rows), static_cast<int>(points.size()));
+      mpi_master(pool, writer, pending, mpi.size);
+      writer.finish(head);
+      std::printf("sweep: %zu points on %d MPI ranks (%d failed this run) -> %s\n", points.size(), mpi.size,
+                  writer.failed(), results.string().c_str());
+    } else {
+      mpi_worker(pool);
+    }
+  } catch (const std::exception& e) {
+    // One rank out means the rest would wait for it forever: take the job down. Rows already
+    // written stay; the same command resumes.
+    std::fprintf(stderr, "tribo: failed: sweep (MPI rank %d): %s\n", mpi.rank, e.what());
+    std::fflush(stderr);
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+}
+
+// --dry-run: the spec checked, every point's configs built (a bad value shows now, not a week in),
+// the points listed; nothing written.
+void dry_run(const Args& args) {
+  const SweepSpec spec = load_sweep_spec(args.spec);
+  const auto points = sweep_points(spec);
+  std::string steps;
+  for (const SweepStep& s : spec.steps) {
+    if (!steps.empty()) steps += " -> ";
+    steps += s.command;
+    steps += ' ';
+    steps += s.config.string();
+  }
+  std::printf("sweep: %zu points of %s, %d at a time per process\n%s\n", points.size(), steps.c_str(), local_jobs(spec),
+              header(spec).c_str());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    for (std::size_t s = 0; s < spec.steps.size(); ++s) point_config(spec, points[k], s);
+    std::string row = std::to_string(k);
+    for (double v : points[k]) {
+      row += ',';
+      row += exact(v);
+    }
+    std::printf("%s\n", row.c_str());
+  }
 }
 
 }  // namespace
 
 void add_sweep_command(CLI::App& app) {
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("sweep", "parameter study: one tribo command over axes of config keys, resumable");
-  cmd->add_option("spec", args->spec, "SPEC.toml: [base] command, config; [[axis]] key, values or from/to/count/scale; "
-                                      "[sweep] combine, jobs; [outputs] columns")
+  CLI::App* cmd = app.add_subcommand("sweep", "parameter study: one tribo command (or the homogenise+rig chain) over "
+                                              "axes of config keys, resumable, serial or under mpirun");
+  cmd->add_option("spec", args->spec, "SPEC.toml: [base] command, config, rig_config; [[axis]] key, values or "
+                                      "from/to/count/scale; [sweep] combine, jobs; [outputs] columns, names (docs/sweep.md)")
       ->required();
   cmd->add_option("--out", args->out, "output directory (results.csv, sweep.json, points/)")->capture_default_str();
-  cmd->callback([args] { run_sweep(*args); });
+  cmd->add_flag("--mpi", args->mpi, "share the points over MPI ranks (automatic under Open MPI's mpirun with -np > 1)");
+  cmd->add_flag("--dry-run", args->dry_run, "check the spec, print the points and their commands, run nothing");
+  cmd->callback([args] {
+    if (args->dry_run) {
+      dry_run(*args);
+    } else if (mpi_requested(*args)) {
+      run_mpi(*args);
+    } else {
+      run_serial(*args);
+    }
+  });
 }
 
 }  // namespace tribo::cli

@@ -15,6 +15,9 @@
 namespace tribo::cli {
 namespace {
 
+// More points than any study runs: a typo in `count` must not enumerate billions of configs.
+constexpr long long kMaxSweepPoints = 1'000'000;
+
 std::vector<std::string> split_dotted(const std::string& key) {
   std::vector<std::string> parts;
   std::stringstream ss(key);
@@ -25,8 +28,6 @@ std::vector<std::string> split_dotted(const std::string& key) {
 SweepAxis read_axis(ConfigTable& t) {
   SweepAxis a;
   a.key = t.required_string("key");
-  if (split_dotted(a.key).size() < 1 || a.key.front() == '.' || a.key.back() == '.' || a.key.find("..") != std::string::npos)
-    t.fail("key", "must be a dotted config key such as \"rig.drive_speed_m_per_s\"");
   if (t.has("values")) {
     a.values = t.number_array("values");
     if (a.values.empty()) t.fail("values", "must hold at least one value");
@@ -34,7 +35,7 @@ SweepAxis read_axis(ConfigTable& t) {
       if (t.has(k)) t.fail(k, "give either values or from/to/count, not both");
   } else {
     const double from = t.required_number("from"), to = t.required_number("to");
-    const long long count = t.integer("count", 2, 1);
+    const long long count = t.integer("count", 2, 1, kMaxSweepPoints);  // bounds the allocation below
     const std::string scale = t.choice("scale", "linear", {"linear", "log"});
     if (scale == "log" && !(from > 0.0 && to > 0.0)) t.fail("scale", "a log range needs from and to > 0");
     for (long long k = 0; k < count; ++k) {
@@ -47,15 +48,24 @@ SweepAxis read_axis(ConfigTable& t) {
   return a;
 }
 
-SweepOutput read_output(const ConfigTable& t, const std::string& spec) {
+SweepOutput read_output(const ConfigTable& t, const std::string& spec, const std::vector<SweepStep>& steps) {
   const auto colon = spec.find(':');
   if (colon == std::string::npos || colon == 0 || colon + 1 == spec.size())
     t.fail("columns", "\"" + spec + "\" must read FILE:path, e.g. \"summary.json:regime\"");
   SweepOutput o;
   o.file = spec.substr(0, colon);
   o.path = spec.substr(colon + 1);
-  if (o.file.find('/') != std::string::npos || o.file.find("..") != std::string::npos)
-    t.fail("columns", "\"" + o.file + "\" must name a file of the point's output folder, without a path");
+  // In a chain "STEP/FILE" picks the step's folder; otherwise a bare file name of the point's folder.
+  std::string name = o.file;
+  if (const auto slash = o.file.find('/'); slash != std::string::npos && steps.size() > 1) {
+    bool known = false;
+    for (const SweepStep& s : steps) known = known || o.file.substr(0, slash) == s.command;
+    if (!known) t.fail("columns", "\"" + o.file + "\": '" + o.file.substr(0, slash) + "' is not a step of this chain");
+    name = o.file.substr(slash + 1);
+  }
+  if (name.empty() || name.find('/') != std::string::npos || name.find("..") != std::string::npos)
+    t.fail("columns", "\"" + o.file + "\" must name a file of the point's output folder, without a path" +
+                          (steps.size() > 1 ? std::string(" (or STEP/FILE, e.g. \"rig/summary.json\")") : ""));
   // The path's last name, with the array indices on the way appended ("stribeck.12.mu" → "mu_12").
   for (const std::string& part : split_dotted(o.path))
     if (part.find_first_not_of("0123456789") != std::string::npos) o.column = part;
@@ -77,6 +87,31 @@ void absolutise_paths(toml::table& table, const std::filesystem::path& dir) {
   }
 }
 
+// The chain step an axis key addresses and the key inside that step's config; throws naming the key.
+void resolve_axis_key(SweepAxis& a, const SweepSpec& spec, const ConfigTable& axis) {
+  std::string key = a.key;
+  if (spec.steps.size() > 1) {
+    const auto colon = key.find(':');
+    bool found = false;
+    if (colon != std::string::npos)
+      for (std::size_t s = 0; s < spec.steps.size(); ++s)
+        if (key.substr(0, colon) == spec.steps[s].command) {
+          a.step = s;
+          found = true;
+        }
+    if (!found)
+      axis.fail("key", "in a chain the key names its step first: \"homogenise:surface.hurst\" or "
+                       "\"rig:rig.drive_speed_m_per_s\", not \"" + key + "\"");
+    key = key.substr(colon + 1);
+    if (spec.steps[a.step].command == "rig" && (key == "friction.law" || key == "friction.table"))
+      axis.fail("key", "'" + key + "' of the rig step is set by the chain (the point's own law.json)");
+  }
+  if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos ||
+      key.find(':') != std::string::npos)
+    axis.fail("key", "must be a dotted config key such as \"rig.drive_speed_m_per_s\"");
+  a.config_key = key;
+}
+
 }  // namespace
 
 SweepSpec load_sweep_spec(const std::filesystem::path& path) {
@@ -86,34 +121,72 @@ SweepSpec load_sweep_spec(const std::filesystem::path& path) {
   spec.spec_file = std::filesystem::absolute(path);
   auto base = root.table("base");
   if (!base) root.fail("base", "table [base] is required (command and config)");
-  spec.command = base->choice("command", "rig", {"rig", "contact", "reynolds", "homogenise"});
-  spec.base_config = (spec.spec_file.parent_path() / base->required_string("config")).lexically_normal();
+  spec.command = base->choice("command", "rig", {"rig", "contact", "reynolds", "homogenise", "homogenise+rig"});
+  const auto step_config = [&](const std::string& key) {
+    const auto file = (spec.spec_file.parent_path() / base->required_string(key)).lexically_normal();
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(file, ec)) base->fail(key, "no such file: " + file.string());
+    return file;
+  };
+  if (spec.command == "homogenise+rig") {
+    // The chain: homogenise writes the point's law.json, the rig runs with it.
+    spec.steps.push_back({"homogenise", step_config("config"), "config"});
+    spec.steps.push_back({"rig", step_config("rig_config"), "rig_config"});
+  } else {
+    spec.steps.push_back({spec.command, step_config("config"), "config"});
+    if (base->has("rig_config")) base->fail("rig_config", "is only used with command = \"homogenise+rig\"");
+  }
+  spec.base_config = spec.steps.front().config;
   base->finish();
-  const toml::table base_doc = parse_toml_file(spec.base_config);
+  std::vector<toml::table> step_docs;
+  for (const SweepStep& s : spec.steps) step_docs.push_back(parse_toml_file(s.config));
+  if (spec.steps.size() > 1) {
+    // The rig step's friction law is the point's homogenised one; another law there is a mistake.
+    const toml::table& rig = step_docs.back();
+    if (const toml::node* f = rig.get("friction"); f && !f->is_table())
+      throw InputError(spec.steps.back().config.string() + ": key 'friction': must be a table");
+    if (const auto law = rig["friction"]["law"].value<std::string>(); law && *law != "homogenised")
+      throw InputError(spec.steps.back().config.string() + ": key 'friction.law': the chain runs the rig with the "
+                       "point's homogenised law, so it must be \"homogenised\" (or absent), not \"" + *law + "\"");
+  }
 
   root.accept("axis");
   const toml::array* axes = doc["axis"].as_array();
   if (!axes || axes->empty()) root.fail("axis", "at least one [[axis]] table is required");
+  std::set<std::string> axis_keys;
   for (std::size_t k = 0; k < axes->size(); ++k) {
     const toml::table* t = (*axes)[k].as_table();
     if (!t) root.fail("axis", "must be an array of tables ([[axis]])");
     ConfigTable axis(*t, path.string(), "axis[" + std::to_string(k) + "]");
     spec.axes.push_back(read_axis(axis));
-    // Every table on the way to the key must be a table of the base config (or absent).
-    const auto parts = split_dotted(spec.axes.back().key);
-    const toml::table* at = &base_doc;
+    SweepAxis& a = spec.axes.back();
+    resolve_axis_key(a, spec, axis);
+    if (!axis_keys.insert(a.key).second) axis.fail("key", "'" + a.key + "' is already an axis");
+    // Every table on the way to the key must be a table of the step's config (or absent).
+    const auto parts = split_dotted(a.config_key);
+    const std::string config = spec.steps[a.step].config.string();
+    const toml::table* at = &step_docs[a.step];
     for (std::size_t i = 0; i + 1 < parts.size() && at; ++i) {
       const toml::node* n = at->get(parts[i]);
-      if (n && !n->is_table()) axis.fail("key", "'" + parts[i] + "' is not a table in " + spec.base_config.string());
+      if (n && !n->is_table()) axis.fail("key", "'" + parts[i] + "' is not a table in " + config);
       at = n ? n->as_table() : nullptr;
     }
     if (at && at->get(parts.back()) && at->get(parts.back())->is_table())
-      axis.fail("key", "'" + spec.axes.back().key + "' is a table in " + spec.base_config.string() + ", not a value");
+      axis.fail("key", "'" + a.config_key + "' is a table in " + config + ", not a value");
   }
   if (auto s = root.table("sweep")) {
     spec.zip = s->choice("combine", "product", {"product", "zip"}) == "zip";
     spec.jobs = static_cast<int>(s->integer("jobs", 0, 0));
     s->finish();
+  }
+  if (!spec.zip) {
+    // The product of the axes is enumerated in memory (sweep_points): refuse it before it grows.
+    std::size_t points = 1;
+    for (const SweepAxis& a : spec.axes) {
+      points *= a.values.size();
+      if (points > static_cast<std::size_t>(kMaxSweepPoints))
+        root.fail("axis", "the axes' product has more than " + std::to_string(kMaxSweepPoints) + " points");
+    }
   }
   if (spec.zip)
     for (const SweepAxis& a : spec.axes)
@@ -124,11 +197,27 @@ SweepSpec load_sweep_spec(const std::filesystem::path& path) {
   if (auto o = root.table("outputs")) {
     std::set<std::string> taken = {"point_id", "status", "error", "wall_s"};
     for (const SweepAxis& a : spec.axes) taken.insert(a.key);
-    for (const std::string& c : o->string_array("columns")) {
-      spec.outputs.push_back(read_output(*o, c));
+    const std::vector<std::string> columns = o->string_array("columns");
+    // names = [...]: the columns' own names, e.g. "mu_at_8.2e-4_m_per_s" for "law.json:stribeck.13.mu".
+    std::vector<std::string> names;
+    if (o->has("names")) {
+      names = o->string_array("names");
+      if (names.size() != columns.size())
+        o->fail("names", "must hold one name per column (" + std::to_string(names.size()) + " names, " +
+                             std::to_string(columns.size()) + " columns)");
+      for (const std::string& n : names)
+        if (n.empty() || n.find_first_of(",\"\n\r") != std::string::npos)
+          o->fail("names", "\"" + n + "\" must be non-empty, without commas, quotes or line breaks");
+    }
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      spec.outputs.push_back(read_output(*o, columns[k], spec.steps));
       SweepOutput& out = spec.outputs.back();
-      // A name already in the table gets its file's stem in front ("law.json:wall_s" → "law_wall_s").
-      if (taken.count(out.column)) out.column = std::filesystem::path(out.file).stem().string() + "_" + out.column;
+      if (!names.empty()) {
+        out.column = names[k];
+      } else if (taken.count(out.column)) {
+        // A name already in the table gets its file's stem in front ("law.json:wall_s" → "law_wall_s").
+        out.column = std::filesystem::path(out.file).filename().stem().string() + "_" + out.column;
+      }
       if (!taken.insert(out.column).second) o->fail("columns", "two outputs would both be the column '" + out.column + "'");
     }
     o->finish();
@@ -160,16 +249,22 @@ std::vector<std::vector<double>> sweep_points(const SweepSpec& spec) {
   return points;
 }
 
-toml::table point_config(const SweepSpec& spec, const std::vector<double>& values) {
-  toml::table config = parse_toml_file(spec.base_config);
-  absolutise_paths(config, spec.base_config.parent_path());
-  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    const auto parts = split_dotted(spec.axes[a].key);
+toml::table point_config(const SweepSpec& spec, const std::vector<double>& values, std::size_t step) {
+  const SweepStep& s = spec.steps.at(step);
+  toml::table config = parse_toml_file(s.config);
+  absolutise_paths(config, s.config.parent_path());
+  const auto table_at = [&config](const std::vector<std::string>& parts) {
     toml::table* at = &config;
     for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
       if (!at->contains(parts[i])) at->insert(parts[i], toml::table{});
       at = at->get(parts[i])->as_table();
     }
+    return at;
+  };
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    if (spec.axes[a].step != step) continue;
+    const auto parts = split_dotted(spec.axes[a].config_key);
+    toml::table* at = table_at(parts);
     const double v = values[a];
     // Integral values go in as integers: integer keys (grid, seed) need them, real keys accept them.
     if (std::floor(v) == v && std::abs(v) < 9e15) {
@@ -178,7 +273,16 @@ toml::table point_config(const SweepSpec& spec, const std::vector<double>& value
       at->insert_or_assign(parts.back(), v);
     }
   }
+  if (spec.steps.size() > 1 && s.command == "rig") {
+    toml::table* friction = table_at({"friction", "law"});
+    friction->insert_or_assign("law", "homogenised");
+    friction->insert_or_assign("table", "../" + step_folder(spec, 0) + "/law.json");
+  }
   return config;
+}
+
+std::string step_folder(const SweepSpec& spec, std::size_t step) {
+  return spec.steps.size() > 1 ? spec.steps.at(step).command : std::string();
 }
 
 std::string json_field(const std::filesystem::path& file, const std::string& path) {

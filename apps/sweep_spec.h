@@ -4,14 +4,19 @@
 //
 //   [base]    command = "rig" | "contact" | "reynolds" | "homogenise";  config = "FILE.toml"
 //             (relative to the spec's folder)
-//   [[axis]]  key = "rig.drive_speed_m_per_s" (dotted, into the base config's tables)
+//             or the chain command = "homogenise+rig": config = the homogenise config, rig_config =
+//             the rig config, whose [friction] is pointed at the point's own law.json
+//   [[axis]]  key = "rig.drive_speed_m_per_s" (dotted, into the base config's tables); in a chain
+//             the step comes first: "homogenise:surface.hurst", "rig:rig.drive_speed_m_per_s"
 //             values = [ … ]                      or
 //             from = …, to = …, count = N, scale = "linear" | "log"
 //   [sweep]   combine = "product" (first axis slowest) | "zip" (axes of equal length)
-//             jobs = 0 (points run at once; 0 = one per core)
+//             jobs = 0 (points run at once per process, per MPI rank under mpirun; 0 = the cores it may use)
 //   [outputs] columns = ["summary.json:regime", "summary.json:peak_to_peak_m", …]
 //             FILE:path — a value of the point's JSON output FILE, path dotted into its objects
-//             and arrays ("law.json:stribeck.12.mu")
+//             and arrays ("law.json:stribeck.12.mu"); in a chain FILE is looked for in the rig
+//             step's folder, then the homogenise step's, or named as "homogenise/law.json";
+//             names = [ … ] (optional) — the columns' names, one per column
 #pragma once
 
 #include <toml++/toml.h>
@@ -23,8 +28,17 @@
 namespace tribo::cli {
 
 struct SweepAxis {
-  std::string key;              // dotted config key
+  std::string key;              // as written: the results.csv column ("rig:rig.mass_kg" in a chain)
   std::vector<double> values;   // in order
+  std::size_t step = 0;         // the chain step whose config the key addresses
+  std::string config_key;       // dotted key inside that config ("rig.mass_kg")
+};
+
+// One command of a point: a chain has two (homogenise, then rig), a plain sweep one.
+struct SweepStep {
+  std::string command;               // "rig", "contact", "reynolds", "homogenise"
+  std::filesystem::path config;      // absolute
+  std::string spec_key;              // the [base] key that named the config ("config", "rig_config")
 };
 
 struct SweepOutput {
@@ -35,8 +49,9 @@ struct SweepOutput {
 
 struct SweepSpec {
   std::filesystem::path spec_file;
-  std::string command;
-  std::filesystem::path base_config;  // absolute
+  std::string command;                // [base] command, e.g. "rig" or "homogenise+rig"
+  std::filesystem::path base_config;  // absolute; the first step's config
+  std::vector<SweepStep> steps;       // run in order in the point's folder (a chain: one subfolder each)
   std::vector<SweepAxis> axes;
   bool zip = false;
   int jobs = 0;
@@ -52,7 +67,12 @@ std::vector<std::vector<double>> sweep_points(const SweepSpec& spec);
 
 // The base config with point `values` set on the axes' keys, and every relative string that names
 // an existing file beside the base config made absolute (so the config works from any folder).
-toml::table point_config(const SweepSpec& spec, const std::vector<double>& values);
+// In a chain, `step` picks the config; the rig step's [friction] gets law = "homogenised" and
+// table = "../homogenise/law.json" (the point's own law, relative so a sweep folder can move).
+toml::table point_config(const SweepSpec& spec, const std::vector<double>& values, std::size_t step = 0);
+
+// A chain's step folder inside the point's folder ("homogenise", "rig"); "" for a single command.
+std::string step_folder(const SweepSpec& spec, std::size_t step);
 
 // The value at `path` (dotted) of a JSON file as a CSV field (numbers with 17 digits, strings as
 // is, booleans 1/0); throws std::runtime_error naming the file and path when absent.

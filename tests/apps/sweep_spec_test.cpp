@@ -28,6 +28,13 @@ SweepSpec spec_from(const std::string& text) {
   return load_sweep_spec(path);
 }
 
+// A spec with its own [base] table and one axis.
+SweepSpec spec_from_base(const std::string& base) {
+  const auto path = folder() / "spec-base.toml";
+  std::ofstream(path) << base << "[[axis]]\nkey = \"rig:rig.mass_kg\"\nvalues = [1]\n";
+  return load_sweep_spec(path);
+}
+
 TEST(SweepSpec, ProductRunsTheLastAxisFastestAndRangesEndExactlyWhereWritten) {
   const SweepSpec s = spec_from(
       "[[axis]]\nkey = \"rig.drive_speed_m_per_s\"\nfrom = 1e-4\nto = 1e-1\ncount = 4\nscale = \"log\"\n"
@@ -73,6 +80,9 @@ TEST(SweepSpec, OutputsReadJsonObjectsAndArraysAndNameTheColumnAfterTheLastKeyAn
   EXPECT_EQ(s.outputs.front().column, "mu_13");
   const SweepSpec t = spec_from("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[outputs]\ncolumns = [\"law.json:wall_s\"]\n");
   EXPECT_EQ(t.outputs.front().column, "law_wall_s");  // the sweep's own wall_s keeps its name
+  const SweepSpec u = spec_from("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[outputs]\ncolumns = [\"law.json:stribeck.13.mu\"]\n"
+                                "names = [\"mu_at_8.2e-4_m_per_s\"]\n");
+  EXPECT_EQ(u.outputs.front().column, "mu_at_8.2e-4_m_per_s");
 }
 
 TEST(SweepSpec, BadSpecsNameTheKey) {
@@ -89,6 +99,82 @@ TEST(SweepSpec, BadSpecsNameTheKey) {
   expect_error("[[axis]]\nkey = \"rig.mass_kg.x\"\nvalues = [1]\n", "not a table");
   expect_error("[[axis]]\nkey = \"rig\"\nvalues = [1]\n", "is a table");
   expect_error("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[outputs]\ncolumns = [\"regime\"]\n", "FILE:path");
+  expect_error("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[outputs]\ncolumns = [\"a.json:x\"]\nnames = [\"x\", \"y\"]\n",
+               "outputs.names");
+  expect_error("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[outputs]\ncolumns = [\"a.json:x\"]\nnames = [\"a,b\"]\n",
+               "without commas");
+  expect_error("[[axis]]\nkey = \"rig:rig.mass_kg\"\nvalues = [1]\n", "dotted config key");  // no chain, no step
+  expect_error("[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [2]\n",
+               "already an axis");
+}
+
+// The homogenise → rig chain: axes name their step, the rig step's friction points at the point's own
+// law, and outputs may name a step's file.
+SweepSpec chain_from(const std::string& text, const std::string& rig = "[rig]\nmass_kg = 1.0\n[friction]\nlaw = \"homogenised\"\n") {
+  const auto dir = folder();
+  std::ofstream(dir / "hom.toml") << "[surface]\nhurst = 0.8\n[homogenise]\nrealisations = 4\n";
+  std::ofstream(dir / "chain-rig.toml") << rig;
+  const auto path = dir / "chain.toml";
+  std::ofstream(path) << "[base]\ncommand = \"homogenise+rig\"\nconfig = \"hom.toml\"\nrig_config = \"chain-rig.toml\"\n" << text;
+  return load_sweep_spec(path);
+}
+
+TEST(SweepSpec, ChainAxesAddressEitherStepAndTheRigReadsThePointsOwnLaw) {
+  const SweepSpec s = chain_from(
+      "[[axis]]\nkey = \"homogenise:surface.hurst\"\nvalues = [0.6, 0.9]\n"
+      "[[axis]]\nkey = \"rig:rig.drive_speed_m_per_s\"\nvalues = [1e-3]\n"
+      "[outputs]\ncolumns = [\"law.json:junction.mu_s_max\", \"rig/summary.json:regime\"]\n");
+  ASSERT_EQ(s.steps.size(), 2u);
+  EXPECT_EQ(s.steps[0].command, "homogenise");
+  EXPECT_EQ(s.steps[1].command, "rig");
+  EXPECT_EQ(step_folder(s, 1), "rig");
+  EXPECT_EQ(s.axes[0].step, 0u);
+  EXPECT_EQ(s.axes[1].config_key, "rig.drive_speed_m_per_s");
+  const toml::table h = point_config(s, {0.6, 1e-3}, 0);
+  EXPECT_EQ(h["surface"]["hurst"].value<double>(), 0.6);
+  EXPECT_FALSE(h["rig"]);  // the rig's axis stays out of the homogenise config
+  const toml::table r = point_config(s, {0.6, 1e-3}, 1);
+  EXPECT_EQ(r["rig"]["drive_speed_m_per_s"].value<double>(), 1e-3);
+  EXPECT_EQ(r["rig"]["mass_kg"].value<double>(), 1.0);
+  EXPECT_EQ(r["friction"]["law"].value<std::string>(), "homogenised");
+  EXPECT_EQ(r["friction"]["table"].value<std::string>(), "../homogenise/law.json");
+  EXPECT_EQ(s.outputs[1].file, "rig/summary.json");
+  EXPECT_EQ(s.outputs[1].column, "regime");
+  // A rig config without [friction] gets one.
+  const SweepSpec t = chain_from("[[axis]]\nkey = \"homogenise:surface.hurst\"\nvalues = [0.6]\n", "[rig]\nmass_kg = 2.0\n");
+  EXPECT_EQ(point_config(t, {0.6}, 1)["friction"]["table"].value<std::string>(), "../homogenise/law.json");
+}
+
+TEST(SweepSpec, BadChainSpecsNameTheFileAndKey) {
+  auto expect_error = [](auto&& load, const std::string& fragment) {
+    try {
+      load();
+      ADD_FAILURE() << "accepted a spec that should fail with '" << fragment << "'";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  const std::string axis = "[[axis]]\nkey = \"homogenise:surface.hurst\"\nvalues = [0.6]\n";
+  // an axis without its step, or with a step the chain does not have
+  expect_error([] { chain_from("[[axis]]\nkey = \"surface.hurst\"\nvalues = [0.6]\n"); }, "axis[0].key");
+  expect_error([] { chain_from("[[axis]]\nkey = \"contact:surface.hurst\"\nvalues = [0.6]\n"); }, "names its step");
+  // the chain sets the rig's law file itself
+  expect_error([] { chain_from("[[axis]]\nkey = \"rig:friction.table\"\nvalues = [1]\n"); }, "set by the chain");
+  // a rig config with another law
+  expect_error([&] { chain_from(axis, "[friction]\nlaw = \"coulomb\"\n"); }, "chain-rig.toml: key 'friction.law'");
+  // the step's config decides what is a table
+  expect_error([] { chain_from("[[axis]]\nkey = \"rig:rig\"\nvalues = [1]\n"); }, "is a table in");
+  // an output from a step the chain does not have
+  expect_error([&] { chain_from(axis + "[outputs]\ncolumns = [\"contact/x.json:a\"]\n"); }, "not a step of this chain");
+  // the same key twice
+  expect_error([&] { chain_from(axis + axis); }, "axis[1].key");
+  // rig_config: required by the chain, missing file named, refused elsewhere
+  expect_error([] { spec_from_base("[base]\ncommand = \"homogenise+rig\"\nconfig = \"hom.toml\"\n"); }, "base.rig_config");
+  expect_error([] { spec_from_base("[base]\ncommand = \"homogenise+rig\"\nconfig = \"hom.toml\"\nrig_config = \"nope.toml\"\n"); },
+               "no such file");
+  expect_error([] { spec_from_base("[base]\ncommand = \"rig\"\nconfig = \"base.toml\"\nrig_config = \"base.toml\"\n"); },
+               "only used with");
+  expect_error([] { spec_from_base("[base]\ncommand = \"homogenise-rig\"\nconfig = \"hom.toml\"\n"); }, "base.command");
 }
 
 }  // namespace

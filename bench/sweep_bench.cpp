@@ -1,0 +1,142 @@
+// `tribo sweep` costs (issue 17): what the sweep adds per point beyond the point's own process, and
+// the throughput of many cheap rig points with 1 and 2 points at a time. Everything runs the real
+// `tribo` executable (TRIBO_EXE), as a user would: the per-point cost is a process start, so an
+// in-process stand-in would measure the wrong thing.
+//   build-sweep/bench/sweep_bench --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kPoints = 40;  // points per sweep: enough that the sweep's fixed start-up cost is small
+
+// A cheap rig point: Coulomb stick-slip for 0.5 s of rig time (≈ the cheapest useful point).
+fs::path workdir() {
+  const fs::path dir = fs::temp_directory_path() / "tribo_sweep_bench";
+  fs::create_directories(dir);
+  std::ofstream(dir / "rig.toml") << "[rig]\ndrive_speed_m_per_s = 1e-2\n[friction]\nlaw = \"coulomb\"\nmu_s = 0.3\n"
+                                     "mu_k = 0.2\n[run]\nduration_s = 0.5\n";
+  for (int jobs : {1, 2}) {
+    std::ofstream(dir / ("spec" + std::to_string(jobs) + ".toml"))
+        << "[base]\ncommand = \"rig\"\nconfig = \"rig.toml\"\n[[axis]]\nkey = \"rig.mass_kg\"\nfrom = 0.9\nto = 1.1\n"
+        << "count = " << kPoints << "\n[sweep]\njobs = " << jobs << "\n"
+        << "[outputs]\ncolumns = [\"summary.json:regime\", \"summary.json:peak_to_peak_m\"]\n";
+  }
+  return dir;
+}
+
+// Runs TRIBO_EXE with `args` (stdout to `out`, stderr discarded, OMP_NUM_THREADS=1 as the sweep
+// gives its points) and waits; throws when it fails.
+void run_tribo(const std::vector<std::string>& args, const std::string& out = "/dev/null") {
+  std::vector<std::string> all{TRIBO_EXE};
+  all.insert(all.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : all) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> env{"OMP_NUM_THREADS=1"};
+  for (char** e = environ; *e; ++e)
+    if (std::string(*e).rfind("OMP_NUM_THREADS=", 0) != 0) env.emplace_back(*e);
+  std::vector<char*> envp;
+  for (std::string& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, TRIBO_EXE, &actions, nullptr, argv.data(), envp.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) throw std::runtime_error("posix_spawn failed");
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("tribo " + args.front() + " failed");
+}
+
+// CPU time (user + system) of every waited-for descendant so far.
+double children_cpu_s() {
+  rusage u{};
+  getrusage(RUSAGE_CHILDREN, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+double seconds_of(const std::vector<std::string>& args, const std::string& out = "/dev/null") {
+  const auto t0 = std::chrono::steady_clock::now();
+  run_tribo(args, out);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The point's own work: one `tribo rig` process, started and waited for.
+void BM_RigProcess(benchmark::State& state) {
+  const fs::path dir = workdir();
+  for (auto _ : state) state.SetIterationTime(seconds_of({"rig", (dir / "rig.toml").string(), "--out", (dir / "rig").string()}));
+}
+BENCHMARK(BM_RigProcess)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+// The sweep's own cost per point: a 40-point sweep one point at a time against 40 direct `tribo rig`
+// runs of the same config, interleaved so both see the same machine load.
+void BM_SweepOverheadPerPoint(benchmark::State& state) {
+  const fs::path dir = workdir();
+  double direct = 0.0, swept = 0.0, cpu = 0.0;
+  for (auto _ : state) {
+    double d = 0.0;
+    for (int k = 0; k < kPoints; ++k) d += seconds_of({"rig", (dir / "rig.toml").string(), "--out", (dir / "rig").string()});
+    fs::remove_all(dir / "sweep1");
+    const double s = seconds_of({"sweep", (dir / "spec1.toml").string(), "--out", (dir / "sweep1").string()},
+                                (dir / "sweep1.txt").string());
+    direct += d;
+    swept += s;
+    state.SetIterationTime(s);
+    // The sweep's own CPU time per point, as it reports it ("… own CPU time X ms per point run"):
+    // unlike the wall-time difference it does not depend on how loaded the machine is.
+    std::ifstream in(dir / "sweep1.txt");
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find("own CPU time ");
+    if (at != std::string::npos) cpu += std::stod(text.substr(at + 13));
+  }
+  state.counters["sweep_cpu_ms_per_point"] = cpu / static_cast<double>(state.iterations());
+  const double n = static_cast<double>(state.iterations()) * kPoints;
+  state.counters["rig_process_ms"] = 1e3 * direct / n;
+  state.counters["sweep_ms_per_point"] = 1e3 * swept / n;
+  state.counters["overhead_ms_per_point"] = 1e3 * (swept - direct) / n;
+}
+BENCHMARK(BM_SweepOverheadPerPoint)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// Throughput of a 40-point sweep with `jobs` points at a time (items/s = points/s).
+void BM_SweepThroughput(benchmark::State& state) {
+  const fs::path dir = workdir();
+  const std::string jobs = std::to_string(state.range(0));
+  const double cpu0 = children_cpu_s();
+  for (auto _ : state) {
+    fs::remove_all(dir / ("sweep" + jobs));
+    state.SetIterationTime(
+        seconds_of({"sweep", (dir / ("spec" + jobs + ".toml")).string(), "--out", (dir / ("sweep" + jobs)).string()}));
+  }
+  state.SetItemsProcessed(state.iterations() * kPoints);
+  // CPU time of the sweep and all its points per point: equal for 1 and 2 jobs means running points
+  // side by side costs nothing extra, so on free cores the wall time falls with the jobs. On a host
+  // that shares CPU per session (Linux autogroup) the wall time cannot show it; this figure can.
+  state.counters["cpu_ms_per_point"] = 1e3 * (children_cpu_s() - cpu0) / (static_cast<double>(state.iterations()) * kPoints);
+}
+BENCHMARK(BM_SweepThroughput)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+
+}  // namespace
+
+BENCHMARK_MAIN();
