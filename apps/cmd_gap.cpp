@@ -10,6 +10,7 @@
 #include "apps/commands.h"
 #include "apps/config.h"
 #include "apps/output.h"
+#include "apps/provenance.h"
 #include "apps/rig_config.h"
 #include "apps/rig_output.h"
 #include "gap/bundle.h"
@@ -78,10 +79,10 @@ Model load_model(const std::string& path) {
 }
 
 void write_overlays(const std::filesystem::path& path, const gap::ExperimentBundle& bundle, const std::vector<gap::SimulatedRun>& before,
-                    const std::vector<gap::SimulatedRun>& after, double W) {
+                    const std::vector<gap::SimulatedRun>& after, double W, const nlohmann::json& provenance) {
   AtomicFile f(path);
   auto& os = f.stream();
-  os << "run,source,t_s,mu\n";
+  os << csv_provenance_header(provenance) << "run,source,t_s,mu\n";
   for (const gap::Run& r : bundle.runs) {
     const gap::Trace& t = r.trace;
     for (std::size_t i = 0; i < t.t_s.size(); ++i) {
@@ -126,7 +127,7 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     md << "| " << gap::verdict_name(c.effects) << " | " << params << " | " << fmt("%.4g", c.train_gap) << " | " << fmt("%.4g", c.heldout_gap_before)
        << " | " << fmt("%.4g", c.heldout_gap_after) << " | " << fmt("%.1f", c.criterion) << " | " << (c.earns ? "yes" : "no") << " |\n";
   }
-  md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict.effects) << "`: held-out gap " << fmt("%.4g", d.verdict.heldout_gap_before) << " -> "
+  md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt("%.4g", d.verdict.heldout_gap_before) << " -> "
      << fmt("%.4g", d.verdict.heldout_gap_after) << " (bootstrap std " << fmt("%.2g", d.verdict.heldout_gap_after_std) << "), confidence "
      << fmt("%.0f %%", 100.0 * d.verdict.confidence) << ".\n\n";
   md << "Plots: `gap_by_observable.png` (bar chart), `items.png` (measured vs simulated, before / after), `overlay.png` (traces).\n";
@@ -167,19 +168,27 @@ void run_diagnose(const DiagnoseArgs& args) {
     throw InputError(args.experiment + ": " + e.what());
   }
   progress.done();
-  const nlohmann::json j = report_json(d);
+  // The model config is the config; the experiment bundle is named beside it.
+  nlohmann::json provenance = provenance_json(args.model);
+  provenance["experiment"] = std::filesystem::absolute(args.experiment).string();
+  provenance["seed"] = args.seed;
+  nlohmann::json j = report_json(d);
+  j["provenance"] = provenance;
   write_file_atomically(dir / "gap_report.json", j.dump(2) + "\n");
   write_file_atomically(dir / "report.md", markdown_report(d, args, j));
 
   const gap::Comparison comparison(bundle, rig);
   std::vector<gap::SimulatedRun> before, after;
   comparison.predict(d.rig, d.calibrated, args.seed, &before);
-  if (!d.verdict.effects.empty()) {
-    comparison.predict(d.candidates.front().rig, d.candidates.front().model, args.seed, &after);
-  }
-  write_overlays(dir / "overlay.csv", bundle, before, after, rig.normal_load_N);
+  // The overlay shows the verdict's candidate (not merely the best-ranked one).
+  for (const gap::Candidate& c : d.candidates)
+    if (!d.verdict.effects.empty() && c.effects == d.verdict.effects) {
+      comparison.predict(c.rig, c.model, args.seed, &after);
+      break;
+    }
+  write_overlays(dir / "overlay.csv", bundle, before, after, rig.normal_load_N, provenance);
   std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %.0f %%) -> %s\n", d.verdict.conclusion.c_str(),
-              gap::verdict_name(d.verdict.effects).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
+              gap::verdict_name(d.verdict).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
               100.0 * d.verdict.confidence, args.out.c_str());
   if (args.plot && run_plot_script("gap", args.out) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
@@ -244,13 +253,17 @@ void run_selftest(const SelftestArgs& args) {
       },
       finished);
   progress.done();
+  // No config: the cases are compiled in and drawn from the seed.
+  nlohmann::json provenance = provenance_json(std::filesystem::path());
+  provenance["seed"] = args.seed;
+  const std::string csv_header = csv_provenance_header(provenance);
   // One confusion matrix per generator (rows: true effect, columns: verdict).
-  auto confusion_csv = [](const std::map<std::string, std::map<std::string, int>>& confusion) {
+  auto confusion_csv = [](const std::map<std::string, std::map<std::string, int>>& confusion, const std::string& head = "") {
     std::set<std::string> verdicts;
     for (const auto& [t, row] : confusion)
       for (const auto& [v, n] : row) verdicts.insert(v);
     std::ostringstream table;
-    table << "true \\ verdict";
+    table << head << "true \\ verdict";
     for (const auto& v : verdicts) table << "," << v;
     table << "\n";
     for (const auto& [t, row] : confusion) {
@@ -260,16 +273,17 @@ void run_selftest(const SelftestArgs& args) {
     }
     return table.str();
   };
-  write_file_atomically(dir / "confusion.csv", confusion_csv(r.by_generator.count(gap::kRigGenerator) ? r.by_generator.at(gap::kRigGenerator).confusion : r.confusion));
+  write_file_atomically(dir / "confusion.csv", confusion_csv(r.by_generator.count(gap::kRigGenerator) ? r.by_generator.at(gap::kRigGenerator).confusion : r.confusion, csv_header));
   if (r.by_generator.count(gap::kIndependentGenerator))
-    write_file_atomically(dir / "confusion_independent.csv", confusion_csv(r.by_generator.at(gap::kIndependentGenerator).confusion));
+    write_file_atomically(dir / "confusion_independent.csv", confusion_csv(r.by_generator.at(gap::kIndependentGenerator).confusion, csv_header));
   std::ostringstream reliability;
-  reliability << "confidence_from,confidence_to,verdicts,right,fraction_right\n";
+  reliability << csv_header << "confidence_from,confidence_to,verdicts,right,fraction_right\n";
   for (const auto& b : r.reliability)
     reliability << b.lower << "," << b.upper << "," << b.verdicts << "," << b.right << ","
                 << (b.verdicts ? static_cast<double>(b.right) / b.verdicts : std::nan("")) << "\n";
   write_file_atomically(dir / "reliability.csv", reliability.str());
   nlohmann::json j;
+  j["provenance"] = provenance;
   j["quick"] = args.quick;
   j["seed"] = args.seed;
   j["identified_fraction"] = r.identified_fraction;

@@ -5,6 +5,7 @@
 
 #include "apps/commands.h"
 #include "apps/output.h"
+#include "apps/provenance.h"
 #include "apps/rig_config.h"
 #include "apps/rig_output.h"
 #include "rig/instrument.h"
@@ -31,7 +32,11 @@ void run_rig(const RigArgs& args) {
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const std::vector<double> measured = rig::measure_friction_N(run.rig, rig::instrument_from(run.friction, run.seed), samples);
 
+  nlohmann::json provenance = provenance_json(args.config);
+  provenance["seed"] = run.seed;  // the instrument's noise
+  const std::string csv_header = csv_provenance_header(provenance);
   AtomicFile trace(dir / "trace.csv");
+  trace.stream() << csv_header;
   write_trace_header(trace.stream());
   for (std::size_t i = 0; i < samples.size(); ++i) write_trace_row(trace.stream(), samples[i], measured[i]);
 
@@ -46,8 +51,10 @@ void run_rig(const RigArgs& args) {
   j["friction_law"] = run.law->name();
   j["rig"] = rig_json(run.rig);
   j["wall_s"] = wall;
+  j["provenance"] = provenance;
 
   AtomicFile events_file(dir / "events.csv");
+  events_file.stream() << csv_header;
   write_events_csv(events_file.stream(), events);
   trace.commit();
   events_file.commit();

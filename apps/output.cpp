@@ -54,6 +54,18 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   f.commit();
 }
 
+std::filesystem::path shipped_file(const std::string& installed, const std::string& in_source,
+                                   std::filesystem::path executable) {
+  std::error_code ec;
+  if (executable.empty()) executable = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec && !executable.empty()) {
+    // TRIBO_DATA_FROM_BIN: the install's data folder relative to its bin folder ("../share/tribo").
+    const std::filesystem::path candidate = executable.parent_path() / TRIBO_DATA_FROM_BIN / installed;
+    if (std::filesystem::exists(candidate, ec)) return candidate.lexically_normal();
+  }
+  return std::filesystem::path(TRIBO_SOURCE_DIR) / in_source;
+}
+
 void make_output_dir(const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

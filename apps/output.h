@@ -36,6 +36,13 @@ std::string fmt(double v, const char* format = "%.4g");
 // A number with all 17 significant digits: read back, it is the same double.
 std::string exact(double v);
 
+// A file that ships with tribo (the plotting script, the examples). For an installed tribo it is
+// `installed`, relative to the data folder beside the binary (<prefix>/share/tribo, reached from
+// <prefix>/bin — so a moved prefix still works); otherwise `in_source`, relative to the source
+// tree the binary was built from. `executable` is the running binary unless given (tests).
+std::filesystem::path shipped_file(const std::string& installed, const std::string& in_source,
+                                   std::filesystem::path executable = {});
+
 // Creates DIR (and parents); an error names DIR.
 void make_output_dir(const std::filesystem::path& dir);
 

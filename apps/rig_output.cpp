@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "apps/output.h"
+
 extern char** environ;  // posix_spawnp passes the environment on
 
 namespace tribo::cli {
@@ -66,7 +68,7 @@ nlohmann::json rig_json(const rig::RigParameters& rig) {
 }
 
 int run_plot_script(const std::string& mode, const std::string& dir) {
-  const std::string script = (std::filesystem::path(TRIBO_SOURCE_DIR) / "tools" / "tribo_plots.py").string();
+  const std::string script = shipped_file("tribo_plots.py", "tools/tribo_plots.py").string();
   const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
   std::vector<std::string> args{python, script, mode, dir};
   std::vector<char*> argv;

@@ -5,8 +5,10 @@
 
 #include "apps/commands.h"
 #include "apps/config.h"
+#include "apps/provenance.h"
 
 int main(int argc, char** argv) {
+  tribo::cli::record_command_line(argc, argv);  // into every output's provenance
   CLI::App app{"tribo: rough-surface contact, Reynolds lubrication and the friction rig of the thesis"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "tribo " TRIBO_VERSION);

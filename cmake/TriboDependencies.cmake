@@ -5,22 +5,13 @@ find_package(tomlplusplus REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 QUIET)
 find_package(SUNDIALS 6 REQUIRED COMPONENTS cvode nvecserial sunmatrixdense sunlinsoldense)
-find_package(PkgConfig REQUIRED)
-pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
-find_library(FFTW3_OMP_LIB fftw3_omp REQUIRED)
 
-# SuiteSparse 5.x on Debian 12 ships no CMake config: locate headers and libraries directly.
-find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
-foreach(lib cholmod umfpack amd colamd suitesparseconfig)
-  find_library(SUITESPARSE_${lib}_LIB ${lib} REQUIRED)
-  list(APPEND SUITESPARSE_LIBRARIES ${SUITESPARSE_${lib}_LIB})
-endforeach()
-add_library(tribo_suitesparse INTERFACE)
-target_include_directories(tribo_suitesparse INTERFACE ${SUITESPARSE_INCLUDE_DIR})
-target_link_libraries(tribo_suitesparse INTERFACE ${SUITESPARSE_LIBRARIES})
-
-add_library(tribo_fftw INTERFACE)
-target_link_libraries(tribo_fftw INTERFACE PkgConfig::FFTW3 ${FFTW3_OMP_LIB} OpenMP::OpenMP_CXX)
+# FFTW, SuiteSparse and hypre (+ Open MPI): tribo::fftw, tribo::suitesparse, tribo::hypre, found
+# by the file the installed package config uses too. The old names stay as aliases.
+include(${CMAKE_CURRENT_LIST_DIR}/TriboSystemLibraries.cmake)
+add_library(tribo_fftw ALIAS tribo::fftw)
+add_library(tribo_suitesparse ALIAS tribo::suitesparse)
+add_library(tribo_hypre ALIAS tribo::hypre)
 
 if(NOT TARGET CLI11::CLI11)
   find_path(CLI11_INCLUDE_DIR CLI/CLI.hpp REQUIRED)

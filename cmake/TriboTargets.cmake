@@ -1,9 +1,26 @@
-# tribo_add_library(name SOURCES ... DEPENDS ...): one library target per folder.
+# Standard install directories (lib, include, share, bin): tribo_add_library names the installed
+# include root, cmake/TriboInstall.cmake the rest.
+include(GNUInstallDirs)
+
+# tribo_add_library(name SOURCES ... DEPENDS ...): one library target per folder, also known as
+# tribo::<name without "tribo_"> — the name it is exported under (cmake/TriboInstall.cmake), so
+# that code in this tree and a project using the installed package link the same names.
+# Headers are included by their path from the repository root ("contact/grid.h"); installed,
+# that root is <prefix>/include/tribo.
 function(tribo_add_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
   add_library(${name} STATIC ${ARG_SOURCES})
-  target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  string(REGEX REPLACE "^tribo_" "" export_name ${name})
+  add_library(tribo::${export_name} ALIAS ${name})
+  set_target_properties(${name} PROPERTIES EXPORT_NAME ${export_name})
+  target_include_directories(${name} PUBLIC $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+                                            $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/tribo>)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS})
+  # Sanitized static libraries need the sanitizer runtimes wherever they are linked, including a
+  # consumer of the installed package.
+  if(TRIBO_SANITIZE)
+    target_link_options(${name} INTERFACE -fsanitize=address,undefined)
+  endif()
 endfunction()
 
 # tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s]): one GoogleTest

@@ -6,6 +6,8 @@
     tribo_plots.py rig DIR    phase_plane.png, trace.png from a `tribo rig` run
     tribo_plots.py gap DIR    gap_by_observable.png, items.png, overlay.png from `tribo gap diagnose`
     tribo_plots.py homogenise DIR   stribeck.png, area.png from `tribo homogenise`
+    tribo_plots.py sweep DIR  DIR/plots/<column>.png from `tribo sweep`: each output column against
+                              the axes (a line for one varying axis, a heat map for two)
 """
 import csv
 import os
@@ -26,9 +28,13 @@ REGIME_COLOURS = {
 
 
 def read_csv(path):
+    """Rows of a tribo CSV as dicts; the leading "# key: value" provenance lines are skipped."""
     with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    return rows
+        lines = f.readlines()
+    start = 0
+    while start < len(lines) and lines[start].startswith("#"):
+        start += 1
+    return list(csv.DictReader(lines[start:]))
 
 
 def column(rows, name):
@@ -323,8 +329,127 @@ def plot_homogenise(d):
     plt.close(fig)
 
 
+def _number(text):
+    try:
+        return float(text)
+    except ValueError:
+        return None
+
+
+def _file_name(column):
+    return "".join(c if c.isalnum() or c in "-_." else "_" for c in column) + ".png"
+
+
+def plot_sweep(d):
+    """One PNG per output column of a sweep against its axes. Axes with a single value are constants
+    (shown in the title); one varying axis gives a line (log x when it spans two decades or more), two
+    on a full grid give a heat map with the values written in, more give lines against the first
+    varying axis, one per combination of the others. Text columns (the rig's regime) are coloured by
+    category; failed points are blank."""
+    import json
+
+    with open(os.path.join(d, "sweep.json")) as f:
+        meta = json.load(f)
+    with open(os.path.join(d, "results.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    axes = [a["key"] for a in meta["axes"]]
+    fields = list(rows[0].keys()) if rows else []
+    outputs = [o["column"] for o in meta.get("outputs", [])] or fields[fields.index("wall_s") + 1:]
+    outputs.append("wall_s")
+    varying = [a for a in meta["axes"] if len(set(a["values"])) > 1]
+    constants = ", ".join("%s = %g" % (a["key"], a["values"][0]) for a in meta["axes"] if len(set(a["values"])) == 1)
+    ok = [r for r in rows if r["status"] == "ok"]
+    out_dir = os.path.join(d, "plots")
+    os.makedirs(out_dir, exist_ok=True)
+    written = []
+
+    def log_scale(values):
+        v = [x for x in values if x > 0]
+        return len(v) == len(values) and max(v) / min(v) >= 100
+
+    for col in outputs:
+        values = [r[col] for r in ok]
+        numeric = all(_number(v) is not None for v in values if v != "")
+        fig, ax = plt.subplots(figsize=(7, 4.8))
+        import textwrap
+
+        title = col + ("\n" + "\n".join(textwrap.wrap(constants, 80)) if constants else "")
+        if not varying:
+            ax.text(0.5, 0.5, "\n".join("%s" % v for v in values), ha="center", va="center")
+        elif len(varying) == 2 and meta.get("combine", "product") == "product":
+            xa, ya = varying[0]["key"], varying[1]["key"]
+            xs = sorted(set(float(r[xa]) for r in rows))
+            ys = sorted(set(float(r[ya]) for r in rows))
+            cats = sorted(set(v for v in values if v != "")) if not numeric else []
+            grid = [[float("nan")] * len(xs) for _ in ys]
+            text = [[""] * len(xs) for _ in ys]
+            for r in rows:
+                i, j = ys.index(float(r[ya])), xs.index(float(r[xa]))
+                v = r[col] if r["status"] == "ok" else ""
+                if v == "":
+                    text[i][j] = "failed" if r["status"] != "ok" else ""
+                elif numeric:
+                    grid[i][j] = float(v)
+                    text[i][j] = "%.3g" % float(v)
+                else:
+                    grid[i][j] = cats.index(v)
+                    text[i][j] = v.replace("_", "\n")
+            if numeric:
+                im = ax.imshow(grid, origin="lower", aspect="auto", cmap="viridis")
+                fig.colorbar(im, ax=ax, label=col)
+            else:
+                from matplotlib.colors import ListedColormap
+
+                colours = [REGIME_COLOURS.get(c, "C%d" % k) for k, c in enumerate(cats)]
+                ax.imshow(grid, origin="lower", aspect="auto", cmap=ListedColormap(colours or ["white"]),
+                          vmin=-0.5, vmax=max(len(cats), 1) - 0.5, alpha=0.6)
+            finite = [v for line in grid for v in line if v == v]
+            lo, hi = (min(finite), max(finite)) if finite else (0.0, 1.0)
+            for i in range(len(ys)):
+                for j in range(len(xs)):
+                    # white on viridis' dark lower half, black on its light upper half
+                    dark = numeric and grid[i][j] == grid[i][j] and hi > lo and (grid[i][j] - lo) / (hi - lo) < 0.5
+                    ax.text(j, i, text[i][j], ha="center", va="center", fontsize=8, color="white" if dark else "black")
+            ax.set_xticks(range(len(xs)))
+            ax.set_xticklabels(["%g" % x for x in xs])
+            ax.set_yticks(range(len(ys)))
+            ax.set_yticklabels(["%g" % y for y in ys])
+            ax.set_xlabel(xa)
+            ax.set_ylabel(ya)
+        else:
+            xa = varying[0]["key"]
+            others = [a["key"] for a in varying[1:]]
+            groups = {}
+            for r in ok:
+                groups.setdefault(tuple(r[o] for o in others), []).append(r)
+            cats = sorted(set(v for v in values if v != "")) if not numeric else []
+            for key, rs in sorted(groups.items()):
+                rs.sort(key=lambda r: float(r[xa]))
+                x = [float(r[xa]) for r in rs]
+                y = [(float(r[col]) if r[col] != "" else float("nan")) if numeric else cats.index(r[col]) for r in rs]
+                label = ", ".join("%s = %s" % (o, k) for o, k in zip(others, key)) or None
+                ax.plot(x, y, "o-" if numeric else "o", label=label)
+            if not numeric:
+                ax.set_yticks(range(len(cats)))
+                ax.set_yticklabels(cats)
+            if log_scale([float(r[xa]) for r in rows]):
+                ax.set_xscale("log")
+            ax.set_xlabel(xa)
+            ax.set_ylabel(col)
+            if others:
+                ax.legend(fontsize=7)
+            ax.grid(alpha=0.3, which="both")
+        ax.set_title(title, fontsize=9)
+        fig.tight_layout()
+        path = os.path.join(out_dir, _file_name(col))
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        written.append(path)
+    print("\n".join(written))
+
+
 def main(argv):
-    modes = {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap, "homogenise": plot_homogenise}
+    modes = {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap, "homogenise": plot_homogenise, "sweep": plot_sweep}
     if len(argv) != 3 or argv[1] not in modes:
         sys.stderr.write(__doc__)
         return 2

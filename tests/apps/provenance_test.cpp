@@ -1,0 +1,132 @@
+// The provenance block's CSV form reads back exactly (hostile strings included), the readers of
+// tribo's CSVs skip it, and the CLI finds its shipped files relative to an installed binary.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "apps/output.h"
+#include "apps/provenance.h"
+#include "gap/bundle.h"
+
+namespace tribo::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("tribo-provenance-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  fs::path dir_;
+};
+
+using Provenance = TempDir;
+
+TEST_F(Provenance, BlockHasTheKeysAndHashesTheConfig) {
+  const fs::path config = dir_ / "c.toml";
+  std::ofstream(config) << "[rig]\nmass_kg = 1\n";
+  const nlohmann::json p = provenance_json(config);
+  for (const char* key : {"tribo_version", "git_commit", "config", "config_hash", "date_utc", "threads"})
+    EXPECT_TRUE(p.contains(key)) << key;
+  EXPECT_EQ(p["tribo_version"], TRIBO_EXPECTED_VERSION);  // project()'s, passed by CMake
+  EXPECT_EQ(p["config"], fs::absolute(config).string());
+  // FNV-1a 64 of the bytes, computed here independently of the implementation's loop order.
+  std::uint64_t h = 14695981039346656037ULL;
+  for (char c : std::string("[rig]\nmass_kg = 1\n")) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  EXPECT_EQ(p["config_hash"], hex);
+  // A command without a config says so rather than inventing one.
+  const nlohmann::json none = provenance_json(fs::path());
+  EXPECT_TRUE(none["config"].is_null());
+  EXPECT_TRUE(none["config_hash"].is_null());
+}
+
+TEST_F(Provenance, CsvHeaderReadsBackExactlyAndEndsBeforeTheColumns) {
+  nlohmann::json p = provenance_json(fs::path());
+  p["seed"] = 18446744073709551615ULL;
+  p["config"] = "/a path/with \"quotes\"\nand a newline # and a hash";
+  p["git_commit"] = "123456789012";  // all digits: must come back a string, not a number
+  p["experiment"] = " leading space";
+  p["command_line"] = {"tribo", "rig", "x.toml"};
+  const std::string header = csv_provenance_header(p);
+  // One comment line per key: the newline inside a value was escaped.
+  EXPECT_EQ(static_cast<std::size_t>(std::count(header.begin(), header.end(), '\n')), p.size());
+  std::istringstream in(header + "t_s,x_m\n0,1\n");
+  EXPECT_EQ(read_csv_provenance(in), p);
+  std::string next;
+  std::getline(in, next);
+  EXPECT_EQ(next, "t_s,x_m");
+  EXPECT_NE(header.find("# tribo_version: " TRIBO_EXPECTED_VERSION "\n"), std::string::npos) << header;
+}
+
+// gap/bundle.cpp reads experiment CSVs: a bundle whose files carry tribo's provenance header (as
+// tribo's own CSVs do) reads back to the same data.
+TEST_F(Provenance, ExperimentBundleWithHeaderReadsBack) {
+  gap::ExperimentBundle b;
+  b.name = "provenance";
+  b.normal_load_N = 90.0;
+  b.static_points = {{0.1, 0.30}, {1.0, 0.28}, {10.0, 0.26}};
+  gap::Run r;
+  r.run_id = "1";
+  r.v_m_per_s = 1e-3;
+  r.trace.t_s = {0.0, 0.1, 0.2, 0.3};
+  r.trace.friction_N = {1.0, 2.0, 1.5, 1.7};
+  b.runs.push_back(r);
+  b.regimes = {{1e-3, "stick_slip", 1e-3, 100.0}};
+  gap::write_bundle(b, dir_);
+  const gap::ExperimentBundle plain = gap::read_bundle(dir_);
+
+  nlohmann::json p = provenance_json(fs::path());
+  p["seed"] = 7;
+  const std::string header = csv_provenance_header(p);
+  int prefixed = 0;
+  for (const auto& e : fs::recursive_directory_iterator(dir_)) {
+    if (e.path().extension() != ".csv") continue;
+    std::ifstream in(e.path());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    std::ofstream(e.path()) << header << text;
+    ++prefixed;
+  }
+  ASSERT_EQ(prefixed, 4);  // static_friction.csv, runs.csv, the trace, regimes.csv
+  const gap::ExperimentBundle read = gap::read_bundle(dir_);
+  ASSERT_EQ(read.static_points.size(), plain.static_points.size());
+  for (std::size_t i = 0; i < read.static_points.size(); ++i) {
+    EXPECT_EQ(read.static_points[i].phi_dot_per_s, plain.static_points[i].phi_dot_per_s);
+    EXPECT_EQ(read.static_points[i].mu_s, plain.static_points[i].mu_s);
+  }
+  ASSERT_EQ(read.runs.size(), 1u);
+  EXPECT_EQ(read.runs[0].trace.t_s, plain.runs[0].trace.t_s);
+  EXPECT_EQ(read.runs[0].trace.friction_N, plain.runs[0].trace.friction_N);
+  ASSERT_EQ(read.regimes.size(), 1u);
+  EXPECT_EQ(read.regimes[0].regime, "stick_slip");
+  EXPECT_TRUE(read.warnings.empty());
+}
+
+// An installed tribo takes its plotting script from <prefix>/share/tribo beside <prefix>/bin,
+// wherever the prefix is; an uninstalled one from the source tree.
+TEST_F(Provenance, ShippedFilesAreFoundBesideAnInstalledBinary) {
+  fs::create_directories(dir_ / "bin");
+  fs::create_directories(dir_ / "share" / "tribo");
+  std::ofstream(dir_ / "share" / "tribo" / "tribo_plots.py") << "# stand-in\n";
+  EXPECT_EQ(shipped_file("tribo_plots.py", "tools/tribo_plots.py", dir_ / "bin" / "tribo"),
+            (dir_ / "share" / "tribo" / "tribo_plots.py").lexically_normal());
+  const fs::path in_source = shipped_file("tribo_plots.py", "tools/tribo_plots.py", dir_ / "build" / "apps" / "tribo");
+  EXPECT_EQ(in_source, fs::path(TRIBO_SOURCE_DIR) / "tools" / "tribo_plots.py");
+  EXPECT_TRUE(fs::exists(in_source));
+}
+
+}  // namespace
+}  // namespace tribo::cli
