@@ -42,15 +42,7 @@ void run_rig(const RigArgs& args) {
 
   const rig::RunObservables obs =
       rig::summarise(run.rig, samples, events, run.analysis_start_fraction * summary.end_time_s);
-  nlohmann::json j = observables_json(obs);
-  j["completed"] = summary.completed;
-  j["message"] = summary.message;
-  j["end_time_s"] = summary.end_time_s;
-  j["integrator_steps"] = summary.integrator_steps;
-  j["events"] = summary.events;
-  j["friction_law"] = run.law->name();
-  j["rig"] = rig_json(run.rig);
-  j["wall_s"] = wall;
+  nlohmann::json j = rig_summary_json(obs, summary, run.law->name(), run.rig, wall);
   j["provenance"] = provenance;
 
   AtomicFile events_file(dir / "events.csv");

@@ -67,6 +67,20 @@ nlohmann::json rig_json(const rig::RigParameters& rig) {
           {"decay_rate_per_s", rig.decay_rate_per_s()}};
 }
 
+nlohmann::json rig_summary_json(const rig::RunObservables& o, const rig::SimulationSummary& summary, const std::string& law_name,
+                                const rig::RigParameters& rig, double wall_s) {
+  nlohmann::json j = observables_json(o);
+  j["completed"] = summary.completed;
+  j["message"] = summary.message;
+  j["end_time_s"] = summary.end_time_s;
+  j["integrator_steps"] = summary.integrator_steps;
+  j["events"] = summary.events;
+  j["friction_law"] = law_name;
+  j["rig"] = rig_json(rig);
+  j["wall_s"] = wall_s;
+  return j;
+}
+
 int run_plot_script(const std::string& mode, const std::string& dir) {
   const std::string script = shipped_file("tribo_plots.py", "tools/tribo_plots.py").string();
   const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";

@@ -18,6 +18,10 @@ void write_trace_row(std::ostream& os, const rig::Sample& s, double measured_fri
 void write_events_csv(std::ostream& os, const std::vector<rig::Event>& events);
 nlohmann::json observables_json(const rig::RunObservables& o);
 nlohmann::json rig_json(const rig::RigParameters& rig);
+// summary.json without its provenance: the observables, how the integration went, the law's name,
+// the rig and the wall time (the CLI and the Python binding write the same keys from here).
+nlohmann::json rig_summary_json(const rig::RunObservables& o, const rig::SimulationSummary& summary, const std::string& law_name,
+                                const rig::RigParameters& rig, double wall_s);
 
 // Runs tools/tribo_plots.py MODE DIR with the Python that has matplotlib (Debian's
 // /usr/bin/python3), spawned with an argument vector — no shell, so any DIR is passed as it is.

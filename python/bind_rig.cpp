@@ -44,15 +44,7 @@ py::dict run_rig(const std::filesystem::path& config) {
   const rig::RunObservables obs =
       rig::summarise(run.rig, result.samples, result.events, run.analysis_start_fraction * summary.end_time_s);
   // summary.json, key for key (apps/cmd_rig.cpp).
-  nlohmann::json j = cli::observables_json(obs);
-  j["completed"] = summary.completed;
-  j["message"] = summary.message;
-  j["end_time_s"] = summary.end_time_s;
-  j["integrator_steps"] = summary.integrator_steps;
-  j["events"] = summary.events;
-  j["friction_law"] = run.law->name();
-  j["rig"] = cli::rig_json(run.rig);
-  j["wall_s"] = wall;
+  const nlohmann::json j = cli::rig_summary_json(obs, summary, run.law->name(), run.rig, wall);
 
   using rig::Sample;
   const auto& s = result.samples;
