@@ -17,9 +17,13 @@ function(tribo_add_library name)
                                             $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/tribo>)
   target_link_libraries(${name} PUBLIC ${ARG_DEPENDS})
   # Sanitized static libraries need the sanitizer runtimes wherever they are linked, including a
-  # consumer of the installed package.
+  # consumer of the installed package — and the consumer must compile with the same flags: they
+  # change header code both sides share (Eigen allocates by hand-aligned malloc under ASan and
+  # frees accordingly; a consumer compiled without it frees such a block with plain free()). In
+  # this tree every target already compiles with them (add_compile_options), hence install only.
   if(TRIBO_SANITIZE)
     target_link_options(${name} INTERFACE -fsanitize=address,undefined)
+    target_compile_options(${name} INTERFACE $<INSTALL_INTERFACE:-fsanitize=address,undefined -fno-omit-frame-pointer>)
   endif()
 endfunction()
 
