@@ -1,5 +1,6 @@
 // `tribo sweep SPEC.toml --out DIR`: a parameter study (apps/sweep_spec.h). Each point is its own
-// `tribo COMMAND` process (DIR/points/NNNNN/: config.toml, the command's outputs, log.txt) — or, for
+// `tribo COMMAND` child process (forked from the sweep, or a fresh one under MPI; see PointStart)
+// in DIR/points/NNNNN/ (config.toml, the command's outputs, log.txt) — or, for
 // the chain "homogenise+rig", two processes one after the other in DIR/points/NNNNN/homogenise/ and
 // .../rig/ — run `jobs` at a time with one OpenMP thread each; its row is appended to
 // DIR/results.csv and flushed as soon as it finishes. Started again with the same command after a
@@ -26,10 +27,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <omp.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -100,6 +105,7 @@ std::map<int, std::string> finished_rows(const std::filesystem::path& file, cons
   return rows;
 }
 
+// `head`: the provenance lines and the column header.
 void write_rows(const std::filesystem::path& file, const std::string& head, const std::map<int, std::string>& rows) {
   std::string text = head + "\n";
   for (const auto& [id, row] : rows) text += row + "\n";
@@ -108,7 +114,11 @@ void write_rows(const std::filesystem::path& file, const std::string& head, cons
 
 // The folder holds the sweep of exactly this spec and these configs, or nothing yet. Every start is
 // logged in sweep.json's "runs" (date, ranks, jobs per rank), so a week-long study shows its history.
-void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::size_t points, int ranks, int jobs) {
+// Returns results.csv's provenance lines: sweep.json's fields as its first start wrote them (version,
+// commit, command line, spec and configs with their hashes, date, threads per point), the same lines
+// whichever start finishes the sweep. Not the axes and outputs (the columns say them), the runs, or
+// the sweep process's own OpenMP threads (it runs none).
+std::string claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::size_t points, int ranks, int jobs) {
   const std::string spec_hash = config_hash(spec.spec_file), base_hash = config_hash(spec.base_config);
   const std::string rig_hash = spec.steps.size() > 1 ? config_hash(spec.steps[1].config) : "";
   const auto file = dir / "sweep.json";
@@ -139,6 +149,10 @@ void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::
   j["runs"].push_back({{"date_utc", run["date_utc"]}, {"git_commit", run["git_commit"]}, {"mpi_ranks", ranks},
                        {"jobs_per_rank", jobs}});
   write_file_atomically(file, j.dump(2) + "\n");
+  nlohmann::json made;
+  for (const auto& [key, value] : j.items())
+    if (key != "axes" && key != "outputs" && key != "runs" && key != "threads") made[key] = value;
+  return csv_provenance_header(made);
 }
 
 std::string last_line(const std::filesystem::path& log) {
@@ -165,20 +179,66 @@ std::vector<std::string> child_environment(bool one_thread) {
   return env;
 }
 
-// Starts `tribo COMMAND dir/config.toml --out dir` with stdout and stderr in dir/log.txt.
-pid_t spawn_step(const std::string& command, const std::filesystem::path& dir, const std::vector<std::string>& env) {
+// How a point's process starts.
+//  - fork (serial sweeps): the child is a copy of this sweep, tribo's 47 shared libraries already
+//    loaded and relocated, and runs the command in place. A fresh `tribo` spends ≈ 36 ms of CPU on
+//    loading alone (bench/README.md) — most of a cheap rig point — and two fresh ones loading side
+//    by side contend, which held jobs = 2 to 1.25× the points/s of jobs = 1.
+//  - exec (MPI sweeps): a forked child of an MPI rank would inherit the rank's MPI state, which
+//    Open MPI does not support, so each point is a fresh `tribo` process.
+// The sweep process itself never enters an OpenMP parallel region, so a forked child has no thread
+// pool to lose (libgomp's pool does not survive fork).
+enum class PointStart { fork, exec };
+
+// `tribo COMMAND dir/config.toml --out dir`: a step's command line.
+std::vector<std::string> step_arguments(const std::string& command, const std::filesystem::path& dir) {
   std::vector<std::string> args{"/proc/self/exe", command, (dir / "config.toml").string(), "--out", dir.string()};
   if (command == "homogenise") args.push_back("--no-plots");
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
+  return args;
+}
+
+std::vector<char*> c_strings(std::vector<std::string>& strings) {
+  std::vector<char*> p;
+  for (std::string& s : strings) p.push_back(s.data());
+  p.push_back(nullptr);
+  return p;
+}
+
+// The forked child's side: stdout and stderr into the log, the point's environment, the command
+// run as `tribo` runs it, and its status as the process's exit status. Never returns.
+[[noreturn]] void run_forked_step(std::vector<std::string> args, const std::string& log, const std::vector<std::string>& env,
+                                  bool one_thread) {
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd < 0 || dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(127);  // the row says "no message"
+  close(fd);
+  clearenv();
+  for (const std::string& e : env) {
+    const std::size_t eq = e.find('=');
+    if (eq != std::string::npos) setenv(e.substr(0, eq).c_str(), e.substr(eq + 1).c_str(), 1);
+  }
+  if (one_thread) omp_set_num_threads(1);  // OMP_NUM_THREADS was read when this image was loaded
+  std::vector<char*> argv = c_strings(args);
+  const int status = run_command_line(static_cast<int>(args.size()), argv.data());
+  std::exit(status);  // atexit handlers run: hypre and MPI finalise if the point started them
+}
+
+// Starts one step of a point with stdout and stderr in dir/log.txt; returns the child's pid.
+pid_t start_step(PointStart how, const std::string& command, const std::filesystem::path& dir,
+                 const std::vector<std::string>& env, bool one_thread) {
+  std::vector<std::string> args = step_arguments(command, dir);
+  const std::string log = (dir / "log.txt").string();
+  if (how == PointStart::fork) {
+    std::fflush(nullptr);  // nothing buffered here may be written twice by the child
+    const pid_t pid = fork();
+    if (pid < 0) throw std::runtime_error("sweep: cannot start a point process (fork: " + std::string(std::strerror(errno)) + ")");
+    if (pid == 0) run_forked_step(std::move(args), log, env, one_thread);
+    return pid;
+  }
+  std::vector<char*> argv = c_strings(args);
   std::vector<std::string> env_strings = env;
-  std::vector<char*> envp;
-  for (std::string& e : env_strings) envp.push_back(e.data());
-  envp.push_back(nullptr);
+  std::vector<char*> envp = c_strings(env_strings);
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  const std::string log = (dir / "log.txt").string();
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
   pid_t pid = 0;
@@ -198,8 +258,9 @@ struct Finished {
 // second step starts when the first exits cleanly).
 class PointPool {
  public:
-  PointPool(const SweepSpec& spec, const std::vector<std::vector<double>>& points, std::filesystem::path dir, int jobs)
-      : spec_(spec), points_(points), dir_(std::move(dir)), jobs_(jobs), env_(child_environment(jobs > 1)) {}
+  PointPool(const SweepSpec& spec, const std::vector<std::vector<double>>& points, std::filesystem::path dir, int jobs,
+            PointStart how)
+      : spec_(spec), points_(points), dir_(std::move(dir)), jobs_(jobs), how_(how), env_(child_environment(jobs > 1)) {}
 
   bool full() const { return static_cast<int>(running_.size()) >= jobs_; }
   bool empty() const { return running_.empty(); }
@@ -213,7 +274,7 @@ class PointPool {
       config << point_config(spec_, points_[id], s) << "\n";
       write_file_atomically(sdir / "config.toml", config.str());
     }
-    running_[spawn_step(spec_.steps[0].command, pdir / step_folder(spec_, 0), env_)] = {id, 0, std::chrono::steady_clock::now()};
+    running_[launch(0, pdir)] = {id, 0, std::chrono::steady_clock::now()};
   }
 
   // The points finished since the last call. `block`: wait until at least one is (the pool must not
@@ -250,6 +311,10 @@ class PointPool {
     std::chrono::steady_clock::time_point start;
   };
 
+  pid_t launch(std::size_t step, const std::filesystem::path& pdir) const {
+    return start_step(how_, spec_.steps[step].command, pdir / step_folder(spec_, step), env_, jobs_ > 1);
+  }
+
   // Bookkeeping for an exited child: the next step, or the point's row.
   bool exited(pid_t pid, int status, std::vector<Finished>& done) {
     const auto it = running_.find(pid);
@@ -263,8 +328,7 @@ class PointPool {
       error = last_line(sdir / "log.txt");
       if (spec_.steps.size() > 1) error = spec_.steps[r.step].command + ": " + error;
     } else if (r.step + 1 < spec_.steps.size()) {
-      running_[spawn_step(spec_.steps[r.step + 1].command, pdir / step_folder(spec_, r.step + 1), env_)] = {
-          r.id, r.step + 1, r.start};
+      running_[launch(r.step + 1, pdir)] = {r.id, r.step + 1, r.start};
       return true;
     } else {
       try {
@@ -297,6 +361,7 @@ class PointPool {
   const std::vector<std::vector<double>>& points_;
   std::filesystem::path dir_;
   int jobs_;
+  PointStart how_;
   std::vector<std::string> env_;
   std::map<pid_t, Running> running_;
 };
@@ -477,22 +542,22 @@ void run_serial(const Args& args) {
   const std::filesystem::path dir(args.out), results = dir / "results.csv";
   const int jobs = local_jobs(spec);
   make_output_dir(dir);
-  claim_output(dir, spec, points.size(), 1, jobs);
+  const std::string preamble = claim_output(dir, spec, points.size(), 1, jobs);
   const std::string head = header(spec);
   std::map<int, std::string> rows = finished_rows(results, head);
-  write_rows(results, head, rows);  // drops a torn line before appending
+  write_rows(results, preamble + head, rows);  // drops a torn line before appending
 
   std::vector<int> pending;
   for (int k = 0; k < static_cast<int>(points.size()); ++k)
     if (!rows.count(k)) pending.push_back(k);
   ResultsWriter writer(results, std::move(rows), static_cast<int>(points.size()));
-  PointPool pool(spec, points, dir, jobs);
+  PointPool pool(spec, points, dir, jobs, PointStart::fork);
   std::size_t next = 0;
   while (next < pending.size() || !pool.empty()) {
     while (next < pending.size() && !pool.full()) pool.start(pending[next++]);
     for (const Finished& f : pool.reap(true)) writer.record(f);
   }
-  writer.finish(head);
+  writer.finish(preamble + head);
   std::printf("sweep: %zu points (%d failed this run) -> %s\n", points.size(), writer.failed(), results.string().c_str());
   // What the sweep itself cost (bench/README.md: the per-point overhead), start-up included.
   if (!pending.empty())
@@ -509,16 +574,16 @@ void run_mpi(const Args& args) {
   std::unique_ptr<SweepSpec> spec;
   std::vector<std::vector<double>> points;
   std::map<int, std::string> rows;
-  std::string head;
+  std::string head, preamble;
   if (mpi.rank == 0) {
     try {
       spec = std::make_unique<SweepSpec>(load_sweep_spec(args.spec));
       points = sweep_points(*spec);
       make_output_dir(dir);
-      claim_output(dir, *spec, points.size(), mpi.size, local_jobs(*spec));
+      preamble = claim_output(dir, *spec, points.size(), mpi.size, local_jobs(*spec));
       head = header(*spec);
       rows = finished_rows(results, head);
-      write_rows(results, head, rows);  // drops a torn line before appending
+      write_rows(results, preamble + head, rows);  // drops a torn line before appending
     } catch (...) {
       ok = 0;
       mpi_check(MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Bcast");
@@ -536,14 +601,14 @@ void run_mpi(const Args& args) {
       spec = std::make_unique<SweepSpec>(load_sweep_spec(args.spec));
       points = sweep_points(*spec);
     }
-    PointPool pool(*spec, points, dir, local_jobs(*spec));
+    PointPool pool(*spec, points, dir, local_jobs(*spec), PointStart::exec);
     if (mpi.rank == 0) {
       std::vector<int> pending;
       for (int k = 0; k < static_cast<int>(points.size()); ++k)
         if (!rows.count(k)) pending.push_back(k);
       ResultsWriter writer(results, std::move(rows), static_cast<int>(points.size()));
       mpi_master(pool, writer, pending, mpi.size);
-      writer.finish(head);
+      writer.finish(preamble + head);
       std::printf("sweep: %zu points on %d MPI ranks (%d failed this run) -> %s\n", points.size(), mpi.size,
                   writer.failed(), results.string().c_str());
     } else {

@@ -13,4 +13,9 @@ void add_gap_command(CLI::App& app);
 void add_homogenise_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);
 
+// `tribo ARGS...` in this process (apps/tribo.cpp): parses argv[1..] and runs the subcommand;
+// returns the exit status (0 success, 1 run failure, 2 bad input). `tribo sweep` runs its points
+// through it in forked children.
+int run_command_line(int argc, char** argv);
+
 }  // namespace tribo::cli

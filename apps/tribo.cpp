@@ -7,7 +7,8 @@
 #include "apps/config.h"
 #include "apps/provenance.h"
 
-int main(int argc, char** argv) {
+// The whole command line, in this process: main's body, and what a sweep's forked point runs.
+int tribo::cli::run_command_line(int argc, char** argv) {
   tribo::cli::record_command_line(argc, argv);  // into every output's provenance
   CLI::App app{"tribo: rough-surface contact, Reynolds lubrication and the friction rig of the thesis"};
   app.require_subcommand(1);
@@ -42,3 +43,5 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+int main(int argc, char** argv) { return tribo::cli::run_command_line(argc, argv); }

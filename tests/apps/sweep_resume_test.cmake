@@ -10,19 +10,7 @@ file(WRITE ${WORK}/spec.toml "[base]\ncommand = \"rig\"\nconfig = \"rig.toml\"\n
   "[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [0.99822, 2.0, -1.0]\n"
   "[sweep]\njobs = 2\n[outputs]\ncolumns = [\"summary.json:regime\", \"summary.json:peak_to_peak_m\", \"summary.json:breakaways\"]\n")
 
-# The results without the wall_s column (6th field) and with the output folder's name taken out of
-# the error messages, one list entry per line.
-function(rows_without_wall file out)
-  file(STRINGS ${file} lines)
-  get_filename_component(dir ${file} DIRECTORY)
-  set(result "")
-  foreach(line IN LISTS lines)
-    string(REGEX REPLACE "^([^,]*,[^,]*,[^,]*,[^,]*,[^,]*,)[^,]*" "\\1" line "${line}")
-    string(REPLACE "${dir}" "DIR" line "${line}")
-    list(APPEND result "${line}")
-  endforeach()
-  set(${out} "${result}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/sweep_rows.cmake)
 
 execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/full RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
@@ -50,6 +38,17 @@ rows_without_wall(${WORK}/full/results.csv full)
 rows_without_wall(${WORK}/killed/results.csv killed)
 if(NOT full STREQUAL killed)
   message(FATAL_ERROR "killed-and-resumed results differ:\n${full}\n---\n${killed}")
+endif()
+
+# The finished table says how it was made, and the first start made it: its provenance lines are
+# sweep.json's, date included, though the last of five starts wrote the file.
+file(READ ${WORK}/killed/sweep.json made)
+string(JSON first_date GET "${made}" date_utc)
+string(JSON spec_hash GET "${made}" spec_hash)
+file(STRINGS ${WORK}/killed/results.csv provenance REGEX "^# ")
+if(NOT provenance MATCHES "# tribo_version: [0-9]" OR NOT provenance MATCHES "# date_utc: ${first_date}"
+   OR NOT provenance MATCHES "# spec_hash: ${spec_hash}" OR NOT provenance MATCHES "# git_commit: ")
+  message(FATAL_ERROR "results.csv provenance lines do not match sweep.json (date ${first_date}): ${provenance}")
 endif()
 
 file(APPEND ${WORK}/spec.toml "# changed\n")
