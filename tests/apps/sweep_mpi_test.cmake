@@ -84,3 +84,12 @@ if(NOT status EQUAL 0 OR NOT ok EQUAL 2)
   file(READ ${WORK}/discs/results.csv all)
   message(FATAL_ERROR "hypre points under mpirun (${status}): ${err}\n${all}")
 endif()
+# The same points in a serial sweep, whose points are forked children of the sweep: hypre starts
+# MPI in each child afresh, and the loads equal the MPI run's.
+execute_process(COMMAND ${TRIBO} sweep ${WORK}/discs-spec.toml --out ${WORK}/discs-serial
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+rows_without_wall(${WORK}/discs/results.csv discs_mpi 1)
+rows_without_wall(${WORK}/discs-serial/results.csv discs_serial 1)
+if(NOT status EQUAL 0 OR NOT discs_mpi STREQUAL discs_serial)
+  message(FATAL_ERROR "hypre points in a serial sweep (${status}): ${err}\n${discs_serial}\n---\n${discs_mpi}")
+endif()
