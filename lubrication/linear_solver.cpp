@@ -453,7 +453,169 @@ class AmgKrylovSolver final : public SparseLinearSolver {
   HYPRE_Solver amg_ = nullptr, krylov_ = nullptr;
 };
 
+// Copies the column-major A into a new hypre IJ/ParCSR matrix (mutex held). On failure the
+// partly built matrix is destroyed and a message returned.
+std::string make_parcsr_locked(const SparseMatrix& a, const std::vector<HYPRE_BigInt>& indices, HYPRE_IJMatrix* ij,
+                               HYPRE_ParCSRMatrix* par) {
+  const int n = static_cast<int>(a.rows());
+  const Eigen::SparseMatrix<double, Eigen::RowMajor, int> r = a;  // hypre takes rows
+  std::vector<HYPRE_Int> counts(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) counts[i] = r.outerIndexPtr()[i + 1] - r.outerIndexPtr()[i];
+  std::vector<HYPRE_BigInt> columns(r.innerIndexPtr(), r.innerIndexPtr() + r.nonZeros());
+  const HYPRE_BigInt last = n - 1;
+  HYPRE_Int e;
+  *ij = nullptr;
+  *par = nullptr;
+  auto fail = [&](const char* routine, HYPRE_Int code) {
+    std::string m = hypre_error(routine, code);
+    if (*ij) HYPRE_IJMatrixDestroy(*ij);
+    *ij = nullptr;
+    *par = nullptr;
+    return m;
+  };
+  if ((e = HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, last, 0, last, ij))) return fail("HYPRE_IJMatrixCreate", e);
+  if ((e = HYPRE_IJMatrixSetObjectType(*ij, HYPRE_PARCSR))) return fail("HYPRE_IJMatrixSetObjectType", e);
+  if ((e = HYPRE_IJMatrixSetRowSizes(*ij, counts.data()))) return fail("HYPRE_IJMatrixSetRowSizes", e);
+  if ((e = HYPRE_IJMatrixInitialize(*ij))) return fail("HYPRE_IJMatrixInitialize", e);
+  if ((e = HYPRE_IJMatrixSetValues(*ij, n, counts.data(), indices.data(), columns.data(), r.valuePtr())))
+    return fail("HYPRE_IJMatrixSetValues", e);
+  if ((e = HYPRE_IJMatrixAssemble(*ij))) return fail("HYPRE_IJMatrixAssemble", e);
+  void* object = nullptr;
+  if ((e = HYPRE_IJMatrixGetObject(*ij, &object))) return fail("HYPRE_IJMatrixGetObject", e);
+  *par = static_cast<HYPRE_ParCSRMatrix>(object);
+  return "";
+}
+
+std::string make_par_vector_locked(int n, HYPRE_IJVector* ij, HYPRE_ParVector* par) {
+  HYPRE_Int e;
+  if ((e = HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, n - 1, ij))) return hypre_error("HYPRE_IJVectorCreate", e);
+  if ((e = HYPRE_IJVectorSetObjectType(*ij, HYPRE_PARCSR))) return hypre_error("HYPRE_IJVectorSetObjectType", e);
+  if ((e = HYPRE_IJVectorInitialize(*ij))) return hypre_error("HYPRE_IJVectorInitialize", e);
+  if ((e = HYPRE_IJVectorAssemble(*ij))) return hypre_error("HYPRE_IJVectorAssemble", e);
+  void* object = nullptr;
+  if ((e = HYPRE_IJVectorGetObject(*ij, &object))) return hypre_error("HYPRE_IJVectorGetObject", e);
+  *par = static_cast<HYPRE_ParVector>(object);
+  return "";
+}
+
 }  // namespace
+
+// ---- one BoomerAMG V-cycle as an operator ----------------------------------------------------------------
+
+struct AmgVCycle::Impl {
+  int n = 0;
+  std::vector<HYPRE_BigInt> indices;
+  // The matrix the hierarchy was built from (kept alive with it) and the current fine-level matrix
+  // (the same object unless update_fine_matrix() replaced it).
+  HYPRE_IJMatrix setup_ij = nullptr, fine_ij = nullptr;
+  HYPRE_ParCSRMatrix setup_par = nullptr, fine_par = nullptr;
+  HYPRE_IJVector ij_b = nullptr, ij_x = nullptr;
+  HYPRE_ParVector par_b = nullptr, par_x = nullptr;
+  HYPRE_Solver amg = nullptr;
+
+  ~Impl() {
+    std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
+    release_locked();
+  }
+  void release_fine_locked() {
+    if (fine_ij && fine_ij != setup_ij && !hypre_runtime().finalized) HYPRE_IJMatrixDestroy(fine_ij);
+    fine_ij = nullptr;
+    fine_par = nullptr;
+  }
+  void release_locked() {
+    release_fine_locked();
+    if (!hypre_runtime().finalized) {
+      if (amg) HYPRE_BoomerAMGDestroy(amg);
+      if (setup_ij) HYPRE_IJMatrixDestroy(setup_ij);
+      if (ij_b) HYPRE_IJVectorDestroy(ij_b);
+      if (ij_x) HYPRE_IJVectorDestroy(ij_x);
+    }
+    amg = nullptr;
+    setup_ij = nullptr;
+    setup_par = nullptr;
+    ij_b = ij_x = nullptr;
+    par_b = par_x = nullptr;
+    n = 0;
+  }
+};
+
+AmgVCycle::AmgVCycle() : impl_(std::make_unique<Impl>()) {}
+AmgVCycle::~AmgVCycle() = default;
+AmgVCycle::AmgVCycle(AmgVCycle&&) noexcept = default;
+AmgVCycle& AmgVCycle::operator=(AmgVCycle&&) noexcept = default;
+bool AmgVCycle::ready() const { return impl_ && impl_->amg != nullptr; }
+int AmgVCycle::size() const { return impl_ ? impl_->n : 0; }
+
+LinearSolveStatus AmgVCycle::setup(const SparseMatrix& a) {
+  if (a.rows() != a.cols() || a.rows() == 0) return failure("boomeramg v-cycle: matrix is not square or empty");
+  Impl& m = *impl_;
+  std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
+  if (std::string e = start_hypre_locked(); !e.empty()) return failure(e);
+  m.release_locked();
+  m.n = static_cast<int>(a.rows());
+  m.indices.resize(static_cast<std::size_t>(m.n));
+  std::iota(m.indices.begin(), m.indices.end(), HYPRE_BigInt{0});
+  auto fail = [&](std::string message) {
+    m.release_locked();
+    return failure(std::move(message));
+  };
+  if (std::string e = make_parcsr_locked(a, m.indices, &m.setup_ij, &m.setup_par); !e.empty()) return fail(e);
+  m.fine_ij = m.setup_ij;
+  m.fine_par = m.setup_par;
+  if (std::string e = make_par_vector_locked(m.n, &m.ij_b, &m.par_b); !e.empty()) return fail(e);
+  if (std::string e = make_par_vector_locked(m.n, &m.ij_x, &m.par_x); !e.empty()) return fail(e);
+  HYPRE_Int e;
+  if ((e = HYPRE_BoomerAMGCreate(&m.amg))) return fail(hypre_error("HYPRE_BoomerAMGCreate", e));
+  // The settings of the AMG-PCG backend (see AmgKrylovSolver::factorize for why these).
+  const HYPRE_Int codes[] = {
+      HYPRE_BoomerAMGSetPrintLevel(m.amg, 0),         HYPRE_BoomerAMGSetCoarsenType(m.amg, 6),
+      HYPRE_BoomerAMGSetInterpType(m.amg, 0),         HYPRE_BoomerAMGSetRelaxType(m.amg, 6),
+      HYPRE_BoomerAMGSetStrongThreshold(m.amg, 0.25), HYPRE_BoomerAMGSetPMaxElmts(m.amg, 4),
+      HYPRE_BoomerAMGSetNumSweeps(m.amg, 1),          HYPRE_BoomerAMGSetMaxIter(m.amg, 1),
+      HYPRE_BoomerAMGSetTol(m.amg, 0.0)};
+  for (HYPRE_Int code : codes)
+    if (code) return fail(hypre_error("HYPRE_BoomerAMGSet*", code));
+  if ((e = HYPRE_BoomerAMGSetup(m.amg, m.setup_par, m.par_b, m.par_x)))
+    return fail(hypre_error("HYPRE_BoomerAMGSetup", e));
+  return {};
+}
+
+LinearSolveStatus AmgVCycle::update_fine_matrix(const SparseMatrix& a) {
+  Impl& m = *impl_;
+  if (!m.amg) return failure("boomeramg v-cycle: update_fine_matrix() before setup()");
+  if (a.rows() != m.n || a.cols() != m.n) return failure("boomeramg v-cycle: matrix size differs from the set-up one");
+  std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
+  if (hypre_runtime().finalized) return failure("boomeramg v-cycle: hypre already finalised");
+  m.release_fine_locked();
+  if (std::string e = make_parcsr_locked(a, m.indices, &m.fine_ij, &m.fine_par); !e.empty()) {
+    m.fine_ij = m.setup_ij;  // the hierarchy's own matrix stays usable
+    m.fine_par = m.setup_par;
+    return failure(e);
+  }
+  return {};
+}
+
+LinearSolveStatus AmgVCycle::apply(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
+  Impl& m = *impl_;
+  if (!m.amg) return failure("boomeramg v-cycle: apply() before setup()");
+  if (r.size() != m.n) return failure("boomeramg v-cycle: vector has the wrong size");
+  x.setZero(m.n);
+  std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
+  if (hypre_runtime().finalized) return failure("boomeramg v-cycle: hypre already finalised");
+  HYPRE_Int e;
+  if ((e = HYPRE_IJVectorSetValues(m.ij_b, m.n, m.indices.data(), r.data())))
+    return failure(hypre_error("HYPRE_IJVectorSetValues", e));
+  if ((e = HYPRE_IJVectorSetValues(m.ij_x, m.n, m.indices.data(), x.data())))
+    return failure(hypre_error("HYPRE_IJVectorSetValues", e));
+  if ((e = HYPRE_IJVectorAssemble(m.ij_b))) return failure(hypre_error("HYPRE_IJVectorAssemble", e));
+  if ((e = HYPRE_IJVectorAssemble(m.ij_x))) return failure(hypre_error("HYPRE_IJVectorAssemble", e));
+  // One cycle with tolerance 0 always ends with HYPRE_ERROR_CONV unset (no residual is computed).
+  if ((e = HYPRE_BoomerAMGSolve(m.amg, m.fine_par, m.par_b, m.par_x)))
+    return failure(hypre_error("HYPRE_BoomerAMGSolve", e));
+  if ((e = HYPRE_IJVectorGetValues(m.ij_x, m.n, m.indices.data(), x.data())))
+    return failure(hypre_error("HYPRE_IJVectorGetValues", e));
+  return {};
+}
 
 std::unique_ptr<SparseLinearSolver> make_linear_solver(LinearSolverKind kind, const IterativeSolveOptions& iterative) {
   if (kind == LinearSolverKind::amg_pcg) return std::make_unique<AmgKrylovSolver>(iterative, true);

@@ -77,4 +77,33 @@ class SparseLinearSolver {
 std::unique_ptr<SparseLinearSolver> make_linear_solver(LinearSolverKind kind,
                                                        const IterativeSolveOptions& iterative = {});
 
+// One BoomerAMG V-cycle (the settings of the AMG backends above, x₀ = 0) as a fixed linear
+// operator x ≈ A⁻¹ r, for block preconditioners that apply multigrid to one block of a larger
+// system (lubrication/cavitation_krylov.h). Same MPI/hypre runtime and mutex as the backends.
+class AmgVCycle {
+ public:
+  AmgVCycle();
+  ~AmgVCycle();
+  AmgVCycle(const AmgVCycle&) = delete;
+  AmgVCycle& operator=(const AmgVCycle&) = delete;
+  AmgVCycle(AmgVCycle&&) noexcept;
+  AmgVCycle& operator=(AmgVCycle&&) noexcept;
+
+  // Copies A (square) to hypre and builds the multigrid hierarchy of it.
+  LinearSolveStatus setup(const SparseMatrix& a);
+  // Replaces the fine-level matrix by A (same size) and keeps the coarse levels and interpolation
+  // of the last setup(): hypre's V-cycle smooths with the matrix it is given and restricts with
+  // the stored hierarchy, so a hierarchy of a nearby matrix stays a valid (slightly weaker)
+  // preconditioner at the cost of one matrix copy instead of a setup.
+  LinearSolveStatus update_fine_matrix(const SparseMatrix& a);
+  // x = one V-cycle applied to r.
+  LinearSolveStatus apply(const Eigen::VectorXd& r, Eigen::VectorXd& x);
+  bool ready() const;
+  int size() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 }  // namespace tribo::lubrication

@@ -1,5 +1,7 @@
 #include "lubrication/reynolds.h"
 
+#include "lubrication/cavitation_krylov.h"
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -316,6 +318,7 @@ struct ReynoldsSolver::Impl {
   std::unique_ptr<SparseLinearSolver> umfpack = make_linear_solver(LinearSolverKind::umfpack);
   std::unique_ptr<SparseLinearSolver> multigrid;        // created on first use (starts MPI and hypre)
   std::unique_ptr<SparseLinearSolver> multigrid_newton;  // GMRES + AMG for the reduced Newton system
+  std::unique_ptr<CavitationKrylovSolver> block_newton;  // GMRES + block-triangular preconditioner
   std::optional<Signature> cholmod_signature, umfpack_signature;
   int analyses = 0;
   double linear_s = 0;
@@ -466,6 +469,56 @@ struct ReynoldsSolver::Impl {
     }
   }
 
+  // Grid sequencing (nested iteration; Kelley, Solving Nonlinear Equations with Newton's Method,
+  // SIAM 2003, §1.9; for free boundaries Hoppe, SIAM J. Numer. Anal. 24, 1987): the semismooth
+  // Newton iteration moves the cavitation fronts a few cells per step, so started from the full
+  // film it needs more steps the finer the grid (10, 16, 26, 48 from 128² to 1024²). The same
+  // problem on every other node, solved first (recursively, to the same tolerance), puts the
+  // fronts within a coarse cell, and its bilinear interpolation starts the fine Newton iteration.
+  // The coarse answer is only a starting point: the fine solve meets its own tolerance, and if it
+  // fails from there it is repeated from the usual full-film start.
+  // Returns the coarse solution on the coarse grid, or nothing when the grid does not coarsen
+  // (disc domain, nodes not aligned, too small) or the coarse solve did not converge.
+  std::optional<ReynoldsSolution> coarse_start(const ReynoldsProblem& pr, std::size_t unknowns) {
+    const contact::Grid& g = pr.grid;
+    const bool periodic = pr.boundary_y == BoundaryY::periodic;
+    if (!options.grid_sequencing || pr.disc || !use_multigrid(unknowns)) return std::nullopt;
+    if ((g.nx - 1) % 2 != 0 || (periodic ? g.ny % 2 : (g.ny - 1) % 2) != 0) return std::nullopt;
+    contact::Grid c{(g.nx - 1) / 2 + 1, periodic ? g.ny / 2 : (g.ny - 1) / 2 + 1, 2 * g.dx_m, 2 * g.dy_m};
+    if (c.nx < options.grid_sequencing_min_nodes || c.ny < options.grid_sequencing_min_nodes) return std::nullopt;
+    ReynoldsProblem coarse = pr;
+    coarse.grid = c;
+    auto inject = [&](const Eigen::ArrayXXd& f) {
+      if (f.size() == 0) return Eigen::ArrayXXd();
+      Eigen::ArrayXXd out(c.nx, c.ny);
+      for (Eigen::Index j = 0; j < c.ny; ++j)
+        for (Eigen::Index i = 0; i < c.nx; ++i) out(i, j) = f(2 * i, 2 * j);
+      return out;
+    };
+    coarse.gap_m = inject(pr.gap_m);
+    coarse.gap_rate_m_per_s = inject(pr.gap_rate_m_per_s);
+    coarse.pressure_flow_factor_x = inject(pr.pressure_flow_factor_x);
+    coarse.pressure_flow_factor_y = inject(pr.pressure_flow_factor_y);
+    coarse.couette_film_m = inject(pr.couette_film_m);
+    // The coarse grid uses the backend its own size calls for (UMFPACK below the multigrid
+    // threshold under `automatic`, which ends the recursion there), and coarsens again while it can.
+    ReynoldsSolver solver(options);
+    ReynoldsSolution s = solver.solve(coarse);
+    if (!s.summary.converged) return std::nullopt;
+    return s;
+  }
+
+  // Bilinear value of a coarse-grid field at fine node (i, j) (coarse node spacing = 2 fine).
+  static double interpolate(const Eigen::ArrayXXd& f, Eigen::Index i, Eigen::Index j, bool periodic) {
+    const Eigen::Index nx = f.rows(), ny = f.cols();
+    const Eigen::Index i0 = i / 2, j0 = j / 2;
+    const Eigen::Index i1 = std::min(i0 + 1, nx - 1);
+    const Eigen::Index j1 = periodic ? (j0 + 1) % ny : std::min(j0 + 1, ny - 1);
+    const double tx = (i % 2) ? 0.5 : 0.0, ty = (j % 2) ? 0.5 : 0.0;
+    return (1 - tx) * (1 - ty) * f(i0, j0) + tx * (1 - ty) * f(i1, j0) + (1 - tx) * ty * f(i0, j1) +
+           tx * ty * f(i1, j1);
+  }
+
   ReynoldsSolution solve(const ReynoldsProblem& pr) {
     validate(pr);
     if (pr.pressure_viscosity_per_Pa > 0.0) return solve_piezoviscous(pr);
@@ -502,7 +555,7 @@ struct ReynoldsSolver::Impl {
     return sol;
   }
 
-  ReynoldsSolution solve_isoviscous(const ReynoldsProblem& pr) {
+  ReynoldsSolution solve_isoviscous(const ReynoldsProblem& pr, bool sequencing = true) {
     const auto start = Clock::now();
     linear_s = 0;
     const Topology t = build_topology(pr);
@@ -545,6 +598,8 @@ struct ReynoldsSolver::Impl {
     if (cavitates) {
       sum.linear_solver = multigrid_path ? to_string(LinearSolverKind::amg_gmres) : to_string(LinearSolverKind::umfpack);
       int direct_fallbacks = 0;
+      std::string fallback_reason;  // the last GMRES failure that sent a step to UMFPACK
+      double previous_f_norm = 0.0, previous_forcing = 0.0;  // inexact Newton's memory
       sum.converged = false;
       const double p_scale = std::max(p.cwiseAbs().maxCoeff(), 1e-300);
       const double mass_scale = std::max(rhs_scale, 1e-300);
@@ -552,6 +607,17 @@ struct ReynoldsSolver::Impl {
       for (std::size_t u = 0; u < n; ++u) {
         z[2 * u] = std::max(p[u], 0.0);
         z[2 * u + 1] = p[u] >= 0.0 ? 1.0 : 0.9;  // off the NCP kink where the film may rupture
+      }
+      const std::optional<ReynoldsSolution> coarse = sequencing ? coarse_start(pr, n) : std::nullopt;
+      if (coarse) {
+        const bool periodic = pr.boundary_y == BoundaryY::periodic;
+        for (std::size_t u = 0; u < n; ++u) {
+          const Eigen::Index node = t.node_of[u], i = node % pr.grid.nx, j = node / pr.grid.nx;
+          z[2 * u] = std::max(interpolate(coarse->pressure_Pa, i, j, periodic), 0.0);
+          z[2 * u + 1] = std::clamp(interpolate(coarse->fill_fraction, i, j, periodic), 0.0, 1.0);
+        }
+        linear_s += coarse->summary.linear_solver_s;
+        sum.linear_iterations += coarse->summary.linear_iterations;
       }
       Eigen::VectorXd f, f_trial, dz(static_cast<Eigen::Index>(2 * n)), rhs, x;
       std::vector<MassRow> mass_rows(n);
@@ -577,7 +643,53 @@ struct ReynoldsSolver::Impl {
         const auto t0 = Clock::now();
         LinearSolveStatus ls;
         bool solved = false;
-        if (multigrid_path) {
+        if (multigrid_path && options.cavitation_preconditioner == CavitationPreconditioner::block_triangular) {
+          // GMRES with upwind sweeps of the cavitated block and AMG on the pressure Schur
+          // complement (cavitation_krylov.h); the split is the one the reduction used. A step it
+          // cannot set up or solve falls back to UMFPACK.
+          jac.setFromTriplets(triplets.begin(), triplets.end());
+          if (!block_newton) {
+            CavitationKrylovOptions ko;
+            ko.max_iterations = options.multigrid_max_iterations;
+            ko.amg_reuse_changed_fraction = options.amg_reuse_changed_fraction;
+            block_newton = std::make_unique<CavitationKrylovSolver>(ko);
+          }
+          ls = block_newton->setup(jac, keeps_p);
+          // Inexact Newton (Eisenstat & Walker, SIAM J. Sci. Comput. 17, 1996, choice 2 with
+          // their safeguard): the step needs ‖J s + F‖ ≤ η_k ‖F‖ only as tight as the residual
+          // is falling, η_k = γ (‖F_k‖/‖F_{k−1}‖)², never below the multigrid tolerance; the
+          // convergence test on F itself is unchanged, so the answer meets the same tolerance.
+          double forcing = options.multigrid_tolerance;
+          const double f_norm = f.norm();
+          if (options.inexact_newton) {
+            const double gamma = 0.9, eta_max = options.max_forcing;
+            double eta = eta_max;
+            if (previous_f_norm > 0.0) {
+              const double ratio = f_norm / previous_f_norm;
+              eta = gamma * ratio * ratio;
+              const double safeguard = gamma * previous_forcing * previous_forcing;
+              if (safeguard > 0.1) eta = std::max(eta, safeguard);
+            }
+            // Near the solution the step need not be more accurate than the Newton tolerance
+            // itself (Kelley, Iterative Methods for Linear and Nonlinear Equations, SIAM 1995,
+            // §6.3): ‖r‖ ≤ ½ tolerance suffices.
+            eta = std::max(eta, 0.5 * options.newton_tolerance / std::max(f_norm, 1e-300));
+            forcing = std::max(std::min(eta, eta_max), options.multigrid_tolerance);
+          }
+          previous_f_norm = f_norm;
+          previous_forcing = forcing;
+          if (ls.ok) ls = block_newton->solve(rhs, x, forcing);
+          sum.linear_iterations += ls.iterations;
+          if (ls.ok) {
+            if (forcing <= options.multigrid_tolerance)
+              sum.linear_residual = std::max(sum.linear_residual, ls.relative_residual);
+            solved = true;
+          } else {
+            ++direct_fallbacks;
+            fallback_reason = ls.message;
+            ls = {};
+          }
+        } else if (multigrid_path) {
           // GMRES + AMG on the reduced system with the cavitated unknowns scaled to pressures,
           // y = p_s·Δϑ, so that every column has the units of Δp (AMG's strength of connection
           // compares entries of a row). A step GMRES cannot solve falls back to UMFPACK.
@@ -598,6 +710,7 @@ struct ReynoldsSolver::Impl {
             solved = true;
           } else {
             ++direct_fallbacks;
+            fallback_reason = ls.message;
             ls = {};
           }
         }
@@ -654,8 +767,20 @@ struct ReynoldsSolver::Impl {
           sum.message = "converged: scaled residual " + std::to_string(sum.residual);
         }
       }
+      if (!sum.converged && coarse) {
+        // The interpolated start did not lead to convergence: repeat from the full-film start.
+        ReynoldsSolution retry = solve_isoviscous(pr, false);
+        retry.summary.message += " (after a failed start from the coarse grid: " + sum.message + ")";
+        retry.summary.wall_s = seconds_since(start);
+        return retry;
+      }
+      if (coarse)
+        sum.message += " (started from the " + std::to_string(coarse->pressure_Pa.rows()) + " x " +
+                       std::to_string(coarse->pressure_Pa.cols()) + " grid's solution, " +
+                       std::to_string(coarse->summary.iterations) + " Newton steps there)";
       if (direct_fallbacks > 0)
-        sum.message += " (" + std::to_string(direct_fallbacks) + " Newton steps fell back from GMRES to UMFPACK)";
+        sum.message += " (" + std::to_string(direct_fallbacks) + " Newton steps fell back from GMRES to UMFPACK; last: " +
+                       fallback_reason + ")";
       for (std::size_t u = 0; u < n; ++u) {
         p[u] = z[2 * u];
         sol.fill_fraction(t.node_of[u]) = z[2 * u + 1];
@@ -682,11 +807,14 @@ ReynoldsSolver::ReynoldsSolver(ReynoldsOptions options) : impl_(std::make_unique
   if (!(options.newton_tolerance > 0) || options.max_newton_iterations < 1 || !(options.armijo_constant > 0) ||
       !(options.armijo_constant < 0.5) || !(options.min_step > 0) || !(options.min_step <= 1) ||
       !(options.multigrid_tolerance > 0) || !(options.multigrid_tolerance < 1) ||
-      options.multigrid_max_iterations < 1 || options.multigrid_min_unknowns < 0)
+      options.multigrid_max_iterations < 1 || options.multigrid_min_unknowns < 0 ||
+      !(options.amg_reuse_changed_fraction >= 0) || !(options.amg_reuse_changed_fraction <= 1) ||
+      !(options.max_forcing > 0) || !(options.max_forcing < 1) || options.grid_sequencing_min_nodes < 3)
     throw std::invalid_argument(
         "reynolds options: need newton_tolerance > 0, max_newton_iterations >= 1, 0 < armijo_constant < 0.5, "
         "0 < min_step <= 1, 0 < multigrid_tolerance < 1, multigrid_max_iterations >= 1, "
-        "multigrid_min_unknowns >= 0");
+        "multigrid_min_unknowns >= 0, 0 <= amg_reuse_changed_fraction <= 1, 0 < max_forcing < 1, "
+        "grid_sequencing_min_nodes >= 3");
   impl_->options = options;
 }
 ReynoldsSolver::~ReynoldsSolver() = default;

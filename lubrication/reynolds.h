@@ -35,6 +35,9 @@
 // semismooth Newton step is a primal–dual active-set step) or Fischer–Burmeister
 // a + b − √(a² + b²) — the Couette flux takes ϑ from the upwind node, and each Newton step is an
 // unsymmetric sparse solve (UMFPACK) whose pattern is fixed, so its symbolic analysis is reused.
+// On the multigrid path the Newton steps are solved by GMRES with a block-triangular preconditioner
+// (lubrication/cavitation_krylov.h) to Eisenstat–Walker forcing terms, starting from the same
+// problem solved on a grid twice as coarse (see ReynoldsOptions).
 //
 // Piezoviscosity: with Barus' law η = η₀ e^{ψp} (lubrication/viscosity.h) the reduced pressure
 // q = (1 − e^{−ψp})/ψ turns the Poiseuille flux h³/(12η)∇p into h³/(12η₀)∇q while the Couette
@@ -79,6 +82,13 @@ enum class Complementarity { minimum, fischer_burmeister };
 // Backend of the full-film (SPD) pressure solve: CHOLMOD, BoomerAMG-preconditioned CG, or the
 // latter from ReynoldsOptions::multigrid_min_unknowns unknowns on (automatic).
 enum class PressureSolver { automatic, direct, multigrid };
+// Preconditioner of GMRES for the cavitation Newton steps on the multigrid path:
+//   block_triangular — block LU: exact upwind sweeps of the cavitated (film-fraction transport)
+//                      block and one BoomerAMG V-cycle of the pressure Schur complement
+//                      (lubrication/cavitation_krylov.h);
+//   amg              — one BoomerAMG V-cycle of the whole reduced matrix (poor on the transport
+//                      rows: 35–85 GMRES iterations per step, growing with the grid).
+enum class CavitationPreconditioner { block_triangular, amg };
 
 // Circular film domain (parallel discs): nodes with |x − c| < R are wetted, the rim is at p = 0.
 struct DiscDomain {
@@ -123,7 +133,7 @@ struct ReynoldsOptions {
   double min_step = 1e-8;
   // Full-film pressure system A p = b (also the cavitating solve's starting point): direct
   // (CHOLMOD LLᵀ) or multigrid (PCG + one BoomerAMG V-cycle, O(n) per iteration; the cavitation
-  // Newton steps then use GMRES + BoomerAMG with the same stopping rule). automatic uses
+  // Newton steps then use GMRES + BoomerAMG, see cavitation_preconditioner). automatic uses
   // multigrid from multigrid_min_unknowns unknowns on (≈ 200² nodes). Multigrid is already 2×
   // faster at 128² and 7× at 1024² (bench/README.md), but hypre calls are serialised process-wide
   // (linear_solver.h) while CHOLMOD solves run in parallel, so the threshold sits above the
@@ -136,20 +146,45 @@ struct ReynoldsOptions {
   // The pressure error is then ‖δp‖₂/‖p‖₂ ≤ κ(A)·tolerance; κ(A) ≈ 8k_max/(k_min·(π/nx)²).
   double multigrid_tolerance = 1e-10;
   int multigrid_max_iterations = 200;
+  // Multigrid path with cavitation: the Newton steps' preconditioner (see CavitationPreconditioner),
+  // and for block_triangular the share of unknowns that may change side (full film ↔ cavitated)
+  // before the pressure block's AMG hierarchy is rebuilt (kept otherwise, with its fine level
+  // updated; the answer does not depend on it, only the GMRES iteration count).
+  CavitationPreconditioner cavitation_preconditioner = CavitationPreconditioner::block_triangular;
+  double amg_reuse_changed_fraction = 0.0;
+  // Inexact Newton on the block-triangular path: each step's GMRES stops at the Eisenstat–Walker
+  // forcing term η_k ∈ [multigrid_tolerance, max_forcing] instead of multigrid_tolerance (early
+  // steps need 1–5 iterations instead of 20–40). The Newton test on the residual is unchanged.
+  // max_forcing = 1e-2 halved the Krylov work at 512² but doubled the Newton steps (43 against
+  // 22 solved exactly), each with its own AMG setup; 1e-3 needs 26 for the same total time.
+  bool inexact_newton = true;
+  double max_forcing = 1e-3;
+  // Grid sequencing on the multigrid path with cavitation (rectangular domains whose nodes
+  // coarsen by two: nx − 1 even, ny even if periodic else ny − 1 even): the Newton iteration
+  // starts from the bilinear interpolation of the same problem solved on every other node
+  // (recursively, while the coarse grid keeps at least grid_sequencing_min_nodes per side and
+  // still takes the multigrid path), instead of from the full film. Only the start changes; the
+  // fine solve meets the same tolerance (and is repeated from the full film if it fails).
+  bool grid_sequencing = true;
+  int grid_sequencing_min_nodes = 64;
 };
 
 struct ReynoldsSummary {
   bool converged = false;
-  int iterations = 0;          // Newton iterations (1 for the linear no-cavitation solve)
+  int iterations = 0;          // Newton iterations on this grid (1 for the linear no-cavitation
+                               // solve; a grid-sequenced solve reports its coarse steps in message)
   double residual = 0.0;       // final scaled residual (see ReynoldsOptions)
   std::string message;         // why it stopped, or the SuiteSparse / hypre failure
   std::string linear_solver;   // "cholmod" / "umfpack", or "boomeramg-pcg" / "boomeramg-gmres" (last used)
   double linear_solver_s = 0;  // wall time inside the linear solvers (analyse/setup + factorise + solve)
   // Multigrid path: Krylov iterations summed over the solve (PCG of the full film + GMRES of each
-  // cavitation Newton step) and the largest relative residual ‖b − A x‖₂/‖b‖₂ they ended with
+  // cavitation Newton step, coarse grids of grid sequencing included) and the largest relative residual ‖b − A x‖₂/‖b‖₂ they ended with
   // (0 on the direct path). A full-film multigrid solve that misses its tolerance sets
   // converged = false, residual = its relative residual and says so in message; a Newton step
-  // whose GMRES misses it is redone by UMFPACK (message counts these fallbacks).
+  // whose GMRES misses it is redone by UMFPACK (message counts these fallbacks and quotes the last
+  // GMRES failure with its residual). With inexact_newton, linear_residual covers the solves held
+  // to multigrid_tolerance (the full film and steps whose forcing term reached that floor); the
+  // other steps are held to their own forcing term, met or redone by UMFPACK.
   int linear_iterations = 0;
   double linear_residual = 0.0;
   double wall_s = 0;           // total wall time of the solve
