@@ -72,7 +72,7 @@ void run_junction(const ContactArgs& args) {
   opt.hardness_Pa = *run.hardness_Pa;
   opt.alpha = run.alpha;
   opt.normal = run.solver;
-  const double w = run.normal_N;
+  const double w = run.normal_load_N;
   // The largest F/W the domain can carry: √(W² + α F²) ≤ σ0 A_nominal.
   const double f_cap = std::sqrt(std::max(0.0, std::pow(opt.hardness_Pa * run.grid.area_m2(), 2) - w * w) / std::max(run.alpha, 1e-300));
   const double f_over_w_max = std::min(run.f_over_w_max, 0.999 * f_cap / w);
@@ -128,7 +128,7 @@ void run_junction(const ContactArgs& args) {
   }
   const double wall = seconds_since(start);
   nlohmann::json j;
-  j["normal_N"] = w;
+  j["normal_load_N"] = w;
   j["hardness_Pa"] = opt.hardness_Pa;
   j["alpha"] = run.alpha;
   j["surface"] = run.surface_kind;

@@ -43,12 +43,6 @@ gap::DiagnosisOptions fitting_options(bool quick, std::uint64_t seed) {
   return o;
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 // The model: [rig] and [friction] of a `tribo rig` config ([drive] and [run] are not used: the
 // drive comes from the data). Rig keys the model leaves out are returned for calibration.
 struct Model {
@@ -106,30 +100,30 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
      << ". Items are split by unit (run, static point, bin after a step) in order of speed: even units train, odd units held out"
      << (d.has_heldout ? "" : " (this bundle has a single unit: held-out numbers are in-sample)") << ".\n\n";
   md << "## Baseline after calibration\n\n";
-  for (const auto& [k, v] : d.calibrated_params) md << "- " << k << " = " << fmt("%.4g", v) << "\n";
-  md << "\nGap (all items) " << fmt("%.4g", d.baseline.gap) << ", held-out " << fmt("%.4g", d.baseline_heldout.gap) << ".\n\n";
+  for (const auto& [k, v] : d.calibrated_params) md << "- " << k << " = " << fmt(v, "%.4g") << "\n";
+  md << "\nGap (all items) " << fmt(d.baseline.gap, "%.4g") << ", held-out " << fmt(d.baseline_heldout.gap, "%.4g") << ".\n\n";
   md << "| observable | gap |\n|---|---|\n";
-  for (const auto& [k, v] : d.baseline.by_observable) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
+  for (const auto& [k, v] : d.baseline.by_observable) md << "| " << k << " | " << fmt(v, "%.4g") << " |\n";
   md << "\n| phase | gap |\n|---|---|\n";
-  for (const auto& [k, v] : d.baseline.by_phase) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
+  for (const auto& [k, v] : d.baseline.by_phase) md << "| " << k << " | " << fmt(v, "%.4g") << " |\n";
   md << "\n| regime / speed | gap |\n|---|---|\n";
-  for (const auto& [k, v] : d.baseline.by_regime) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
-  for (const auto& [k, v] : d.baseline.by_speed) md << "| " << k << " | " << fmt("%.4g", v) << " |\n";
+  for (const auto& [k, v] : d.baseline.by_regime) md << "| " << k << " | " << fmt(v, "%.4g") << " |\n";
+  for (const auto& [k, v] : d.baseline.by_speed) md << "| " << k << " | " << fmt(v, "%.4g") << " |\n";
   md << "\n## Where the gap lies (share of the baseline's squared residual)\n\n| observable | where | share | worst item |\n|---|---|---|---|\n";
   for (std::size_t i = 0; i < d.localization.size() && i < 8; ++i) {
     const auto& l = d.localization[i];
-    md << "| " << l.observable << " | " << l.where << " | " << fmt("%.1f %%", 100.0 * l.share) << " | " << l.worst_item << " |\n";
+    md << "| " << l.observable << " | " << l.where << " | " << fmt(100.0 * l.share, "%.1f %%") << " | " << l.worst_item << " |\n";
   }
   md << "\n## Candidates (best first)\n\n| effect | fitted parameters | train gap | held-out before | held-out after | criterion | earns |\n|---|---|---|---|---|---|---|\n";
   for (const auto& c : d.candidates) {
     std::string params;
-    for (const auto& [k, v] : c.params) params += (params.empty() ? "" : ", ") + k + " = " + fmt("%.3g", v);
-    md << "| " << gap::verdict_name(c.effects) << " | " << params << " | " << fmt("%.4g", c.train_gap) << " | " << fmt("%.4g", c.heldout_gap_before)
-       << " | " << fmt("%.4g", c.heldout_gap_after) << " | " << fmt("%.1f", c.criterion) << " | " << (c.earns ? "yes" : "no") << " |\n";
+    for (const auto& [k, v] : c.params) params += (params.empty() ? "" : ", ") + k + " = " + fmt(v, "%.3g");
+    md << "| " << gap::verdict_name(c.effects) << " | " << params << " | " << fmt(c.train_gap, "%.4g") << " | " << fmt(c.heldout_gap_before, "%.4g")
+       << " | " << fmt(c.heldout_gap_after, "%.4g") << " | " << fmt(c.criterion, "%.1f") << " | " << (c.earns ? "yes" : "no") << " |\n";
   }
-  md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt("%.4g", d.verdict.heldout_gap_before) << " -> "
-     << fmt("%.4g", d.verdict.heldout_gap_after) << " (bootstrap std " << fmt("%.2g", d.verdict.heldout_gap_after_std) << "), confidence "
-     << fmt("%.0f %%", 100.0 * d.verdict.confidence) << ".\n\n";
+  md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt(d.verdict.heldout_gap_before, "%.4g") << " -> "
+     << fmt(d.verdict.heldout_gap_after, "%.4g") << " (bootstrap std " << fmt(d.verdict.heldout_gap_after_std, "%.2g") << "), confidence "
+     << fmt(100.0 * d.verdict.confidence, "%.0f %%") << ".\n\n";
   md << "Plots: `gap_by_observable.png` (bar chart), `items.png` (measured vs simulated, before / after), `overlay.png` (traces).\n";
   return md.str();
 }
@@ -316,7 +310,7 @@ void run_selftest(const SelftestArgs& args) {
   std::printf("\nreliability over both generators (confidence bin -> fraction of verdicts right)\n");
   for (const auto& b : r.reliability)
     std::printf("  [%.1f, %.1f%s  %3d verdicts, %3d right%s\n", b.lower, b.upper, b.upper >= 1.0 ? "]" : ")", b.verdicts, b.right,
-                b.verdicts ? fmt(" (%.0f %%)", 100.0 * b.right / b.verdicts).c_str() : "");
+                b.verdicts ? fmt(100.0 * b.right / b.verdicts, " (%.0f %%)").c_str() : "");
   std::printf("-> %s\n", args.out.c_str());
 }
 

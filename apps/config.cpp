@@ -45,6 +45,10 @@ bool ConfigTable::has(const std::string& key) const { return table_->contains(ke
 
 void ConfigTable::accept(const std::string& key) { read_.insert(key); }
 
+void ConfigTable::refuse_renamed(const std::string& old_key, const std::string& replacement) const {
+  if (has(old_key)) fail(old_key, "was renamed: use '" + replacement + "' instead");
+}
+
 const toml::node* ConfigTable::node(const std::string& key) {
   read_.insert(key);
   return table_->get(key);

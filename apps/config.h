@@ -56,6 +56,9 @@ class ConfigTable {
   bool has(const std::string& key) const;
   // Marks a key as known without reading it (read elsewhere).
   void accept(const std::string& key);
+  // Refuses a key that an earlier version read: an InputError naming the file, the old key and
+  // `replacement`, the key to use now (dotted from the config's root).
+  void refuse_renamed(const std::string& old_key, const std::string& replacement) const;
   // Throws an InputError naming the first key that was never read.
   void finish() const;
 

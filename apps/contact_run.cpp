@@ -9,6 +9,7 @@
 
 #include "apps/config.h"
 #include "apps/provenance.h"
+#include "apps/surface_config.h"
 #include "contact/halfspace.h"
 #include "contact/junction_growth.h"
 #include "contact/reference/hertz.h"
@@ -29,7 +30,7 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
   if (!material) root.fail("material", "table [material] is required");
   if (!load) root.fail("load", "table [load] is required");
 
-  run.surface_kind = surface->choice("kind", "sphere", {"sphere", "gaussian", "file"});
+  run.surface_kind = surface->choice("kind", "gaussian", {"sphere", "gaussian", "file"});
   std::optional<double> size_m;
   std::optional<long long> grid_n;
   if (domain) {
@@ -41,41 +42,26 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
     run.periodic = run.surface_kind != "sphere";
   }
 
-  if (run.surface_kind == "sphere" || run.surface_kind == "gaussian") {
-    if (!size_m) root.fail("domain", "[domain] size_m is required for a " + run.surface_kind + " surface");
-    if (!grid_n) root.fail("domain", "[domain] grid is required for a " + run.surface_kind + " surface");
-    run.grid = contact::Grid::patch(*grid_n, *grid_n, *size_m, *size_m);
-  }
   if (run.surface_kind == "sphere") {
+    if (!size_m) root.fail("domain", "[domain] size_m is required for a sphere");
+    if (!grid_n) root.fail("domain", "[domain] grid is required for a sphere");
+    run.grid = contact::Grid::patch(*grid_n, *grid_n, *size_m, *size_m);
     run.sphere_radius_m = surface->required_number("radius_m", Range::positive);
     run.gap0_m = contact::sphere_gap(run.grid, run.sphere_radius_m);
   } else if (run.surface_kind == "gaussian") {
-    contact::GaussianSurfaceParams p;
-    p.grid = *grid_n;
-    p.size_m = *size_m;
-    const std::string spectrum = surface->choice("spectrum", "self_affine", {"self_affine", "gaussian_acf"});
-    p.kind = spectrum == "self_affine" ? contact::SpectrumKind::self_affine : contact::SpectrumKind::gaussian_acf;
-    p.rms_height_m = surface->number("rms_height_m", 0.0, Range::non_negative);
-    p.rms_slope = surface->number("rms_slope", 0.0, Range::non_negative);
-    p.seed = static_cast<std::uint64_t>(surface->integer("seed", 1, 0));
+    const contact::GaussianSurfaceParams p = read_gaussian_surface(*surface, domain ? &*domain : nullptr);
+    run.grid = contact::Grid::patch(p.grid, p.grid, p.size_m, p.size_m);
     run.seed = p.seed;
-    if (p.kind == contact::SpectrumKind::self_affine) {
-      p.hurst = surface->number("hurst", p.hurst, Range::positive);
-      p.rolloff_wavelength_m = surface->number("rolloff_wavelength_m", 0.0, Range::non_negative);
-      p.cutoff_wavelength_m = surface->number("cutoff_wavelength_m", 0.0, Range::non_negative);
-    } else {
-      p.correlation_length_m = surface->required_number("correlation_length_m", Range::positive);
-      p.correlation_length_across_m = surface->number("correlation_length_across_m", 0.0, Range::non_negative);
-    }
-    const Eigen::ArrayXXd z = input_guard(*surface, "kind", [&] { return contact::gaussian_surface(p); });
+    const Eigen::ArrayXXd z = input_guard(*surface, "spectrum", [&] { return contact::gaussian_surface(p); });
     run.stats = contact::surface_statistics(z, p.size_m, p.size_m);
     run.gap0_m = contact::gap_from_heights(z);
   } else {
-    const std::string rel = surface->required_string("path");
+    surface->refuse_renamed("path", "surface.file");
+    const std::string rel = surface->required_string("file");
     const std::filesystem::path file = std::filesystem::path(rel).is_absolute() ? std::filesystem::path(rel)
                                                                                 : path.parent_path() / rel;
     const double scale = surface->number("height_scale", 1.0, Range::positive);
-    const contact::Topography topo = input_guard(*surface, "path", [&] { return contact::read_topography(file, scale); });
+    const contact::Topography topo = input_guard(*surface, "file", [&] { return contact::read_topography(file, scale); });
     double lx = topo.lx_m, ly = topo.ly_m;
     if (lx == 0.0) {
       if (!size_m) root.fail("domain", "[domain] size_m is required for a surface file without coordinates");
@@ -99,14 +85,16 @@ ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
   if (auto tau = material->optional_number("interface_shear_strength_Pa", Range::positive)) run.tau_i_Pa = *tau;
   material->finish();
 
-  run.normal_N = load->required_number("normal_N", Range::positive);
-  run.tangential_N = load->number("tangential_N", 0.0, Range::non_negative);
+  load->refuse_renamed("normal_N", "load.normal_load_N");
+  run.normal_load_N = load->required_number("normal_load_N", Range::positive);
+  load->refuse_renamed("tangential_N", "load.tangential_load_N");
+  run.tangential_load_N = load->number("tangential_load_N", 0.0, Range::non_negative);
   load->finish();
-  if (run.tangential_N > 0.0 && !run.hardness_Pa) {
-    load->fail("tangential_N", "junction growth under a tangential load needs [material] hardness_Pa");
+  if (run.tangential_load_N > 0.0 && !run.hardness_Pa) {
+    load->fail("tangential_load_N", "junction growth under a tangential load needs [material] hardness_Pa");
   }
-  if (run.hardness_Pa && run.normal_N > *run.hardness_Pa * run.grid.area_m2()) {
-    load->fail("normal_N", "exceeds hardness_Pa * domain area: the whole domain would flow plastically");
+  if (run.hardness_Pa && run.normal_load_N > *run.hardness_Pa * run.grid.area_m2()) {
+    load->fail("normal_load_N", "exceeds hardness_Pa * domain area: the whole domain would flow plastically");
   }
 
   if (auto s = root.table("solver")) {
@@ -160,14 +148,14 @@ ContactSolve solve_contact_run(const ContactRun& run) {
   nlohmann::json j;
   contact::NormalContactResult r;
   int total_iterations = 0;
-  if (run.tangential_N > 0.0) {
+  if (run.tangential_load_N > 0.0) {
     contact::TangentialContactOptions opt;
     opt.hardness_Pa = *run.hardness_Pa;
     opt.alpha = run.alpha;
     opt.interface_shear_strength_Pa = run.tau_i_Pa;
     opt.normal = run.solver;
     const contact::TangentialContactResult t =
-        contact::solve_tangential_load(hs, run.gap0_m, run.normal_N, run.tangential_N, opt);
+        contact::solve_tangential_load(hs, run.gap0_m, run.normal_load_N, run.tangential_load_N, opt);
     r = t.contact;
     total_iterations = t.inner_iterations;
     j["shear_stress_Pa"] = t.shear_stress_Pa;
@@ -176,11 +164,11 @@ ContactSolve solve_contact_run(const ContactRun& run) {
     j["junction_converged"] = t.converged;
     j["junction_message"] = t.message;
     j["junction_solves"] = t.outer_iterations;
-    j["tabor_area_m2"] = contact::tabor_area_m2(run.normal_N, run.tangential_N, run.alpha, *run.hardness_Pa);
+    j["tabor_area_m2"] = contact::tabor_area_m2(run.normal_load_N, run.tangential_load_N, run.alpha, *run.hardness_Pa);
   } else {
     contact::NormalContactOptions opt = run.solver;
     if (run.hardness_Pa) opt.pressure_cap_Pa = *run.hardness_Pa;
-    r = contact::solve_normal_load(hs, run.gap0_m, run.normal_N, opt);
+    r = contact::solve_normal_load(hs, run.gap0_m, run.normal_load_N, opt);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -188,8 +176,8 @@ ContactSolve solve_contact_run(const ContactRun& run) {
   j["grid"] = {run.grid.nx, run.grid.ny};
   j["size_m"] = {run.grid.period_x_m(), run.grid.period_y_m()};
   j["periodic"] = run.periodic;
-  j["normal_N"] = r.normal_load_N;
-  j["tangential_N"] = run.tangential_N;
+  j["normal_load_N"] = r.normal_load_N;
+  j["tangential_load_N"] = run.tangential_load_N;
   j["real_area_m2"] = r.real_area_m2;
   j["area_fraction"] = r.area_fraction;
   j["plastic_area_m2"] = r.plastic_area_m2;
@@ -198,15 +186,15 @@ ContactSolve solve_contact_run(const ContactRun& run) {
   j["approach_m"] = r.approach_m;
   j["converged"] = r.summary.converged;
   // With a tangential load: CG iterations over all the elastic-plastic solves of the fixed point.
-  j["iterations"] = run.tangential_N > 0.0 ? total_iterations : r.summary.iterations;
+  j["iterations"] = run.tangential_load_N > 0.0 ? total_iterations : r.summary.iterations;
   j["residual"] = r.summary.residual;
   j["tolerance"] = run.solver.tolerance;
   j["message"] = r.summary.message;
   j["wall_s"] = wall;
   if (run.surface_kind == "sphere") {
     j["contact_radius_m"] = std::sqrt(r.real_area_m2 / std::numbers::pi);
-    j["hertz_contact_radius_m"] = contact::reference::hertz_contact_radius_m(run.normal_N, run.sphere_radius_m, run.e_star_Pa);
-    j["hertz_peak_pressure_Pa"] = contact::reference::hertz_peak_pressure_Pa(run.normal_N, run.sphere_radius_m, run.e_star_Pa);
+    j["hertz_contact_radius_m"] = contact::reference::hertz_contact_radius_m(run.normal_load_N, run.sphere_radius_m, run.e_star_Pa);
+    j["hertz_peak_pressure_Pa"] = contact::reference::hertz_peak_pressure_Pa(run.normal_load_N, run.sphere_radius_m, run.e_star_Pa);
   }
   if (run.stats) {
     j["surface_rq_m"] = run.stats->rq_m;

@@ -30,7 +30,7 @@ struct ContactRun {
   double e_star_Pa = 0.0;
   std::optional<double> hardness_Pa;
   double alpha = 25.0;
-  double normal_N = 0.0, tangential_N = 0.0;
+  double normal_load_N = 0.0, tangential_load_N = 0.0;
   double tau_i_Pa = std::numeric_limits<double>::infinity();
   contact::NormalContactOptions solver;
   int threads = 0;

@@ -3,38 +3,9 @@
 #include <cmath>
 
 #include "apps/config.h"
+#include "apps/surface_config.h"
 
 namespace tribo::cli {
-namespace {
-
-contact::GaussianSurfaceParams read_gaussian(ConfigTable& s, ConfigTable* domain) {
-  contact::GaussianSurfaceParams p;
-  if (domain) {
-    p.size_m = domain->number("size_m", 1e-3, Range::positive);
-    p.grid = domain->integer("grid", 128, 8, 16384);  // 16384² = the largest surface contact/ reads
-    domain->finish();
-  } else {
-    p.size_m = 1e-3;
-    p.grid = 128;
-  }
-  const std::string spectrum = s.choice("spectrum", "gaussian_acf", {"gaussian_acf", "self_affine"});
-  p.kind = spectrum == "gaussian_acf" ? contact::SpectrumKind::gaussian_acf : contact::SpectrumKind::self_affine;
-  p.rms_height_m = s.required_number("rms_height_m", Range::positive);
-  p.seed = static_cast<std::uint64_t>(s.integer("seed", 1, 0));
-  if (p.kind == contact::SpectrumKind::gaussian_acf) {
-    p.correlation_length_m = s.required_number("correlation_length_m", Range::positive);
-    p.correlation_length_across_m = s.number("correlation_length_across_m", 0.0, Range::non_negative);
-  } else {
-    p.hurst = s.number("hurst", p.hurst, Range::positive);
-    p.rolloff_wavelength_m = s.number("rolloff_wavelength_m", 0.0, Range::non_negative);
-    p.cutoff_wavelength_m = s.number("cutoff_wavelength_m", 0.0, Range::non_negative);
-  }
-  input_guard(s, "spectrum", [&] { contact::validate(p); return 0; });
-  s.finish();
-  return p;
-}
-
-}  // namespace
 
 HomogeniseRun load_homogenise_run(const std::filesystem::path& path) {
   return load_homogenise_run(parse_toml_file(path), path);
@@ -47,9 +18,11 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
 
   auto surface = root.table("surface");
   if (!surface) root.fail("surface", "table [surface] is required (the composite roughness of the pair)");
-  if (surface->string("kind", "gaussian") != "gaussian") surface->fail("kind", "homogenise needs kind = \"gaussian\"");
+  surface->choice("kind", "gaussian", {"gaussian"});
   auto domain = root.table("domain");
-  o.surface = read_gaussian(*surface, domain ? &*domain : nullptr);
+  o.surface = read_gaussian_surface(*surface, domain ? &*domain : nullptr);
+  surface->finish();
+  if (domain) domain->finish();
 
   if (auto m = root.table("material")) {
     o.e_star_Pa = m->number("e_star_Pa", o.e_star_Pa, Range::positive);

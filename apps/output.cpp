@@ -2,7 +2,6 @@
 
 #include <unistd.h>
 
-#include <cmath>
 #include <random>
 #include <stdexcept>
 
@@ -33,13 +32,6 @@ void AtomicFile::commit() {
   stream_.close();
   std::filesystem::rename(tmp_, path_);
   committed_ = true;
-}
-
-std::string fmt(double v, const char* format) {
-  if (!std::isfinite(v)) return "";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
 }
 
 std::string exact(double v) {

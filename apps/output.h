@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "numerics/format.h"
+
 namespace tribo::cli {
 
 // A file written under a temporary name and renamed into place by commit(); destroyed
@@ -29,9 +31,8 @@ class AtomicFile {
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
 
-// A number printed with the printf `format` for reports and CSV fields; "" for NaN or ±∞ (an
-// observable that does not exist, e.g. the period of a run that never oscillates).
-std::string fmt(double v, const char* format = "%.4g");
+// A number for reports and CSV fields: numerics/format.h.
+using numerics::fmt;
 
 // A number with all 17 significant digits: read back, it is the same double.
 std::string exact(double v);

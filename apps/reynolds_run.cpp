@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "apps/config.h"
+#include "apps/surface_config.h"
 #include "contact/normal_contact.h"
 #include "contact/surface.h"
 #include "contact/surface_io.h"
@@ -45,27 +46,6 @@ double read_speed(ConfigTable& root) {
   const double u = t->number("sliding_speed_m_per_s", 0.0, Range::any);
   t->finish();
   return u;
-}
-
-contact::GaussianSurfaceParams read_surface(ConfigTable& t, const std::string& rms_key, double rms_default, int grid,
-                                            double size_default) {
-  contact::GaussianSurfaceParams p;
-  p.grid = grid;
-  p.size_m = t.number("size_m", size_default, Range::positive);
-  const std::string spectrum = t.choice("spectrum", "gaussian_acf", {"gaussian_acf", "self_affine"});
-  p.kind = spectrum == "gaussian_acf" ? contact::SpectrumKind::gaussian_acf : contact::SpectrumKind::self_affine;
-  p.rms_height_m = t.number(rms_key, rms_default, Range::positive);
-  p.seed = static_cast<std::uint64_t>(t.integer("seed", 1, 0));
-  if (p.kind == contact::SpectrumKind::gaussian_acf) {
-    p.correlation_length_m = t.number("correlation_length_m", p.size_m / 16, Range::positive);
-    p.correlation_length_across_m = t.number("correlation_length_across_m", 0.0, Range::non_negative);
-  } else {
-    p.hurst = t.number("hurst", p.hurst, Range::positive);
-    p.rolloff_wavelength_m = t.number("rolloff_wavelength_m", 0.0, Range::non_negative);
-    p.cutoff_wavelength_m = t.number("cutoff_wavelength_m", 0.0, Range::non_negative);
-  }
-  input_guard(t, "spectrum", [&] { contact::validate(p); return 0; });
-  return p;
 }
 
 }  // namespace
@@ -125,21 +105,29 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
   } else {
     // Upper surface: the worn slider; lower: the disc (Appendix V). Both Gaussian, the same
     // spectrum shape, independent seeds (upper = seed + 1), placed by lubrication::rough_pair_film.
+    g->refuse_renamed("contact_load_N", "geometry.normal_load_N");
     const bool rigid = g->has("mean_gap_m");
-    if (rigid == g->has("contact_load_N"))
-      g->fail("mean_gap_m", "give exactly one of mean_gap_m (rigid surfaces) and contact_load_N (deformed by contact)");
+    if (rigid == g->has("normal_load_N"))
+      g->fail("mean_gap_m", "give exactly one of mean_gap_m (rigid surfaces) and normal_load_N (deformed by contact)");
     lub::RoughPairFilmOptions placement;
     if (rigid)
       placement.mean_gap_m = g->required_number("mean_gap_m", Range::positive);
     else
-      placement.contact_load_N = g->required_number("contact_load_N", Range::positive);
+      placement.contact_load_N = g->required_number("normal_load_N", Range::positive);
     placement.composite_modulus_Pa = g->number("composite_modulus_Pa", placement.composite_modulus_Pa, Range::positive);
     placement.hardness_Pa = g->number("hardness_Pa", placement.hardness_Pa, Range::positive);
     placement.contact_gap_fraction = g->number("contact_gap_fraction", placement.contact_gap_fraction, Range::positive);
     // With one placement and positive values read, only the floor fraction's upper bound is left.
     if (std::string why; !placement.is_valid(&why)) g->fail("contact_gap_fraction", why);
     const double upper_rq = g->number("upper_rms_height_m", kSliderRq_m, Range::non_negative);
-    contact::GaussianSurfaceParams p = read_surface(*g, "lower_rms_height_m", kDiscRq_m, n, 1e-3);
+    // The lower surface: [geometry] holds its spectrum keys as [surface] would (surface_config.h),
+    // with its size and rms height under rough-pair names and defaults.
+    contact::GaussianSurfaceParams p;
+    p.grid = n;
+    p.size_m = g->number("size_m", 1e-3, Range::positive);
+    p.rms_height_m = g->number("lower_rms_height_m", kDiscRq_m, Range::positive);
+    read_spectrum(*g, p);
+    input_guard(*g, "spectrum", [&] { contact::validate(p); return 0; });
     const Eigen::ArrayXXd lower = contact::gaussian_surface(p);
     run.seed = p.seed;
     Eigen::ArrayXXd upper = Eigen::ArrayXXd::Zero(lower.rows(), lower.cols());
@@ -149,13 +137,13 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
       q.seed = p.seed + 1;
       upper = contact::gaussian_surface(q);
     }
-    const lub::RoughPairFilm film = input_guard(*g, rigid ? "mean_gap_m" : "contact_load_N", [&] {
+    const lub::RoughPairFilm film = input_guard(*g, rigid ? "mean_gap_m" : "normal_load_N", [&] {
       return lub::rough_pair_film(upper, lower, p.size_m, placement);
     });
     if (film.contact) {
       const contact::NormalContactResult& c = *film.contact;
-      if (!c.summary.converged) g->fail("contact_load_N", "contact solve did not converge: " + c.summary.message);
-      run.geometry.update({{"contact_load_N", *placement.contact_load_N},
+      if (!c.summary.converged) g->fail("normal_load_N", "contact solve did not converge: " + c.summary.message);
+      run.geometry.update({{"normal_load_N", *placement.contact_load_N},
                            {"composite_modulus_Pa", placement.composite_modulus_Pa},
                            {"contact_area_fraction", c.area_fraction},
                            {"contact_mean_gap_m", c.mean_gap_m},
@@ -220,9 +208,13 @@ FlowFactorRun load_flow_factor_run(const std::filesystem::path& path) {
   }
   auto s = sub(root, "surface");
   if (!s) root.fail("surface", "the [surface] table is required");
-  const int grid = static_cast<int>(s->integer("grid", 128, 8));
-  o.surface = read_surface(*s, "rms_height_m", std::hypot(kSliderRq_m, kDiscRq_m), grid, 1e-3);
+  s->choice("kind", "gaussian", {"gaussian"});
+  s->refuse_renamed("size_m", "domain.size_m");
+  s->refuse_renamed("grid", "domain.grid");
+  auto domain = sub(root, "domain");
+  o.surface = read_gaussian_surface(*s, domain ? &*domain : nullptr);
   s->finish();
+  if (domain) domain->finish();
   if (auto h = sub(root, "homogenisation")) {
     if (h->has("gap_ratios")) o.gap_ratios = h->number_array("gap_ratios", Range::positive);
     o.realisations = static_cast<int>(h->integer("realisations", o.realisations, 1));

@@ -37,7 +37,8 @@ struct ReynoldsSolve {
 // The solve `tribo reynolds` performs. Non-convergence is summary["converged"] = false, not an exception.
 ReynoldsSolve solve_reynolds_run(const ReynoldsRun& run);
 
-// `tribo reynolds flow-factors CONFIG.toml`: [surface], [homogenisation], [lubricant], [motion].
+// `tribo reynolds flow-factors CONFIG.toml`: [surface] and [domain] (apps/surface_config.h),
+// [homogenisation], [lubricant], [motion].
 struct FlowFactorRun {
   lubrication::HomogenisationOptions options;
   double lift_contact_gap_fraction = 0.1;

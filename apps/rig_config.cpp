@@ -1,10 +1,9 @@
 #include "apps/rig_config.h"
 
-#include <cmath>
-#include <fstream>
-#include <sstream>
+#include <cstdio>
 #include <stdexcept>
 
+#include "rig/csv_table.h"
 #include "rig/friction_model.h"
 #include "rig/homogenised_law.h"
 #include "rig/kinetic_laws.h"
@@ -15,52 +14,18 @@ namespace {
 // Thesis Fig 5.2.1: v = 2.8e-2 in/s, where μs = 0.26 was measured.
 constexpr double kDefaultDriveSpeed_m_per_s = 7.112e-4;
 
-// A drive history as CSV with a header naming t_s and v_m_per_s (other columns ignored).
+// A drive history as CSV (rig/csv_table.h: the bundle's rules) with columns t_s and v_m_per_s;
+// other columns are ignored with a warning.
 void read_drive_table_csv(const std::filesystem::path& path, std::vector<double>& times, std::vector<double>& speeds) {
-  // Only a regular file: a config naming /dev/zero or a FIFO would never finish reading.
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path.string() + ": cannot read drive table (missing or not a regular file)");
-  std::ifstream in(path);
-  if (!in) throw InputError(path.string() + ": cannot read drive table");
-  std::string line;
-  int t_col = -1, v_col = -1, line_no = 1;
-  auto split = [](const std::string& l) {
-    std::vector<std::string> cells;
-    std::stringstream ss(l);
-    for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-    return cells;
-  };
-  if (!std::getline(in, line)) throw InputError(path.string() + ":1: empty file (expected a header t_s,v_m_per_s)");
-  const auto header = split(line);
-  for (std::size_t i = 0; i < header.size(); ++i) {
-    if (header[i] == "t_s") t_col = static_cast<int>(i);
-    if (header[i] == "v_m_per_s") v_col = static_cast<int>(i);
-  }
-  if (t_col < 0 || v_col < 0) throw InputError(path.string() + ":1: header must name columns t_s and v_m_per_s");
-  while (std::getline(in, line)) {
-    ++line_no;
-    if (line.empty()) continue;
-    const auto cells = split(line);
-    const auto cell = [&](int col) {
-      if (col >= static_cast<int>(cells.size())) {
-        throw InputError(path.string() + ":" + std::to_string(line_no) + ": missing column " + header[col]);
-      }
-      try {
-        std::size_t used = 0;
-        const double v = std::stod(cells[col], &used);
-        if (used != cells[col].size() || !std::isfinite(v)) throw std::invalid_argument("");
-        return v;
-      } catch (const std::exception&) {
-        throw InputError(path.string() + ":" + std::to_string(line_no) + ": " + header[col] + " is not a finite number ('" +
-                         cells[col] + "')");
-      }
-    };
-    times.push_back(cell(t_col));
-    speeds.push_back(cell(v_col));
-    if (speeds.back() < 0.0) throw InputError(path.string() + ":" + std::to_string(line_no) + ": v_m_per_s is negative");
-    if (times.size() > 1 && !(times.back() > times[times.size() - 2])) {
-      throw InputError(path.string() + ":" + std::to_string(line_no) + ": t_s does not increase");
-    }
+  std::vector<std::string> warnings;
+  const rig::CsvTable t = rig::read_csv_table(path, {"t_s", "v_m_per_s"}, warnings);
+  for (const std::string& w : warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
+  const int ct = t.required("t_s"), cv = t.required("v_m_per_s");
+  for (const auto& [line, row] : t.rows) {
+    times.push_back(t.number(line, row, ct));
+    speeds.push_back(t.number(line, row, cv));
+    if (speeds.back() < 0.0) rig::fail_at(path, line, "v_m_per_s is negative");
+    if (times.size() > 1 && !(times.back() > times[times.size() - 2])) rig::fail_at(path, line, "t_s does not increase");
   }
 }
 
@@ -95,7 +60,7 @@ rig::Drive read_drive(ConfigTable* t, std::optional<double> speed) {
     if (t->has("file")) {
       if (!times.empty() || !speeds.empty()) t->fail("file", "give the drive table either inline or as a file, not both");
       const std::filesystem::path file = std::filesystem::path(t->file()).parent_path() / t->string("file", "");
-      read_drive_table_csv(file, times, speeds);
+      input_guard(*t, "file", [&] { read_drive_table_csv(file, times, speeds); return 0; });
     }
     if (times.empty()) t->fail("times_s", "is required for kind = \"" + kind + "\" (or file = \"drive.csv\")");
     drive = input_guard(*t, "times_s", [&] {

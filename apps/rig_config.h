@@ -21,6 +21,7 @@
 #include "rig/drive.h"
 #include "rig/friction_law.h"
 #include "rig/friction_model.h"
+#include "rig/observables.h"
 #include <cstdint>
 #include "rig/parameters.h"
 #include "rig/simulator.h"
@@ -34,7 +35,7 @@ struct RigRun {
   std::shared_ptr<const rig::FrictionLaw> law;
   std::uint64_t seed = 1;                // instrument noise
   rig::SimulationOptions options;
-  double analysis_start_fraction = 0.5;  // observables use the run from this fraction of duration on
+  double analysis_start_fraction = rig::kStartupFraction;  // observables use the run from this fraction of duration on
 };
 
 // Reads and validates a whole config; throws InputError ("file: key 'a.b': reason") on bad input.

@@ -2,7 +2,7 @@
 # (find_package(tribo) → tribo::contact, ...), the `tribo` program, its plotting script and the
 # examples. Layout under the prefix:
 #   lib/libtribo_*.a, lib/cmake/tribo/{triboConfig,triboConfigVersion,triboTargets*}.cmake
-#   include/tribo/{contact,lubrication,rig,homogenise,gap}/...h
+#   include/tribo/{numerics,contact,lubrication,rig,homogenise,gap}/...h
 #   bin/tribo, share/tribo/tribo_plots.py, share/tribo/examples/
 # The program finds the plotting script and examples relative to itself (apps/output.h
 # shipped_file), so the installed tree can be moved.
@@ -15,11 +15,11 @@ set(TRIBO_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/tribo)
 # tribo_gap_independent is exported because tribo_gap links it (static libraries carry their
 # dependencies). Listed by name rather than from tribo_add_library so that a library made for the
 # tree's own use (tests, fuzzing) is not exported by accident.
-install(TARGETS tribo_contact tribo_lubrication tribo_rig tribo_homogenise tribo_gap_independent tribo_gap
+install(TARGETS tribo_numerics tribo_contact tribo_lubrication tribo_rig tribo_homogenise tribo_gap_independent tribo_gap
         EXPORT triboTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(folder contact lubrication rig homogenise gap)
+foreach(folder numerics contact lubrication rig homogenise gap)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${TRIBO_INSTALL_INCLUDEDIR}/${folder}
           FILES_MATCHING PATTERN "*.h")
 endforeach()

@@ -1,29 +1,17 @@
 #include "contact/junction_growth.h"
 
-#include <cvode/cvode.h>
-#include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
-
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
+
+#include "numerics/cvode.h"
 
 namespace tribo::contact {
 namespace {
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("junction ramp: " + what);
-}
-
-void check(int flag, const char* call) {
-  if (flag < 0) throw std::runtime_error(std::string("CVODE: ") + call + " failed with flag " + std::to_string(flag));
-}
-
-template <class T>
-T* check_ptr(T* p, const char* call) {
-  if (p == nullptr) throw std::runtime_error(std::string("CVODE: ") + call + " returned null");
-  return p;
 }
 
 // Dimensionless problem (see header): aⁿ da/ds = √(1 + α f²) − a, f = f0 + r s, root f − a/S.
@@ -47,57 +35,14 @@ int slip_root(sunrealtype s, N_Vector y, sunrealtype* g, void* data) {
   return 0;
 }
 
-// Move-only owner of the SUNDIALS objects of one integration.
-class Cvode {
- public:
-  Cvode() {
-    check(SUNContext_Create(nullptr, &ctx_), "SUNContext_Create");
+// Advances to s_out or to the slip root; returns true at the root.
+bool advance(numerics::Cvode& cv, double s_out, double& s) {
+  const int flag = cv.advance(s_out, s);
+  if (flag < 0) {
+    throw std::runtime_error("junction ramp: CVODE failed at s = " + std::to_string(s) + " with " + numerics::Cvode::describe(flag));
   }
-  ~Cvode() {
-    if (mem_ != nullptr) CVodeFree(&mem_);
-    if (ls_ != nullptr) SUNLinSolFree(ls_);
-    if (a_ != nullptr) SUNMatDestroy(a_);
-    if (y_ != nullptr) N_VDestroy(y_);
-    if (ctx_ != nullptr) SUNContext_Free(&ctx_);
-  }
-  Cvode(const Cvode&) = delete;
-  Cvode& operator=(const Cvode&) = delete;
-
-  void init(Scaled* data, double a0, double rtol) {
-    y_ = check_ptr(N_VNew_Serial(1, ctx_), "N_VNew_Serial");
-    NV_Ith_S(y_, 0) = a0;
-    mem_ = check_ptr(CVodeCreate(CV_BDF, ctx_), "CVodeCreate");
-    check(CVodeInit(mem_, rhs, 0.0, y_), "CVodeInit");
-    check(CVodeSStolerances(mem_, rtol, rtol * a0), "CVodeSStolerances");
-    check(CVodeSetUserData(mem_, data), "CVodeSetUserData");
-    a_ = check_ptr(SUNDenseMatrix(1, 1, ctx_), "SUNDenseMatrix");
-    ls_ = check_ptr(SUNLinSol_Dense(y_, a_, ctx_), "SUNLinSol_Dense");
-    check(CVodeSetLinearSolver(mem_, ls_, a_), "CVodeSetLinearSolver");
-    check(CVodeSetMaxNumSteps(mem_, 100000), "CVodeSetMaxNumSteps");
-    check(CVodeRootInit(mem_, 1, slip_root), "CVodeRootInit");
-    int up = 1;  // stick → slip: F − τ_i A crosses zero upwards
-    check(CVodeSetRootDirection(mem_, &up), "CVodeSetRootDirection");
-  }
-  // Advances to s_out or to the slip root; returns true at the root.
-  bool advance(double s_out, double& s) {
-    const int flag = CVode(mem_, s_out, y_, &s, CV_NORMAL);
-    check(flag, "CVode");
-    return flag == CV_ROOT_RETURN;
-  }
-  double a() const { return NV_Ith_S(y_, 0); }
-  long steps() const {
-    long k = 0;
-    check(CVodeGetNumSteps(mem_, &k), "CVodeGetNumSteps");
-    return k;
-  }
-
- private:
-  SUNContext ctx_ = nullptr;
-  void* mem_ = nullptr;
-  N_Vector y_ = nullptr;
-  SUNMatrix a_ = nullptr;
-  SUNLinearSolver ls_ = nullptr;
-};
+  return flag == CV_ROOT_RETURN;
+}
 
 }  // namespace
 
@@ -149,8 +94,11 @@ JunctionRampResult integrate_junction_ramp(const JunctionRampParams& p) {
   // Slip must occur by f = μs,max (the area never exceeds its equilibrium, see header); a little
   // beyond it bounds the integration.
   const double s_end = (mu_max * (1.0 + 1e-6) - sc.f0) / sc.r;
-  Cvode cv;
-  cv.init(&sc, a0, p.relative_tolerance);
+  // BDF: a slow ramp is stiff — a relaxes to its equilibrium within s ~ aⁿ, the ramp lasts s ~ μs,max / r.
+  const numerics::CvodeSettings settings{numerics::CvodeSettings::Method::bdf, p.relative_tolerance, {p.relative_tolerance * a0}, 100000};
+  numerics::Cvode cv(rhs, &sc, settings, 0.0, std::span<const double>(&a0, 1));
+  const int up = 1;  // stick → slip: F − τ_i A crosses zero upwards
+  cv.set_roots(slip_root, std::span<const int>(&up, 1));
   double s = 0.0;
   bool root = false;
   if (p.trajectory_samples > 0) {
@@ -158,20 +106,20 @@ JunctionRampResult integrate_junction_ramp(const JunctionRampParams& p) {
     out.area_m2.push_back(a0 * w / sigma0);
     out.tangential_load_N.push_back(w * sc.f0);
     for (int k = 1; k <= p.trajectory_samples && !root; ++k) {
-      root = cv.advance(s_end * k / p.trajectory_samples, s);
+      root = advance(cv, s_end * k / p.trajectory_samples, s);
       out.time_s.push_back(s / location);
-      out.area_m2.push_back(cv.a() * w / sigma0);
+      out.area_m2.push_back(cv.state()[0] * w / sigma0);
       out.tangential_load_N.push_back(w * sc.f(s));
     }
   } else {
-    root = cv.advance(s_end, s);
+    root = advance(cv, s_end, s);
   }
   out.steps = cv.steps();
   if (!root) {
     out.message = "no slip before F/W reached the upper asymptote mu_s,max = " + std::to_string(mu_max);
     return out;
   }
-  finish(s, cv.a());
+  finish(s, cv.state()[0]);
   out.message = "slip at t = " + std::to_string(out.slip_time_s) + " s, mu_s = " + std::to_string(out.static_friction);
   return out;
 }

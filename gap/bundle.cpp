@@ -2,130 +2,47 @@
 
 #include <toml++/toml.h>
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <map>
 #include <set>
-#include <sstream>
 #include <stdexcept>
+
+#include "rig/csv_table.h"
 
 namespace tribo::gap {
 namespace {
 
 namespace fs = std::filesystem;
 
-[[noreturn]] void fail(const fs::path& file, long line, const std::string& reason) {
-  std::string where = file.string();
-  if (line > 0) where += ":" + std::to_string(line);
-  throw std::invalid_argument(where + ": " + reason);
-}
-
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return "";
-  return s.substr(b, s.find_last_not_of(" \t\r") - b + 1);
-}
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream ss(line);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
-  if (!line.empty() && line.back() == ',') out.emplace_back();
-  return out;
-}
-
-// A CSV table: header names and rows of cells, each row with its line number. Blank lines and
-// lines starting with '#' are skipped.
-struct CsvTable {
-  fs::path file;
-  std::vector<std::string> header;
-  std::vector<std::pair<long, std::vector<std::string>>> rows;
-
-  int column(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return static_cast<int>(i);
-    return -1;
-  }
-  int required(const std::string& name) const {
-    const int c = column(name);
-    if (c < 0) fail(file, 1, "missing required column '" + name + "'");
-    return c;
-  }
-  double number(long line, const std::vector<std::string>& row, int c) const {
-    const std::string& s = row[static_cast<std::size_t>(c)];
-    if (s.empty()) fail(file, line, "empty value in column '" + header[static_cast<std::size_t>(c)] + "'");
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || errno == ERANGE)
-      fail(file, line, "column '" + header[static_cast<std::size_t>(c)] + "': '" + s + "' is not a number");
-    if (!std::isfinite(v)) fail(file, line, "column '" + header[static_cast<std::size_t>(c)] + "': value is " + s + " (NaN and infinities are rejected)");
-    return v;
-  }
-};
-
-CsvTable read_csv(const fs::path& file, const std::set<std::string>& known, std::vector<std::string>& warnings) {
-  std::ifstream in(file);
-  if (!in) fail(file, 0, "cannot open file");
-  CsvTable t;
-  t.file = file;
-  std::string line;
-  long number = 0;
-  while (std::getline(in, line)) {
-    ++number;
-    const std::string s = trim(line);
-    if (s.empty() || s[0] == '#') continue;
-    if (t.header.empty()) {
-      t.header = split(s);
-      std::set<std::string> seen;
-      for (const auto& h : t.header) {
-        if (h.empty()) fail(file, number, "empty column name in header");
-        if (!seen.insert(h).second) fail(file, number, "duplicate column '" + h + "'");
-        if (!known.count(h)) warnings.push_back(file.string() + ": unknown column '" + h + "' ignored");
-      }
-      continue;
-    }
-    auto cells = split(s);
-    if (cells.size() != t.header.size())
-      fail(file, number, "expected " + std::to_string(t.header.size()) + " values, found " + std::to_string(cells.size()));
-    t.rows.emplace_back(number, std::move(cells));
-  }
-  if (t.header.empty()) fail(file, 0, "empty file (no header)");
-  if (t.rows.empty()) fail(file, 0, "no data rows");
-  return t;
-}
-
 Trace read_trace(const fs::path& file, std::vector<std::string>& warnings) {
   const std::set<std::string> known{"t_s", "x_m", "xdot_m_per_s", "friction_N", "mu", "x_drive_m", "v_drive_m_per_s", "normal_stress_Pa"};
-  const CsvTable t = read_csv(file, known, warnings);
+  const rig::CsvTable t = rig::read_csv_table(file, known, warnings);
   Trace tr;
   const int ct = t.required("t_s");
   const std::vector<std::pair<std::string, std::vector<double>*>> optional_columns{
       {"x_m", &tr.x_m}, {"xdot_m_per_s", &tr.xdot_m_per_s}, {"friction_N", &tr.friction_N}, {"mu", &tr.mu},
       {"x_drive_m", &tr.x_drive_m}, {"v_drive_m_per_s", &tr.v_drive_m_per_s}, {"normal_stress_Pa", &tr.normal_stress_Pa}};
   if (t.column("friction_N") < 0 && t.column("mu") < 0 && t.column("x_m") < 0)
-    fail(file, 1, "missing columns: a trace needs a friction signal (friction_N, mu or x_m)");
+    rig::fail_at(file, 1, "missing columns: a trace needs a friction signal (friction_N, mu or x_m)");
   if (t.column("x_drive_m") >= 0 && t.column("v_drive_m_per_s") < 0)
-    fail(file, 1, "missing column 'v_drive_m_per_s' (x_drive_m is given)");
+    rig::fail_at(file, 1, "missing column 'v_drive_m_per_s' (x_drive_m is given)");
   for (const auto& [line, row] : t.rows) {
     const double time = t.number(line, row, ct);
     if (!tr.t_s.empty() && !(time > tr.t_s.back()))
-      fail(file, line, "time t_s = " + row[static_cast<std::size_t>(ct)] + " is not strictly increasing");
+      rig::fail_at(file, line, "time t_s = " + row[static_cast<std::size_t>(ct)] + " is not strictly increasing");
     tr.t_s.push_back(time);
     for (const auto& [name, column] : optional_columns) {
       const int c = t.column(name);
       if (c < 0) continue;
       const double v = t.number(line, row, c);
-      if (name == "normal_stress_Pa" && v < 0.0) fail(file, line, "negative normal load: normal_stress_Pa = " + row[static_cast<std::size_t>(c)]);
-      if (name == "v_drive_m_per_s" && v < 0.0) fail(file, line, "negative drive speed v_drive_m_per_s = " + row[static_cast<std::size_t>(c)]);
+      if (name == "normal_stress_Pa" && v < 0.0) rig::fail_at(file, line, "negative normal load: normal_stress_Pa = " + row[static_cast<std::size_t>(c)]);
+      if (name == "v_drive_m_per_s" && v < 0.0) rig::fail_at(file, line, "negative drive speed v_drive_m_per_s = " + row[static_cast<std::size_t>(c)]);
       column->push_back(v);
     }
   }
-  if (tr.t_s.size() < 3) fail(file, 0, "a trace needs at least 3 samples");
+  if (tr.t_s.size() < 3) rig::fail_at(file, 0, "a trace needs at least 3 samples");
   return tr;
 }
 
@@ -134,7 +51,7 @@ Trace read_trace(const fs::path& file, std::vector<std::string>& warnings) {
 bool present(const fs::path& file) {
   std::error_code ec;
   if (!fs::exists(file, ec)) return false;
-  if (!fs::is_regular_file(file, ec)) fail(file, 0, "not a regular file");
+  if (!fs::is_regular_file(file, ec)) rig::fail_at(file, 0, "not a regular file");
   return true;
 }
 
@@ -142,9 +59,9 @@ std::optional<double> rig_key(const toml::table& rig, const std::string& key, co
   const toml::node* n = rig.get(key);
   if (!n) return std::nullopt;
   const auto v = n->value<double>();
-  if (!v) fail(file, static_cast<long>(n->source().begin.line), "[rig] " + key + " must be a number");
+  if (!v) rig::fail_at(file, static_cast<long>(n->source().begin.line), "[rig] " + key + " must be a number");
   if (!std::isfinite(*v) || *v < 0.0 || (key != "damping_N_s_per_m" && *v == 0.0))
-    fail(file, static_cast<long>(n->source().begin.line),
+    rig::fail_at(file, static_cast<long>(n->source().begin.line),
          "[rig] " + key + " = " + std::to_string(*v) + (*v < 0.0 ? ": negative" : ": must be positive and finite") +
              (key == "normal_load_N" && *v < 0.0 ? " normal load" : ""));
   return v;
@@ -164,7 +81,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
     try {
       doc = toml::parse_file(toml_file.string());
     } catch (const toml::parse_error& e) {
-      fail(toml_file, static_cast<long>(e.source().begin.line), std::string(e.description()));
+      rig::fail_at(toml_file, static_cast<long>(e.source().begin.line), std::string(e.description()));
     }
     for (const auto& [key, node] : doc) {
       const std::string k(key.str());
@@ -180,7 +97,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
       if (const toml::node* kind = rig->get("kind")) {
         const auto s = kind->value<std::string>();
         if (!s || (*s != "pin_on_disc" && *s != "velocity_step"))
-          fail(toml_file, static_cast<long>(kind->source().begin.line), "[rig] kind must be \"pin_on_disc\" or \"velocity_step\"");
+          rig::fail_at(toml_file, static_cast<long>(kind->source().begin.line), "[rig] kind must be \"pin_on_disc\" or \"velocity_step\"");
         b.kind = *s;
       }
       const std::set<std::string> known{"mass_kg", "stiffness_N_per_m", "damping_N_s_per_m", "normal_load_N", "slider_radius_m", "kind"};
@@ -192,58 +109,58 @@ ExperimentBundle read_bundle(const fs::path& dir) {
 
   const fs::path static_file = dir / "static_friction.csv";
   if (present(static_file)) {
-    const CsvTable t = read_csv(static_file, {"phi_dot_per_s", "mu_s"}, b.warnings);
+    const rig::CsvTable t = rig::read_csv_table(static_file, {"phi_dot_per_s", "mu_s"}, b.warnings);
     const int cp = t.required("phi_dot_per_s"), cm = t.required("mu_s");
     for (const auto& [line, row] : t.rows) {
       StaticPoint p{t.number(line, row, cp), t.number(line, row, cm)};
-      if (!(p.phi_dot_per_s > 0.0)) fail(static_file, line, "phi_dot_per_s must be positive");
-      if (p.mu_s < 0.0) fail(static_file, line, "mu_s must not be negative");
+      if (!(p.phi_dot_per_s > 0.0)) rig::fail_at(static_file, line, "phi_dot_per_s must be positive");
+      if (p.mu_s < 0.0) rig::fail_at(static_file, line, "mu_s must not be negative");
       b.static_points.push_back(p);
     }
   }
 
   const fs::path runs_file = dir / "runs.csv";
   if (present(runs_file)) {
-    const CsvTable t = read_csv(runs_file, {"run_id", "v_m_per_s", "file"}, b.warnings);
+    const rig::CsvTable t = rig::read_csv_table(runs_file, {"run_id", "v_m_per_s", "file"}, b.warnings);
     const int ci = t.required("run_id"), cv = t.required("v_m_per_s"), cf = t.required("file");
     std::set<std::string> ids;
     for (const auto& [line, row] : t.rows) {
       Run r;
       r.run_id = row[static_cast<std::size_t>(ci)];
-      if (r.run_id.empty() || !ids.insert(r.run_id).second) fail(runs_file, line, "run_id must be non-empty and unique");
+      if (r.run_id.empty() || !ids.insert(r.run_id).second) rig::fail_at(runs_file, line, "run_id must be non-empty and unique");
       r.v_m_per_s = t.number(line, row, cv);
-      if (r.v_m_per_s < 0.0) fail(runs_file, line, "negative driven speed v_m_per_s");
+      if (r.v_m_per_s < 0.0) rig::fail_at(runs_file, line, "negative driven speed v_m_per_s");
       r.file = row[static_cast<std::size_t>(cf)];
-      if (r.file.empty()) fail(runs_file, line, "empty file name");
+      if (r.file.empty()) rig::fail_at(runs_file, line, "empty file name");
       // A bundle is self-contained: a trace is named relative to it and stays inside it (an
       // absolute path or '..' would read any file of the machine, /dev/zero included).
       const fs::path rel = fs::path(r.file).lexically_normal();
       if (rel.is_absolute() || rel.has_root_name() || rel.empty() || *rel.begin() == "..")
-        fail(runs_file, line, "trace file '" + r.file + "' must be a path inside the bundle");
+        rig::fail_at(runs_file, line, "trace file '" + r.file + "' must be a path inside the bundle");
       const fs::path trace_file = dir / rel;
       std::error_code ec;
-      if (!fs::exists(trace_file, ec)) fail(runs_file, line, "trace file '" + r.file + "' does not exist");
-      if (!fs::is_regular_file(trace_file, ec)) fail(runs_file, line, "trace file '" + r.file + "' is not a regular file");
+      if (!fs::exists(trace_file, ec)) rig::fail_at(runs_file, line, "trace file '" + r.file + "' does not exist");
+      if (!fs::is_regular_file(trace_file, ec)) rig::fail_at(runs_file, line, "trace file '" + r.file + "' is not a regular file");
       r.trace = read_trace(trace_file, b.warnings);
       if (!r.trace.has_drive_history() && r.trace.xdot_m_per_s.empty() && r.trace.x_m.empty() && !(r.v_m_per_s > 0.0))
-        fail(runs_file, line, "driven speed must be positive");
+        rig::fail_at(runs_file, line, "driven speed must be positive");
       b.runs.push_back(std::move(r));
     }
   }
 
   const fs::path regimes_file = dir / "regimes.csv";
   if (present(regimes_file)) {
-    const CsvTable t = read_csv(regimes_file, {"v_m_per_s", "regime", "amplitude_m", "frequency_rad_per_s"}, b.warnings);
+    const rig::CsvTable t = rig::read_csv_table(regimes_file, {"v_m_per_s", "regime", "amplitude_m", "frequency_rad_per_s"}, b.warnings);
     const int cv = t.required("v_m_per_s"), cr = t.required("regime");
     const int ca = t.column("amplitude_m"), cw = t.column("frequency_rad_per_s");
     const std::set<std::string> regimes{"stick_slip", "multi_cycle_slip", "quasi_harmonic", "steady_sliding", "stuck"};
     for (const auto& [line, row] : t.rows) {
       RegimePoint p;
       p.v_m_per_s = t.number(line, row, cv);
-      if (!(p.v_m_per_s > 0.0)) fail(regimes_file, line, "v_m_per_s must be positive");
+      if (!(p.v_m_per_s > 0.0)) rig::fail_at(regimes_file, line, "v_m_per_s must be positive");
       p.regime = row[static_cast<std::size_t>(cr)];
       if (!regimes.count(p.regime))
-        fail(regimes_file, line, "unknown regime '" + p.regime + "' (stick_slip, multi_cycle_slip, quasi_harmonic, steady_sliding, stuck)");
+        rig::fail_at(regimes_file, line, "unknown regime '" + p.regime + "' (stick_slip, multi_cycle_slip, quasi_harmonic, steady_sliding, stuck)");
       p.amplitude_m = ca >= 0 ? t.number(line, row, ca) : std::nan("");
       p.frequency_rad_per_s = cw >= 0 ? t.number(line, row, cw) : std::nan("");
       b.regimes.push_back(p);

@@ -11,8 +11,9 @@
 //                         friction_N, mu or x_m)
 //   regimes.csv           v_m_per_s,regime,amplitude_m,frequency_rad_per_s   (optional)
 //
-// Any subset may be present (at least one of the three data files). Unknown columns are ignored
-// with a warning; malformed files throw std::invalid_argument naming file, line and reason.
+// Any subset may be present (at least one of the three data files). The CSV files are read by
+// rig/csv_table.h's rules: unknown columns are ignored with a warning; malformed files throw
+// std::invalid_argument naming file, line and reason.
 #pragma once
 
 #include <filesystem>

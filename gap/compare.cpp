@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <map>
 #include <numeric>
 #include <stdexcept>
 
+#include "numerics/format.h"
 #include "rig/drive.h"
 #include "rig/instrument.h"
 #include "rig/observables.h"
@@ -15,7 +15,6 @@ namespace tribo::gap {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kWindowStartFraction = 0.3;  // analysis skips the first 30 % of a run
 constexpr int kSlipDropPoints = 4;
 constexpr int kStepBins = 24;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
@@ -32,12 +31,6 @@ using Features = std::map<std::string, double>;
 struct Signal {
   std::vector<double> t, mu, x, x_drive;  // x, x_drive may be empty
 };
-
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
 
 double interp(const std::vector<double>& t, const std::vector<double>& y, double at) {
   if (at <= t.front()) return y.front();
@@ -161,7 +154,7 @@ Extremum locate_extremum(const SmoothedSignal& S, double ta, double tb, bool max
 // `slip_step_s` ≤ 0 asks for the measured Δ (returned through it).
 Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_step_s, std::string* regime) {
   Features f;
-  const double t0 = s.t.front() + kWindowStartFraction * (s.t.back() - s.t.front());
+  const double t0 = rig::analysis_start_s(s.t.front(), s.t.back());
   std::vector<std::size_t> idx;
   for (std::size_t i = 0; i < s.t.size(); ++i)
     if (s.t[i] >= t0) idx.push_back(i);
@@ -253,11 +246,11 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
 // contiguous blocks, each analysed as a run of its own (same sampling, same slip-drop Δ); the
 // blocks' scatter / √blocks is the standard error of the whole window's feature.
 Features block_noise(const Signal& s, double spacing_s, double slip_step_s) {
-  const double t0 = s.t.front() + kWindowStartFraction * (s.t.back() - s.t.front());
+  const double t0 = rig::analysis_start_s(s.t.front(), s.t.back());
   const double block = (s.t.back() - t0) / kNoiseBlocks;
-  // The analysis skips the first kWindowStartFraction of what it is given: each block's signal
-  // starts that much earlier, so that the part analysed is the block itself.
-  const double lead = block * kWindowStartFraction / (1.0 - kWindowStartFraction);
+  // The analysis skips the start-up window of what it is given: each block's signal starts that
+  // much earlier, so that the part analysed is the block itself.
+  const double lead = block * rig::kStartupFraction / (1.0 - rig::kStartupFraction);
   std::map<std::string, std::vector<double>> values;
   for (int b = 0; b < kNoiseBlocks; ++b) {
     const double from = t0 + b * block - lead, to = t0 + (b + 1) * block;
@@ -529,7 +522,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
         const std::string key = "steady_mu_" + std::to_string(k);
         if (f.count(key) && std::isfinite(f.at(key)))
-          add("steady_mu", 0, plan.label + ", v = " + fmt("%.3g", plan.step_speeds_m_per_s[k]) + " m/s", "steady_sliding",
+          add("steady_mu", 0, plan.label + ", v = " + numerics::fmt(plan.step_speeds_m_per_s[k], "%.3g") + " m/s", "steady_sliding",
               plan.step_speeds_m_per_s[k], units_++, f.at(key), key, noise);
         if (k == 0) continue;
         const auto& edges = plan.step_bin_edges_m[k - 1];
@@ -537,7 +530,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
           const std::string bin_key = "after_step_" + std::to_string(k) + "_" + std::to_string(j);
           if (!f.count(bin_key)) continue;
           add("mu_after_step", j,
-              fmt("%.3g", edges[static_cast<std::size_t>(j)] * 1e6) + "-" + fmt("%.3g", edges[static_cast<std::size_t>(j) + 1] * 1e6) +
+              numerics::fmt(edges[static_cast<std::size_t>(j)] * 1e6, "%.3g") + "-" + numerics::fmt(edges[static_cast<std::size_t>(j) + 1] * 1e6, "%.3g") +
                   " um after step " + std::to_string(k),
               "steady_sliding", plan.step_speeds_m_per_s[k], units_++, f.at(bin_key), bin_key, noise);
         }
@@ -551,13 +544,13 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       plan.slip_step_s = step;
       const Features noise = block_noise(s, plan.sample_spacing_s, step);
       plans_.push_back(plan);
-      const std::string where = "v = " + fmt("%.3g", run.v_m_per_s) + " m/s";
+      const std::string where = "v = " + numerics::fmt(run.v_m_per_s, "%.3g") + " m/s";
       const int unit = units_++;
       for (const auto& [key, value] : f) {
         if (!std::isfinite(value)) continue;
         if (key.rfind("slip_drop_", 0) == 0) {
           const int j = std::stoi(key.substr(10));
-          add("slip_drop", j, where + ", slip onset + " + std::to_string(j) + " x " + fmt("%.3g", step) + " s", regime, run.v_m_per_s, unit, value, key, noise);
+          add("slip_drop", j, where + ", slip onset + " + std::to_string(j) + " x " + numerics::fmt(step, "%.3g") + " s", regime, run.v_m_per_s, unit, value, key, noise);
         } else {
           add(key, 0, where, regime, run.v_m_per_s, unit, value, key, noise);
         }
@@ -570,7 +563,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
   for (const StaticPoint& p : points) {
     RunPlan plan;
     plan.kind = RunPlan::Kind::static_point;
-    plan.label = "phi_dot = " + fmt("%.3g", p.phi_dot_per_s) + " 1/s";
+    plan.label = "phi_dot = " + numerics::fmt(p.phi_dot_per_s, "%.3g") + " 1/s";
     plan.v_m_per_s = p.phi_dot_per_s;  // a load rate; the speed follows from the simulated rig's k and W
     plan.duration_s = (2.0 * p.mu_s + 0.2) / p.phi_dot_per_s;
     plans_.push_back(plan);
@@ -582,7 +575,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
   for (const RegimePoint& p : regimes) {
     RunPlan plan;
     plan.kind = RunPlan::Kind::regime_point;
-    plan.label = "v = " + fmt("%.3g", p.v_m_per_s) + " m/s";
+    plan.label = "v = " + numerics::fmt(p.v_m_per_s, "%.3g") + " m/s";
     plan.regime = p.regime;
     plan.v_m_per_s = p.v_m_per_s;
     plans_.push_back(plan);
@@ -711,7 +704,7 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
           options.duration_s = std::clamp(6.0 * mu_scale * W / (k * plan.v_m_per_s) + 1.0, 1.0, 60.0);
           const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(plan.v_m_per_s), *law, options);
           if (!r.summary.completed) break;
-          const rig::RunObservables o = rig::summarise(rig, r.samples, r.events, 0.5 * r.summary.end_time_s);
+          const rig::RunObservables o = rig::summarise(rig, r.samples, r.events, rig::analysis_start_s(0.0, r.summary.end_time_s));
           f["regime_mismatch"] = o.regime == plan.regime ? 0.0 : 1.0;
           f["amplitude_m"] = 0.5 * o.peak_to_peak_m;
           if (std::isfinite(o.period_s) && o.period_s > 0.0) f["frequency_rad_per_s"] = 2.0 * M_PI / o.period_s;

@@ -27,7 +27,7 @@
 // analysed as a run of its own; an item's noise is the blocks' standard deviation / √blocks. A
 // step bin's is the record's high-pass noise / √(samples in the bin); a steady level's the
 // scatter of four sub-window means / 2.
-// Runs use the part of the trace after 30 % of its duration (start-up transient excluded), with μ
+// Runs use the part of the trace after the start-up window (rig::analysis_start_s), with μ
 // averaged over ±2 measured sample spacings in time; extrema are the maxima and minima of that
 // smoothed μ, located between samples, and an extremum cut by the window's start is left out.
 #pragma once

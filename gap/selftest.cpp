@@ -9,6 +9,7 @@
 #include "gap/independent/generator.h"
 #include "rig/drive.h"
 #include "rig/instrument.h"
+#include "rig/observables.h"
 #include "rig/simulator.h"
 
 namespace tribo::gap {
@@ -98,7 +99,7 @@ ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::Fri
     double phi_sum = 0.0, mu_sum = 0.0;
     int breakaways = 0;
     for (const rig::Event& e : r.events) {
-      if (e.kind != rig::EventKind::breakaway || e.t_s < 0.3 * o.duration_s) continue;
+      if (e.kind != rig::EventKind::breakaway || e.t_s < rig::analysis_start_s(0.0, o.duration_s)) continue;
       phi_sum += e.load_rate_per_s;
       mu_sum += rig::breakaway_reading(instrument, e.mu) + noise(rng) / rig.normal_load_N;
       ++breakaways;

@@ -111,22 +111,35 @@ FrictionModel coulomb(double mu_s, double mu_k) {
   return m;
 }
 
-void FrictionModel::add(const std::string& effect) {
-  if (has(effect)) return;
+const std::vector<double>* FrictionModel::values_of(const std::string& name) const {
+  if (name == kInstrument) return instrument ? &*instrument : nullptr;
+  const auto it = effects.find(name);
+  return it == effects.end() ? nullptr : &it->second;
+}
+
+bool FrictionModel::has(const std::string& name) const { return values_of(name) != nullptr; }
+
+void FrictionModel::add(const std::string& name) {
+  if (has(name)) return;
   std::vector<double> values;
-  for (const auto& p : effect_info(effect).parameters) values.push_back(p.default_value);
-  effects[effect] = values;
+  for (const auto& p : effect_info(name).parameters) values.push_back(p.default_value);
+  if (name == kInstrument) {
+    instrument = std::move(values);
+  } else {
+    effects[name] = std::move(values);
+  }
 }
 
-double FrictionModel::get(const std::string& effect, const std::string& parameter) const {
-  const auto it = effects.find(effect);
-  if (it == effects.end()) throw std::invalid_argument("friction model has no effect '" + effect + "'");
-  return it->second.at(index_of(effect_info(effect), parameter));
+double FrictionModel::get(const std::string& name, const std::string& parameter) const {
+  const std::vector<double>* values = values_of(name);
+  if (values == nullptr) throw std::invalid_argument("friction model has no effect '" + name + "'");
+  return values->at(index_of(effect_info(name), parameter));
 }
 
-void FrictionModel::set(const std::string& effect, const std::string& parameter, double value) {
-  add(effect);
-  effects[effect].at(index_of(effect_info(effect), parameter)) = value;
+void FrictionModel::set(const std::string& name, const std::string& parameter, double value) {
+  add(name);
+  const std::size_t i = index_of(effect_info(name), parameter);
+  (name == kInstrument ? *instrument : effects[name]).at(i) = value;
 }
 
 void validate(const FrictionModel& m) {
@@ -141,7 +154,7 @@ void validate(const FrictionModel& m) {
       }
     }
   }
-  for (const auto& [name, values] : m.effects) {
+  auto check = [&](const std::string& name, const std::vector<double>& values) {
     const EffectInfo& info = effect_info(name);
     if (values.size() != info.parameters.size()) bad(name + ": expected " + std::to_string(info.parameters.size()) + " parameters");
     for (std::size_t i = 0; i < values.size(); ++i) {
@@ -151,7 +164,9 @@ void validate(const FrictionModel& m) {
             std::to_string(p.lower) + ", " + std::to_string(p.upper) + "] " + p.unit);
       }
     }
-  }
+  };
+  for (const auto& [name, values] : m.effects) check(name, values);
+  if (m.instrument) check(kInstrument, *m.instrument);
 }
 
 std::optional<contact::JunctionLocus> junction_locus(const FrictionModel& m) {

@@ -10,6 +10,7 @@
 //   squeeze_film           a film carries load near U = 0, thesis (3.2.2), Appendix III
 //   hydrodynamic_lift      rugosity lift unloads the solid contact as U rises, thesis §5.2a
 //   thermal_thinning       viscous traction with η falling as the film heats, (3.2.3)–(3.2.5), (5.2.2)
+// and, not a friction effect but catalogued alike (configs list it, the diagnosis fits it):
 //   instrument             gain, phase lag, noise of the measured friction, thesis §4.2–4.3
 #pragma once
 
@@ -50,18 +51,27 @@ struct BaselineLaw {
   std::shared_ptr<const HomogenisedBase> homogenised;
 };
 
+// The catalogue name of the measuring instrument (rig/instrument.h).
+inline constexpr const char* kInstrument = "instrument";
+
 struct FrictionModel {
   BaselineLaw baseline;
-  // Effect name → parameter values in the order of its catalogue entry. "instrument" is kept
-  // here too but acts on the measurement, not on the law (see instrument.h).
+  // Friction effect name → parameter values in the order of its catalogue entry.
   std::map<std::string, std::vector<double>> effects;
+  // The measuring instrument's parameter values (catalogue order), when the model has one. Apart
+  // from `effects`: it acts on the reading, never on the law the rig integrates.
+  std::optional<std::vector<double>> instrument;
 
-  bool has(const std::string& effect) const { return effects.count(effect) != 0; }
-  // Adds an effect with its default parameters (no-op if present).
-  void add(const std::string& effect);
-  // Named parameter access, "effect.parameter"; throws std::invalid_argument for unknown names.
-  double get(const std::string& effect, const std::string& parameter) const;
-  void set(const std::string& effect, const std::string& parameter, double value);
+  // By catalogue name, an effect or kInstrument alike.
+  bool has(const std::string& name) const;
+  // Adds an effect (or the instrument) with its default parameters (no-op if present).
+  void add(const std::string& name);
+  // Named parameter access, "name.parameter"; throws std::invalid_argument for unknown names.
+  double get(const std::string& name, const std::string& parameter) const;
+  void set(const std::string& name, const std::string& parameter, double value);
+
+ private:
+  const std::vector<double>* values_of(const std::string& name) const;
 };
 
 // The traditional model the diagnosis starts from: constant μs and μk, no effects (DESIGN §8).

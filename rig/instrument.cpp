@@ -8,10 +8,10 @@ namespace tribo::rig {
 InstrumentModel instrument_from(const FrictionModel& model, std::uint64_t seed) {
   InstrumentModel m;
   m.seed = seed;
-  if (model.has("instrument")) {
-    m.gain = model.get("instrument", "gain");
-    m.lag_s = model.get("instrument", "lag_s");
-    m.noise_N = model.get("instrument", "noise_N");
+  if (model.instrument) {
+    m.gain = model.get(kInstrument, "gain");
+    m.lag_s = model.get(kInstrument, "lag_s");
+    m.noise_N = model.get(kInstrument, "noise_N");
   }
   return m;
 }

@@ -1,6 +1,6 @@
 // The friction instrument of the thesis (§4.2–4.3, Appendix IV): displacement and acceleration
 // signals summed electrically, F_meas/k = x + ẍ/ω_n² (4.2.3), which neglects the damping force
-// r ẋ. The `instrument` effect adds what a real channel does:
+// r ẋ. A model's instrument (FrictionModel::instrument) adds what a real channel does:
 //
 //     F_meas(t) = g · k · [ x(t) + ẍ(t − τ) / ω_n² ] + n(t),
 //
@@ -24,7 +24,7 @@ struct InstrumentModel {
   std::uint64_t seed = 1;
 };
 
-// From the model's "instrument" effect if present, else the ideal (4.2.3) instrument.
+// The model's instrument if it has one, else the ideal (4.2.3) instrument.
 InstrumentModel instrument_from(const FrictionModel& model, std::uint64_t seed);
 
 // The friction coefficient the channel shows at a breakaway, without noise: the slider has been at

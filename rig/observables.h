@@ -16,6 +16,17 @@
 
 namespace tribo::rig {
 
+// The start-up window: every analysis of a run — its regime and observables here, the sweeps, the
+// gap diagnosis' features of measured and simulated records alike — skips the first
+// kStartupFraction of it, where the start-up transient (the slider taken from rest to the drive
+// speed) has not died away.
+inline constexpr double kStartupFraction = 0.5;
+
+// Where the analysed part of a record over [t_begin_s, t_end_s] starts.
+inline double analysis_start_s(double t_begin_s, double t_end_s) {
+  return t_begin_s + kStartupFraction * (t_end_s - t_begin_s);
+}
+
 struct RunObservables {
   std::string regime;
   double window_start_s = 0.0;        // observables use samples and events from here on
@@ -32,8 +43,8 @@ struct RunObservables {
   int reversals = 0;
 };
 
-// Summarises the part of a run after `window_start_s` (e.g. the second half, past the start-up
-// transient). Needs samples ordered in time.
+// Summarises the part of a run after `window_start_s` (usually analysis_start_s(0, end of run)).
+// Needs samples ordered in time.
 RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& samples,
                          const std::vector<Event>& events, double window_start_s);
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "rig/internal/cvode_integrator.h"
+#include "numerics/cvode.h"
 
 namespace tribo::rig {
 
@@ -188,7 +188,10 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     m.direction = u0 > 0.0 ? +1 : -1;
   }
 
-  internal::CvodeIntegrator cv(n, rhs_callback, root_callback, &m, options.relative_tolerance, atol);
+  // Adams–Moulton: the rig is a lightly damped oscillator, non-stiff; Newton with a dense
+  // Jacobian keeps the corrector robust across friction jumps.
+  const numerics::CvodeSettings settings{numerics::CvodeSettings::Method::adams, options.relative_tolerance, atol, 200000};
+  numerics::Cvode cv(rhs_callback, &m, settings, 0.0, y);
   SimulationSummary summary;
   double t = 0.0;
 
@@ -297,7 +300,9 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     }
     const double t_stop = std::min(t_end, drive.next_breakpoint_s(t));
     const std::vector<int> directions = m.phase == Phase::stick ? std::vector<int>{-1, -1} : std::vector<int>{-1};
-    cv.restart(t, y, directions, t_stop);
+    cv.restart(t, y);
+    cv.set_roots(root_callback, directions);
+    cv.set_stop_time(t_stop);
     const double dt_phase = m.phase == Phase::stick ? dt_stick : dt_slip;
     if (next_sample <= t || next_sample > t + dt_phase) next_sample = t + dt_phase;
     while (true) {
@@ -305,7 +310,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
       double t_reached = t;
       const int flag = cv.advance(t_out, t_reached);
       if (flag < 0) {
-        summary.message = "CVODE failed at t = " + std::to_string(t_reached) + " s with code " + std::to_string(flag) +
+        summary.message = "CVODE failed at t = " + std::to_string(t_reached) + " s with " + numerics::Cvode::describe(flag) +
                           (m.callback_error.empty() ? "" : " (" + m.callback_error + ")");
         summary.end_time_s = t;
         summary.integrator_steps += cv.steps();
@@ -316,7 +321,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
       if (flag == CV_ROOT_RETURN) {
         emit_sample();  // the state at the event, before the switch: times stay strictly increasing
         if (m.phase == Phase::stick) {
-          const auto found = cv.roots_found(2);
+          const auto found = cv.roots_found();
           breakaway(found[0] != 0 ? +1 : -1);
         } else {
           velocity_match();

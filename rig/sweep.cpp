@@ -25,7 +25,7 @@ std::vector<SweepPoint> sweep_drive_speeds(const RigParameters& rig, const Frict
     if (options.duration_for) opt.duration_s = options.duration_for(speeds[i]);
     p.result = simulate(rig, Drive::constant(speeds[i]), law, opt);
     p.observables = summarise(rig, p.result.samples, p.result.events,
-                              options.analysis_start_fraction * p.result.summary.end_time_s);
+                              analysis_start_s(0.0, p.result.summary.end_time_s));
     if (options.on_point_done) {
 #pragma omp critical(tribo_sweep_progress)
       options.on_point_done(p);

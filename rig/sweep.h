@@ -22,7 +22,6 @@ struct SweepPoint {
 struct SweepOptions {
   SimulationOptions simulation;       // duration_s is replaced by duration_for(v) when set
   std::function<double(double)> duration_for;
-  double analysis_start_fraction = 0.4;
   int threads = 0;                    // 0: OpenMP's default
   std::function<void(const SweepPoint&)> on_point_done;  // called under a lock, in completion order
 };

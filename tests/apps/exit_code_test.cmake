@@ -21,11 +21,20 @@ endif()
 
 # The same contract for the contact and Reynolds commands.
 file(WRITE ${WORK}/bad_contact.toml "[surface]\nkind = \"sphere\"\nradius_m = -0.01\n[domain]\nsize_m = 1e-3\ngrid = 64\n"
-  "[material]\ne_star_Pa = 1.137e11\n[load]\nnormal_N = 1.0\n")
+  "[material]\ne_star_Pa = 1.137e11\n[load]\nnormal_load_N = 1.0\n")
 execute_process(COMMAND ${TRIBO} contact ${WORK}/bad_contact.toml --out ${WORK}/out_contact
                 RESULT_VARIABLE status3 ERROR_VARIABLE err3)
 if(NOT status3 EQUAL 2 OR NOT err3 MATCHES "radius_m" OR EXISTS ${WORK}/out_contact)
   message(FATAL_ERROR "tribo contact, negative radius: expected status 2 naming radius_m and no output, got ${status3}: ${err3}")
+endif()
+# A key renamed by issue 18 is refused with the name to use now, not taken for a typo.
+file(WRITE ${WORK}/old_key_contact.toml "[surface]\nkind = \"sphere\"\nradius_m = 0.01\n[domain]\nsize_m = 1e-3\ngrid = 64\n"
+  "[material]\ne_star_Pa = 1.137e11\n[load]\nnormal_N = 1.0\n")
+execute_process(COMMAND ${TRIBO} contact ${WORK}/old_key_contact.toml --out ${WORK}/out_old_key
+                RESULT_VARIABLE status5 ERROR_VARIABLE err5)
+if(NOT status5 EQUAL 2 OR NOT err5 MATCHES "old_key_contact.toml: key 'load.normal_N'.*'load.normal_load_N'"
+   OR EXISTS ${WORK}/out_old_key)
+  message(FATAL_ERROR "tribo contact, old key normal_N: expected status 2 naming load.normal_load_N and no output, got ${status5}: ${err5}")
 endif()
 file(WRITE ${WORK}/bad_reynolds.toml "[geometry]\nkind = \"parallel_discs\"\ngap_m = 0.0\n")
 execute_process(COMMAND ${TRIBO} reynolds ${WORK}/bad_reynolds.toml --out ${WORK}/out_reynolds

@@ -8,6 +8,7 @@
 
 #include "gap/compare.h"
 #include "gap/diagnosis.h"
+#include "rig/observables.h"
 
 namespace tribo::gap {
 namespace {
@@ -28,9 +29,9 @@ Run steady_run(const std::string& id, double v_m_per_s, double mu0, double sigma
 // The block estimate is the standard error of the window's mean: for white noise of std σ over
 // N samples, E[noise²] = σ² / N. Four blocks give a variance estimate with 3 degrees of freedom
 // (relative std √(2/3) ≈ 0.82 per record), so 400 records pin the mean of noise² N / σ² to 1 ± 0.04
-// (one std); 12 % is three of those. A scatter taken over the whole run instead of its 70 %
-// window would be off by the ratio of the sample counts (−30 %), one blind to the blocks'
-// separation (the std of samples) off by √N.
+// (one std); 12 % is three of those. A scatter taken over the whole run instead of its window
+// (the part after the start-up window) would be off by the ratio of the sample counts (−50 %), one
+// blind to the blocks' separation (the std of samples) off by √N.
 TEST(NoiseFloor, BlockNoiseOfASteadyRecordIsTheStandardErrorOfItsMean) {
   // σ small enough that the smoothed record's range stays below the 5 % of μ that would make the
   // analysis look for stick-slip extrema in it.
@@ -46,8 +47,8 @@ TEST(NoiseFloor, BlockNoiseOfASteadyRecordIsTheStandardErrorOfItsMean) {
     const Comparison c(b, rig::RigParameters{});
     ASSERT_EQ(c.items().size(), 1u);
     ASSERT_EQ(c.items().front().observable, "mean_mu");
-    // The mean is taken on the smoothed record read every spacing over the window (the last 70 %).
-    window_samples = static_cast<std::size_t>(std::floor(0.7 * duration / dt)) + 1;
+    // The mean is taken on the smoothed record read every spacing over the window.
+    window_samples = static_cast<std::size_t>(std::floor((1.0 - rig::kStartupFraction) * duration / dt)) + 1;
     sum += c.items().front().noise * c.items().front().noise;
   }
   EXPECT_NEAR(sum / records * static_cast<double>(window_samples) / (sigma * sigma), 1.0, 0.12);

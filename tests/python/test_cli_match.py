@@ -37,7 +37,7 @@ class Contact(CliMatch):
         py = tribo.contact_from_toml(cfg)
         s = py["summary"]
         for key in ("area_fraction", "real_area_m2", "plastic_area_m2", "max_pressure_Pa", "mean_gap_m", "approach_m",
-                    "shear_stress_Pa", "pressure_cap_Pa", "surface_rq_m", "surface_rms_slope", "normal_N"):
+                    "shear_stress_Pa", "pressure_cap_Pa", "surface_rq_m", "surface_rms_slope", "normal_load_N"):
             self.assertClose(s[key], cli[key], key)
         self.assertEqual(s["iterations"], cli["iterations"])
         self.assertEqual(s["converged"], cli["converged"])

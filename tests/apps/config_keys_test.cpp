@@ -1,0 +1,128 @@
+// One set of key names and one [surface] reader (issue 18): keys renamed for one name per quantity
+// (`file` for a file, `normal_load_N` for the normal load) are refused with a message naming the
+// file, the old key and the new one; the three commands that read a generated [surface] read the
+// same surface from the same table; a drive table follows the bundle's CSV rules.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <string>
+
+#include "apps/config.h"
+#include "apps/contact_run.h"
+#include "apps/homogenise_config.h"
+#include "apps/reynolds_run.h"
+#include "apps/rig_config.h"
+#include "contact/surface.h"
+
+namespace tribo::cli {
+namespace {
+
+// Files of one test folder, beside each other: a config names its data files relative to itself.
+std::filesystem::path write_file(const std::string& name, const std::string& text) {
+  static const std::filesystem::path dir = [] {
+    auto d = std::filesystem::temp_directory_path() / "tribo_config_keys_tests";
+    std::filesystem::create_directories(d);
+    return d;
+  }();
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+template <class Load>
+std::string error_of(Load load) {
+  try {
+    load();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_all(const std::string& message, std::initializer_list<std::string> fragments) {
+  EXPECT_FALSE(message.empty()) << "accepted";
+  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
+}
+
+const std::string kSphere = "[surface]\nkind = \"sphere\"\nradius_m = 0.01\n[domain]\nsize_m = 1e-3\ngrid = 32\n"
+                            "[material]\ne_star_Pa = 1.137e11\nhardness_Pa = 1.18e9\n";
+
+TEST(RenamedKeys, ContactNormalAndTangentialLoadsNameTheNewKeys) {
+  const auto normal = write_file("contact-normal.toml", kSphere + "[load]\nnormal_N = 1.0\n");
+  expect_all(error_of([&] { load_contact_run(normal, false); }),
+             {normal.string(), "key 'load.normal_N'", "use 'load.normal_load_N'"});
+  const auto tangential = write_file("contact-tangential.toml", kSphere + "[load]\nnormal_load_N = 1.0\ntangential_N = 0.1\n");
+  expect_all(error_of([&] { load_contact_run(tangential, false); }),
+             {tangential.string(), "key 'load.tangential_N'", "use 'load.tangential_load_N'"});
+  const ContactRun run = load_contact_run(write_file("contact-new.toml", kSphere + "[load]\nnormal_load_N = 1.0\n"), false);
+  EXPECT_EQ(run.normal_load_N, 1.0);
+}
+
+TEST(RenamedKeys, ContactSurfaceFileIsFileNotPath) {
+  write_file("heights.txt", "0 1\n1 0\n");
+  const std::string rest = "[domain]\nsize_m = 1e-3\n[material]\ne_star_Pa = 1.137e11\n[load]\nnormal_load_N = 1e-3\n";
+  const auto old = write_file("contact-path.toml", "[surface]\nkind = \"file\"\npath = \"heights.txt\"\n" + rest);
+  expect_all(error_of([&] { load_contact_run(old, false); }), {old.string(), "key 'surface.path'", "use 'surface.file'"});
+  const ContactRun run =
+      load_contact_run(write_file("contact-file.toml", "[surface]\nkind = \"file\"\nfile = \"heights.txt\"\n" + rest), false);
+  EXPECT_EQ(run.grid.nx, 2);
+}
+
+TEST(RenamedKeys, RoughPairContactLoadIsNormalLoad) {
+  const auto old = write_file("rough.toml", "[geometry]\nkind = \"rough_pair\"\ncontact_load_N = 0.5\n"
+                                            "correlation_length_m = 6.25e-5\n[grid]\nn = 16\n");
+  expect_all(error_of([&] { load_reynolds_run(old); }),
+             {old.string(), "key 'geometry.contact_load_N'", "use 'geometry.normal_load_N'"});
+}
+
+TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {
+  const std::string surface = "[surface]\nrms_height_m = 4.35e-7\ncorrelation_length_m = 6.25e-5\n";
+  const auto size = write_file("ff-size.toml", surface + "size_m = 1e-3\n");
+  expect_all(error_of([&] { load_flow_factor_run(size); }), {size.string(), "key 'surface.size_m'", "use 'domain.size_m'"});
+  const auto grid = write_file("ff-grid.toml", surface + "grid = 64\n");
+  expect_all(error_of([&] { load_flow_factor_run(grid); }), {grid.string(), "key 'surface.grid'", "use 'domain.grid'"});
+}
+
+// The same [surface] and [domain] tables give the same surface in contact, homogenise and
+// flow-factors, with the defaults of apps/surface_config.h where keys are left out.
+TEST(SurfaceConfig, ThreeCommandsReadOneSurface) {
+  const std::string tables = "[surface]\nkind = \"gaussian\"\nrms_height_m = 4.35e-7\ncorrelation_length_m = 6.25e-5\n"
+                             "[domain]\ngrid = 32\n";
+  const HomogeniseRun h = load_homogenise_run(write_file("surface-h.toml", tables));
+  const FlowFactorRun f = load_flow_factor_run(write_file("surface-f.toml", tables));
+  const ContactRun c = load_contact_run(
+      write_file("surface-c.toml", tables + "[material]\ne_star_Pa = 1.137e11\n[load]\nnormal_load_N = 1e-3\n"), false);
+  for (const contact::GaussianSurfaceParams& p : {h.options.surface, f.options.surface}) {
+    EXPECT_EQ(p.kind, contact::SpectrumKind::gaussian_acf);  // the default spectrum
+    EXPECT_EQ(p.size_m, 1e-3);                               // the default size
+    EXPECT_EQ(p.grid, 32);
+    EXPECT_EQ(p.seed, 1u);
+    EXPECT_EQ(p.rms_height_m, 4.35e-7);
+    EXPECT_EQ(p.correlation_length_m, 6.25e-5);
+    EXPECT_EQ(p.correlation_length_across_m, 0.0);
+  }
+  const Eigen::ArrayXXd gap0 = contact::gap_from_heights(contact::gaussian_surface(h.options.surface));
+  ASSERT_EQ(c.gap0_m.rows(), gap0.rows());
+  EXPECT_TRUE((c.gap0_m == gap0).all());
+  // A Gaussian ACF has no default correlation length, in any of the three.
+  const std::string no_length = "[surface]\nrms_height_m = 4.35e-7\n";
+  const auto path = write_file("surface-no-length.toml", no_length);
+  for (const std::string& e : {error_of([&] { load_homogenise_run(path); }), error_of([&] { load_flow_factor_run(path); })})
+    expect_all(e, {"key 'surface.correlation_length_m'", "required"});
+}
+
+TEST(DriveTable, ReadByTheBundlesCsvRules) {
+  // tribo's own provenance block above the columns, blanks around cells, an extra column.
+  write_file("drive.csv", "# tribo_version: 0.1\n# seed: 1\nt_s, v_m_per_s, note\n0, 1e-3, a\n2, 3e-3, b\n");
+  const auto config = write_file("drive.toml", "[drive]\nkind = \"table\"\nfile = \"drive.csv\"\n");
+  const RigRun run = load_rig_run(config);
+  EXPECT_DOUBLE_EQ(run.drive->speed_m_per_s(1.0), 2e-3);
+  // A short row names the file and its line, under the config key that named the file.
+  write_file("drive.csv", "t_s,v_m_per_s\n0,1e-3\n2\n");
+  expect_all(error_of([&] { load_rig_run(config); }),
+             {config.string(), "key 'drive.file'", "drive.csv:3: expected 2 values, found 1"});
+}
+
+}  // namespace
+}  // namespace tribo::cli
