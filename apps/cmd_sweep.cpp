@@ -592,9 +592,11 @@ void run_mpi(const Args& args) {
   }
   mpi_check(MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Bcast");
   if (!ok) {
-    // Rank 0 has the message and exits 2; this rank leaves quietly with the same status.
+    // Rank 0 has the message and exits 2, which becomes mpirun's status. This rank leaves quietly
+    // with 0: a non-zero exit here could reach mpirun first, and mpirun then kills rank 0 before
+    // it has printed why.
     mpi_check(MPI_Finalize(), "MPI_Finalize");
-    std::exit(2);
+    std::exit(0);
   }
   try {
     if (mpi.rank != 0) {
