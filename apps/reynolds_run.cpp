@@ -113,7 +113,7 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
     if (rigid)
       placement.mean_gap_m = g->required_number("mean_gap_m", Range::positive);
     else
-      placement.contact_load_N = g->required_number("normal_load_N", Range::positive);
+      placement.normal_load_N = g->required_number("normal_load_N", Range::positive);
     placement.composite_modulus_Pa = g->number("composite_modulus_Pa", placement.composite_modulus_Pa, Range::positive);
     placement.hardness_Pa = g->number("hardness_Pa", placement.hardness_Pa, Range::positive);
     placement.contact_gap_fraction = g->number("contact_gap_fraction", placement.contact_gap_fraction, Range::positive);
@@ -143,7 +143,7 @@ ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
     if (film.contact) {
       const contact::NormalContactResult& c = *film.contact;
       if (!c.summary.converged) g->fail("normal_load_N", "contact solve did not converge: " + c.summary.message);
-      run.geometry.update({{"normal_load_N", *placement.contact_load_N},
+      run.geometry.update({{"normal_load_N", *placement.normal_load_N},
                            {"composite_modulus_Pa", placement.composite_modulus_Pa},
                            {"contact_area_fraction", c.area_fraction},
                            {"contact_mean_gap_m", c.mean_gap_m},

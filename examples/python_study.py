@@ -35,7 +35,7 @@ pressure_Pa = r["pressure_Pa"]  # (n, n) array at the last load; pressure_Pa[i, 
 # %% 3. The lubricated rough pair at 0.1 m/s: a film pressed by 0.5 N of solid load, JFO cavitation.
 lower = tribo.gaussian_acf_surface(64, size_m, correlation_length_m=6.25e-5, rms_height_m=4.3e-7, seed=1)
 upper = tribo.gaussian_acf_surface(64, size_m, correlation_length_m=6.25e-5, rms_height_m=6.4e-8, seed=2)
-film = tribo.rough_pair_film(upper, lower, size_m, contact_load_N=0.5, contact_gap_fraction=0.1)
+film = tribo.rough_pair_film(upper, lower, size_m, normal_load_N=0.5, contact_gap_fraction=0.1)
 problem = film["problem"]
 problem.viscosity_Pa_s = 0.021
 problem.sliding_speed_m_per_s = 0.1

@@ -75,16 +75,16 @@ bool RoughPairFilmOptions::is_valid(std::string* why) const {
     if (why) *why = m;
     return false;
   };
-  if (mean_gap_m.has_value() == contact_load_N.has_value())
-    return fail("give exactly one of mean_gap_m (rigid surfaces) and contact_load_N (deformed by contact)");
+  if (mean_gap_m.has_value() == normal_load_N.has_value())
+    return fail("give exactly one of mean_gap_m (rigid surfaces) and normal_load_N (deformed by contact)");
   if (mean_gap_m && !(std::isfinite(*mean_gap_m) && *mean_gap_m > 0)) return fail("mean_gap_m must be finite and > 0");
-  if (contact_load_N && !(std::isfinite(*contact_load_N) && *contact_load_N > 0))
-    return fail("contact_load_N must be finite and > 0");
+  if (normal_load_N && !(std::isfinite(*normal_load_N) && *normal_load_N > 0))
+    return fail("normal_load_N must be finite and > 0");
   if (!(std::isfinite(composite_modulus_Pa) && composite_modulus_Pa > 0))
     return fail("composite_modulus_Pa must be finite and > 0");
   if (!(hardness_Pa > 0)) return fail("hardness_Pa must be > 0 (infinity for elastic contact)");
   if (!(contact_gap_fraction > 0 && contact_gap_fraction <= 0.5)) return fail("contact_gap_fraction must be in (0, 0.5]");
-  if (contact_load_N) {
+  if (normal_load_N) {
     contact::NormalContactOptions c = contact;
     c.pressure_cap_Pa = hardness_Pa;
     std::string reason;
@@ -122,7 +122,7 @@ RoughPairFilm rough_pair_film(const Eigen::ArrayXXd& upper, const Eigen::ArrayXX
     contact::NormalContactOptions copt = o.contact;
     copt.pressure_cap_Pa = o.hardness_Pa;
     const Eigen::ArrayXXd gap0 = contact::gap_from_heights(lower - upper);
-    film.contact = contact::solve_normal_load(halfspace, gap0, *o.contact_load_N, copt);
+    film.contact = contact::solve_normal_load(halfspace, gap0, *o.normal_load_N, copt);
     const Eigen::ArrayXXd& g = film.contact->gap_m;
     h = g.max(film.floor_m);
     film.contact_nodes = static_cast<std::size_t>((g < film.floor_m).count());

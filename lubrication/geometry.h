@@ -43,7 +43,7 @@ Eigen::ArrayXXd rough_pair_gap_m(const Eigen::ArrayXXd& upper_height_m, const Ei
 ReynoldsProblem periodic_film_cell(const Eigen::ArrayXXd& film_m, double size_m);
 
 // How the two rough surfaces of rough_pair_film are placed. Exactly one of mean_gap_m and
-// contact_load_N is given.
+// normal_load_N is given.
 struct RoughPairFilmOptions {
   // Rigid surfaces: mean planes this far apart, h = h̄ + (z₁ − z̄₁) − (z₂ − z̄₂) (rough_pair_gap_m).
   std::optional<double> mean_gap_m;
@@ -51,7 +51,7 @@ struct RoughPairFilmOptions {
   // gap_from_heights(lower − upper) against an elastic(-plastic) periodic half-space of modulus
   // E* with the pressure cap hardness_Pa, load-controlled (contact::solve_normal_load); the film
   // is the deformed gap g.
-  std::optional<double> contact_load_N;
+  std::optional<double> normal_load_N;
   // E* (contact mode); default steel on steel, E = 206.8 GPa, ν = 0.3 (thesis Appendix I)
   double composite_modulus_Pa = contact::composite_modulus_Pa(206.8e9, 0.3, 206.8e9, 0.3);
   double hardness_Pa = std::numeric_limits<double>::infinity();  // plastic pressure cap; ∞ = elastic

@@ -100,11 +100,11 @@ py::dict solve(const lub::ReynoldsProblem& problem, double newton_tolerance, int
 }
 
 py::dict rough_pair(const ArrayXXd& upper_m, const ArrayXXd& lower_m, double size_m, std::optional<double> mean_gap_m,
-                    std::optional<double> contact_load_N, std::optional<double> composite_modulus_Pa,
+                    std::optional<double> normal_load_N, std::optional<double> composite_modulus_Pa,
                     std::optional<double> hardness_Pa, double contact_gap_fraction, double contact_tolerance) {
   lub::RoughPairFilmOptions o;
   o.mean_gap_m = mean_gap_m;
-  o.contact_load_N = contact_load_N;
+  o.normal_load_N = normal_load_N;
   if (composite_modulus_Pa) o.composite_modulus_Pa = *composite_modulus_Pa;
   if (hardness_Pa) o.hardness_Pa = *hardness_Pa;
   o.contact_gap_fraction = contact_gap_fraction;
@@ -232,12 +232,12 @@ uniform gap gap_m (m) closing at gap_rate_m_per_s (m/s, < 0 closes), on n x n no
         R"(The periodic Reynolds cell of two rough surfaces (lubrication/geometry.h rough_pair_film).
 
 upper_m (slider), lower_m (disc): n x n height fields (m) on a square patch of side size_m (m).
-Exactly one of mean_gap_m (rigid mean planes this far apart, m) and contact_load_N (pressed by this
+Exactly one of mean_gap_m (rigid mean planes this far apart, m) and normal_load_N (pressed by this
 solid load on an elastic(-plastic) periodic half-space of composite_modulus_Pa with the cap
 hardness_Pa, None = elastic). The film is floored at contact_gap_fraction x composite sigma.
 Returns dict: problem (ReynoldsProblem), contact_nodes, composite_rms_height_m, floor_m,
 mean_film_m, contact (the contact solve's fields and summary, or None when rigid).)",
-        "upper_m"_a, "lower_m"_a, "size_m"_a, "mean_gap_m"_a = py::none(), "contact_load_N"_a = py::none(),
+        "upper_m"_a, "lower_m"_a, "size_m"_a, "mean_gap_m"_a = py::none(), "normal_load_N"_a = py::none(),
         "composite_modulus_Pa"_a = py::none(), "hardness_Pa"_a = py::none(), "contact_gap_fraction"_a = 1e-3,
         "contact_tolerance"_a = 1e-8);
   m.def("solve_reynolds", &solve,

@@ -65,7 +65,7 @@ TEST(RoughPairFilm, DeformedModeIsTheFlooredContactGap) {
   const int n = 64;
   const Eigen::ArrayXXd upper = surface(n, 0.1e-6, 2), lower = surface(n, 0.4e-6, 1);
   RoughPairFilmOptions o;
-  o.contact_load_N = 0.5;
+  o.normal_load_N = 0.5;
   o.hardness_Pa = 6e9;
   const RoughPairFilm f = rough_pair_film(upper, lower, kSize, o);
   ASSERT_TRUE(f.contact.has_value());
@@ -85,7 +85,7 @@ TEST(RoughPairFilm, DeformedModeIsTheFlooredContactGap) {
     EXPECT_EQ(f.problem.gap_m(5, j), std::max(c.gap_m(5, j), f.floor_m));
   }
   RoughPairFilmOptions harder = o;
-  harder.contact_load_N = 2.0;
+  harder.normal_load_N = 2.0;
   const RoughPairFilm f2 = rough_pair_film(upper, lower, kSize, harder);
   ASSERT_TRUE(f2.contact->summary.converged);
   EXPECT_LT(f2.mean_film_m, f.mean_film_m);
@@ -112,9 +112,9 @@ TEST(RoughPairFilm, RejectsBadInputNamingIt) {
   RoughPairFilmOptions o;
   expect_message(o, "exactly one of mean_gap_m", upper, lower);
   o.mean_gap_m = 1e-6;
-  o.contact_load_N = 1.0;
+  o.normal_load_N = 1.0;
   expect_message(o, "exactly one of mean_gap_m", upper, lower);
-  o.contact_load_N.reset();
+  o.normal_load_N.reset();
   o.contact_gap_fraction = 0.0;
   expect_message(o, "contact_gap_fraction", upper, lower);
   o.contact_gap_fraction = 1e-3;
@@ -124,9 +124,9 @@ TEST(RoughPairFilm, RejectsBadInputNamingIt) {
   expect_message(o, "same n x n grid", upper, surface(8, 0.4e-6, 1));
   expect_message(o, "both surfaces are flat", Eigen::ArrayXXd::Zero(16, 16), Eigen::ArrayXXd::Zero(16, 16));
   RoughPairFilmOptions c;
-  c.contact_load_N = -1.0;
-  expect_message(c, "contact_load_N must be finite and > 0", upper, lower);
-  c.contact_load_N = 1.0;
+  c.normal_load_N = -1.0;
+  expect_message(c, "normal_load_N must be finite and > 0", upper, lower);
+  c.normal_load_N = 1.0;
   c.composite_modulus_Pa = 0.0;
   expect_message(c, "composite_modulus_Pa", upper, lower);
 }

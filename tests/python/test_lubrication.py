@@ -79,7 +79,7 @@ class Reynolds(unittest.TestCase):
     def test_rough_pair_film_in_contact(self):
         lower = tribo.gaussian_acf_surface(32, 1e-3, correlation_length_m=6.25e-5, rms_height_m=4.3e-7, seed=1)
         upper = tribo.gaussian_acf_surface(32, 1e-3, correlation_length_m=6.25e-5, rms_height_m=6.4e-8, seed=2)
-        f = tribo.rough_pair_film(upper, lower, 1e-3, contact_load_N=0.5, contact_gap_fraction=0.1)
+        f = tribo.rough_pair_film(upper, lower, 1e-3, normal_load_N=0.5, contact_gap_fraction=0.1)
         self.assertTrue(f["contact"]["converged"])
         self.assertEqual(f["problem"].gap_m.shape, (33, 32))  # (n + 1) × n periodic cell
         self.assertGreaterEqual(f["problem"].gap_m.min(), f["floor_m"] * (1 - 1e-12))
