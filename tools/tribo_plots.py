@@ -10,6 +10,7 @@
                               the axes (a line for one varying axis, a heat map for two)
 """
 import csv
+import json
 import os
 import sys
 
@@ -260,21 +261,62 @@ def plot_gap(d):
             if r["run"] not in runs:
                 runs.append(r["run"])
         runs = runs[:3]
+        effect = "with effect"
+        report_path = os.path.join(d, "gap_report.json")
+        if os.path.exists(report_path):
+            with open(report_path) as f:
+                verdict = json.load(f).get("verdict", {})
+            name = verdict.get("effect") if isinstance(verdict, dict) else None
+            if name and name not in ("none", "unexplained"):
+                effect = "with " + name
         if runs:
-            fig, axes = plt.subplots(len(runs), 1, figsize=(9, 2.8 * len(runs)), squeeze=False)
-            for ax, run in zip(axes[:, 0], runs):
-                for source, lw in (("measured", 0.9), ("baseline", 0.8), ("with effect", 0.8)):
+            # Left: the whole record; right: its last few stick-slip cycles, where the shapes can be
+            # compared (a long record at 2 kHz is a solid band at full width).
+            fig, axes = plt.subplots(len(runs), 2, figsize=(12, 2.8 * len(runs)), squeeze=False,
+                                     gridspec_kw={"width_ratios": [1, 2]})
+            for (ax_all, ax_zoom), run in zip(axes, runs):
+                traces = {}
+                for source in ("measured", "baseline", "with effect"):
                     sel = [r for r in rows if r["run"] == run and r["source"] == source]
                     if sel:
-                        ax.plot(column(sel, "t_s"), column(sel, "mu"), lw=lw, label=source)
-                ax.set_title(run, fontsize=9)
-                ax.set_ylabel("mu")
-                ax.grid(alpha=0.3)
-            axes[-1][0].set_xlabel("t (s)")
-            axes[0][0].legend(fontsize=8)
+                        traces[source] = (column(sel, "t_s"), column(sel, "mu"))
+                if not traces:
+                    continue
+                ref = traces.get("with effect") or traces.get("baseline") or traces["measured"]
+                start = last_cycles_start(*ref, cycles=6)
+                for source, lw in (("measured", 0.9), ("baseline", 0.8), ("with effect", 0.8)):
+                    if source not in traces:
+                        continue
+                    t, mu = traces[source]
+                    label = effect if source == "with effect" else source
+                    ax_all.plot(t, mu, lw=0.5, label=label)
+                    keep = [i for i, ti in enumerate(t) if ti >= start]
+                    ax_zoom.plot([t[i] for i in keep], [mu[i] for i in keep], lw=lw, label=label)
+                ax_all.set_title(run + ", whole record", fontsize=9)
+                ax_zoom.set_title(run + ", last cycles", fontsize=9)
+                for ax in (ax_all, ax_zoom):
+                    ax.set_ylabel("mu")
+                    ax.grid(alpha=0.3)
+            for ax in axes[-1]:
+                ax.set_xlabel("t (s)")
+            axes[0][1].legend(fontsize=8)
             fig.tight_layout()
             fig.savefig(os.path.join(d, "overlay.png"), dpi=110)
             plt.close(fig)
+
+
+def last_cycles_start(t, mu, cycles):
+    """Start time of the last `cycles` periods of a trace, the period from its upward crossings of
+    the mean over the second half; the whole trace if it has fewer than two crossings."""
+    half = [i for i, ti in enumerate(t) if ti >= t[0] + 0.5 * (t[-1] - t[0])]
+    if len(half) < 3:
+        return t[0]
+    mean = sum(mu[i] for i in half) / len(half)
+    ups = [t[i] for i, j in zip(half, half[1:]) if mu[i] < mean <= mu[j]]
+    if len(ups) < 2:
+        return t[0]
+    period = (ups[-1] - ups[0]) / (len(ups) - 1)
+    return max(t[0], t[-1] - cycles * period)
 
 
 REGIME_SHADES = {"boundary": "tab:red", "mixed": "tab:orange", "full_film": "tab:blue"}
