@@ -541,6 +541,12 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       std::string regime;
       double step = 0.0;
       const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime);
+      // With the slider's displacement recorded, its regime is read as the rig reads a simulated
+      // run's (rig::classify_regime), quasi-harmonic oscillation included; from μ alone only the
+      // friction extrema above can say stick-slip or steady sliding.
+      if (!s.x.empty())
+        regime = rig::classify_regime(
+            rig, rig::recorded_regime_evidence(rig, s.t, s.x, run.v_m_per_s, rig::analysis_start_s(s.t.front(), s.t.back())));
       plan.slip_step_s = step;
       const Features noise = block_noise(s, plan.sample_spacing_s, step);
       plans_.push_back(plan);

@@ -33,7 +33,6 @@ RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& sa
   RunObservables o;
   o.window_start_s = window_start_s;
   const double t_end = samples.empty() ? window_start_s : samples.back().t_s;
-  const double period_d = 2.0 * std::numbers::pi / rig.damped_frequency_rad_per_s();
 
   std::vector<double> mu_s, phi_dot, stick, slip, breakaway_times;
   double max_slip = 0.0;
@@ -90,24 +89,88 @@ RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& sa
                      : kNaN;
   }
 
-  const bool any_stick_in_window =
-      std::any_of(samples.begin(), samples.end(), [&](const Sample& s) { return s.t_s >= window_start_s && s.phase == Phase::stick; });
-  if (o.breakaways > 0 && o.reattachments > 0) {
+  RegimeEvidence e;
+  e.breakaways = o.breakaways;
+  e.reattachments = o.reattachments;
+  e.reversals = o.reversals;
+  e.longest_slip_s = max_slip;
+  e.sticks = std::any_of(samples.begin(), samples.end(),
+                         [&](const Sample& s) { return s.t_s >= window_start_s && s.phase == Phase::stick; });
+  const double t_mid = window_start_s + 0.5 * (t_end - window_start_s);
+  e.peak_to_peak_early_m = peak_to_peak(samples, window_start_s, t_mid);
+  e.peak_to_peak_late_m = peak_to_peak(samples, t_mid, std::numeric_limits<double>::infinity());
+  o.regime = classify_regime(rig, e);
+  return o;
+}
+
+std::string classify_regime(const RigParameters& rig, const RegimeEvidence& e) {
+  if (e.breakaways > 0 && e.reattachments > 0) {
     // A slip that runs through a velocity match without re-attaching (a reversal) or lasts
     // longer than 1.5 damped periods spans several cycles; a single slip is under one period.
-    o.regime = (o.reversals > 0 || max_slip > 1.5 * period_d) ? "multi_cycle_slip" : "stick_slip";
-  } else if (o.breakaways == 0 && o.reattachments == 0 && any_stick_in_window) {
-    o.regime = "stuck";
-  } else {
-    // Slipping throughout: does the oscillation persist? Compare the last quarter of the run
-    // with the quarter before it; below 1e-6 W/k it is noise-free steady sliding.
-    const double t3 = window_start_s + 0.5 * (t_end - window_start_s);
-    const double ptp_late = peak_to_peak(samples, t3, std::numeric_limits<double>::infinity());
-    const double ptp_early = peak_to_peak(samples, window_start_s, t3);
-    const double floor = 1e-6 * rig.normal_load_N / rig.stiffness_N_per_m;
-    o.regime = (ptp_late > floor && ptp_late >= 0.9 * ptp_early) ? "quasi_harmonic" : "steady_sliding";
+    const double period_d = 2.0 * std::numbers::pi / rig.damped_frequency_rad_per_s();
+    return (e.reversals > 0 || e.longest_slip_s > 1.5 * period_d) ? "multi_cycle_slip" : "stick_slip";
   }
-  return o;
+  if (e.breakaways == 0 && e.reattachments == 0 && e.sticks) return "stuck";
+  // Slipping throughout: does the oscillation persist? Below 1e-6 W/k it is steady sliding.
+  const double floor = 1e-6 * rig.normal_load_N / rig.stiffness_N_per_m;
+  return (e.peak_to_peak_late_m > floor && e.peak_to_peak_late_m >= 0.9 * e.peak_to_peak_early_m) ? "quasi_harmonic"
+                                                                                                  : "steady_sliding";
+}
+
+RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vector<double>& t,
+                                        const std::vector<double>& x, double v_drive, double window_start_s) {
+  constexpr double kEnterStick = 0.05, kLeaveStick = 0.2;
+  RegimeEvidence e;
+  const std::size_t n = std::min(t.size(), x.size());
+  if (n < 3 || !(v_drive != 0.0)) return e;
+  const double V = std::abs(v_drive);
+  const double half_span_s = std::numbers::pi / (20.0 * rig.damped_frequency_rad_per_s());  // T_d / 40
+  const double t_mid = window_start_s + 0.5 * (t[n - 1] - window_start_s);
+  auto peak_to_peak_between = [&](double t0, double t1) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (std::size_t i = 0; i < n; ++i)
+      if (t[i] >= t0 && t[i] < t1) lo = std::min(lo, x[i]), hi = std::max(hi, x[i]);
+    return hi >= lo ? hi - lo : 0.0;
+  };
+  e.peak_to_peak_early_m = peak_to_peak_between(window_start_s, t_mid);
+  e.peak_to_peak_late_m = peak_to_peak_between(t_mid, std::numeric_limits<double>::infinity());
+
+  enum class State { unknown, stuck, forward, backward } state = State::unknown;
+  double slip_start = t[0];
+  std::size_t j0 = 0, j1 = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    // ẋ over [t − h, t + h], at least one sample either side.
+    while (j0 + 1 < i && t[j0 + 1] <= t[i] - half_span_s) ++j0;
+    j1 = std::max(j1, std::min(i + 1, n - 1));
+    while (j1 + 1 < n && t[j1 + 1] <= t[i] + half_span_s) ++j1;
+    if (i == 0 || i + 1 == n) continue;
+    const double u = v_drive - (x[j1] - x[j0]) / (t[j1] - t[j0]);
+    const bool in_window = t[i] >= window_start_s;
+    State next = state;
+    if (std::abs(u) < kEnterStick * V) {
+      next = State::stuck;
+    } else if (u > kLeaveStick * V) {
+      next = State::forward;
+    } else if (u < -kLeaveStick * V) {
+      next = State::backward;
+    }
+    if (next != state) {
+      const bool was_slipping = state == State::forward || state == State::backward;
+      if (state == State::stuck) {
+        slip_start = t[i];
+        if (in_window) ++e.breakaways;
+      } else if (was_slipping && next == State::stuck) {
+        if (in_window) ++e.reattachments, e.longest_slip_s = std::max(e.longest_slip_s, t[i] - slip_start);
+      } else if (was_slipping) {
+        if (in_window) ++e.reversals;
+      } else {
+        slip_start = t[i];  // the record starts slipping
+      }
+    }
+    state = next;
+    if (in_window && state == State::stuck) e.sticks = true;
+  }
+  return e;
 }
 
 }  // namespace tribo::rig

@@ -48,5 +48,33 @@ struct RunObservables {
 RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& samples,
                          const std::vector<Event>& events, double window_start_s);
 
+// What the regime of an analysis window is read from — the stepper's events and phases for a
+// simulated run, the slider's recorded motion for a measured one (recorded_regime_evidence).
+struct RegimeEvidence {
+  int breakaways = 0;
+  int reattachments = 0;
+  int reversals = 0;                  // slips that ran through a velocity match
+  double longest_slip_s = 0.0;        // longest slip phase ending in the window
+  bool sticks = false;                // the slider is stuck somewhere in the window
+  double peak_to_peak_early_m = 0.0;  // slider displacement, first half of the window
+  double peak_to_peak_late_m = 0.0;   // second half
+};
+
+// The one classification (the regimes at the top of this file): re-attachments mean stick-slip,
+// multi-cycle when a slip reversed or outlasted 1.5 damped periods of `rig`; no events but a stuck
+// slider, stuck; slipping throughout, quasi-harmonic when the late half's oscillation is at least
+// 90 % of the early half's and above 1e-6 W/k, else steady sliding.
+std::string classify_regime(const RigParameters& rig, const RegimeEvidence& evidence);
+
+// Regime evidence of a recorded slider displacement x (m) at times t (s, increasing, any spacing)
+// driven at the constant speed v_drive_m_per_s, from window_start_s on. The sliding speed
+// u = v_drive − ẋ (ẋ equals the drive speed while stuck) takes ẋ as the chord over ±T_d/40 of
+// `rig`'s damped period (at least one sample each side): short against a slip (≈ T_d/2), long
+// enough to average sensor noise. The slider counts as stuck when |u| falls below 5 % of the drive
+// speed and as slipping again when it exceeds 20 % — the hysteresis keeps noise near either
+// threshold from adding events. A reversal is a slip whose u changes sign beyond ±20 %.
+RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vector<double>& t_s,
+                                        const std::vector<double>& x_m, double v_drive_m_per_s, double window_start_s);
+
 
 }  // namespace tribo::rig
