@@ -347,6 +347,12 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
 }
 
 std::string phase_of(const std::string& observable, int index, const std::string& regime) {
+  // A quasi-harmonic run never sticks (thesis §5.2): the extrema of its friction are the swing
+  // about μk during continuous slip, not breakaway and re-attachment, so every feature of its
+  // trace belongs to stable slip. regimes.csv's items (the regime, the oscillation's amplitude and
+  // frequency) describe the whole cycle in every regime.
+  const bool regime_point = observable == "regime_mismatch" || observable == "amplitude_m" || observable == "frequency_rad_per_s";
+  if (regime == "quasi_harmonic" && !regime_point) return "stable slip";
   if (observable == "mu_peak" || observable == "mu_s_vs_load_rate") return "slip onset";
   if (observable == "slip_drop") return index <= 2 ? "slip transient" : "late slip";
   if (observable == "mu_trough") return "slip end";
@@ -542,8 +548,10 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       double step = 0.0;
       const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime);
       // With the slider's displacement recorded, its regime is read as the rig reads a simulated
-      // run's (rig::classify_regime), quasi-harmonic oscillation included; from μ alone only the
-      // friction extrema above can say stick-slip or steady sliding.
+      // run's (rig::classify_regime), quasi-harmonic oscillation included. μ alone cannot give
+      // that evidence: friction does not say whether the slider moves with the disc, so a μ
+      // oscillation with sticks and one in continuous slip look alike, and the friction extrema
+      // above can only say stick-slip (it oscillates) or steady sliding (it does not).
       if (!s.x.empty())
         regime = rig::classify_regime(
             rig, rig::recorded_regime_evidence(rig, s.t, s.x, run.v_m_per_s, rig::analysis_start_s(s.t.front(), s.t.back())));

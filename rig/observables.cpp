@@ -99,6 +99,7 @@ RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& sa
   const double t_mid = window_start_s + 0.5 * (t_end - window_start_s);
   e.peak_to_peak_early_m = peak_to_peak(samples, window_start_s, t_mid);
   e.peak_to_peak_late_m = peak_to_peak(samples, t_mid, std::numeric_limits<double>::infinity());
+  e.amplitude_floor_m = 1e-6 * rig.normal_load_N / rig.stiffness_N_per_m;  // noise-free: any oscillation
   o.regime = classify_regime(rig, e);
   return o;
 }
@@ -111,10 +112,10 @@ std::string classify_regime(const RigParameters& rig, const RegimeEvidence& e) {
     return (e.reversals > 0 || e.longest_slip_s > 1.5 * period_d) ? "multi_cycle_slip" : "stick_slip";
   }
   if (e.breakaways == 0 && e.reattachments == 0 && e.sticks) return "stuck";
-  // Slipping throughout: does the oscillation persist? Below 1e-6 W/k it is steady sliding.
-  const double floor = 1e-6 * rig.normal_load_N / rig.stiffness_N_per_m;
-  return (e.peak_to_peak_late_m > floor && e.peak_to_peak_late_m >= 0.9 * e.peak_to_peak_early_m) ? "quasi_harmonic"
-                                                                                                  : "steady_sliding";
+  // Slipping throughout: does the oscillation persist above what the record resolves?
+  return (e.peak_to_peak_late_m > e.amplitude_floor_m && e.peak_to_peak_late_m >= 0.9 * e.peak_to_peak_early_m)
+             ? "quasi_harmonic"
+             : "steady_sliding";
 }
 
 RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vector<double>& t,
@@ -134,6 +135,21 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
   };
   e.peak_to_peak_early_m = peak_to_peak_between(window_start_s, t_mid);
   e.peak_to_peak_late_m = peak_to_peak_between(t_mid, std::numeric_limits<double>::infinity());
+  // Noise on x: a sample's deviation from the chord of its neighbours has, for white noise of std
+  // σ, std σ √(1 + w² + (1 − w)²) ≥ σ √1.5 (w the chord's weight); its median |·| is 0.6745 of that.
+  std::vector<double> deviation;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    if (t[i] < window_start_s || !(t[i + 1] > t[i - 1])) continue;
+    const double w = (t[i + 1] - t[i]) / (t[i + 1] - t[i - 1]);
+    deviation.push_back(std::abs(x[i] - (w * x[i - 1] + (1.0 - w) * x[i + 1])));
+  }
+  double sigma = 0.0;
+  if (!deviation.empty()) {
+    auto mid = deviation.begin() + static_cast<std::ptrdiff_t>(deviation.size() / 2);
+    std::nth_element(deviation.begin(), mid, deviation.end());
+    sigma = *mid / (0.6745 * std::sqrt(1.5));
+  }
+  e.amplitude_floor_m = std::max(1e-6 * rig.normal_load_N / rig.stiffness_N_per_m, 12.0 * sigma);
 
   enum class State { unknown, stuck, forward, backward } state = State::unknown;
   double slip_start = t[0];

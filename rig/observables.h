@@ -58,12 +58,15 @@ struct RegimeEvidence {
   bool sticks = false;                // the slider is stuck somewhere in the window
   double peak_to_peak_early_m = 0.0;  // slider displacement, first half of the window
   double peak_to_peak_late_m = 0.0;   // second half
+  // The smallest oscillation the record resolves: 1e-6 W/k for a simulated run, raised to the
+  // sensor noise for a recorded one (noise alone has a peak-to-peak that does not decay).
+  double amplitude_floor_m = 0.0;
 };
 
 // The one classification (the regimes at the top of this file): re-attachments mean stick-slip,
 // multi-cycle when a slip reversed or outlasted 1.5 damped periods of `rig`; no events but a stuck
 // slider, stuck; slipping throughout, quasi-harmonic when the late half's oscillation is at least
-// 90 % of the early half's and above 1e-6 W/k, else steady sliding.
+// 90 % of the early half's and above the amplitude floor, else steady sliding.
 std::string classify_regime(const RigParameters& rig, const RegimeEvidence& evidence);
 
 // Regime evidence of a recorded slider displacement x (m) at times t (s, increasing, any spacing)
@@ -73,8 +76,11 @@ std::string classify_regime(const RigParameters& rig, const RegimeEvidence& evid
 // enough to average sensor noise. The slider counts as stuck when |u| falls below 5 % of the drive
 // speed and as slipping again when it exceeds 20 % — the hysteresis keeps noise near either
 // threshold from adding events. A reversal is a slip whose u changes sign beyond ±20 %.
+// The amplitude floor is 12 σ of the noise on x (σ from the median deviation of each sample from
+// the chord of its neighbours, robust to the kinks of stick-slip), at least 1e-6 W/k: white noise
+// stays within ±6 σ over any record length in practice, so a decayed oscillation buried in noise
+// is steady sliding. It needs ≳ 20 samples per period, else the curvature reads as noise.
 RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vector<double>& t_s,
                                         const std::vector<double>& x_m, double v_drive_m_per_s, double window_start_s);
-
 
 }  // namespace tribo::rig
