@@ -96,8 +96,9 @@ ExperimentBundle read_bundle(const fs::path& dir) {
       b.slider_radius_m = rig_key(*rig, "slider_radius_m", toml_file);
       if (const toml::node* kind = rig->get("kind")) {
         const auto s = kind->value<std::string>();
-        if (!s || (*s != "pin_on_disc" && *s != "velocity_step"))
-          rig::fail_at(toml_file, static_cast<long>(kind->source().begin.line), "[rig] kind must be \"pin_on_disc\" or \"velocity_step\"");
+        if (!s || (*s != "pin_on_disc" && *s != "velocity_step" && *s != "slide_hold_slide"))
+          rig::fail_at(toml_file, static_cast<long>(kind->source().begin.line),
+                       "[rig] kind must be \"pin_on_disc\", \"velocity_step\" or \"slide_hold_slide\"");
         b.kind = *s;
       }
       const std::set<std::string> known{"mass_kg", "stiffness_N_per_m", "damping_N_s_per_m", "normal_load_N", "slider_radius_m", "kind"};

@@ -2,7 +2,9 @@
 //
 //   experiment.toml       [rig] mass_kg, stiffness_N_per_m, damping_N_s_per_m, normal_load_N,
 //                         slider_radius_m (each optional: missing keys are calibrated or taken
-//                         from the model), kind = "pin_on_disc" | "velocity_step";
+//                         from the model), kind = "pin_on_disc" | "velocity_step" |
+//                         "slide_hold_slide" — the analysis (compare.h): constant driven speed
+//                         per run, or a drive history read from v_drive_m_per_s;
 //                         optional [materials], [lubricant], [notes] (kept as text, not read)
 //   static_friction.csv   phi_dot_per_s,mu_s                 one row per stick event (optional)
 //   runs.csv              run_id,v_m_per_s,file               one trace per driven speed (optional)

@@ -19,6 +19,9 @@ constexpr int kSlipDropPoints = 4;
 constexpr int kStepBins = 24;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
 constexpr int kNoiseBlocks = 4;        // repeats a run's window is cut into for its items' noise
+// Shortest drive segment, in samples: its steady level is the mean of its last 30 % in four
+// blocks (steady_mu and its noise), which needs a few samples each.
+constexpr std::size_t kMinSegmentSamples = 20;
 constexpr const char* kFrictionLevel = "friction level";
 
 bool is_friction_level(const std::string& observable) {
@@ -285,6 +288,44 @@ double geometric_ratio(double total, int n) {
   return 0.5 * (lo + hi);
 }
 
+// Drive segments of a recorded drive speed (a velocity step, slide-hold-slide): the segment
+// starts (times from the record's start) and speeds. A change point is a jump between samples by
+// more than max(1e-3 v_max, 6 σ), σ the record's high-pass noise, so sensor noise on a measured
+// drive does not cut it into pieces; a segment shorter than kMinSegmentSamples samples (a glitch,
+// a servo's overshoot) joins the one before it, and neighbours whose speeds differ by less than the
+// threshold merge. A segment's speed is the median of its samples; one below the threshold is a
+// hold (speed 0).
+struct DriveSegments {
+  std::vector<double> start_s, speed_m_per_s;
+};
+DriveSegments drive_segments(const std::vector<double>& t, const std::vector<double>& v) {
+  const double v_max = std::max(std::abs(*std::max_element(v.begin(), v.end())), std::abs(*std::min_element(v.begin(), v.end())));
+  const double threshold = std::max(1e-3 * v_max, 6.0 * high_pass_noise(v));
+  std::vector<std::size_t> starts{0};
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (std::abs(v[i] - v[i - 1]) > threshold) starts.push_back(i);
+  starts.push_back(v.size());
+  auto median_speed = [&](std::size_t a, std::size_t b) {
+    std::vector<double> part(v.begin() + static_cast<long>(a), v.begin() + static_cast<long>(b));
+    std::nth_element(part.begin(), part.begin() + static_cast<long>(part.size() / 2), part.end());
+    const double m = part[part.size() / 2];
+    return std::abs(m) <= threshold ? 0.0 : m;
+  };
+  std::vector<std::size_t> kept{0};
+  for (std::size_t k = 1; k + 1 < starts.size(); ++k)
+    if (starts[k + 1] - starts[k] >= kMinSegmentSamples) kept.push_back(starts[k]);
+  kept.push_back(v.size());
+  DriveSegments out;
+  for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+    const double speed = median_speed(kept[k], kept[k + 1]);
+    if (!out.speed_m_per_s.empty() && std::abs(speed - out.speed_m_per_s.back()) <= threshold) continue;
+    out.start_s.push_back(t[kept[k]] - t.front());
+    out.speed_m_per_s.push_back(speed);
+  }
+  out.start_s.front() = 0.0;
+  return out;
+}
+
 // Velocity steps: steady μ per drive segment and μ − μ_before binned in load-point displacement.
 // With `noise`, the standard error of every feature from the record itself (see compare.h).
 Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector<std::vector<double>>* edges_out,
@@ -294,9 +335,29 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
   const std::size_t segments = plan.step_times_s.size();
   const double t_first = s.t.front();
   auto segment_end = [&](std::size_t k) { return k + 1 < segments ? t_first + plan.step_times_s[k + 1] : s.t.back(); };
-  std::vector<double> steady(segments);
+  auto hold = [&](std::size_t k) { return plan.step_speeds_m_per_s[k] == 0.0; };
+  std::vector<double> steady(segments, kNaN);
   for (std::size_t k = 0; k < segments; ++k) {
     const double a = t_first + plan.step_times_s[k], b = segment_end(k);
+    if (hold(k)) {
+      // Slide-hold-slide: the peak on re-sliding above the steady level before the hold — static
+      // friction grown with the hold time (healing) — within the first half of the next slide.
+      if (k == 0 || k + 1 >= segments || hold(k - 1)) continue;
+      const double t_on = t_first + plan.step_times_s[k + 1], t_search = t_on + 0.5 * (segment_end(k + 1) - t_on);
+      double peak = -std::numeric_limits<double>::infinity();
+      std::size_t in_window = 0;
+      for (std::size_t i = 1; i + 1 < s.t.size(); ++i) {
+        if (s.t[i] <= t_on || s.t[i] > t_search) continue;
+        ++in_window;
+        const double m = (s.mu[i - 1] + s.mu[i] + s.mu[i + 1]) / 3.0;
+        peak = std::max(peak, m);
+      }
+      if (!in_window || !std::isfinite(steady[k - 1])) continue;
+      const std::string key = "peak_after_hold_" + std::to_string(k);
+      f[key] = peak - steady[k - 1];
+      if (noise) (*noise)[key] = std::hypot(sample_noise / std::sqrt(3.0), (*noise)["steady_mu_" + std::to_string(k - 1)]);
+      continue;
+    }
     steady[k] = steady_mu(s, a, b);
     f["steady_mu_" + std::to_string(k)] = steady[k];
     if (noise) {
@@ -311,6 +372,12 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
     const double t_step = t_first + plan.step_times_s[k], t_end = segment_end(k);
     const double x_step = interp(s.t, s.x_drive, t_step);
     std::vector<double> edges;
+    // Bins only after a step between two slides: into a hold the load point does not travel, and
+    // out of one the peak above is the observable.
+    if (hold(k) || hold(k - 1)) {
+      if (edges_out) edges_out->push_back({});
+      continue;
+    }
     if (edges_out) {
       // Widths growing geometrically from the load-point travel of one sample, so the first bins
       // (one or two samples each) resolve the transient and alternate between train and
@@ -358,6 +425,7 @@ std::string phase_of(const std::string& observable, int index, const std::string
   if (observable == "mu_trough") return "slip end";
   if (observable == "rise_time_s") return "stick";
   if (observable == "steady_mu") return "stable slip";
+  if (observable == "peak_after_hold") return "slip onset after hold";
   if (observable == "mu_after_step") return index < kStepBins / 2 ? "slip transient after step" : "stable slip after step";
   if (observable == "mean_mu" && regime == "steady_sliding") return "stable slip";
   return "cycle";
@@ -386,7 +454,7 @@ StepResponse read_step_response(const Signal& s, const RunPlan& plan, double W) 
   StepResponse out;
   const double t_first = s.t.front();
   for (std::size_t k = 1; k < plan.step_times_s.size(); ++k) {
-    if (!(plan.step_speeds_m_per_s[k] > plan.step_speeds_m_per_s[k - 1])) continue;
+    if (!(plan.step_speeds_m_per_s[k] > plan.step_speeds_m_per_s[k - 1] && plan.step_speeds_m_per_s[k - 1] > 0.0)) continue;
     const double a = t_first + plan.step_times_s[k - 1], t_step = t_first + plan.step_times_s[k];
     const double t_end = k + 1 < plan.step_times_s.size() ? t_first + plan.step_times_s[k + 1] : s.t.back();
     const double before = steady_mu(s, a, t_step);
@@ -414,39 +482,18 @@ StepResponse read_step_response(const Signal& s, const RunPlan& plan, double W) 
   return out;
 }
 
-// A velocity step as the rig sees it: the first segment starts in steady sliding; at every step
-// the contact re-locks and the slider is carried by the surface from where it is until the
-// spring force reaches the static limit (it breaks away, re-arming slip-history effects). This
-// stands for the finite machine stiffness of a velocity-step apparatus, where the load point
-// speeds up and the stress rises elastically before the interface slips faster.
+// A drive history as the rig sees it: one run under the measured drive, from steady sliding at the
+// first speed. At every step the contact re-locks (rig::SimulationOptions::relock_at_drive_steps)
+// and the slider is carried by the surface until the spring reaches the static limit and it breaks
+// away, re-arming slip-history effects: the rig's stand-in for a velocity-step machine's finite
+// stiffness, where the load point speeds up and the stress rises elastically before the interface
+// slips faster. The friction law's state (healing, film, temperature) carries across the steps.
 Simulated simulate_steps(const rig::RigParameters& rig, const RunPlan& plan, const rig::FrictionLaw& law, const rig::FrictionModel& model,
                          std::uint64_t seed, rig::SimulationOptions options) {
-  Simulated all;
-  all.summary.completed = true;
-  double t_offset = 0.0, x_drive_offset = 0.0, x_end = 0.0;
-  for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
-    const double t_end = k + 1 < plan.step_times_s.size() ? plan.step_times_s[k + 1] : plan.duration_s;
-    options.duration_s = t_end - plan.step_times_s[k];
-    options.start_in_steady_sliding = k == 0;
-    options.initial_displacement_m = x_end;
-    const Simulated seg = run_simulation(rig, rig::Drive::constant(plan.step_speeds_m_per_s[k]), law, model, seed + k, options);
-    if (!seg.summary.completed || seg.samples.empty()) {
-      all.summary = seg.summary;
-      all.summary.completed = false;
-      return all;
-    }
-    for (std::size_t i = 0; i < seg.samples.size(); ++i) {
-      rig::Sample s = seg.samples[i];
-      s.t_s += t_offset;
-      s.drive_displacement_m += x_drive_offset;
-      all.samples.push_back(s);
-      all.friction_N.push_back(seg.friction_N[i]);
-    }
-    t_offset += options.duration_s;
-    x_drive_offset = all.samples.back().drive_displacement_m;
-    x_end = seg.samples.back().x_m;
-  }
-  return all;
+  options.duration_s = plan.duration_s;
+  options.start_in_steady_sliding = true;
+  options.relock_at_drive_steps = true;
+  return run_simulation(rig, rig::Drive::steps(plan.step_times_s, plan.step_speeds_m_per_s), law, model, seed, options);
 }
 
 double median_spacing(const std::vector<double>& t) {
@@ -503,17 +550,24 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.duration_s = tr.t_s.back() - tr.t_s.front();
     plan.sample_spacing_s = median_spacing(tr.t_s);
     if (!(plan.sample_spacing_s > 0.0)) throw std::invalid_argument("run " + run.run_id + ": trace time t_s does not increase");
-    if (tr.has_drive_history()) {
+    const bool history_kind = bundle.kind == "velocity_step" || bundle.kind == "slide_hold_slide";
+    if (history_kind && !tr.has_drive_history())
+      throw std::invalid_argument("run " + run.run_id + ": a " + bundle.kind + " test needs the drive record (column v_drive_m_per_s)");
+    if (!history_kind && tr.has_drive_history() && drive_segments(tr.t_s, tr.v_drive_m_per_s).speed_m_per_s.size() > 1)
+      throw std::invalid_argument("run " + run.run_id +
+                                  ": the drive changes speed; say which test this is with [rig] kind = \"velocity_step\" or \"slide_hold_slide\"");
+    if (history_kind) {
       plan.kind = RunPlan::Kind::drive_history;
-      const double vmax = *std::max_element(tr.v_drive_m_per_s.begin(), tr.v_drive_m_per_s.end());
-      plan.step_times_s.push_back(0.0);
-      plan.step_speeds_m_per_s.push_back(tr.v_drive_m_per_s.front());
+      const DriveSegments segments = drive_segments(tr.t_s, tr.v_drive_m_per_s);
+      plan.step_times_s = segments.start_s;
+      plan.step_speeds_m_per_s = segments.speed_m_per_s;
+      const auto holds = std::count(segments.speed_m_per_s.begin(), segments.speed_m_per_s.end(), 0.0);
+      if (bundle.kind == "slide_hold_slide" && holds == 0)
+        throw std::invalid_argument("run " + run.run_id + ": a slide_hold_slide test needs a hold (the drive at rest for at least " +
+                                    std::to_string(kMinSegmentSamples) + " samples)");
+      if (!(segments.speed_m_per_s.front() > 0.0))
+        throw std::invalid_argument("run " + run.run_id + ": the drive record must start sliding (positive speed)");
       for (double t : tr.t_s) plan.sample_times_s.push_back(t - tr.t_s.front());
-      for (std::size_t i = 1; i < tr.t_s.size(); ++i)
-        if (std::abs(tr.v_drive_m_per_s[i] - tr.v_drive_m_per_s[i - 1]) > 1e-3 * vmax) {
-          plan.step_times_s.push_back(tr.t_s[i] - tr.t_s.front());
-          plan.step_speeds_m_per_s.push_back(tr.v_drive_m_per_s[i]);
-        }
       if (!tr.x_drive_m.empty()) {
         s.x_drive = tr.x_drive_m;
       } else {
@@ -530,6 +584,12 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
         if (f.count(key) && std::isfinite(f.at(key)))
           add("steady_mu", 0, plan.label + ", v = " + numerics::fmt(plan.step_speeds_m_per_s[k], "%.3g") + " m/s", "steady_sliding",
               plan.step_speeds_m_per_s[k], units_++, f.at(key), key, noise);
+        const std::string peak_key = "peak_after_hold_" + std::to_string(k);
+        if (f.count(peak_key) && std::isfinite(f.at(peak_key))) {
+          const double t_hold = plan.step_times_s[k + 1] - plan.step_times_s[k];
+          add("peak_after_hold", 0, plan.label + ", after a " + numerics::fmt(t_hold, "%.3g") + " s hold", "stick_slip",
+              plan.step_speeds_m_per_s[k + 1], units_++, f.at(peak_key), peak_key, noise);
+        }
         if (k == 0) continue;
         const auto& edges = plan.step_bin_edges_m[k - 1];
         for (int j = 0; j < kStepBins; ++j) {

@@ -52,6 +52,7 @@ RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& sa
         max_slip = std::max(max_slip, e.phase_duration_s);
         break;
       case EventKind::reversal: ++o.reversals; break;
+      case EventKind::relock: break;  // the drive's doing, not the contact's: no regime evidence
     }
   }
   o.mu_s_mean = mean(mu_s);

@@ -16,6 +16,7 @@ const char* to_string(EventKind kind) {
     case EventKind::breakaway: return "breakaway";
     case EventKind::reattach: return "reattach";
     case EventKind::reversal: return "reversal";
+    case EventKind::relock: return "relock";
   }
   return "?";
 }
@@ -331,6 +332,22 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
         break;
       }
       if (t >= t_stop) {
+        if (options.relock_at_drive_steps && m.phase == Phase::slip && t < t_end) {
+          Event e;
+          e.t_s = t;
+          e.kind = EventKind::relock;
+          e.x_m = y[kX];
+          e.xdot_m_per_s = y[kXdot];
+          e.friction_N = m.direction * law.kinetic_force_N(m.context(t, y.data()));
+          e.mu = std::abs(e.friction_N) / rig.normal_load_N;
+          e.phase_duration_s = t - m.phase_start_s;
+          e.slip_distance_m = y[kSlip];
+          emit_event(e);
+          m.phase = Phase::stick;
+          m.direction = 0;
+          m.phase_start_s = t;
+          law.on_stick_onset(m.context(t, y.data()), law_state());
+        }
         if (m.phase == Phase::stick) y[kXdot] = drive.speed_m_per_s(t);  // follow a drive step
         settle();
         emit_sample();

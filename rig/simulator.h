@@ -43,9 +43,16 @@ struct SimulationOptions {
   // disc starts. Whether
   // it then sticks, oscillates or slides steadily is the rig's own answer.
   bool start_in_steady_sliding = false;
+  // At every drive breakpoint reached while slipping, the contact re-locks (event `relock`): the
+  // slider takes the drive's new speed and sticks until the spring reaches the static limit. This
+  // is how a velocity-step machine's stiff load point looks to the rig — the stress rises
+  // elastically after the step before the interface slips at the new rate — with the friction
+  // law's state carried through (healing, film, temperature), not restarted.
+  bool relock_at_drive_steps = false;
 };
 
-enum class EventKind { breakaway, reattach, reversal };
+// relock: a drive step re-locked a slipping contact (SimulationOptions::relock_at_drive_steps).
+enum class EventKind { breakaway, reattach, reversal, relock };
 const char* to_string(EventKind kind);
 
 struct Event {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
 
 #include "gap/compare.h"
 #include "gap/diagnosis.h"
@@ -192,6 +193,72 @@ TEST(Comparison, StepResponseReadsPeakStiffnessAndDecayDistance) {
   EXPECT_NEAR(s.peak_travel_m, x_peak, 0.1e-6);
   EXPECT_NEAR(s.loading_stiffness_N_per_m, rig.normal_load_N * rise / x_peak, 0.15 * rig.normal_load_N * rise / x_peak);
   EXPECT_NEAR(s.decay_distance_m, decay, 0.2e-6);  // two samples
+}
+
+// A slide-hold-slide record as a servo machine writes it: slides at V = 10 µm/s (50 s) around holds
+// of 10 s and 30 s, sampled at 10 Hz, the drive speed with 1 % noise and a one-sample glitch.
+// Friction is 0.6 while sliding and holds its level at rest; on re-sliding it stands A(t_h) =
+// 0.01 ln(1 + t_h/1 s) above that for the first 5 µm of travel (five samples, so the 3-sample mean
+// at the peak is A exactly), then decays. The drive record gives five segments (the noise and the
+// glitch none), and each hold one `peak_after_hold` item equal to A(t_h).
+gap::Run slide_hold_slide_run() {
+  gap::Run run;
+  run.run_id = "0";
+  run.v_m_per_s = 1e-5;
+  const double v = 1e-5, dt = 0.1;
+  const std::vector<double> ends{50.0, 60.0, 110.0, 140.0, 190.0};  // slide, hold 10, slide, hold 30, slide
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.01 * v);
+  double x = 0.0, x_resumed = 0.0, excess = 0.0;
+  std::size_t segment = 0;
+  for (int i = 0; i * dt <= ends.back() + 1e-9; ++i) {
+    const double t = i * dt;
+    while (t > ends[segment] + 1e-9) {
+      ++segment;
+      if (segment % 2 == 0) x_resumed = x, excess = 0.01 * std::log1p(ends[segment - 1] - ends[segment - 2]);
+    }
+    const bool sliding = segment % 2 == 0;
+    if (i > 0 && sliding) x += v * dt;
+    run.trace.t_s.push_back(t);
+    run.trace.x_drive_m.push_back(x);
+    run.trace.v_drive_m_per_s.push_back((sliding ? v : 0.0) + noise(rng) + (i == 300 ? 5.0 * v : 0.0));
+    const double travel = x - x_resumed;
+    run.trace.mu.push_back(0.6 + (!sliding || travel > 5.5e-6 ? excess * (sliding ? std::exp(-(travel - 5e-6) / 2e-6) : 0.0) : excess));
+  }
+  return run;
+}
+
+TEST(Comparison, SlideHoldSlideFindsTheHoldsAndThePeakAfterEach) {
+  ExperimentBundle b;
+  b.kind = "slide_hold_slide";
+  b.runs.push_back(slide_hold_slide_run());
+  const Comparison c(b, rig::RigParameters{});
+  std::vector<double> peaks;
+  int steady = 0;
+  for (const Item& it : c.items()) {
+    if (it.observable == "peak_after_hold") peaks.push_back(it.measured);
+    steady += it.observable == "steady_mu";
+  }
+  EXPECT_EQ(steady, 3);  // the three slides; holds have no steady level
+  ASSERT_EQ(peaks.size(), 2u);
+  EXPECT_NEAR(peaks[0], 0.01 * std::log1p(10.0), 1e-12);
+  EXPECT_NEAR(peaks[1], 0.01 * std::log1p(30.0), 1e-12);
+}
+
+// The kind says which analysis a record gets: a drive that changes speed in a pin-on-disc bundle,
+// or a slide-hold-slide bundle with no hold, is refused, naming the run and the key to set.
+TEST(Comparison, TheKindMustMatchTheDriveRecord) {
+  ExperimentBundle b;
+  b.runs.push_back(slide_hold_slide_run());
+  try {
+    const Comparison c(b, rig::RigParameters{});
+    ADD_FAILURE() << "a stepping drive was analysed at constant speed";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("[rig] kind"), std::string::npos) << e.what();
+  }
+  b.kind = "slide_hold_slide";
+  for (double& v : b.runs[0].trace.v_drive_m_per_s) v = 1e-5;
+  EXPECT_THROW(Comparison(b, rig::RigParameters{}), std::invalid_argument);
 }
 
 // Resuming an interrupted selftest: a case already in `finished` is taken as it was written (here

@@ -73,6 +73,7 @@ TEST(NoiseFloor, StepBinsCarryTheRecordsHighPassNoise) {
     r.trace.mu.push_back(0.6 + (after ? 0.01 * std::exp(-(t - t_step) / 2.0) : 0.0) + noise(rng));
   }
   ExperimentBundle b;
+  b.kind = "velocity_step";
   b.normal_load_N = 10.0;
   b.runs.push_back(r);
   const Comparison c(b, rig::RigParameters{});

@@ -1,5 +1,6 @@
-// Drive histories: exact displacement of piecewise-linear speed, and a stuck slider following a
-// velocity step (load-rate change at the step, thesis 3.1.20 φ̇ = k v / W while stuck).
+// Drive histories: exact displacement of piecewise-linear speed, a stuck slider following a
+// velocity step (load-rate change at the step, thesis 3.1.20 φ̇ = k v / W while stuck), and a
+// slipping one re-locked by a step.
 #include <gtest/gtest.h>
 
 #include "rig/drive.h"
@@ -46,6 +47,34 @@ TEST(Drive, StuckSliderBreaksAwayWhenTheSpringReachesMuSW) {
   const double t_expected = 0.5 + (x_s - 0.5e-3) / 3e-3;
   EXPECT_NEAR(e.t_s, t_expected, 1e-8);
   EXPECT_NEAR(e.load_rate_per_s, rig.stiffness_N_per_m * 3e-3 / rig.normal_load_N, 1e-12);
+}
+
+// SimulationOptions::relock_at_drive_steps: sliding steadily at 0.1 m/s, the drive steps to 0.2 m/s
+// at t = 1 s; the contact re-locks there (event `relock` at the step), the slider moves with the
+// drive, x = x(1) + v₂ (t − 1), and breaks away where k x + r v₂ = μs W — the same closed form as
+// a stuck start. Without the option the slider slips on through the step.
+TEST(Drive, RelockAtADriveStepSticksUntilTheSpringReachesMuSW) {
+  const RigParameters rig;
+  const Drive d = Drive::steps({0.0, 1.0}, {0.1, 0.2});
+  auto law = make_coulomb(0.3, 0.2);
+  SimulationOptions opt;
+  opt.duration_s = 1.5;
+  opt.start_in_steady_sliding = true;
+  opt.relock_at_drive_steps = true;
+  const SimulationResult r = simulate(rig, d, *law, opt);
+  ASSERT_TRUE(r.summary.completed) << r.summary.message;
+  ASSERT_GE(r.events.size(), 2u);
+  const Event& relock = r.events[0];
+  ASSERT_EQ(relock.kind, EventKind::relock);
+  EXPECT_DOUBLE_EQ(relock.t_s, 1.0);
+  EXPECT_NEAR(relock.mu, 0.2, 1e-12);  // it was slipping on the kinetic level
+  const Event& breakaway = r.events[1];
+  ASSERT_EQ(breakaway.kind, EventKind::breakaway);
+  const double x_s = (0.3 * rig.normal_load_N - rig.damping_N_s_per_m * 0.2) / rig.stiffness_N_per_m;
+  EXPECT_NEAR(breakaway.t_s, 1.0 + (x_s - relock.x_m) / 0.2, 1e-8);
+
+  opt.relock_at_drive_steps = false;
+  for (const Event& e : simulate(rig, d, *law, opt).events) EXPECT_NE(e.kind, EventKind::relock);
 }
 
 }  // namespace
