@@ -17,6 +17,139 @@ double coulomb_stick_time(const RigConstants& rig, double mu_s, double mu_k, dou
   return coulomb_stick_slip(rig, mu_s, mu_k, v).stick_time_s;
 }
 
+// The explicit RK4 step for a drive-history run. The fastest rate of the slipping machine is the
+// slider's speed following the friction: the direct effect acts as a damper aW/(V0 + U)
+// (laws.h: ∂μ/∂U = a/(V0 + U)), so that rate is (aW/(V0 + U) + r)/M at the lowest slip speed U
+// the run meets; RK4 is stable below 2.79/rate on the negative axis (1.5 kept). The oscillation
+// is resolved at ω_n Δt ≤ 0.2. (Halving or quartering the step moves the record by ≤ 2e-6 μ.)
+double stable_step_s(const RigConstants& rig, const IndependentLaw& law, double lowest_slip_speed_m_per_s) {
+  double damping = rig.damping_N_s_per_m;
+  if (law.rate_state) damping += law.rate_state->a * rig.normal_load_N / (law.rate_state->reference_speed_m_per_s + lowest_slip_speed_m_per_s);
+  return std::min(1.5 * rig.mass_kg / damping, 0.2 * std::sqrt(rig.mass_kg / rig.stiffness_N_per_m));
+}
+
+// The slide-hold-slide and velocity-step cases (generator.h).
+IndependentCase make_drive_history_case(const std::string& kind, const std::string& effect, std::uint64_t seed, const DriveHistoryOptions& o) {
+  if (effect != "rate_and_state" && effect != "none")
+    throw std::invalid_argument("independent generator: no " + kind + " case for effect '" + effect + "' (rate_and_state or none)");
+  const bool shs = kind == "slide_hold_slide";
+  // Every draw is made whatever the effect: one seed, one machine, drive and chain for both.
+  std::mt19937_64 rng(seed * 0x2545F4914F6CDD1DULL + (shs ? 0x5A1DULL : 0x7E57ULL));
+  IndependentCase c;
+  c.true_effect = effect;
+  // The material, in the ranges of rock and gouge (Marone 1998): steady friction at V, a, b − a
+  // (velocity weakening), D_c; the velocity step at a ≈ 0.01, b ≈ 0.012.
+  const double mu_ss = uniform(rng, 0.55, 0.7);
+  const double a = shs ? uniform(rng, 0.005, 0.015) : uniform(rng, 0.008, 0.012);
+  const double b = a + (shs ? uniform(rng, 0.002, 0.01) : uniform(rng, 0.0015, 0.0025));
+  const double V = log_uniform(rng, 1e-6, 1e-5);
+  const double dc = log_uniform(rng, 1e-6, std::min(2e-5, 2.0 * V));  // D_c/V ≤ 2 s: a record of minutes, not hours
+  const double mu_s_coulomb = mu_ss + uniform(rng, 0.01, 0.03);       // the control's static friction
+  // The machine as told. Stiff: at least five times the critical stiffness W(b − a)/D_c of
+  // steady sliding (Ruina 1983; Rice & Ruina 1983), so that the record is stable sliding with
+  // transients. Well damped: ζ in [0.3, 0.7]. The mass is a loading train's: it only sets how
+  // fast the slider's speed follows the friction, at (aW/V0)/M ≫ every rate of the test (the
+  // direct effect overdamps the machine), and keeps the explicit step (stable_step_s) ≥ 1e-5 s.
+  c.told.normal_load_N = uniform(rng, 50.0, 100.0);
+  c.told.mass_kg = log_uniform(rng, 10.0, 50.0);
+  c.told.stiffness_N_per_m = std::max(log_uniform(rng, 1e5, 1e6), 5.0 * c.told.normal_load_N * (b - a) / dc);
+  c.told.damping_N_s_per_m = 2.0 * uniform(rng, 0.3, 0.7) * std::sqrt(c.told.stiffness_N_per_m * c.told.mass_kg);
+  c.actual = c.told;
+  auto spread = [&](double f) { return 1.0 + uniform(rng, -f, f); };
+  c.actual.stiffness_N_per_m *= spread(o.constant_spread);
+  c.actual.mass_kg *= spread(o.constant_spread);
+  c.actual.normal_load_N *= spread(o.constant_spread);
+  c.actual.damping_N_s_per_m *= spread(o.damping_spread);
+  const double W = c.actual.normal_load_N, k = c.actual.stiffness_N_per_m;
+
+  // A laboratory chain: ±2 % gain, ≤ 5 ms delay, offset and drift (over the record, once its
+  // length is known) of a few tenths of a per cent of μW, AR(1) noise at noise_fraction of μW, a
+  // 16-bit converter over ±2 W; the displacement (the spring's stretch, μW/k) to 0.1 % of itself,
+  // 16 bits over ±2 W/k.
+  c.friction_chain.gain = spread(0.02);
+  c.friction_chain.delay_s = uniform(rng, 0.0, 5e-3);
+  c.friction_chain.sensor_time_constant_s = 2e-4;
+  c.friction_chain.offset = uniform(rng, -0.003, 0.003) * mu_ss * W;
+  const double drift_fraction = uniform(rng, -0.002, 0.002);
+  c.friction_chain.noise_rms = o.noise_fraction * mu_ss * W;
+  c.friction_chain.noise_correlation = uniform(rng, 0.5, 0.9);
+  c.friction_chain.quantum = 4.0 * c.told.normal_load_N / 65536.0;
+  c.displacement_chain.gain = spread(0.01);
+  c.displacement_chain.noise_rms = 1e-3 * mu_ss * W / k;
+  c.displacement_chain.noise_correlation = 0.5;
+  c.displacement_chain.quantum = 4.0 * c.told.normal_load_N / c.told.stiffness_N_per_m / 65536.0;
+
+  // The drive: slides of slide_decay_lengths · D_c at each speed (the ageing law's state returns
+  // to steady sliding as exp(−slip/D_c): 25 D_c leaves e⁻²⁵ of a hold's θ) and at least
+  // min_slide_s long, holds at v = 0.
+  const double slide_m = o.slide_decay_lengths * dc;
+  double t_end = 0.0;
+  auto segment = [&](double duration_s, double v) {
+    c.drive.start_s.push_back(t_end);
+    c.drive.speed_m_per_s.push_back(v);
+    t_end += duration_s;
+  };
+  auto slide = [&](double v) { segment(std::max(slide_m / v, o.min_slide_s), v); };
+  slide(V);
+  if (shs) {
+    for (double hold : o.hold_times_s) segment(hold, 0.0), slide(V);
+  } else {
+    slide(o.step_factor * V);
+    slide(V);
+  }
+  c.friction_chain.drift_per_s = drift_fraction * mu_ss * W / t_end;
+
+  c.truth.mu_s = mu_s_coulomb, c.truth.mu_k = mu_ss;
+  // The diagnosis' model: the control's Coulomb law, μs 3 % high and μk 2 % low.
+  c.model_mu_s = 1.03 * mu_s_coulomb, c.model_mu_k = 0.98 * mu_ss;
+  if (effect == "rate_and_state") {
+    RateState rs;
+    rs.evolution = RateState::Evolution::ageing;
+    rs.reset_at_breakaway = false;
+    rs.a = a, rs.b = b, rs.decay_distance_m = dc;
+    rs.reference_speed_m_per_s = shs ? V : 0.01 * V;
+    // Steady sliding at V at μss: μ0 + a ln(1 + V/V0) + b ln(V0/V) = μss.
+    rs.mu_0 = mu_ss - a * std::log1p(V / rs.reference_speed_m_per_s) - b * std::log(rs.reference_speed_m_per_s / V);
+    c.truth.rate_state = rs;
+    c.form = "Dieterich-Ruina rate and state, ageing law, healing while stuck";
+  } else {
+    c.form = "Coulomb";
+  }
+
+  // From steady sliding at V: the slider at rest (ẋ = 0) where the spring holds μss W. The
+  // lowest slip speed: 0 at a hold's stick; in a velocity step the slider only moves to take up
+  // the spring's share of a friction change, U stays near the drive's speed (half of V kept).
+  const int n = static_cast<int>(std::ceil(o.output_step_s / stable_step_s(c.actual, c.truth, shs ? 0.0 : 0.5 * V)));
+  IntegratorOptions io;
+  io.step_s = o.output_step_s / n;
+  io.record_every = n;
+  io.duration_s = t_end;
+  io.start_stuck = false;
+  io.initial_displacement_m = mu_ss * W / k;
+  const RawRecord raw = integrate(c.actual, c.truth, c.drive, io);
+  if (!raw.completed) throw std::runtime_error("independent generator: " + kind + " run did not complete: " + raw.message);
+
+  ExperimentBundle& bundle = c.bundle;
+  bundle.name = "independent_" + kind;
+  bundle.kind = kind;
+  bundle.mass_kg = c.told.mass_kg;
+  bundle.stiffness_N_per_m = c.told.stiffness_N_per_m;
+  bundle.damping_N_s_per_m = c.told.damping_N_s_per_m;
+  bundle.normal_load_N = c.told.normal_load_N;
+  bundle.slider_radius_m = c.told.slider_radius_m;
+  std::mt19937_64 noise_rng(seed * 0x9E3779B97F4A7C15ULL + 29);
+  Run run;
+  run.run_id = "0";
+  run.v_m_per_s = V;
+  run.file = "traces/run_0.csv";
+  Trace& tr = run.trace;
+  tr.friction_N = record_channel(raw.friction_N, raw.step_s, c.friction_chain, o.recorder, noise_rng, &tr.t_s);
+  tr.x_m = record_channel(raw.x_m, raw.step_s, c.displacement_chain, o.recorder, noise_rng, nullptr);
+  for (double t : tr.t_s) tr.x_drive_m.push_back(c.drive.displacement_at(t)), tr.v_drive_m_per_s.push_back(c.drive.speed_at(t));
+  bundle.runs.push_back(std::move(run));
+  return c;
+}
+
 }  // namespace
 
 const std::vector<std::string>& independent_effects() {
@@ -174,6 +307,14 @@ IndependentCase make_independent_case(const std::string& effect, std::uint64_t s
   }
   c.bundle = record_bundle(c.truth, c.actual, c.told, c.friction_chain, c.displacement_chain, c.velocity_chain, o, seed);
   return c;
+}
+
+IndependentCase make_slide_hold_slide_case(const std::string& effect, std::uint64_t seed, const DriveHistoryOptions& o) {
+  return make_drive_history_case("slide_hold_slide", effect, seed, o);
+}
+
+IndependentCase make_velocity_step_case(const std::string& effect, std::uint64_t seed, const DriveHistoryOptions& o) {
+  return make_drive_history_case("velocity_step", effect, seed, o);
 }
 
 }  // namespace tribo::gap::independent

@@ -36,6 +36,7 @@ struct IndependentCase {
   RigConstants actual, told;            // the rig as it is, and as the bundle's [rig] says
   ChannelChain friction_chain, displacement_chain, velocity_chain;
   double model_mu_s = 0.0, model_mu_k = 0.0;  // the miscalibrated Coulomb model for the diagnosis
+  DriveHistory drive;                   // the drive as run (drive-history cases; else empty)
   ExperimentBundle bundle;
 };
 
@@ -53,5 +54,39 @@ IndependentCase make_independent_case(const std::string& true_effect, std::uint6
 ExperimentBundle record_bundle(const IndependentLaw& truth, const RigConstants& actual, const RigConstants& told,
                                const ChannelChain& friction, const ChannelChain& displacement, const ChannelChain& velocity,
                                const GeneratorOptions& options, std::uint64_t seed);
+
+// Drive-history tests as rock- and polymer-friction laboratories run them, on a stiff,
+// well-damped machine: a slide-hold-slide (Dieterich 1972, 1979; Marone 1998, Annu. Rev. Earth
+// Planet. Sci. 26:643) — slide at V, hold with the drive stopped for t_h, slide again at V, for
+// holds of increasing length — and a velocity step V → f V → V (Dieterich 1979; Ruina 1983).
+struct DriveHistoryOptions {
+  std::vector<double> hold_times_s{1.0, 3.0, 10.0, 30.0, 100.0};  // slide-hold-slide, in this order
+  double step_factor = 10.0;          // velocity step: V → f V → V
+  double slide_decay_lengths = 25.0;  // slip at each speed before the drive changes, in D_c,
+  double min_slide_s = 2.0;           // and at least this long (the steady level is read off its end)
+  double output_step_s = 1e-3;        // the integrator's record, which the chain filters and decimates
+  Recorder recorder{50.0, 4, 0.4};    // 50 Hz, 4th-order Butterworth at 10 Hz
+  double noise_fraction = 0.003;      // rms of the friction channel's AR(1) noise / (μ W)
+  double constant_spread = 0.03;      // k, M, W off their told values by up to ± this fraction
+  double damping_spread = 0.10;       // r by up to ± this fraction
+};
+
+// One drive-history case, true_effect "rate_and_state" or "none" (else std::invalid_argument;
+// std::runtime_error when the run does not complete). Parameters are drawn from `seed` (a stream
+// of their own); the same seed gives both effects the same machine, drive and chain.
+//   rate_and_state   Dieterich–Ruina, ageing law, no reset at breakaway: the static threshold is
+//                    μ(0, θ) and θ ages by the hold time, so the peak on re-sliding after a hold
+//                    rises ≈ b ln(1 + t_h V/D_c) above the steady level (Marone 1998); V0 = V
+//                    for the slide-hold-slide, V0 = V/100 for the velocity step, whose steady
+//                    level then moves by (a − b) ln(V2/V1) + a ln((1 + V0/V2)/(1 + V0/V1)), the
+//                    second term (the regularisation, laws.h) ≈ −0.009 a.
+//   none             Coulomb μs > μk: no healing — the same peak μs after any hold (and, once it
+//                    has stuck, stick-slip while sliding, as a Coulomb slider has on an
+//                    underdamped machine) and no rate dependence.
+// The bundle: one run (kind "slide_hold_slide" or "velocity_step", v_m_per_s = V) with friction_N
+// and x_m through the chains, and the drive's commanded record x_drive_m, v_drive_m_per_s (a
+// servo logs its set point: exact at the sample times); [rig] tells k, M, r, W a few per cent off.
+IndependentCase make_slide_hold_slide_case(const std::string& true_effect, std::uint64_t seed, const DriveHistoryOptions& options = {});
+IndependentCase make_velocity_step_case(const std::string& true_effect, std::uint64_t seed, const DriveHistoryOptions& options = {});
 
 }  // namespace tribo::gap::independent

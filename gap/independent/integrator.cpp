@@ -1,5 +1,6 @@
 #include "gap/independent/integrator.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <stdexcept>
@@ -94,6 +95,41 @@ class Machine {
   }
   double slack_N(const State& s) const { return std::abs(holding_force_N(s)) - threshold_N(s); }
 
+  // Stick → slip at time t.
+  State break_away(State at, double t, RawRecord& rec) const {
+    at.stuck = false;
+    at.direction = holding_force_N(at) >= 0.0 ? 1.0 : -1.0;
+    if (law_.rate_state && law_.rate_state->reset_at_breakaway) at.theta = law_.rate_state->state_at_rest(static_mu(at));
+    rec.breakaway_t_s.push_back(t);
+    return at;
+  }
+  // U = 0 while slipping, at time t: the slider sticks if the force that holds it is within the
+  // threshold (of a contact with no time at rest yet), else slips on, the other way if need be.
+  State reattach(State at, double t, RawRecord& rec) const {
+    at.xdot = v_;
+    rec.reattach_t_s.push_back(t);
+    if (slack_N(State{at.x, at.xdot, at.theta, at.h, 0.0, true, at.direction}) <= 0.0) {
+      at.stuck = true;
+      at.t_rest = 0.0;
+    } else {
+      at.direction = holding_force_N(at) >= 0.0 ? 1.0 : -1.0;
+    }
+    return at;
+  }
+  // The drive speed jumps to v at time t (integrator.h): a stuck slider is carried along by the
+  // rigid contact, then tested for breakaway; a slipping one keeps ẋ, and U = 0 is a re-attachment.
+  // U is zero but for rounding when a slider at rest in steady sliding (ẋ = 0 up to the last bits
+  // of the force balance) meets a stopped drive: |U| ≤ 1e-9 |Δv| counts as zero.
+  State jump(State s, double v, double t, RawRecord& rec) {
+    const double dv = v - v_;
+    v_ = v;
+    if (s.stuck) {
+      s.xdot = v;
+      return slack_N(s) > 0.0 ? break_away(s, t, rec) : s;
+    }
+    return std::abs(v - s.xdot) <= 1e-9 * std::abs(dv) ? reattach(s, t, rec) : s;
+  }
+
   // Advances by τ, locating at most a few events inside; appends event times.
   State advance(State s, double t, double tau, RawRecord& rec, int depth = 0) const {
     if (tau <= 0.0) return s;
@@ -106,12 +142,7 @@ class Machine {
         const double mid = 0.5 * (lo + hi);
         (slack_N(stick_step(s, mid)) <= 0.0 ? lo : hi) = mid;
       }
-      State at = stick_step(s, hi);
-      at.stuck = false;
-      at.direction = holding_force_N(at) >= 0.0 ? 1.0 : -1.0;
-      if (law_.rate_state && law_.rate_state->reset_at_breakaway) at.theta = law_.rate_state->state_at_rest(static_mu(at));
-      rec.breakaway_t_s.push_back(t + hi);
-      return advance(at, t + hi, tau - hi, rec, depth + 1);
+      return advance(break_away(stick_step(s, hi), t + hi, rec), t + hi, tau - hi, rec, depth + 1);
     }
     if (s.xdot != v_) s.direction = v_ - s.xdot > 0.0 ? 1.0 : -1.0;
     const State end = slip_step(s, tau);
@@ -124,16 +155,7 @@ class Machine {
       (s.direction * (v_ - slip_step(s, mid).xdot) > 0.0 ? lo : hi) = mid;
     }
     if (hi < 1e-9 * tau && u0 == 0.0) return end;  // just broke away at U = 0; the slip has not begun
-    State at = slip_step(s, hi);
-    at.xdot = v_;
-    rec.reattach_t_s.push_back(t + hi);
-    if (slack_N(State{at.x, at.xdot, at.theta, at.h, 0.0, true, at.direction}) <= 0.0) {
-      at.stuck = true;
-      at.t_rest = 0.0;
-    } else {
-      at.direction = holding_force_N(at) >= 0.0 ? 1.0 : -1.0;  // slips on, the other way if need be
-    }
-    return advance(at, t + hi, tau - hi, rec, depth + 1);
+    return advance(reattach(slip_step(s, hi), t + hi, rec), t + hi, tau - hi, rec, depth + 1);
   }
 
   double friction_now(const State& s) const {
@@ -148,21 +170,46 @@ class Machine {
 
 }  // namespace
 
-RawRecord integrate(const RigConstants& rig, const IndependentLaw& law, double v, const IntegratorOptions& o) {
+void DriveHistory::validate() const {
+  if (start_s.empty() || start_s.size() != speed_m_per_s.size() || start_s.front() != 0.0)
+    throw std::invalid_argument("drive history: start_s and speed_m_per_s must be of one length >= 1, start_s[0] = 0");
+  for (std::size_t j = 0; j < start_s.size(); ++j) {
+    if (!std::isfinite(start_s[j]) || !std::isfinite(speed_m_per_s[j])) throw std::invalid_argument("drive history: not finite");
+    if (j && !(start_s[j] > start_s[j - 1])) throw std::invalid_argument("drive history: start_s must increase strictly");
+  }
+}
+
+std::size_t DriveHistory::segment_at(double t) const {
+  const auto after = std::upper_bound(start_s.begin(), start_s.end(), t);
+  return after == start_s.begin() ? 0 : static_cast<std::size_t>(after - start_s.begin()) - 1;
+}
+
+double DriveHistory::displacement_at(double t) const {
+  const std::size_t k = segment_at(t);
+  double x = 0.0;
+  for (std::size_t j = 0; j < k; ++j) x += speed_m_per_s[j] * (start_s[j + 1] - start_s[j]);
+  return x + speed_m_per_s[k] * (t - start_s[k]);
+}
+
+RawRecord integrate(const RigConstants& rig, const IndependentLaw& law, const DriveHistory& drive, const IntegratorOptions& o) {
   if (!(o.step_s > 0.0) || !(o.duration_s > o.step_s)) throw std::invalid_argument("independent integrator: step_s and duration_s must be positive, duration > step");
-  const Machine m(rig, law, v);
+  if (o.record_every < 1) throw std::invalid_argument("independent integrator: record_every must be >= 1");
+  drive.validate();
+  const double v = drive.speed_m_per_s.front();
+  Machine m(rig, law, v);
   RawRecord rec;
-  rec.step_s = o.step_s;
+  rec.step_s = o.step_s * o.record_every;
   State s;
   s.x = o.initial_displacement_m;
   s.stuck = o.start_stuck;
   s.xdot = o.start_stuck ? v : o.initial_speed_m_per_s;
   s.direction = (v - s.xdot) >= 0.0 ? 1.0 : -1.0;
   if (!o.start_stuck && v == s.xdot) s.direction = m.holding_force_N(s) >= 0.0 ? 1.0 : -1.0;
-  // The film starts dry; the rate-and-state contact starts at the steady state of the drive speed.
+  // The film starts dry; the rate-and-state contact starts at the steady state of the first drive speed.
   if (law.rate_state) s.theta = law.rate_state->decay_distance_m / std::max(std::abs(v), 1e-12);
   const std::size_t n = static_cast<std::size_t>(std::llround(o.duration_s / o.step_s));
-  rec.t_s.reserve(n + 1), rec.x_m.reserve(n + 1), rec.xdot_m_per_s.reserve(n + 1), rec.friction_N.reserve(n + 1);
+  const std::size_t n_out = n / static_cast<std::size_t>(o.record_every) + 1;
+  rec.t_s.reserve(n_out), rec.x_m.reserve(n_out), rec.xdot_m_per_s.reserve(n_out), rec.friction_N.reserve(n_out);
   auto record = [&](double t) {
     rec.t_s.push_back(t);
     rec.x_m.push_back(s.x);
@@ -170,10 +217,20 @@ RawRecord integrate(const RigConstants& rig, const IndependentLaw& law, double v
     rec.friction_N.push_back(m.friction_now(s));
   };
   record(0.0);
+  std::size_t segment = 0;  // of the drive, at the start of the step
   for (std::size_t i = 0; i < n; ++i) {
-    const double t = static_cast<double>(i) * o.step_s;
+    const double t0 = static_cast<double>(i) * o.step_s, t1 = static_cast<double>(i + 1) * o.step_s;
     try {
-      s = m.advance(s, t, o.step_s, rec);
+      // Up to each drive jump inside (t0, t1], the jump, then the rest of the step: the state
+      // recorded at a jump's time is the one after it.
+      double t = t0;
+      for (; segment + 1 < drive.start_s.size() && drive.start_s[segment + 1] <= t1; ++segment) {
+        const double t_jump = drive.start_s[segment + 1];
+        s = m.advance(s, t, t_jump - t, rec);
+        s = m.jump(s, drive.speed_m_per_s[segment + 1], t_jump, rec);
+        t = t_jump;
+      }
+      s = m.advance(s, t, t1 - t, rec);
     } catch (const std::runtime_error& e) {
       rec.completed = false;
       rec.message = e.what();
@@ -181,12 +238,16 @@ RawRecord integrate(const RigConstants& rig, const IndependentLaw& law, double v
     }
     if (!std::isfinite(s.x) || !std::isfinite(s.xdot)) {
       rec.completed = false;
-      rec.message = "independent integrator: state not finite at t = " + std::to_string(t);
+      rec.message = "independent integrator: state not finite at t = " + std::to_string(t0);
       return rec;
     }
-    record(static_cast<double>(i + 1) * o.step_s);
+    if ((i + 1) % static_cast<std::size_t>(o.record_every) == 0) record(t1);
   }
   return rec;
+}
+
+RawRecord integrate(const RigConstants& rig, const IndependentLaw& law, double v, const IntegratorOptions& o) {
+  return integrate(rig, law, DriveHistory::constant(v), o);
 }
 
 CoulombStickSlip coulomb_stick_slip(const RigConstants& rig, double mu_s, double mu_k, double v) {
