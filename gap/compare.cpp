@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <exception>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 #include "numerics/format.h"
@@ -508,6 +510,93 @@ int samples_per_period(const rig::RigParameters& rig, double spacing_s) {
   return static_cast<int>(std::clamp(std::round(period / spacing_s), 4.0, 100.0));
 }
 
+// The simulation of one plan, analysed as the measured side was (features by key); the trace
+// as measured when `trace` is given. Empty for a parameter set the rig rejects (e.g. overdamped):
+// its items have no prediction, residual 1.
+Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const rig::FrictionModel& model, const rig::FrictionLaw& law,
+                      std::uint64_t seed, std::optional<SimulatedRun>* trace) {
+  Features f;
+  const double W = rig.normal_load_N, k = rig.stiffness_N_per_m;
+  rig::SimulationOptions options;
+  options.max_events = 200'000;
+  try {
+    switch (plan.kind) {
+      case RunPlan::Kind::constant_speed:
+      case RunPlan::Kind::drive_history: {
+        const bool history = plan.kind == RunPlan::Kind::drive_history;
+        options.duration_s = plan.duration_s;
+        options.samples_per_period = history ? samples_per_period(rig, plan.sample_spacing_s) : kSamplesPerPeriod;
+        options.start_in_steady_sliding = history;
+        Simulated sim;
+        if (history) {
+          sim = simulate_steps(rig, plan, law, model, seed, options);
+        } else {
+          sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), law, model, seed, options);
+        }
+        if (!sim.summary.completed || sim.samples.size() < 3) break;
+        Signal s;
+        for (std::size_t i = 0; i < sim.samples.size(); ++i) {
+          if (!s.t.empty() && !(sim.samples[i].t_s > s.t.back())) continue;
+          s.t.push_back(sim.samples[i].t_s);
+          s.mu.push_back(sim.friction_N[i] / W);
+          s.x.push_back(sim.samples[i].x_m);
+          s.x_drive.push_back(sim.samples[i].drive_displacement_m);
+        }
+        if (history) {
+          // Sampled where the measurement was: a bin near the step holds one or two measured
+          // samples, and the simulated bin must average the same instants, not the whole bin.
+          Signal at;
+          for (double t : plan.sample_times_s) {
+            const bool last = t >= s.t.back();  // the run ends at the last measured instant
+            at.t.push_back(t);
+            at.mu.push_back(last ? s.mu.back() : interp(s.t, s.mu, t));
+            at.x_drive.push_back(last ? s.x_drive.back() : interp(s.t, s.x_drive, t));
+          }
+          f = analyse_drive_history(at, plan, nullptr);
+        } else {
+          double step = plan.slip_step_s;
+          f = analyse_constant_speed(s, plan.sample_spacing_s, step, nullptr);
+        }
+        if (trace) {
+          std::vector<double> F;
+          for (double m : s.mu) F.push_back(m * W);
+          *trace = SimulatedRun{plan.label, s.t, F, s.mu};
+        }
+        break;
+      }
+      case RunPlan::Kind::static_point: {
+        const double v = plan.v_m_per_s * W / k;
+        options.duration_s = plan.duration_s;
+        // Only the first breakaway matters: keep no samples and output as sparsely as allowed.
+        options.samples_per_period = 4;  // the rig's minimum
+        options.stick_samples_per_run = 10;
+        // Read off the same friction channel as the traces.
+        const rig::InstrumentModel instrument = rig::instrument_from(model, seed);
+        rig::SimulationObserver observer;
+        observer.on_event = [&f, &instrument](const rig::Event& e) {
+          if (e.kind == rig::EventKind::breakaway && !f.count("mu_s")) f["mu_s"] = rig::breakaway_reading(instrument, e.mu);
+        };
+        rig::simulate(rig, rig::Drive::constant(v), law, options, observer);
+        break;
+      }
+      case RunPlan::Kind::regime_point: {
+        const double mu_scale = std::max(model.baseline.mu_s, 0.05);
+        options.duration_s = std::clamp(6.0 * mu_scale * W / (k * plan.v_m_per_s) + 1.0, 1.0, 60.0);
+        const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(plan.v_m_per_s), law, options);
+        if (!r.summary.completed) break;
+        const rig::RunObservables o = rig::summarise(rig, r.samples, r.events, rig::analysis_start_s(0.0, r.summary.end_time_s));
+        f["regime_mismatch"] = o.regime == plan.regime ? 0.0 : 1.0;
+        f["amplitude_m"] = 0.5 * o.peak_to_peak_m;
+        if (std::isfinite(o.period_s) && o.period_s > 0.0) f["frequency_rad_per_s"] = 2.0 * M_PI / o.period_s;
+        break;
+      }
+    }
+  } catch (const std::invalid_argument&) {
+    return {};  // rejected by the rig: no prediction
+  }
+  return f;
+}
+
 }  // namespace
 
 Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters& rig) {
@@ -710,89 +799,27 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
     for (std::size_t i = 0; i < items_.size(); ++i)
       if ((*items_needed)[i]) plan_needed[static_cast<std::size_t>(items_[i].plan)] = true;
   const std::shared_ptr<const rig::FrictionLaw> law = rig::make_friction_law(model);
-  const double W = rig.normal_load_N, k = rig.stiffness_N_per_m;
+  // The plans are independent simulations: in parallel (OpenMP threads when this is not already
+  // inside a parallel region — the candidate fits run side by side, and nested regions stay serial).
+  std::vector<Features> features(plans_.size());
+  std::vector<std::optional<SimulatedRun>> plan_traces(plans_.size());
+  std::exception_ptr failure;
+#pragma omp parallel for schedule(dynamic)
   for (std::size_t p = 0; p < plans_.size(); ++p) {
     if (!plan_needed[p]) continue;
-    const RunPlan& plan = plans_[p];
-    Features f;
-    rig::SimulationOptions options;
-    options.max_events = 200'000;
     try {
-      switch (plan.kind) {
-        case RunPlan::Kind::constant_speed:
-        case RunPlan::Kind::drive_history: {
-          const bool history = plan.kind == RunPlan::Kind::drive_history;
-          options.duration_s = plan.duration_s;
-          options.samples_per_period = history ? samples_per_period(rig, plan.sample_spacing_s) : kSamplesPerPeriod;
-          options.start_in_steady_sliding = history;
-          Simulated sim;
-          if (history) {
-            sim = simulate_steps(rig, plan, *law, model, seed, options);
-          } else {
-            sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), *law, model, seed, options);
-          }
-          if (!sim.summary.completed || sim.samples.size() < 3) break;
-          Signal s;
-          for (std::size_t i = 0; i < sim.samples.size(); ++i) {
-            if (!s.t.empty() && !(sim.samples[i].t_s > s.t.back())) continue;
-            s.t.push_back(sim.samples[i].t_s);
-            s.mu.push_back(sim.friction_N[i] / W);
-            s.x.push_back(sim.samples[i].x_m);
-            s.x_drive.push_back(sim.samples[i].drive_displacement_m);
-          }
-          if (history) {
-            // Sampled where the measurement was: a bin near the step holds one or two measured
-            // samples, and the simulated bin must average the same instants, not the whole bin.
-            Signal at;
-            for (double t : plan.sample_times_s) {
-              const bool last = t >= s.t.back();  // the run ends at the last measured instant
-              at.t.push_back(t);
-              at.mu.push_back(last ? s.mu.back() : interp(s.t, s.mu, t));
-              at.x_drive.push_back(last ? s.x_drive.back() : interp(s.t, s.x_drive, t));
-            }
-            f = analyse_drive_history(at, plan, nullptr);
-          } else {
-            double step = plan.slip_step_s;
-            f = analyse_constant_speed(s, plan.sample_spacing_s, step, nullptr);
-          }
-          if (traces) traces->push_back({plan.label, s.t, [&] { std::vector<double> F; for (double m : s.mu) F.push_back(m * W); return F; }(), s.mu});
-          break;
-        }
-        case RunPlan::Kind::static_point: {
-          const double v = plan.v_m_per_s * W / k;
-          options.duration_s = plan.duration_s;
-          // Only the first breakaway matters: keep no samples and output as sparsely as allowed.
-          options.samples_per_period = 4;  // the rig's minimum
-          options.stick_samples_per_run = 10;
-          // Read off the same friction channel as the traces.
-          const rig::InstrumentModel instrument = rig::instrument_from(model, seed);
-          rig::SimulationObserver observer;
-          observer.on_event = [&f, &instrument](const rig::Event& e) {
-            if (e.kind == rig::EventKind::breakaway && !f.count("mu_s")) f["mu_s"] = rig::breakaway_reading(instrument, e.mu);
-          };
-          rig::simulate(rig, rig::Drive::constant(v), *law, options, observer);
-          break;
-        }
-        case RunPlan::Kind::regime_point: {
-          const double mu_scale = std::max(model.baseline.mu_s, 0.05);
-          options.duration_s = std::clamp(6.0 * mu_scale * W / (k * plan.v_m_per_s) + 1.0, 1.0, 60.0);
-          const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(plan.v_m_per_s), *law, options);
-          if (!r.summary.completed) break;
-          const rig::RunObservables o = rig::summarise(rig, r.samples, r.events, rig::analysis_start_s(0.0, r.summary.end_time_s));
-          f["regime_mismatch"] = o.regime == plan.regime ? 0.0 : 1.0;
-          f["amplitude_m"] = 0.5 * o.peak_to_peak_m;
-          if (std::isfinite(o.period_s) && o.period_s > 0.0) f["frequency_rad_per_s"] = 2.0 * M_PI / o.period_s;
-          break;
-        }
-      }
-    } catch (const std::invalid_argument&) {
-      // A parameter set the rig rejects (e.g. overdamped) has no prediction: residual 1.
+      features[p] = predict_plan(plans_[p], rig, model, *law, seed, traces ? &plan_traces[p] : nullptr);
+    } catch (...) {
+#pragma omp critical(tribo_gap_predict_failure)
+      if (!failure) failure = std::current_exception();
     }
-    for (std::size_t i = 0; i < items_.size(); ++i) {
-      if (items_[i].plan != static_cast<int>(p)) continue;
-      const auto it = f.find(items_[i].key);
-      if (it != f.end()) out[i] = it->second;
-    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  for (std::size_t p = 0; p < plans_.size(); ++p)
+    if (traces && plan_traces[p]) traces->push_back(std::move(*plan_traces[p]));
+  for (std::size_t i = 0; i < items_.size(); ++i) {
+    const Features& f = features[static_cast<std::size_t>(items_[i].plan)];
+    if (const auto it = f.find(items_[i].key); it != f.end()) out[i] = it->second;
   }
   return out;
 }

@@ -49,31 +49,20 @@ struct FitParameter {
   }
 };
 
-// Fit ranges inside the catalogue's physical bounds: the parameters of each effect that the data
-// can identify (the others keep their catalogue defaults).
+// The parameters of an effect the data can identify, with the ranges the catalogue gives them
+// (ParameterSpec::fit); the others keep their values.
 std::vector<FitParameter> effect_parameters(const std::string& effect) {
-  struct Range { const char* name; double lower, upper; bool log; };
-  static const std::map<std::string, std::vector<Range>> ranges{
-      {"rate_dependent_static", {{"mu_s_max", 0.1, 1.2, false}, {"location_per_s", 1e-5, 1e5, true}}},
-      {"strain_rate_hardening", {{"m", 0.0, 0.35, false}}},
-      {"slip_transient", {{"amplitude", 0.0, 1.0, false}, {"decay_distance_m", 1e-7, 1e-2, true}}},
-      {"viscous_friction", {{"coefficient_N_s_per_m", 0.01, 1e4, true}}},
-      {"squeeze_film", {{"film_fraction", 0.0, 0.95, false}, {"build_up_distance_m", 1e-6, 1e-1, true}}},
-      {"hydrodynamic_lift", {{"max_fraction", 0.0, 0.95, false}, {"half_speed_m_per_s", 1e-5, 10.0, true}}},
-      {"thermal_thinning", {{"traction_coefficient_N_s_per_m", 0.1, 1e5, true}, {"thermal_speed_m_per_s", 1e-4, 10.0, true}}},
-      {"instrument", {{"gain", 0.5, 2.0, false}, {"lag_s", 0.0, 0.01, false}}},
-  };
   std::vector<FitParameter> out;
-  const auto it = ranges.find(effect);
-  if (it == ranges.end()) throw std::invalid_argument("gap: no fit ranges for effect '" + effect + "'");
-  for (const Range& r : it->second) {
+  for (const rig::ParameterSpec& spec : rig::effect_info(effect).parameters) {
+    if (!spec.fit) continue;
     FitParameter p;
     p.target = FitParameter::Target::effect;
     p.effect = effect;
-    p.name = r.name;
-    p.lower = r.lower, p.upper = r.upper, p.log = r.log;
+    p.name = spec.name;
+    p.lower = spec.fit->lower, p.upper = spec.fit->upper, p.log = spec.fit->log;
     out.push_back(p);
   }
+  if (out.empty()) throw std::invalid_argument("gap: the catalogue gives effect '" + effect + "' no fitted parameter");
   return out;
 }
 
@@ -270,28 +259,30 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   // the baseline parameters re-fitted (a short profile fit): the baseline co-adapts with the
   // effect, and friction observables are only piecewise smooth, so a local method needs a basin.
   // The grid is coarse against a narrow valley, so the next-best points start fits too.
-  // Without a grid (no effect coordinates, or more than two) the first start is `start` and the
-  // others are random points in the bounds. With `start_read_off_data`, `start` joins the grid.
+  // An effect with more coordinates keeps the others at `start` on the grid (the catalogue lists
+  // the two that shape it most first). Without a grid (no effect coordinates) the first start is
+  // `start` and the others are random points in the bounds. With `start_read_off_data`, `start`
+  // joins the grid.
   std::vector<std::pair<double, std::vector<double>>> grid;
   const std::vector<double> initial = coordinates(space, start);
-  const std::size_t dims = space.size() - randomised_from;
-  if (dims >= 1 && dims <= 2 && randomised_from > 0) {
-    const std::vector<double> levels = dims == 1 ? std::vector<double>{1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9} : std::vector<double>{1.1, 1.3, 1.5, 1.7, 1.9};
-    std::vector<std::size_t> idx(dims, 0);
+  const std::size_t dims = space.size() - randomised_from, grid_dims = std::min<std::size_t>(dims, 2);
+  if (grid_dims >= 1 && randomised_from > 0) {
+    const std::vector<double> levels = grid_dims == 1 ? std::vector<double>{1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9} : std::vector<double>{1.1, 1.3, 1.5, 1.7, 1.9};
+    std::vector<std::size_t> idx(grid_dims, 0);
     // Along the first coordinate the baseline starts from the previous point's fit (continuation):
     // an effect that takes away much of the friction needs the baseline far from its calibration.
     const std::vector<double> lead0(initial.begin(), initial.begin() + static_cast<long>(randomised_from));
     std::vector<double> previous = lead0;
     while (true) {
-      std::vector<double> tail(dims), lead = idx[0] == 0 ? lead0 : previous;
-      for (std::size_t d = 0; d < dims; ++d) tail[d] = levels[idx[d]];
+      std::vector<double> tail(initial.begin() + static_cast<long>(randomised_from), initial.end()), lead = idx[0] == 0 ? lead0 : previous;
+      for (std::size_t d = 0; d < grid_dims; ++d) tail[d] = levels[idx[d]];
       const double cu = solve(lead, tail, 3);
       previous = lead;
       lead.insert(lead.end(), tail.begin(), tail.end());
       grid.emplace_back(cu, lead);
       std::size_t d = 0;
-      while (d < dims && ++idx[d] == levels.size()) idx[d++] = 0;
-      if (d == dims) break;
+      while (d < grid_dims && ++idx[d] == levels.size()) idx[d++] = 0;
+      if (d == grid_dims) break;
     }
     // A start read off the data competes with the grid points on the same terms.
     if (start_read_off_data) {
@@ -571,16 +562,24 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     judge(c);
     return c;
   };
+  const double median_v = [&] {
+    std::vector<double> v;
+    for (const Item& it : d.items) v.push_back(it.v_m_per_s);
+    std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  }();
   auto evaluate = [&](const std::vector<std::string>& effects, std::uint64_t seed) {
     Setup start{d.rig, d.calibrated};
     for (const auto& e : effects) {
       start.model.add(e);
+      if (e == "rate_and_state" && median_v > 0.0) {
+        // Reference speed at the data's median driven speed (not fitted: another V0 only moves
+        // the baseline μk, which is fitted), so the increments stay small where the data are.
+        start.model.set("rate_and_state", "reference_speed_m_per_s", std::clamp(median_v, 1e-9, 10.0));
+      }
       if (e == "rate_dependent_static") {
         // Start the locus through the calibrated μs at the median load rate of the data.
-        std::vector<double> v;
-        for (const Item& it : d.items) v.push_back(it.v_m_per_s);
-        std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-        const double phi = d.rig.stiffness_N_per_m * v[v.size() / 2] / d.rig.normal_load_N;
+        const double phi = d.rig.stiffness_N_per_m * median_v / d.rig.normal_load_N;
         contact::JunctionLocus shape;
         const double mu_s_max = std::max(start.model.get("rate_dependent_static", "mu_s_max"), 1.2 * d.calibrated.baseline.mu_s);
         shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, shape.alpha);

@@ -65,21 +65,17 @@ CompositeLaw::Channels CompositeLaw::channels(const FrictionContext& c, double i
     s.solid_fraction *= effects_[i]->solid_fraction(e);
     s.kinetic += effects_[i]->kinetic_increment(e);
     s.fluid_N += effects_[i]->fluid_force_N(e);
+    s.static_increment += effects_[i]->static_increment(e);
   }
   return s;
-}
-
-double CompositeLaw::solid_fraction(const FrictionContext& c) const {
-  double chi = 1.0;
-  for (std::size_t i = 0; i < effects_.size(); ++i) chi *= effects_[i]->solid_fraction(effect_context(c, i));
-  return chi;
 }
 
 double CompositeLaw::static_limit_N(const FrictionContext& c) const {
   FrictionContext at_rest = c;
   at_rest.relative_speed_m_per_s = 0.0;
-  if (baseline_.homogenised) return baseline_.homogenised->static_limit_N(c, solid_fraction(at_rest));
-  return solid_fraction(at_rest) * static_coefficient(c) * c.normal_load_N;
+  const Channels s = channels(at_rest, 0.0);
+  if (baseline_.homogenised) return baseline_.homogenised->static_limit_N(c, s.solid_fraction, s.static_increment);
+  return s.solid_fraction * (static_coefficient(c) + s.static_increment) * c.normal_load_N;
 }
 
 double CompositeLaw::kinetic_force_N(const FrictionContext& c) const {

@@ -4,7 +4,7 @@
 // With a homogenised base (BaselineLaw::homogenised, rig/homogenised_law.h) the base's state
 // [h̄, ΔT] comes first in the law's state, then the effects' states, and the channels act on the
 // solid load N_s(h̄) instead of W:
-//   F_static = χ(U = 0) · μs(φ̇) · N_s(h̄)
+//   F_static = χ(U = 0) · (μs(φ̇) + Σ static_increment_e) · N_s(h̄)
 //   F_k      = χ · (τ_i A_r(h̄) + Σ kinetic_increment_e · N_s(h̄)) + η|U| S(h̄) + Σ fluid_force_e
 // The effects see μs(φ̇) of the table's locus and μk = τ_i A_r(h̄)/N_s(h̄).
 #pragma once
@@ -42,15 +42,16 @@ class CompositeLaw final : public FrictionLaw {
 
  private:
   // The effects' channel sums at one instant (effect.h): χ = Π solid_fraction, Σ kinetic_increment
-  // (started from `increment_start`, the baseline μk, so the Coulomb path's sum is unchanged), Σ fluid.
+  // (started from `increment_start`, the baseline μk, so the Coulomb path's sum is unchanged), Σ fluid,
+  // Σ static_increment.
   struct Channels {
     double solid_fraction = 1.0;
     double kinetic = 0.0;
     double fluid_N = 0.0;
+    double static_increment = 0.0;
   };
   Channels channels(const FrictionContext& c, double increment_start) const;
   EffectContext effect_context(const FrictionContext& c, std::size_t i) const;
-  double solid_fraction(const FrictionContext& c) const;
   std::span<const double> base_state(const FrictionContext& c) const { return c.state.first(base_size_); }
   template <class S>
   S slice(S state, std::size_t i) const { return state.subspan(offsets_[i], effects_[i]->state_size()); }

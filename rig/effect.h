@@ -5,9 +5,9 @@
 //
 //   μs,eff   = locus μs(φ̇) if a static-friction effect is present, else μs          (channel 1)
 //   χ        = Π solid_fraction_e                 (share of W carried by solid contact) (channel 2)
-//   F_static = χ(U = 0) · μs,eff · W
+//   F_static = χ(U = 0) · (μs,eff + Σ static_increment_e) · W                         (channel 5)
 //   F_k      = χ · (μk(U) + Σ kinetic_increment_e) · W + Σ fluid_force_e              (channels 3, 4)
-//   F_reattach = χ(U = 0) · μs,eff · W
+//   F_reattach = F_static
 //
 // Each effect has named parameters with units and physical bounds, so a fitter can vary them
 // as a vector, and optional state integrated with the rig.
@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,6 +23,13 @@
 #include "rig/friction_law.h"
 
 namespace tribo::rig {
+
+// Where the gap diagnosis searches a parameter (gap/diagnosis.h): inside the physical bounds,
+// log-spaced when the range spans decades (a log range needs lower > 0).
+struct FitRange {
+  double lower = 0.0, upper = 0.0;
+  bool log = false;
+};
 
 // A named, bounded, documented parameter.
 struct ParameterSpec {
@@ -31,6 +39,9 @@ struct ParameterSpec {
   double lower;             // physical bounds, inclusive
   double upper;
   std::string meaning;
+  // Fitted by the diagnosis over this range; none: data of the kinds it reads cannot identify it
+  // apart from the others, so it keeps its value (the default, or what the model says).
+  std::optional<FitRange> fit = std::nullopt;
 };
 
 // What an effect sees: the rig's context plus the baseline's view.
@@ -62,6 +73,9 @@ class FrictionEffect {
   virtual double kinetic_increment(const EffectContext& /*c*/) const { return 0.0; }
   // Channel 4: force (N, ≥ 0, along the slip) carried by fluid shear.
   virtual double fluid_force_N(const EffectContext& /*c*/) const { return 0.0; }
+  // Channel 5: addition to μs,eff, evaluated at U = 0 (a stuck contact, or one re-attaching): the
+  // static limit a state such as contact age sets, e.g. rate_and_state's healing during a hold.
+  virtual double static_increment(const EffectContext& /*c*/) const { return 0.0; }
 };
 
 }  // namespace tribo::rig

@@ -6,6 +6,7 @@
 #include "contact/junction_locus.h"
 #include "rig/composite_law.h"
 #include "rig/effects/hydrodynamic_lift.h"
+#include "rig/effects/rate_and_state.h"
 #include "rig/effects/slip_transient.h"
 #include "rig/effects/squeeze_film.h"
 #include "rig/effects/thermal_thinning.h"
@@ -16,7 +17,8 @@ namespace {
 
 // The thesis' anchor of the static-friction locus: μs = 0.26 at v = 2.8e-2 in/s on the thesis rig,
 // φ̇ = k v / W = 0.0785 1/s (Fig 5.2.1), with μs,max = 0.55, α = 25, n = 1.25 (§5.1).
-constexpr double kAnchorLoadRate_per_s = 10367.5 * 7.112e-4 / 93.857;
+constexpr double kAnchorSpeed_m_per_s = 7.112e-4;
+constexpr double kAnchorLoadRate_per_s = 10367.5 * kAnchorSpeed_m_per_s / 93.857;
 constexpr double kAnchorMuS = 0.26;
 
 double default_location_per_s() {
@@ -32,49 +34,63 @@ std::vector<EffectInfo> build_catalogue() {
       {"rate_dependent_static",
        "static friction from the load rate at slip via the junction-model locus, with an upper asymptote",
        "thesis (3.1.22)-(3.1.24), (5.1.1); Fig 5.1.2",
-       {{"mu_s_max", "1", 0.55, 0.05, 1.5, "upper asymptote of mu_s as the load rate falls to zero (3.1.23)"},
+       {{"mu_s_max", "1", 0.55, 0.05, 1.5, "upper asymptote of mu_s as the load rate falls to zero (3.1.23)", FitRange{0.1, 1.2, false}},
         {"alpha", "1", 25.0, 3.0, 30.0, "Tabor's combined-stress coefficient (3.1.5), thesis range 10..25"},
         {"n", "1", 1.25, 1.0, 1.5, "area exponent of the anelastic damping b A^n (3.1.12)"},
         {"location_per_s", "1/s", default_location_per_s(), 1e-6, 1e6,
-         "location parameter sigma0^(1+n)/(W^n b) of (3.1.24); default puts mu_s = 0.26 at phi_dot = 0.0785 1/s"}}},
+         "location parameter sigma0^(1+n)/(W^n b) of (3.1.24); default puts mu_s = 0.26 at phi_dot = 0.0785 1/s",
+         FitRange{1e-5, 1e5, true}}}},
       {"strain_rate_hardening",
        "flow stress sigma0 = kappa phi_dot^m reshapes the static-friction locus (implies the locus)",
        "thesis (5.1.2), (3.1.25); Fig 5.1.5",
-       {{"m", "1", 0.1, 0.0, 0.35, "strain-rate index: brass about 0.1, copper about 0.02"},
+       {{"m", "1", 0.1, 0.0, 0.35, "strain-rate index: brass about 0.1, copper about 0.02", FitRange{0.0, 0.35, false}},
         {"reference_load_rate_per_s", "1/s", kAnchorLoadRate_per_s, 1e-6, 1e3,
          "load rate at which the locus keeps its location parameter"}}},
       {"slip_transient",
        "after slip onset friction decays from the breakaway level with slip distance (not time)",
        "thesis section 5.2a, Figs 5.2.3-5.2.6",
-       {{"amplitude", "1", 1.0, 0.0, 1.0, "share of (mu_s - mu_k) present at slip onset"},
-        {"decay_distance_m", "m", 1e-4, 1e-7, 1e-2, "e-folding slip distance D_c"}}},
+       {{"amplitude", "1", 1.0, 0.0, 1.0, "share of (mu_s - mu_k) present at slip onset", FitRange{0.0, 1.0, false}},
+        {"decay_distance_m", "m", 1e-4, 1e-7, 1e-2, "e-folding slip distance D_c", FitRange{1e-7, 1e-2, true}}}},
+      {"rate_and_state",
+       "Dieterich-Ruina rate-and-state friction, ageing law: a ln(V/V0) + b ln(V0 theta/D_c); static friction heals as b ln(hold time)",
+       "Dieterich (1979) JGR 84:2161; Ruina (1983) JGR 88:10359; Marone (1998); cf. thesis section 5.2a",
+       // b and D_c first: the diagnosis grids over an effect's first two fitted parameters, and
+       // they set the healing b ln(1 + t_h V/D_c) that a slide-hold-slide test reads.
+       {{"b", "1", 0.012, 0.0, 0.1, "evolution effect: steady mu changes by (a - b) ln(V2/V1); healing b ln(hold time)",
+         FitRange{0.0, 0.05, false}},
+        {"decay_distance_m", "m", 1e-5, 1e-8, 1e-2, "critical slip distance D_c over which the state evolves", FitRange{1e-8, 1e-2, true}},
+        {"a", "1", 0.01, 0.0, 0.1, "direct effect: a step in speed V1 -> V2 shifts mu at once by a ln(V2/V1)", FitRange{0.0, 0.05, false}},
+        {"reference_speed_m_per_s", "m/s", kAnchorSpeed_m_per_s, 1e-9, 10.0,
+         "V0, where steady sliding has zero increment (the baseline mu_k); default the thesis speed 2.8e-2 in/s"}}},
       {"viscous_friction",
        "viscous shear of the film adds a force linear in relative speed",
        "thesis (3.2.1), Fig 3.2.1",
-       {{"coefficient_N_s_per_m", "N s/m", 5.0, 0.0, 1e4, "c = eta A / h; 5 N s/m = thesis oil over the slider face at h = 0.3 um"}}},
+       {{"coefficient_N_s_per_m", "N s/m", 5.0, 0.0, 1e4, "c = eta A / h; 5 N s/m = thesis oil over the slider face at h = 0.3 um",
+         FitRange{0.01, 1e4, true}}}},
       {"squeeze_film",
        "a squeeze film carries part of the load near zero relative speed; lower friction and re-attachment force",
        "thesis (3.2.2), Appendix III, section 5.2a, Fig 5.2.2",
-       {{"film_fraction", "1", 0.8, 0.0, 0.99, "largest share of W the film carries"},
-        {"build_up_distance_m", "m", 2e-3, 1e-7, 1e-1, "slip distance over which lift builds the film"},
+       {{"film_fraction", "1", 0.8, 0.0, 0.99, "largest share of W the film carries", FitRange{0.0, 0.95, false}},
+        {"build_up_distance_m", "m", 2e-3, 1e-7, 1e-1, "slip distance over which lift builds the film", FitRange{1e-6, 1e-1, true}},
         {"film_thickness_m", "m", 1e-6, 1e-8, 1e-4, "film thickness h at which squeeze-out starts (time to h/2)"},
         {"patch_radius_m", "m", 2e-3, 1e-5, 1e-2, "radius R of the region the oil is squeezed from (<= slider radius)"},
         {"viscosity_Pa_s", "Pa s", 0.021, 1e-4, 10.0, "lubricant viscosity; thesis oil 120 SSU at 80 F"}}},
       {"hydrodynamic_lift",
        "rugosity lift carries a share f_max U/(U + U_half) of the load, unloading the solid contact",
        "thesis section 3.2, section 5.2a",
-       {{"max_fraction", "1", 0.5, 0.0, 0.99, "largest share of W the lift carries"},
-        {"half_speed_m_per_s", "m/s", 0.05, 1e-5, 10.0, "relative speed at which the lift carries half of it"}}},
+       {{"max_fraction", "1", 0.5, 0.0, 0.99, "largest share of W the lift carries", FitRange{0.0, 0.95, false}},
+        {"half_speed_m_per_s", "m/s", 0.05, 1e-5, 10.0, "relative speed at which the lift carries half of it", FitRange{1e-5, 10.0, true}}}},
       {"thermal_thinning",
        "viscous traction c0 U exp(-U/U_T): viscosity falls as the film heats, a humped friction-speed curve",
        "thesis (3.2.3)-(3.2.5), (5.2.1)-(5.2.2), Fig 5.2.8",
-       {{"traction_coefficient_N_s_per_m", "N s/m", 300.0, 0.0, 1e5, "c0 = eta0 A / h_eff of the boundary film"},
-        {"thermal_speed_m_per_s", "m/s", 0.0254, 1e-4, 10.0, "speed of the traction maximum, 1/(gamma theta); thesis 1 in/s"}}},
+       {{"traction_coefficient_N_s_per_m", "N s/m", 300.0, 0.0, 1e5, "c0 = eta0 A / h_eff of the boundary film", FitRange{0.1, 1e5, true}},
+        {"thermal_speed_m_per_s", "m/s", 0.0254, 1e-4, 10.0, "speed of the traction maximum, 1/(gamma theta); thesis 1 in/s",
+         FitRange{1e-4, 10.0, true}}}},
       {"instrument",
        "sensor gain, lag of the acceleration channel behind displacement, and noise of the measured friction",
        "thesis (4.2.3), sections 4.2-4.3, Appendix IV",
-       {{"gain", "1", 1.0, 0.5, 2.0, "scale error of the summed friction signal"},
-        {"lag_s", "s", 0.0, 0.0, 0.01, "delay of the accelerometer channel behind the displacement channel"},
+       {{"gain", "1", 1.0, 0.5, 2.0, "scale error of the summed friction signal", FitRange{0.5, 2.0, false}},
+        {"lag_s", "s", 0.0, 0.0, 0.01, "delay of the accelerometer channel behind the displacement channel", FitRange{0.0, 0.01, false}},
         {"noise_N", "N", 0.0, 0.0, 10.0, "rms white noise on the measured friction"}}},
   };
 }
@@ -192,6 +208,11 @@ std::shared_ptr<const FrictionLaw> make_friction_law(const FrictionModel& m) {
   auto p = [&](const char* effect, const char* parameter) { return m.get(effect, parameter); };
   if (m.has("slip_transient")) {
     effects.push_back(std::make_unique<effects::SlipTransient>(p("slip_transient", "amplitude"), p("slip_transient", "decay_distance_m")));
+  }
+  if (m.has("rate_and_state")) {
+    effects.push_back(std::make_unique<effects::RateAndState>(p("rate_and_state", "a"), p("rate_and_state", "b"),
+                                                              p("rate_and_state", "decay_distance_m"),
+                                                              p("rate_and_state", "reference_speed_m_per_s")));
   }
   if (m.has("viscous_friction")) {
     effects.push_back(std::make_unique<effects::ViscousFriction>(p("viscous_friction", "coefficient_N_s_per_m")));

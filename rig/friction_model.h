@@ -6,6 +6,8 @@
 //   rate_dependent_static  μs from the load rate φ̇ via the junction locus, thesis (3.1.22)–(3.1.24)
 //   strain_rate_hardening  σ0 = κ φ̇^m modifies that locus, thesis (5.1.2)
 //   slip_transient         friction decays with slip distance after slip onset, thesis §5.2a
+//   rate_and_state         Dieterich–Ruina a ln(V/V0) + b ln(V0θ/D_c), ageing law: speed steps and
+//                          log-time healing of static friction (Dieterich 1979, Ruina 1983)
 //   viscous_friction       F += c U, viscous shear of the film, thesis (3.2.1)
 //   squeeze_film           a film carries load near U = 0, thesis (3.2.2), Appendix III
 //   hydrodynamic_lift      rugosity lift unloads the solid contact as U rises, thesis §5.2a

@@ -85,8 +85,8 @@ double HomogenisedBase::solid_kinetic_coefficient(std::span<const double> state)
   return n_s > 0.0 ? table_.junction.interface_shear_strength_Pa * real_area_m2(h) / n_s : 0.0;
 }
 
-double HomogenisedBase::static_limit_N(const FrictionContext& c, double solid_fraction) const {
-  return solid_fraction * static_coefficient(c) * solid_load_N(c.state[kSeparation]);
+double HomogenisedBase::static_limit_N(const FrictionContext& c, double solid_fraction, double static_increment) const {
+  return solid_fraction * (static_coefficient(c) + static_increment) * solid_load_N(c.state[kSeparation]);
 }
 
 double HomogenisedBase::kinetic_force_N(const FrictionContext& c, double solid_fraction, double kinetic_increment,

@@ -21,7 +21,7 @@
 // far below the rig period 2π/ω_n ≈ 0.06 s.
 //
 // Effects of the catalogue compose on top of this base in CompositeLaw (rig/effect.h channels, with
-// N_s(h̄) in place of W):  F_static = χ μs N_s,  F_k = χ (τ_i A_r + Σ Δμ_e N_s) + η|U| S + Σ F_fluid,e.
+// N_s(h̄) in place of W):  F_static = χ (μs + Σ Δμs,e) N_s,  F_k = χ (τ_i A_r + Σ Δμ_e N_s) + η|U| S + Σ F_fluid,e.
 #pragma once
 
 #include <cstddef>
@@ -75,9 +75,9 @@ class HomogenisedBase {
   // τ_i A_r(h̄) / N_s(h̄): the solid contact's kinetic coefficient (0 once N_s = 0).
   double solid_kinetic_coefficient(std::span<const double> state) const;
 
-  // Channels with the effects' contributions (χ = 1, 0, 0 for the bare law):
-  //   F_static = χ μs N_s(h̄)
-  double static_limit_N(const FrictionContext& c, double solid_fraction) const;
+  // Channels with the effects' contributions (χ = 1, no increments, no fluid force for the bare law):
+  //   F_static = χ (μs + Δμs) N_s(h̄)
+  double static_limit_N(const FrictionContext& c, double solid_fraction, double static_increment) const;
   //   F_k = χ (τ_i A_r(h̄) + Δμ N_s(h̄)) + η(ΔT)|U| S(h̄) + F_fluid
   double kinetic_force_N(const FrictionContext& c, double solid_fraction, double kinetic_increment,
                          double fluid_force_N) const;
@@ -117,7 +117,7 @@ class HomogenisedLaw final : public FrictionLaw {
   std::size_t state_size() const override { return HomogenisedBase::kStateSize; }
   void initial_state(std::span<double> state) const override { base_->initial_state(state); }
   void state_tolerances(std::span<double> atol) const override { base_->state_tolerances(atol); }
-  double static_limit_N(const FrictionContext& c) const override { return base_->static_limit_N(c, 1.0); }
+  double static_limit_N(const FrictionContext& c) const override { return base_->static_limit_N(c, 1.0, 0.0); }
   double kinetic_force_N(const FrictionContext& c) const override { return base_->kinetic_force_N(c, 1.0, 0.0, 0.0); }
   void state_rates(const FrictionContext& c, std::span<double> rates) const override;
 

@@ -214,6 +214,8 @@ TEST(Composition, EffectsAtZeroStrengthLeaveTheBaselineTraceUnchanged) {
   const FrictionModel base = coulomb(0.3, 0.2);
   FrictionModel zero = base;
   zero.set("slip_transient", "amplitude", 0.0);
+  zero.set("rate_and_state", "a", 0.0);
+  zero.set("rate_and_state", "b", 0.0);
   zero.set("viscous_friction", "coefficient_N_s_per_m", 0.0);
   zero.set("squeeze_film", "film_fraction", 0.0);
   zero.set("hydrodynamic_lift", "max_fraction", 0.0);
@@ -232,8 +234,8 @@ TEST(Composition, EffectsAtZeroStrengthLeaveTheBaselineTraceUnchanged) {
 TEST(Composition, ListingOrderDoesNotMatter) {
   const RigParameters rig;
   FrictionModel a = coulomb(0.4, 0.15), b = a;
-  for (const char* e : {"slip_transient", "viscous_friction", "squeeze_film", "rate_dependent_static"}) a.add(e);
-  for (const char* e : {"rate_dependent_static", "squeeze_film", "viscous_friction", "slip_transient"}) b.add(e);
+  for (const char* e : {"slip_transient", "rate_and_state", "viscous_friction", "squeeze_film", "rate_dependent_static"}) a.add(e);
+  for (const char* e : {"rate_dependent_static", "squeeze_film", "viscous_friction", "rate_and_state", "slip_transient"}) b.add(e);
   EXPECT_EQ(make_friction_law(a)->name(), make_friction_law(b)->name());
   const auto ra = run(rig, a, 1e-3, 2.0), rb = run(rig, b, 1e-3, 2.0);
   ASSERT_EQ(ra.samples.size(), rb.samples.size());

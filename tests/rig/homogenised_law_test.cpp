@@ -530,6 +530,31 @@ TEST(HomogenisedLaw, CompositeWithoutEffectsEqualsTheBareLawAndEffectsStackOnTop
   EXPECT_THROW(make_friction_law(m), std::invalid_argument);
 }
 
+TEST(HomogenisedLaw, RateAndStateHealingRaisesTheStaticLimitOnTheSolidLoad) {
+  // Channel 5 on the homogenised base: F_static = χ (μs(φ̇) + Δμs) N_s(h̄), with rate_and_state's
+  // Δμs = a ln(V_r(v)/V0) + b ln(V0 θ/D_c) (rig/effects/rate_and_state.h) after the base's state.
+  const double W = 93.857;
+  const auto base = std::make_shared<const HomogenisedBase>(thesis_like_table(0.021), W);
+  FrictionModel m;
+  m.baseline.homogenised = base;
+  m.add("rate_and_state");
+  const auto law = make_friction_law(m);
+  ASSERT_EQ(law->state_size(), 3u);
+  const double a = m.get("rate_and_state", "a"), b = m.get("rate_and_state", "b");
+  const double dc = m.get("rate_and_state", "decay_distance_m"), v0 = m.get("rate_and_state", "reference_speed_m_per_s");
+  std::vector<double> initial(3);
+  law->initial_state(initial);
+  EXPECT_EQ(initial[2], dc / v0);  // steady sliding at V0
+  const double h = base->initial_separation_m() * 1.1;
+  const std::vector<double> aged = {h, 4.0, 10.0 * dc / v0};
+  FrictionContext c = context_at(aged, 0.0, W);
+  c.drive_speed_m_per_s = v0;
+  const double v_eps = 1e-3 * v0;
+  const double increment = a * std::log(std::sqrt(v0 * v0 + v_eps * v_eps) / v0) + b * std::log(10.0);
+  const double expected = (base->static_coefficient(c) + increment) * base->solid_load_N(h);
+  EXPECT_NEAR(law->static_limit_N(c), expected, 1e-12 * expected);
+}
+
 TEST(HomogenisedLaw, LubricatedThesisLikeRigBreaksAwayOnTheLocusWithTheFilmAtRest) {
   // With η = 0.021 Pa s the stuck film sits at its equilibrium (no lift while U = 0), so the first
   // breakaway is again μs(φ̇) N_s(h̄0)/W = μs(φ̇) (thesis (3.1.24)); after it, lift opens the film.
