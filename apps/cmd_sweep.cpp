@@ -12,13 +12,7 @@
 // itself; every other rank asks rank 0 for a point id whenever one of its `jobs` slots is free and
 // sends back the finished row. Points differ in cost by orders of magnitude, so a static split would
 // leave ranks idle. The point folders must be on a file system all ranks see.
-#ifndef OMPI_SKIP_MPICXX
-#define OMPI_SKIP_MPICXX 1
-#endif
-#ifndef MPICH_SKIP_MPICXX
-#define MPICH_SKIP_MPICXX 1
-#endif
-#include <mpi.h>
+#include "numerics/mpi.h"  // first: it keeps mpi.h to its C API
 
 #include <fcntl.h>
 #include <sched.h>

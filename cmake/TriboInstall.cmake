@@ -19,9 +19,11 @@ install(TARGETS tribo_numerics tribo_contact tribo_lubrication tribo_rig tribo_h
         EXPORT triboTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# Not installed: numerics/mpi.h, the MPI include guard of this tree's own sources (no installed
+# header includes it, and tribo::numerics does not carry MPI's include path).
 foreach(folder numerics contact lubrication rig homogenise gap)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${TRIBO_INSTALL_INCLUDEDIR}/${folder}
-          FILES_MATCHING PATTERN "*.h")
+          FILES_MATCHING PATTERN "*.h" REGEX "/numerics/mpi\\.h$" EXCLUDE)
 endforeach()
 install(EXPORT triboTargets NAMESPACE tribo:: DESTINATION ${TRIBO_INSTALL_CMAKEDIR})
 

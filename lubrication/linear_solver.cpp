@@ -3,14 +3,7 @@
 #include <cholmod.h>
 #include <umfpack.h>
 
-// hypre's headers include mpi.h; keep Open MPI / MPICH from pulling in their C++ bindings.
-#ifndef OMPI_SKIP_MPICXX
-#define OMPI_SKIP_MPICXX 1
-#endif
-#ifndef MPICH_SKIP_MPICXX
-#define MPICH_SKIP_MPICXX 1
-#endif
-#include <mpi.h>
+#include "numerics/mpi.h"  // before hypre's headers, which include mpi.h
 #include <HYPRE.h>
 #include <HYPRE_IJ_mv.h>
 #include <HYPRE_parcsr_ls.h>

@@ -2,17 +2,10 @@
 # same results.csv (the wall_s column aside) — the failed rows included; and an MPI run resumes a
 # sweep whose results.csv holds some rows and a torn last line, recomputing only the rest.
 # Inputs: TRIBO, MPIEXEC, WORK.
-file(REMOVE_RECURSE ${WORK})
-file(MAKE_DIRECTORY ${WORK})
-file(WRITE ${WORK}/rig.toml "[rig]\ndrive_speed_m_per_s = 1e-3\n[friction]\nlaw = \"coulomb\"\nmu_s = 0.3\nmu_k = 0.2\n[run]\nduration_s = 3.0\n")
+include(${CMAKE_CURRENT_LIST_DIR}/sweep_test_common.cmake)
 # jobs = 1: one point per rank, so both ranks (rank 0 too) run points.
-file(WRITE ${WORK}/spec.toml "[base]\ncommand = \"rig\"\nconfig = \"rig.toml\"\n"
-  "[[axis]]\nkey = \"rig.drive_speed_m_per_s\"\nfrom = 1e-3\nto = 1e-1\ncount = 4\nscale = \"log\"\n"
-  "[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [0.99822, 2.0, -1.0]\n"
-  "[sweep]\njobs = 1\n[outputs]\ncolumns = [\"summary.json:regime\", \"summary.json:peak_to_peak_m\", \"summary.json:breakaways\"]\n")
+write_rig_sweep(1)
 set(MPIRUN ${MPIEXEC} -np 2 --oversubscribe --allow-run-as-root)
-
-include(${CMAKE_CURRENT_LIST_DIR}/sweep_rows.cmake)
 
 execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/serial RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)

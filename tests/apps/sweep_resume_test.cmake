@@ -2,15 +2,8 @@
 # at different moments and restarted, then finished; its results.csv must hold the same rows with the
 # same values (the wall_s column aside) as an uninterrupted run. A point whose config is bad becomes a
 # `failed` row naming the key, and the sweep goes on; a changed spec on resume is refused (status 2).
-file(REMOVE_RECURSE ${WORK})
-file(MAKE_DIRECTORY ${WORK})
-file(WRITE ${WORK}/rig.toml "[rig]\ndrive_speed_m_per_s = 1e-3\n[friction]\nlaw = \"coulomb\"\nmu_s = 0.3\nmu_k = 0.2\n[run]\nduration_s = 3.0\n")
-file(WRITE ${WORK}/spec.toml "[base]\ncommand = \"rig\"\nconfig = \"rig.toml\"\n"
-  "[[axis]]\nkey = \"rig.drive_speed_m_per_s\"\nfrom = 1e-3\nto = 1e-1\ncount = 4\nscale = \"log\"\n"
-  "[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [0.99822, 2.0, -1.0]\n"
-  "[sweep]\njobs = 2\n[outputs]\ncolumns = [\"summary.json:regime\", \"summary.json:peak_to_peak_m\", \"summary.json:breakaways\"]\n")
-
-include(${CMAKE_CURRENT_LIST_DIR}/sweep_rows.cmake)
+include(${CMAKE_CURRENT_LIST_DIR}/sweep_test_common.cmake)
+write_rig_sweep(2)
 
 execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/full RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)

@@ -4,37 +4,22 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "gap/bundle.h"
+#include "tests/gap/bundle_fixture.h"
 
 namespace tribo::gap {
 namespace {
 
-namespace fs = std::filesystem;
-
-class BundleHostile : public ::testing::Test {
+class BundleHostile : public BundleFixture {
  protected:
+  BundleHostile() : BundleFixture("tribo_gap_bundle_hostile_") {}
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("tribo_gap_bundle_hostile_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "traces");
-    std::ofstream(dir_ / "traces" / "a.csv") << "t_s,mu\n0,0.1\n1,0.2\n2,0.3\n";
+    BundleFixture::SetUp();
+    write("traces/a.csv", "t_s,mu\n0,0.1\n1,0.2\n2,0.3\n");
   }
-  void TearDown() override { fs::remove_all(dir_); }
-  void runs(const std::string& file) { std::ofstream(dir_ / "runs.csv") << "run_id,v_m_per_s,file\n0,1e-3," << file << "\n"; }
-  std::string error() {
-    try {
-      read_bundle(dir_);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
-  }
-  fs::path dir_;
+  void runs(const std::string& file) { write("runs.csv", "run_id,v_m_per_s,file\n0,1e-3," + file + "\n"); }
 };
 
 TEST_F(BundleHostile, TraceInsideTheBundleIsRead) {

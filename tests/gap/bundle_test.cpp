@@ -3,35 +3,19 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "gap/bundle.h"
+#include "tests/gap/bundle_fixture.h"
 
 namespace tribo::gap {
 namespace {
 
 namespace fs = std::filesystem;
 
-class BundleTest : public ::testing::Test {
+class BundleTest : public BundleFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("tribo_gap_bundle_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "traces");
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  void write(const std::string& name, const std::string& text) { std::ofstream(dir_ / name) << text; }
-  // The reason read_bundle gives, or "" when it accepts the bundle.
-  std::string error() {
-    try {
-      read_bundle(dir_);
-    } catch (const std::invalid_argument& e) {
-      return e.what();
-    }
-    return "";
-  }
-  fs::path dir_;
+  BundleTest() : BundleFixture("tribo_gap_bundle_") {}
 };
 
 TEST_F(BundleTest, RoundTripKeepsEveryValue) {
