@@ -484,13 +484,45 @@ StepResponse read_step_response(const Signal& s, const RunPlan& plan, double W) 
   return out;
 }
 
-// A drive history as the rig sees it: one run under the measured drive, from steady sliding at the
-// first speed. At every step the contact re-locks (rig::SimulationOptions::relock_at_drive_steps)
-// and the slider is carried by the surface until the spring reaches the static limit and it breaks
-// away, re-arming slip-history effects: the rig's stand-in for a velocity-step machine's finite
-// stiffness, where the load point speeds up and the stress rises elastically before the interface
-// slips faster. The friction law's state (healing, film, temperature) carries across the steps.
+// A velocity step as the rig sees it: the first segment starts in steady sliding; at every step
+// the contact re-locks and the slider is carried by the surface from where it is until the
+// spring force reaches the static limit (it breaks away, re-arming slip-history effects). This
+// stands for the finite machine stiffness of a velocity-step apparatus, where the load point
+// speeds up and the stress rises elastically before the interface slips faster.
 Simulated simulate_steps(const rig::RigParameters& rig, const RunPlan& plan, const rig::FrictionLaw& law, const rig::FrictionModel& model,
+                         std::uint64_t seed, rig::SimulationOptions options) {
+  Simulated all;
+  all.summary.completed = true;
+  double t_offset = 0.0, x_drive_offset = 0.0, x_end = 0.0;
+  for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
+    const double t_end = k + 1 < plan.step_times_s.size() ? plan.step_times_s[k + 1] : plan.duration_s;
+    options.duration_s = t_end - plan.step_times_s[k];
+    options.start_in_steady_sliding = k == 0;
+    options.initial_displacement_m = x_end;
+    const Simulated seg = run_simulation(rig, rig::Drive::constant(plan.step_speeds_m_per_s[k]), law, model, seed + k, options);
+    if (!seg.summary.completed || seg.samples.empty()) {
+      all.summary = seg.summary;
+      all.summary.completed = false;
+      return all;
+    }
+    for (std::size_t i = 0; i < seg.samples.size(); ++i) {
+      rig::Sample s = seg.samples[i];
+      s.t_s += t_offset;
+      s.drive_displacement_m += x_drive_offset;
+      all.samples.push_back(s);
+      all.friction_N.push_back(seg.friction_N[i]);
+    }
+    t_offset += options.duration_s;
+    x_drive_offset = all.samples.back().drive_displacement_m;
+    x_end = seg.samples.back().x_m;
+  }
+  return all;
+}
+
+// A slide-hold-slide history: the same re-lock at every step, but as one run under the measured
+// drive (rig::SimulationOptions::relock_at_drive_steps), so the friction law's state carries
+// across the steps — the contact's age grows through a hold, which is what the test measures.
+Simulated simulate_history(const rig::RigParameters& rig, const RunPlan& plan, const rig::FrictionLaw& law, const rig::FrictionModel& model,
                          std::uint64_t seed, rig::SimulationOptions options) {
   options.duration_s = plan.duration_s;
   options.start_in_steady_sliding = true;
@@ -529,7 +561,8 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         options.start_in_steady_sliding = history;
         Simulated sim;
         if (history) {
-          sim = simulate_steps(rig, plan, law, model, seed, options);
+          sim = plan.carry_law_state ? simulate_history(rig, plan, law, model, seed, options)
+                                     : simulate_steps(rig, plan, law, model, seed, options);
         } else {
           sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), law, model, seed, options);
         }
@@ -647,6 +680,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
                                   ": the drive changes speed; say which test this is with [rig] kind = \"velocity_step\" or \"slide_hold_slide\"");
     if (history_kind) {
       plan.kind = RunPlan::Kind::drive_history;
+      plan.carry_law_state = bundle.kind == "slide_hold_slide";
       const DriveSegments segments = drive_segments(tr.t_s, tr.v_drive_m_per_s);
       plan.step_times_s = segments.start_s;
       plan.step_speeds_m_per_s = segments.speed_m_per_s;

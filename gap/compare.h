@@ -22,7 +22,15 @@
 //   amplitude_m, frequency_rad_per_s  from regimes.csv
 //   steady_mu          μ over the last 30 % of each drive segment (velocity steps)
 //   mu_after_step      μ − μ_before-step, averaged over bins of load-point displacement after a
-//                      step (bins finer near the step)
+//                      step between two slides (bins finer near the step)
+//   peak_after_hold    the peak of μ on re-sliding after a hold (slide-hold-slide) above the steady
+//                      μ before the hold: static friction grown with the hold time
+// The bundle's kind selects the analysis: "pin_on_disc" runs at a constant driven speed each;
+// "velocity_step" and "slide_hold_slide" read the drive record (v_drive_m_per_s) into segments —
+// a jump above max(1e-3 v_max, 6 σ of the record's high-pass noise) starts one, a segment of fewer
+// than 20 samples joins the one before, a speed below the threshold is a hold — and simulate the
+// history with the contact re-locked at every step — for slide-hold-slide as one run, the law's
+// state (the contact's age) carried through the holds.
 // Noise: a constant-speed run's analysis window is also cut into four contiguous blocks, each
 // analysed as a run of its own; an item's noise is the blocks' standard deviation / √blocks. A
 // step bin's is the record's high-pass noise / √(samples in the bin); a steady level's the
@@ -74,6 +82,10 @@ struct RunPlan {
   double slip_step_s = 0.0;                               // Δ of slip_drop (from the measured run)
   std::vector<std::vector<double>> step_bin_edges_m;      // per step: displacement bin edges
   std::vector<double> sample_times_s;                     // drive history: measured times − first
+  // Drive history as one run with the law's state carried across steps (slide-hold-slide: the
+  // contact ages through a hold); else each segment restarts the law (velocity steps, see
+  // compare.cpp: the one-run form changed the velocity-step fits and is not yet understood).
+  bool carry_law_state = false;
 };
 
 struct SimulatedRun {

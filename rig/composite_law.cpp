@@ -1,5 +1,6 @@
 #include "rig/composite_law.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "rig/homogenised_law.h"
@@ -94,6 +95,10 @@ void CompositeLaw::state_rates(const FrictionContext& c, std::span<double> rates
     baseline_.homogenised->state_rates(c, fk, rates.first(base_size_));
   }
   for (std::size_t i = 0; i < effects_.size(); ++i) effects_[i]->state_rates(effect_context(c, i), slice(rates, i));
+}
+
+bool CompositeLaw::stiff() const {
+  return std::any_of(effects_.begin(), effects_.end(), [](const auto& e) { return e->stiff(); });
 }
 
 void CompositeLaw::on_slip_onset(const FrictionContext& c, std::span<double> state) const {

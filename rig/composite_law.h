@@ -35,6 +35,7 @@ class CompositeLaw final : public FrictionLaw {
   double kinetic_force_N(const FrictionContext& c) const override;
   void state_rates(const FrictionContext& c, std::span<double> rates) const override;
   void on_slip_onset(const FrictionContext& c, std::span<double> state) const override;
+  bool stiff() const override;
 
   // Channel 1: μs at the context's load rate.
   double static_coefficient(const FrictionContext& c) const;

@@ -66,6 +66,8 @@ class FrictionEffect {
     for (double& r : rates) r = 0.0;
   }
   virtual void on_slip_onset(const EffectContext& /*c*/, std::span<double> /*state*/) const {}
+  // True when the effect makes the rig's equations stiff (FrictionLaw::stiff).
+  virtual bool stiff() const { return false; }
 
   // Channel 2: fraction (0..1] of the normal load still carried by solid contact.
   virtual double solid_fraction(const EffectContext& /*c*/) const { return 1.0; }

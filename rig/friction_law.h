@@ -61,6 +61,11 @@ class FrictionLaw {
     for (double& r : rates) r = 0.0;
   }
 
+  // A law whose friction varies so steeply with slip speed that it acts as a damper far stiffer
+  // than the rig's own (rate-and-state's direct effect: dF/dU = a W / U) makes the rig's equations
+  // stiff; the stepper then integrates with BDF instead of Adams (rig/simulator.h).
+  virtual bool stiff() const { return false; }
+
   // Event hooks: the state may jump when a slip begins or a stick begins.
   virtual void on_slip_onset(const FrictionContext& /*c*/, std::span<double> /*state*/) const {}
   virtual void on_stick_onset(const FrictionContext& /*c*/, std::span<double> /*state*/) const {}

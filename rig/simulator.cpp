@@ -190,8 +190,10 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   }
 
   // Adams–Moulton: the rig is a lightly damped oscillator, non-stiff; Newton with a dense
-  // Jacobian keeps the corrector robust across friction jumps.
-  const numerics::CvodeSettings settings{numerics::CvodeSettings::Method::adams, options.relative_tolerance, atol, 200000};
+  // Jacobian keeps the corrector robust across friction jumps. A stiff law (FrictionLaw::stiff)
+  // takes BDF, whose steps are not bound by its damping time scale.
+  const auto method = law.stiff() ? numerics::CvodeSettings::Method::bdf : numerics::CvodeSettings::Method::adams;
+  const numerics::CvodeSettings settings{method, options.relative_tolerance, atol, 200000};
   numerics::Cvode cv(rhs_callback, &m, settings, 0.0, y);
   SimulationSummary summary;
   double t = 0.0;

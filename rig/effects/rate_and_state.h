@@ -47,6 +47,9 @@ class RateAndState final : public FrictionEffect {
   void state_rates(const EffectContext& c, std::span<double> rates) const override;
   double kinetic_increment(const EffectContext& c) const override;
   double static_increment(const EffectContext& c) const override;
+  // The direct effect is a damper a W / U: at the µm/s of a slide-hold-slide test it exceeds a
+  // stiff machine's own damping by orders of magnitude, and Adams steps would have to resolve it.
+  bool stiff() const override { return a_ > 0.0; }
 
   // θ of steady sliding at speed V: D_c / V.
   double steady_state_age_s(double speed_m_per_s) const { return dc_m_ / speed_m_per_s; }
