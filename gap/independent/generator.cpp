@@ -11,6 +11,18 @@ namespace {
 double uniform(std::mt19937_64& rng, double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); }
 double log_uniform(std::mt19937_64& rng, double a, double b) { return std::exp(uniform(rng, std::log(a), std::log(b))); }
 
+// The rig as it is: k, M and W within ± constant_spread of what the bundle tells, the damping
+// (known worst) within ± damping_spread.
+RigConstants as_it_is(const RigConstants& told, double constant_spread, double damping_spread, std::mt19937_64& rng) {
+  auto spread = [&](double f) { return 1.0 + uniform(rng, -f, f); };
+  RigConstants actual = told;
+  actual.stiffness_N_per_m *= spread(constant_spread);
+  actual.mass_kg *= spread(constant_spread);
+  actual.normal_load_N *= spread(constant_spread);
+  actual.damping_N_s_per_m *= spread(damping_spread);
+  return actual;
+}
+
 // Stick time of undamped Coulomb stick-slip, 2Δ/v (integrator.h's reference), to place the
 // stick-time and rate laws so that they matter at the synthetic speeds.
 double coulomb_stick_time(const RigConstants& rig, double mu_s, double mu_k, double v) {
@@ -54,12 +66,8 @@ IndependentCase make_drive_history_case(const std::string& kind, const std::stri
   c.told.mass_kg = log_uniform(rng, 10.0, 50.0);
   c.told.stiffness_N_per_m = std::max(log_uniform(rng, 1e5, 1e6), 5.0 * c.told.normal_load_N * (b - a) / dc);
   c.told.damping_N_s_per_m = 2.0 * uniform(rng, 0.3, 0.7) * std::sqrt(c.told.stiffness_N_per_m * c.told.mass_kg);
-  c.actual = c.told;
+  c.actual = as_it_is(c.told, o.constant_spread, o.damping_spread, rng);
   auto spread = [&](double f) { return 1.0 + uniform(rng, -f, f); };
-  c.actual.stiffness_N_per_m *= spread(o.constant_spread);
-  c.actual.mass_kg *= spread(o.constant_spread);
-  c.actual.normal_load_N *= spread(o.constant_spread);
-  c.actual.damping_N_s_per_m *= spread(o.damping_spread);
   const double W = c.actual.normal_load_N, k = c.actual.stiffness_N_per_m;
 
   // A laboratory chain: ±2 % gain, ≤ 5 ms delay, offset and drift (over the record, once its
@@ -213,12 +221,8 @@ IndependentCase make_independent_case(const std::string& effect, std::uint64_t s
 
   // The rig as it is: a few per cent off what the bundle tells.
   c.told = RigConstants{};
-  c.actual = c.told;
+  c.actual = as_it_is(c.told, o.constant_spread, o.damping_spread, rng);
   auto spread = [&](double f) { return 1.0 + uniform(rng, -f, f); };
-  c.actual.stiffness_N_per_m *= spread(o.constant_spread);
-  c.actual.mass_kg *= spread(o.constant_spread);
-  c.actual.normal_load_N *= spread(o.constant_spread);
-  c.actual.damping_N_s_per_m *= spread(o.damping_spread);
   const double W = c.actual.normal_load_N;
 
   // A benign chain on every channel: ±2 % gain, ≤ 0.5 ms delay, a 0.2 ms sensor, offset and drift
