@@ -150,8 +150,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   const rig::RigParameters rig = gap::apply_bundle_rig(bundle, model.rig);
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
-  int candidates = 0;
-  for (const auto& e : rig::effect_catalogue()) candidates += !model.friction.has(e.name);
+  const int candidates = static_cast<int>(gap::default_candidates(model.friction, bundle.kind).size());
   // Steps reported: calibration, each candidate, the three leading refined, a pair and its refinement.
   Progress progress("gap: fitting", 1 + candidates + std::min(3, candidates) + 2);
   o.progress = [&](const std::string& what) { progress.step(what); };

@@ -421,6 +421,14 @@ std::string join(const std::vector<std::string>& v, const std::string& sep) {
 
 }  // namespace
 
+std::vector<std::string> default_candidates(const rig::FrictionModel& model, const std::string& kind) {
+  std::vector<std::string> names;
+  for (const auto& e : rig::effect_catalogue())
+    if (!model.has(e.name) && (e.diagnosed_in.empty() || std::count(e.diagnosed_in.begin(), e.diagnosed_in.end(), kind)))
+      names.push_back(e.name);
+  return names;
+}
+
 std::string DiagnosisOptions::invalid_reason() const {
   if (starts < 1) return "starts must be at least 1";
   if (max_iterations < 1) return "max_iterations must be at least 1";
@@ -537,10 +545,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   };
 
   // 2. Candidates.
-  std::vector<std::string> names = o.candidates;
-  if (names.empty())
-    for (const auto& e : rig::effect_catalogue())
-      if (!model.has(e.name)) names.push_back(e.name);
+  const std::vector<std::string> names = o.candidates.empty() ? default_candidates(model, bundle.kind) : o.candidates;
   auto space_of = [&](const std::vector<std::string>& effects) {
     std::vector<FitParameter> space = base_space;
     for (const auto& e : effects)

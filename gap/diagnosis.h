@@ -75,7 +75,7 @@ struct DiagnosisOptions {
   // Rig keys the model leaves out: stiffness_N_per_m, mass_kg, damping_N_s_per_m (×/÷ 100 around the
   // start), or damping_ratio ζ = r / (2√(kM)) in [1e-3, 0.9] (the damping when k is fitted too).
   std::vector<std::string> calibrate_rig;
-  std::vector<std::string> candidates;     // empty: every catalogue effect not in the model
+  std::vector<std::string> candidates;     // empty: default_candidates(model, bundle kind)
   std::function<void(const std::string&)> progress;  // called after each fit (any thread, serialised)
   // Returns an empty string when valid, else why not.
   std::string invalid_reason() const;
@@ -132,6 +132,10 @@ struct Diagnosis {
 // `model_rig` is the model's rig with the bundle's [rig] keys applied by the caller (apply_bundle_rig).
 Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& model_rig, const rig::FrictionModel& model,
                    const DiagnosisOptions& options);
+
+// The candidates when the options name none: every catalogue effect the model lacks that the
+// catalogue tries on this experiment kind (rig::EffectInfo::diagnosed_in).
+std::vector<std::string> default_candidates(const rig::FrictionModel& model, const std::string& kind);
 
 // The model's rig with every [rig] key the bundle gives.
 rig::RigParameters apply_bundle_rig(const ExperimentBundle& bundle, rig::RigParameters rig);

@@ -34,6 +34,8 @@ struct EffectInfo {
   std::string summary;
   std::string thesis_reference;
   std::vector<ParameterSpec> parameters;
+  // Experiment kinds (gap/bundle.h) whose data the diagnosis tries it on; empty: every kind.
+  std::vector<std::string> diagnosed_in = {};
 };
 
 // All effects of the catalogue, in a fixed order.

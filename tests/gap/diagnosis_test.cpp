@@ -261,6 +261,22 @@ TEST(Comparison, TheKindMustMatchTheDriveRecord) {
   EXPECT_THROW(Comparison(b, rig::RigParameters{}), std::invalid_argument);
 }
 
+// The candidates follow the experiment: rate_and_state, told apart from slip_transient and
+// rate_dependent_static only by a drive history, is tried on velocity steps and slide-hold-slide,
+// not at constant speed; an effect the model already has is never a candidate.
+TEST(Diagnosis, DefaultCandidatesFollowTheExperimentKind) {
+  rig::FrictionModel m = rig::coulomb(0.3, 0.2);
+  m.add("viscous_friction");
+  auto has = [](const std::vector<std::string>& v, const char* e) { return std::count(v.begin(), v.end(), e) > 0; };
+  const std::vector<std::string> pin = default_candidates(m, "pin_on_disc"), shs = default_candidates(m, "slide_hold_slide");
+  EXPECT_FALSE(has(pin, "rate_and_state"));
+  EXPECT_TRUE(has(shs, "rate_and_state"));
+  EXPECT_TRUE(has(default_candidates(m, "velocity_step"), "rate_and_state"));
+  EXPECT_FALSE(has(pin, "viscous_friction"));
+  EXPECT_TRUE(has(pin, "slip_transient") && has(shs, "slip_transient"));
+  EXPECT_EQ(shs.size(), pin.size() + 1);
+}
+
 // Resuming an interrupted selftest: a case already in `finished` is taken as it was written (here
 // a made-up verdict no diagnosis would give), is not handed to on_row again, and counts in the
 // confusion matrix; no diagnosis runs, so this returns at once.
