@@ -95,6 +95,9 @@ double standard_error(const std::vector<double>& v) {
   return std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
 }
 
+// Mean of y[i − 1], y[i], y[i + 1] (0 < i < size − 1): a peak read off a noisy record.
+double three_sample_mean(const std::vector<double>& y, std::size_t i) { return (y[i - 1] + y[i] + y[i + 1]) / 3.0; }
+
 // Sensor noise of a record: the median absolute second difference, which is 0.6745 √6 σ for white
 // noise of std σ (a signal smooth at the sampling rate adds little to it, impulsive spikes do not
 // move a median).
@@ -351,8 +354,7 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
       for (std::size_t i = 1; i + 1 < s.t.size(); ++i) {
         if (s.t[i] <= t_on || s.t[i] > t_search) continue;
         ++in_window;
-        const double m = (s.mu[i - 1] + s.mu[i] + s.mu[i + 1]) / 3.0;
-        peak = std::max(peak, m);
+        peak = std::max(peak, three_sample_mean(s.mu, i));
       }
       if (!in_window || !std::isfinite(steady[k - 1])) continue;
       const std::string key = "peak_after_hold_" + std::to_string(k);
@@ -463,7 +465,7 @@ StepResponse read_step_response(const Signal& s, const RunPlan& plan, double W) 
     const double after = steady_mu(s, t_step, t_end) - before;
     const double x_step = interp(s.t, s.x_drive, t_step);
     const double t_search = t_step + 0.25 * (t_end - t_step);
-    auto rise = [&](std::size_t i) { return (s.mu[i - 1] + s.mu[i] + s.mu[i + 1]) / 3.0 - before; };
+    auto rise = [&](std::size_t i) { return three_sample_mean(s.mu, i) - before; };
     double best = 0.0, x_best = 0.0;
     std::size_t i_best = 0;
     for (std::size_t i = 1; i + 1 < s.t.size(); ++i) {

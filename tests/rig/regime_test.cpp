@@ -118,6 +118,16 @@ SimulatedRun simulate_and_record(const RigParameters& rig, const FrictionLaw& la
   return out;
 }
 
+// A run that never sticks, read from both recordings: no events, no stick, and `regime`.
+void expect_continuous_slip_read_as(const RigParameters& rig, const SimulatedRun& run, double v, const char* regime) {
+  for (const Trace* tr : {&run.stepper, &run.recorded}) {
+    const RegimeEvidence e = recorded_regime_evidence(rig, tr->t, tr->x, v, run.window_start_s);
+    EXPECT_EQ(e.breakaways + e.reattachments + e.reversals, 0);
+    EXPECT_FALSE(e.sticks);
+    EXPECT_EQ(classify_regime(rig, e), regime);
+  }
+}
+
 // Coulomb stick-slip (the closed-form case of stick_slip_test.cpp): both recordings give the
 // regime and the event counts the stepper's events give, within one cycle cut by the window's
 // edges.
@@ -155,12 +165,7 @@ TEST(RecordedRegime, SimulatedQuasiHarmonicOscillationKeepsItsRegime) {
   opt.initial_displacement_m = mu0 * rig.normal_load_N / rig.stiffness_N_per_m;
   const SimulatedRun run = simulate_and_record(rig, law, v, opt);
   ASSERT_EQ(run.observables.regime, "quasi_harmonic");
-  for (const Trace* tr : {&run.stepper, &run.recorded}) {
-    const RegimeEvidence e = recorded_regime_evidence(rig, tr->t, tr->x, v, run.window_start_s);
-    EXPECT_EQ(e.breakaways + e.reattachments + e.reversals, 0);
-    EXPECT_FALSE(e.sticks);
-    EXPECT_EQ(classify_regime(rig, e), "quasi_harmonic");
-  }
+  expect_continuous_slip_read_as(rig, run, v, "quasi_harmonic");
 }
 
 // Coulomb friction at 0.1 m/s, released onto the disc in steady sliding with a 0.1 mm/s kick: the
@@ -176,12 +181,7 @@ TEST(RecordedRegime, SimulatedSteadySlidingKeepsItsRegime) {
   opt.start_in_steady_sliding = true;
   const SimulatedRun run = simulate_and_record(rig, *make_coulomb(0.3, 0.2), v, opt);
   ASSERT_EQ(run.observables.regime, "steady_sliding");
-  for (const Trace* tr : {&run.stepper, &run.recorded}) {
-    const RegimeEvidence e = recorded_regime_evidence(rig, tr->t, tr->x, v, run.window_start_s);
-    EXPECT_EQ(e.breakaways + e.reattachments + e.reversals, 0);
-    EXPECT_FALSE(e.sticks);
-    EXPECT_EQ(classify_regime(rig, e), "steady_sliding");
-  }
+  expect_continuous_slip_read_as(rig, run, v, "steady_sliding");
 }
 
 // White noise alone on a steady slider: its peak-to-peak is the same in both halves of the window
