@@ -31,6 +31,7 @@ namespace {
 struct ContactArgs {
   std::string config;
   std::string out = "out/contact";
+  bool summary_only = false;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -51,9 +52,11 @@ void run_contact(const ContactArgs& args) {
   const contact::NormalContactResult& r = solved.result;
   nlohmann::json j = solved.summary;
   j["provenance"] = contact_provenance(args.config, run);
-  write_npy_atomically(dir / "pressure.npy", r.pressure_Pa);
-  write_npy_atomically(dir / "gap.npy", r.gap_m);
-  if (run.hardness_Pa) write_npy_atomically(dir / "plastic_displacement.npy", r.plastic_increment_m);
+  if (!args.summary_only) {
+    write_npy_atomically(dir / "pressure.npy", r.pressure_Pa);
+    write_npy_atomically(dir / "gap.npy", r.gap_m);
+    if (run.hardness_Pa) write_npy_atomically(dir / "plastic_displacement.npy", r.plastic_increment_m);
+  }
   write_file_atomically(dir / "contact.json", j.dump(2) + "\n");
   std::printf("%s: area %.6g m^2 (%.4g %%), max pressure %.6g Pa, %d iterations, residual %.3g, %.3f s -> %s\n",
               run.surface_kind.c_str(), r.real_area_m2, 100.0 * r.area_fraction, r.max_pressure_Pa,
@@ -160,6 +163,7 @@ void add_contact_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("contact", "Rough-surface or sphere contact by FFT boundary elements (TOML config)");
   cmd->add_option("config", args->config, "TOML config ([surface], [domain], [material], [load], [solver])");
   cmd->add_option("--out", args->out, "output directory (contact.json, pressure.npy, gap.npy)")->capture_default_str();
+  add_summary_only_flag(cmd, args->summary_only, "contact.json");
   CLI::App* junction = cmd->add_subcommand(
       "junction", "BEM junction growth A(W, F) over F/W vs Tabor (3.1.9); junction ODE (3.1.13) vs locus (3.1.24)");
   junction->add_option("config", jargs->config, "TOML config as for `tribo contact`, plus optional [junction]")->required();

@@ -38,6 +38,7 @@ void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayX
 struct Args {
   std::string config;
   std::string out = "out/reynolds";
+  bool summary_only = false;
 };
 
 void run_reynolds(const Args& args) {
@@ -50,11 +51,13 @@ void run_reynolds(const Args& args) {
   nlohmann::json j = solved.summary;
   j["provenance"] = provenance_json(args.config);
   if (run.seed) j["provenance"]["seed"] = *run.seed;
-  j["fields"] = {{"pressure_Pa", "pressure_Pa.npy"}, {"fill_fraction", "fill_fraction.npy"}, {"gap_m", "gap_m.npy"},
-                 {"layout", "float64 array of shape (nx, ny): a[i, j] at x = i dx, y = j dy"}};
-  write_npy_atomically(dir / "pressure_Pa.npy", s.pressure_Pa);
-  write_npy_atomically(dir / "fill_fraction.npy", s.fill_fraction);
-  write_npy_atomically(dir / "gap_m.npy", run.problem.gap_m);
+  if (!args.summary_only) {
+    j["fields"] = {{"pressure_Pa", "pressure_Pa.npy"}, {"fill_fraction", "fill_fraction.npy"}, {"gap_m", "gap_m.npy"},
+                   {"layout", "float64 array of shape (nx, ny): a[i, j] at x = i dx, y = j dy"}};
+    write_npy_atomically(dir / "pressure_Pa.npy", s.pressure_Pa);
+    write_npy_atomically(dir / "fill_fraction.npy", s.fill_fraction);
+    write_npy_atomically(dir / "gap_m.npy", run.problem.gap_m);
+  }
   write_file_atomically(dir / "reynolds.json", j.dump(2) + "\n");
   std::printf("%s: load %.6g N, max pressure %.6g Pa, cavitated %.3g, %d iterations, %.3f s -> %s\n", run.kind.c_str(),
               s.load_N, s.max_pressure_Pa, s.cavitated_fraction, s.summary.iterations, s.summary.wall_s,
@@ -150,6 +153,7 @@ void add_reynolds_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("reynolds", "Solve the Reynolds equation for a lubricant film (TOML config)");
   cmd->add_option("config", args->config, "TOML config ([geometry], [lubricant], [motion], [grid], [solver])");
   cmd->add_option("--out", args->out, "output directory (reynolds.json, pressure_Pa.npy, ...)")->capture_default_str();
+  add_summary_only_flag(cmd, args->summary_only, "reynolds.json");
   CLI::App* ff = cmd->add_subcommand("flow-factors", "Patir-Cheng flow factors and rugosity lift over rough realisations");
   ff->add_option("config", ff_args->config, "TOML config ([surface], [homogenisation], [lubricant], [motion])")
       ->required();

@@ -17,6 +17,7 @@ struct RigArgs {
   std::string config;
   std::string out = "out/rig";
   bool plot = false;
+  bool summary_only = false;
 };
 
 void run_rig(const RigArgs& args) {
@@ -35,21 +36,22 @@ void run_rig(const RigArgs& args) {
   nlohmann::json provenance = provenance_json(args.config);
   provenance["seed"] = run.seed;  // the instrument's noise
   const std::string csv_header = csv_provenance_header(provenance);
-  AtomicFile trace(dir / "trace.csv");
-  trace.stream() << csv_header;
-  write_trace_header(trace.stream());
-  for (std::size_t i = 0; i < samples.size(); ++i) write_trace_row(trace.stream(), samples[i], measured[i]);
-
   const rig::RunObservables obs =
       rig::summarise(run.rig, samples, events, run.analysis_start_fraction * summary.end_time_s);
   nlohmann::json j = rig_summary_json(obs, summary, run.law->name(), run.rig, wall);
   j["provenance"] = provenance;
 
-  AtomicFile events_file(dir / "events.csv");
-  events_file.stream() << csv_header;
-  write_events_csv(events_file.stream(), events);
-  trace.commit();
-  events_file.commit();
+  if (!args.summary_only) {
+    AtomicFile trace(dir / "trace.csv");
+    trace.stream() << csv_header;
+    write_trace_header(trace.stream());
+    for (std::size_t i = 0; i < samples.size(); ++i) write_trace_row(trace.stream(), samples[i], measured[i]);
+    AtomicFile events_file(dir / "events.csv");
+    events_file.stream() << csv_header;
+    write_events_csv(events_file.stream(), events);
+    trace.commit();
+    events_file.commit();
+  }
   write_file_atomically(dir / "summary.json", j.dump(2) + "\n");
 
   std::printf("regime %s, period %.6g s, peak-to-peak %.6g m, mean mu_s %.4g, %ld events, %.3f s wall -> %s\n",
@@ -69,6 +71,7 @@ void add_rig_command(CLI::App& app) {
   cmd->add_option("config", args->config, "TOML config ([rig], [drive], [friction], [run])")->required();
   cmd->add_option("--out", args->out, "output directory (trace.csv, events.csv, summary.json)")->capture_default_str();
   cmd->add_flag("--plot", args->plot, "also draw phase_plane.png and trace.png (python3-matplotlib)");
+  add_summary_only_flag(cmd, args->summary_only, "summary.json")->excludes("--plot");
   cmd->callback([args] { run_rig(*args); });
 }
 

@@ -1,8 +1,8 @@
-// `tribo sweep SPEC.toml --out DIR`: a parameter study (apps/sweep_spec.h). Each point is its own
-// `tribo COMMAND` child process (forked from the sweep, or a fresh one under MPI; see PointStart)
+// `tribo sweep SPEC.toml --out DIR`: a parameter study (apps/sweep_spec.h). Each point runs
+// `tribo COMMAND` in a worker process forked from the sweep (a fresh process under MPI; PointStart)
 // in DIR/points/NNNNN/ (config.toml, the command's outputs, log.txt) — or, for
-// the chain "homogenise+rig", two processes one after the other in DIR/points/NNNNN/homogenise/ and
-// .../rig/ — run `jobs` at a time with one OpenMP thread each; its row is appended to
+// the chain "homogenise+rig", two steps one after the other in DIR/points/NNNNN/homogenise/ and
+// .../rig/ — `jobs` points at a time with one OpenMP thread each; its row is appended to
 // DIR/results.csv and flushed as soon as it finishes. Started again with the same command after a
 // kill, the sweep skips the points already in results.csv (a torn last line is dropped); a changed
 // spec or base config is refused. At the end results.csv is rewritten sorted by point id.
@@ -20,8 +20,6 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
-
-#include <omp.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -43,6 +41,7 @@
 #include "apps/output.h"
 #include "apps/provenance.h"
 #include "apps/sweep_spec.h"
+#include "apps/sweep_workers.h"
 
 extern char** environ;
 
@@ -173,21 +172,22 @@ std::vector<std::string> child_environment(bool one_thread) {
   return env;
 }
 
-// How a point's process starts.
-//  - fork (serial sweeps): the child is a copy of this sweep, tribo's 47 shared libraries already
-//    loaded and relocated, and runs the command in place. A fresh `tribo` spends ≈ 36 ms of CPU on
-//    loading alone (bench/README.md) — most of a cheap rig point — and two fresh ones loading side
-//    by side contend, which held jobs = 2 to 1.25× the points/s of jobs = 1.
+// How a point's steps run.
+//  - fork (serial sweeps): on `jobs` worker processes forked from this sweep (apps/sweep_workers.h),
+//    tribo's 47 shared libraries already loaded and relocated, each running step after step. A
+//    fresh `tribo` spends ≈ 36 ms of CPU on loading alone (bench/README.md) — most of a cheap rig
+//    point — and a fork and exit per point cost ≈ 5–10 ms more in copy-on-write faults and TLB
+//    shootdowns, which two points at a time contend for.
 //  - exec (MPI sweeps): a forked child of an MPI rank would inherit the rank's MPI state, which
-//    Open MPI does not support, so each point is a fresh `tribo` process.
-// The sweep process itself never enters an OpenMP parallel region, so a forked child has no thread
-// pool to lose (libgomp's pool does not survive fork).
+//    Open MPI does not support, so each step is a fresh `tribo` process.
 enum class PointStart { fork, exec };
 
-// `tribo COMMAND dir/config.toml --out dir`: a step's command line.
-std::vector<std::string> step_arguments(const std::string& command, const std::filesystem::path& dir) {
+// `tribo COMMAND dir/config.toml --out dir`: a step's command line. Without `artefacts` a point
+// writes only the JSON the columns read (a chain's homogenise step keeps law.json for its rig step).
+std::vector<std::string> step_arguments(const std::string& command, const std::filesystem::path& dir, bool artefacts) {
   std::vector<std::string> args{"/proc/self/exe", command, (dir / "config.toml").string(), "--out", dir.string()};
   if (command == "homogenise") args.push_back("--no-plots");
+  else if (!artefacts) args.push_back("--summary-only");
   return args;
 }
 
@@ -198,36 +198,9 @@ std::vector<char*> c_strings(std::vector<std::string>& strings) {
   return p;
 }
 
-// The forked child's side: stdout and stderr into the log, the point's environment, the command
-// run as `tribo` runs it, and its status as the process's exit status. Never returns.
-[[noreturn]] void run_forked_step(std::vector<std::string> args, const std::string& log, const std::vector<std::string>& env,
-                                  bool one_thread) {
-  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  if (fd < 0 || dup2(fd, STDOUT_FILENO) < 0 || dup2(fd, STDERR_FILENO) < 0) _exit(127);  // the row says "no message"
-  close(fd);
-  clearenv();
-  for (const std::string& e : env) {
-    const std::size_t eq = e.find('=');
-    if (eq != std::string::npos) setenv(e.substr(0, eq).c_str(), e.substr(eq + 1).c_str(), 1);
-  }
-  if (one_thread) omp_set_num_threads(1);  // OMP_NUM_THREADS was read when this image was loaded
-  std::vector<char*> argv = c_strings(args);
-  const int status = run_command_line(static_cast<int>(args.size()), argv.data());
-  std::exit(status);  // atexit handlers run: hypre and MPI finalise if the point started them
-}
-
-// Starts one step of a point with stdout and stderr in dir/log.txt; returns the child's pid.
-pid_t start_step(PointStart how, const std::string& command, const std::filesystem::path& dir,
-                 const std::vector<std::string>& env, bool one_thread) {
-  std::vector<std::string> args = step_arguments(command, dir);
-  const std::string log = (dir / "log.txt").string();
-  if (how == PointStart::fork) {
-    std::fflush(nullptr);  // nothing buffered here may be written twice by the child
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("sweep: cannot start a point process (fork: " + std::string(std::strerror(errno)) + ")");
-    if (pid == 0) run_forked_step(std::move(args), log, env, one_thread);
-    return pid;
-  }
+// Starts a fresh `tribo` for one step of a point (MPI sweeps), stdout and stderr in dir/log.txt;
+// returns its pid.
+pid_t spawn_step(std::vector<std::string> args, const std::string& log, const std::vector<std::string>& env) {
   std::vector<char*> argv = c_strings(args);
   std::vector<std::string> env_strings = env;
   std::vector<char*> envp = c_strings(env_strings);
@@ -254,9 +227,18 @@ class PointPool {
  public:
   PointPool(const SweepSpec& spec, const std::vector<std::vector<double>>& points, std::filesystem::path dir, int jobs,
             PointStart how)
-      : spec_(spec), points_(points), dir_(std::move(dir)), jobs_(jobs), how_(how), env_(child_environment(jobs > 1)) {}
+      : spec_(spec), points_(points), dir_(std::move(dir)), jobs_(jobs), env_(child_environment(jobs > 1)) {
+    if (how == PointStart::fork) workers_ = std::make_unique<SweepWorkers>(jobs, env_, jobs > 1);
+  }
 
-  bool full() const { return static_cast<int>(running_.size()) >= jobs_; }
+  // Steps of cheap points queue behind each other on a worker (SweepWorkers::kQueue), so no worker
+  // waits for the sweep between them; steps that take longer than kQueueBelow_s do not, so the
+  // last points of a sweep are not left queued behind a long one while another worker idles.
+  static constexpr double kQueueBelow_s = 0.05;
+  bool full() const {
+    const std::size_t per_job = workers_ && cheap_ ? SweepWorkers::kQueue : 1;
+    return running_.size() >= static_cast<std::size_t>(jobs_) * per_job;
+  }
   bool empty() const { return running_.empty(); }
 
   void start(int id) {
@@ -268,7 +250,7 @@ class PointPool {
       config << point_config(spec_, points_[id], s) << "\n";
       write_file_atomically(sdir / "config.toml", config.str());
     }
-    running_[launch(0, pdir)] = {id, 0, std::chrono::steady_clock::now()};
+    running_[launch(0, pdir, cheap_)] = {id, 0, std::chrono::steady_clock::now()};
   }
 
   // The points finished since the last call. `block`: wait until at least one is (the pool must not
@@ -277,11 +259,15 @@ class PointPool {
     std::vector<Finished> done;
     while (done.empty() && !running_.empty()) {
       bool any = false;
-      if (block) {
+      if (workers_) {
+        for (const SweepWorkers::Finished& f : workers_->finished(block))
+          any = exited(f.ticket, f.wait_status, f.wall_s, done) || any;
+        if (!any) break;
+      } else if (block) {
         int status = 0;
         const pid_t pid = waitpid(-1, &status, 0);
         if (pid < 0) throw std::runtime_error("sweep: waitpid failed");
-        any = exited(pid, status, done);
+        any = exited(pid, status, -1, done);
       } else {
         // Only our own children: an MPI library may have children of its own.
         std::vector<pid_t> pids;
@@ -290,7 +276,7 @@ class PointPool {
           int status = 0;
           const pid_t got = waitpid(pid, &status, WNOHANG);
           if (got < 0) throw std::runtime_error("sweep: waitpid failed");
-          if (got == pid) any = exited(pid, status, done) || any;
+          if (got == pid) any = exited(pid, status, -1, done) || any;
         }
         if (!any) break;
       }
@@ -302,19 +288,28 @@ class PointPool {
   struct Running {
     int id = 0;
     std::size_t step = 0;
-    std::chrono::steady_clock::time_point start;
+    std::chrono::steady_clock::time_point start;  // of the step
+    double earlier_steps_s = 0;                   // a chain's finished steps' wall time
   };
 
-  pid_t launch(std::size_t step, const std::filesystem::path& pdir) const {
-    return start_step(how_, spec_.steps[step].command, pdir / step_folder(spec_, step), env_, jobs_ > 1);
+  // Starts a step (on a worker, may queue behind another; or as a fresh process); returns the
+  // handle that names it until it ends: a worker's ticket, or the process's pid.
+  long launch(std::size_t step, const std::filesystem::path& pdir, bool queue) const {
+    const auto sdir = pdir / step_folder(spec_, step);
+    std::vector<std::string> args = step_arguments(spec_.steps[step].command, sdir, spec_.artefacts);
+    const std::string log = (sdir / "log.txt").string();
+    return workers_ ? workers_->start(args, log, queue) : spawn_step(std::move(args), log, env_);
   }
 
-  // Bookkeeping for an exited child: the next step, or the point's row.
-  bool exited(pid_t pid, int status, std::vector<Finished>& done) {
-    const auto it = running_.find(pid);
+  // Bookkeeping for a finished step (`wall_s` its own wall time, or -1: measured here, from its
+  // start): the next step, or the point's row.
+  bool exited(long handle, int status, double wall_s, std::vector<Finished>& done) {
+    const auto it = running_.find(handle);
     if (it == running_.end()) return false;
     const Running r = it->second;
     running_.erase(it);
+    if (wall_s < 0) wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
+    cheap_ = wall_s < kQueueBelow_s;
     const auto pdir = point_dir(dir_, r.id);
     const auto sdir = pdir / step_folder(spec_, r.step);
     std::string error, values;
@@ -322,7 +317,8 @@ class PointPool {
       error = last_line(sdir / "log.txt");
       if (spec_.steps.size() > 1) error = spec_.steps[r.step].command + ": " + error;
     } else if (r.step + 1 < spec_.steps.size()) {
-      running_[launch(r.step + 1, pdir)] = {r.id, r.step + 1, r.start};
+      // A step just ended, so a worker has room even when steps no longer queue.
+      running_[launch(r.step + 1, pdir, true)] = {r.id, r.step + 1, std::chrono::steady_clock::now(), r.earlier_steps_s + wall_s};
       return true;
     } else {
       try {
@@ -331,7 +327,7 @@ class PointPool {
         error = e.what();
       }
     }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.start).count();
+    const double wall = r.earlier_steps_s + wall_s;
     if (!error.empty()) values = std::string(spec_.outputs.size(), ',');
     std::string row = std::to_string(r.id);
     for (double v : points_[r.id]) row += "," + exact(v);
@@ -355,9 +351,10 @@ class PointPool {
   const std::vector<std::vector<double>>& points_;
   std::filesystem::path dir_;
   int jobs_;
-  PointStart how_;
   std::vector<std::string> env_;
-  std::map<pid_t, Running> running_;
+  std::unique_ptr<SweepWorkers> workers_;  // PointStart::fork
+  bool cheap_ = false;                     // the last step took under kQueueBelow_s
+  std::map<long, Running> running_;
 };
 
 // results.csv on rank 0: each row appended and flushed the moment its point is done.

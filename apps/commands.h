@@ -18,4 +18,13 @@ void add_sweep_command(CLI::App& app);
 // through it in forked children.
 int run_command_line(int argc, char** argv);
 
+// `--summary-only` on `tribo rig`, `contact` and `reynolds`: write the summary JSON alone, not the
+// traces or fields. `tribo sweep` passes it unless the spec asks for the points' artefacts: its
+// columns read only JSON, and on cheap points the trace's formatting and file creation are most of
+// the point's cost.
+inline CLI::Option* add_summary_only_flag(CLI::App* cmd, bool& summary_only, const char* summary_file) {
+  return cmd->add_flag("--summary-only", summary_only,
+                       std::string("write ") + summary_file + " only (no traces or fields), as `tribo sweep` does");
+}
+
 }  // namespace tribo::cli

@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-#include <random>
+#include <atomic>
 #include <stdexcept>
 
 #include "apps/config.h"
@@ -10,9 +10,11 @@
 namespace tribo::cli {
 
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
-  std::random_device rd;
+  // Unique among the processes writing a folder at once (the pid) and within this one (the count);
+  // cheaper than a std::random_device per file, which a sweep writing thousands of files felt.
+  static std::atomic<unsigned long> count{0};
   tmp_ = path_;
-  tmp_ += ".partial-" + std::to_string(rd());
+  tmp_ += ".partial-" + std::to_string(getpid()) + "-" + std::to_string(count++);
   stream_.open(tmp_);
   if (!stream_) throw InputError(path_.string() + ": cannot open for writing");
   stream_.precision(10);

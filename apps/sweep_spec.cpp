@@ -177,6 +177,7 @@ SweepSpec load_sweep_spec(const std::filesystem::path& path) {
   if (auto s = root.table("sweep")) {
     spec.zip = s->choice("combine", "product", {"product", "zip"}) == "zip";
     spec.jobs = static_cast<int>(s->integer("jobs", 0, 0));
+    spec.artefacts = s->boolean("artefacts", false);
     s->finish();
   }
   if (!spec.zip) {

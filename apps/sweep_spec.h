@@ -12,6 +12,8 @@
 //             from = …, to = …, count = N, scale = "linear" | "log"
 //   [sweep]   combine = "product" (first axis slowest) | "zip" (axes of equal length)
 //             jobs = 0 (points run at once per process, per MPI rank under mpirun; 0 = the cores it may use)
+//             artefacts = false (true: every point keeps its command's traces and fields — trace.csv,
+//             events.csv, *.npy; false: rig, contact and reynolds points write their JSON only)
 //   [outputs] columns = ["summary.json:regime", "summary.json:peak_to_peak_m", …]
 //             FILE:path — a value of the point's JSON output FILE, path dotted into its objects
 //             and arrays ("law.json:stribeck.12.mu"); in a chain FILE is looked for in the rig
@@ -55,6 +57,7 @@ struct SweepSpec {
   std::vector<SweepAxis> axes;
   bool zip = false;
   int jobs = 0;
+  bool artefacts = false;             // the points' traces and fields are kept (on request only)
   std::vector<SweepOutput> outputs;
 };
 

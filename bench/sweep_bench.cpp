@@ -1,11 +1,12 @@
 // `tribo sweep` costs (issue 17): what the sweep adds per point beyond the point's own process, and
-// the throughput of many cheap rig points with 1 and 2 points at a time. Everything runs the real
-// `tribo` executable (TRIBO_EXE), as a user would: the per-point cost is a process start, so an
-// in-process stand-in would measure the wrong thing.
+// the throughput of many cheap rig points on 1 and 2 cores. Everything runs the real
+// `tribo` executable (TRIBO_EXE), as a user would: what a point costs beyond its work is the
+// sweep's machinery (worker processes, files, rows), which an in-process stand-in would not measure.
 //   build-sweep/bench/sweep_bench --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
+#include <sched.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -26,24 +27,39 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Points per sweep: "many cheap points" (issue 17). The sweep's own start-up and final sort cost
-// ≈ 40–60 ms whatever the jobs; against 200 points of ≈ 9 ms they are ≈ 3 % of a one-job sweep,
-// where with 40 points they were ≈ 15 % and held the two-job ratio down by ≈ 0.1.
+// Points per sweep. The overhead pair runs kPoints direct `tribo rig` processes too (≈ 15–20 ms
+// each); the throughput sweeps run kThroughputPoints, "many cheap points" (issue 17): at ≈ 1–2 ms a
+// point on a worker, the sweep's own start-up and final sort (≈ 40–60 ms whatever the jobs) are
+// then ≈ 2 % of a one-job sweep instead of ≈ 20 % at 200 points.
 constexpr int kPoints = 200;
+constexpr int kThroughputPoints = 2000;
 
-// A cheap rig point: Coulomb stick-slip for 0.5 s of rig time (≈ the cheapest useful point).
+// A cheap rig point: Coulomb stick-slip for 0.5 s of rig time (≈ the cheapest useful point). Its
+// direct runs write summary.json only, as the sweep's points do (`--summary-only`).
 fs::path workdir() {
   const fs::path dir = fs::temp_directory_path() / "tribo_sweep_bench";
   fs::create_directories(dir);
   std::ofstream(dir / "rig.toml") << "[rig]\ndrive_speed_m_per_s = 1e-2\n[friction]\nlaw = \"coulomb\"\nmu_s = 0.3\n"
                                      "mu_k = 0.2\n[run]\nduration_s = 0.5\n";
-  for (int jobs : {1, 2}) {
-    std::ofstream(dir / ("spec" + std::to_string(jobs) + ".toml"))
-        << "[base]\ncommand = \"rig\"\nconfig = \"rig.toml\"\n[[axis]]\nkey = \"rig.mass_kg\"\nfrom = 0.9\nto = 1.1\n"
-        << "count = " << kPoints << "\n[sweep]\njobs = " << jobs << "\n"
-        << "[outputs]\ncolumns = [\"summary.json:regime\", \"summary.json:peak_to_peak_m\"]\n";
-  }
+  for (int jobs : {0, 1})  // 0: as many as the cores the sweep may use
+    for (int points : {kPoints, kThroughputPoints}) {
+      std::ofstream(dir / ("spec" + std::to_string(jobs) + "_" + std::to_string(points) + ".toml"))
+          << "[base]\ncommand = \"rig\"\nconfig = \"rig.toml\"\n[[axis]]\nkey = \"rig.mass_kg\"\nfrom = 0.9\nto = 1.1\n"
+          << "count = " << points << "\n[sweep]\njobs = " << jobs << "\n"
+          << "[outputs]\ncolumns = [\"summary.json:regime\", \"summary.json:peak_to_peak_m\"]\n";
+    }
   return dir;
+}
+
+// `tribo sweep` of `points` points, `jobs` at a time, into dir/sweepJ_P (emptied first).
+std::vector<std::string> sweep_args(const fs::path& dir, int jobs, int points) {
+  const std::string name = std::to_string(jobs) + "_" + std::to_string(points);
+  fs::remove_all(dir / ("sweep" + name));
+  return {"sweep", (dir / ("spec" + name + ".toml")).string(), "--out", (dir / ("sweep" + name)).string()};
+}
+
+std::vector<std::string> rig_args(const fs::path& dir) {
+  return {"rig", (dir / "rig.toml").string(), "--out", (dir / "rig").string(), "--summary-only"};
 }
 
 // Runs TRIBO_EXE with `args` (stdout to `out`, stderr discarded, OMP_NUM_THREADS=1 as the sweep
@@ -89,7 +105,7 @@ double seconds_of(const std::vector<std::string>& args, const std::string& out =
 // The point's own work: one `tribo rig` process, started and waited for.
 void BM_RigProcess(benchmark::State& state) {
   const fs::path dir = workdir();
-  for (auto _ : state) state.SetIterationTime(seconds_of({"rig", (dir / "rig.toml").string(), "--out", (dir / "rig").string()}));
+  for (auto _ : state) state.SetIterationTime(seconds_of(rig_args(dir)));
 }
 BENCHMARK(BM_RigProcess)->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
@@ -100,10 +116,8 @@ void BM_SweepOverheadPerPoint(benchmark::State& state) {
   double direct = 0.0, swept = 0.0, cpu = 0.0;
   for (auto _ : state) {
     double d = 0.0;
-    for (int k = 0; k < kPoints; ++k) d += seconds_of({"rig", (dir / "rig.toml").string(), "--out", (dir / "rig").string()});
-    fs::remove_all(dir / "sweep1");
-    const double s = seconds_of({"sweep", (dir / "spec1.toml").string(), "--out", (dir / "sweep1").string()},
-                                (dir / "sweep1.txt").string());
+    for (int k = 0; k < kPoints; ++k) d += seconds_of(rig_args(dir));
+    const double s = seconds_of(sweep_args(dir, 1, kPoints), (dir / "sweep1.txt").string());
     direct += d;
     swept += s;
     state.SetIterationTime(s);
@@ -122,23 +136,39 @@ void BM_SweepOverheadPerPoint(benchmark::State& state) {
 }
 BENCHMARK(BM_SweepOverheadPerPoint)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
-// Throughput of a kPoints sweep with `jobs` points at a time (items/s = points/s).
+// Throughput of a kThroughputPoints sweep on 1 or 2 cores (items/s = points/s): the sweep, with
+// `jobs` left to its default (the cores it may use), runs under a CPU mask of range(0) cores, set
+// on this process around the start and inherited — what `taskset -c 0 tribo sweep …` does.
 void BM_SweepThroughput(benchmark::State& state) {
   const fs::path dir = workdir();
-  const std::string jobs = std::to_string(state.range(0));
+  cpu_set_t all, mask;
+  if (sched_getaffinity(0, sizeof all, &all) != 0) throw std::runtime_error("sched_getaffinity failed");
+  CPU_ZERO(&mask);
+  for (int cpu = 0, taken = 0; cpu < CPU_SETSIZE && taken < state.range(0); ++cpu)
+    if (CPU_ISSET(cpu, &all)) {
+      CPU_SET(cpu, &mask);
+      ++taken;
+    }
+  if (CPU_COUNT(&mask) < state.range(0)) {
+    state.SkipWithError("fewer cores than asked for");
+    return;
+  }
   const double cpu0 = children_cpu_s();
   for (auto _ : state) {
-    fs::remove_all(dir / ("sweep" + jobs));
-    state.SetIterationTime(
-        seconds_of({"sweep", (dir / ("spec" + jobs + ".toml")).string(), "--out", (dir / ("sweep" + jobs)).string()}));
+    const std::vector<std::string> args = sweep_args(dir, 0, kThroughputPoints);
+    if (sched_setaffinity(0, sizeof mask, &mask) != 0) throw std::runtime_error("sched_setaffinity failed");
+    const double s = seconds_of(args);
+    sched_setaffinity(0, sizeof all, &all);
+    state.SetIterationTime(s);
   }
-  state.SetItemsProcessed(state.iterations() * kPoints);
-  // CPU time of the sweep and all its points per point: equal for 1 and 2 jobs means running points
-  // side by side costs nothing extra, so on free cores the wall time falls with the jobs. On a host
-  // that shares CPU per session (Linux autogroup) the wall time cannot show it; this figure can.
-  state.counters["cpu_ms_per_point"] = 1e3 * (children_cpu_s() - cpu0) / (static_cast<double>(state.iterations()) * kPoints);
+  state.SetItemsProcessed(state.iterations() * kThroughputPoints);
+  // CPU time of the sweep and its workers per point: equal for 1 and 2 cores means running points
+  // side by side costs nothing extra. On a host that shares CPU per session (Linux autogroup) the
+  // wall time cannot show the second core; this figure can.
+  state.counters["cpu_ms_per_point"] =
+      1e3 * (children_cpu_s() - cpu0) / (static_cast<double>(state.iterations()) * kThroughputPoints);
 }
-BENCHMARK(BM_SweepThroughput)->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_SweepThroughput)->ArgName("cores")->Arg(1)->Arg(2)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 

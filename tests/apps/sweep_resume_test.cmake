@@ -20,8 +20,32 @@ if(NOT nfailed EQUAL 4)
   message(FATAL_ERROR "expected the 4 points with mass -1 to fail naming rig.mass_kg, found ${nfailed}")
 endif()
 
-foreach(t 0.15 0.3 0.5 0.8)
+# Per-point artefacts only on request: by default a rig point writes its summary.json alone; with
+# `[sweep] artefacts = true` it keeps trace.csv and events.csv too, and the rows are the same.
+if(NOT EXISTS ${WORK}/full/points/00000/summary.json OR EXISTS ${WORK}/full/points/00000/trace.csv
+   OR EXISTS ${WORK}/full/points/00000/events.csv)
+  message(FATAL_ERROR "a default sweep's rig point must hold summary.json and no trace.csv or events.csv")
+endif()
+file(READ ${WORK}/spec.toml spec)
+string(REPLACE "[sweep]\n" "[sweep]\nartefacts = true\n" spec "${spec}")
+file(WRITE ${WORK}/spec_artefacts.toml "${spec}")
+execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec_artefacts.toml --out ${WORK}/artefacts RESULT_VARIABLE status ERROR_VARIABLE err)
+rows_without_wall(${WORK}/artefacts/results.csv with_artefacts)
+rows_without_wall(${WORK}/full/results.csv full)
+if(NOT status EQUAL 0 OR NOT EXISTS ${WORK}/artefacts/points/00000/trace.csv
+   OR NOT EXISTS ${WORK}/artefacts/points/00000/events.csv OR NOT with_artefacts STREQUAL full)
+  message(FATAL_ERROR "artefacts = true: expected the same rows and each point's trace.csv and events.csv (${status}): ${err}")
+endif()
+
+foreach(t 0.3 0.6 0.9 1.2)
   execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/killed TIMEOUT ${t} RESULT_VARIABLE ignored)
+  if(t STREQUAL "0.3")  # the first kill must land mid-sweep, or the test shows nothing
+    rows_without_wall(${WORK}/killed/results.csv first)
+    list(LENGTH first nfirst)
+    if(NOT nfirst LESS 13)
+      message(FATAL_ERROR "the sweep finished before its first kill at ${t} s: make the points dearer")
+    endif()
+  endif()
 endforeach()
 execute_process(COMMAND ${TRIBO} sweep ${WORK}/spec.toml --out ${WORK}/killed RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
