@@ -315,6 +315,7 @@ class PointPool {
     std::string error, values;
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
       error = last_line(sdir / "log.txt");
+      if (WIFSIGNALED(status)) error = "killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + "): " + error;
       if (spec_.steps.size() > 1) error = spec_.steps[r.step].command + ": " + error;
     } else if (r.step + 1 < spec_.steps.size()) {
       // A step just ended, so a worker has room even when steps no longer queue.
