@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "contact/junction_locus.h"
+#include "gap/verdict.h"
 
 namespace tribo::gap {
 namespace {
@@ -141,17 +142,6 @@ std::vector<double> coordinates(const std::vector<FitParameter>& space, const Se
   return u;
 }
 
-// Weighted residuals: each observable weighs the same whatever its number of items.
-std::vector<double> weights(const std::vector<Item>& items, const std::vector<bool>& mask) {
-  std::map<std::string, int> count;
-  for (std::size_t i = 0; i < items.size(); ++i)
-    if (mask[i]) ++count[items[i].observable];
-  std::vector<double> w(items.size(), 0.0);
-  for (std::size_t i = 0; i < items.size(); ++i)
-    if (mask[i]) w[i] = 1.0 / std::sqrt(static_cast<double>(count[items[i].observable]) * static_cast<double>(count.size()));
-  return w;
-}
-
 struct Cost {
   const Comparison* comparison;
   const std::vector<FitParameter>* space;
@@ -178,32 +168,6 @@ struct Cost {
     return true;
   }
 };
-
-double weighted_sse(const std::vector<double>& r, const std::vector<double>& w) {
-  double s = 0.0;
-  for (std::size_t i = 0; i < r.size(); ++i) s += w[i] * w[i] * r[i] * r[i];
-  return s;
-}
-
-GapBreakdown breakdown(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<bool>& mask) {
-  GapBreakdown g;
-  auto rms = [&](auto key) {
-    std::map<std::string, std::pair<double, int>> acc;
-    for (std::size_t i = 0; i < items.size(); ++i)
-      if (mask[i]) acc[key(items[i])].first += r[i] * r[i], ++acc[key(items[i])].second;
-    std::map<std::string, double> out;
-    for (const auto& [k, a] : acc) out[k] = std::sqrt(a.first / a.second);
-    return out;
-  };
-  g.by_observable = rms([](const Item& it) { return it.observable; });
-  g.by_regime = rms([](const Item& it) { return it.regime; });
-  g.by_phase = rms([](const Item& it) { return it.phase; });
-  g.by_speed = rms([](const Item& it) { return it.speed_class; });
-  double sum = 0.0;
-  for (const auto& [k, v] : g.by_observable) sum += v;
-  g.gap = g.by_observable.empty() ? 0.0 : sum / static_cast<double>(g.by_observable.size());
-  return g;
-}
 
 struct FitResult {
   Setup setup;
@@ -339,80 +303,6 @@ std::map<std::string, double> values(const std::vector<FitParameter>& space, con
   return out;
 }
 
-// A candidate with more parameters is preferred to a simpler earning one only when it beats it by
-// the margins an effect must beat the baseline by (held-out gap ≥ 20 % and ≥ min_gap_reduction
-// lower) and by a criterion difference of 2, below which a BIC difference is "not worth more than
-// a bare mention" (Kass & Raftery 1995, J. Am. Stat. Assoc. 90, 773). So a nested effect — thermal
-// thinning with U_T far above the slip speeds is viscous friction — does not win on fitting noise.
-// Returns the verdict's index, or −1 when no candidate earns its parameters.
-constexpr double kIndifferentCriterion = 2.0;
-
-struct Standing {
-  double criterion, heldout_gap;
-  bool earns;
-};
-
-int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin) {
-  std::vector<std::size_t> order;
-  for (std::size_t i = 0; i < cs.size(); ++i)
-    if (st[i].earns) order.push_back(i);
-  if (order.empty()) return -1;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    if (cs[a].extra_parameters != cs[b].extra_parameters) return cs[a].extra_parameters < cs[b].extra_parameters;
-    return st[a].criterion < st[b].criterion;
-  });
-  std::size_t chosen = order.front();
-  for (std::size_t i : order) {
-    if (cs[i].extra_parameters <= cs[chosen].extra_parameters) continue;
-    const Standing &c = st[i], &s = st[chosen];
-    if (c.criterion < s.criterion - kIndifferentCriterion && c.heldout_gap <= (1.0 - o.min_relative_shrink) * s.heldout_gap &&
-        s.heldout_gap - c.heldout_gap >= margin)
-      chosen = i;
-  }
-  return static_cast<int>(chosen);
-}
-
-// The verdict's rule on one set of standings (the data's, or a bootstrap resample's): the index of
-// the named candidate, or −1 — "unexplained" when the held-out gap lies above unexplained_floors
-// noise floors and no earning candidate halves its excess over the floor, else "none". Without a
-// floor (data that cannot tell their own noise) nothing is called unexplained.
-struct Decision {
-  int index = -1;
-  bool unexplained = false;
-};
-
-Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin,
-                double gap_before, double floor) {
-  const int k = verdict_index(cs, st, o, margin);
-  if (!(floor > 0.0)) return {k, false};
-  const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
-  const auto real = [&](double g) { return g > o.unexplained_floors * floor; };
-  if (k >= 0 && (!real(st[static_cast<std::size_t>(k)].heldout_gap) ||
-                 excess(st[static_cast<std::size_t>(k)].heldout_gap) <= 0.5 * excess(gap_before)))
-    return {k, false};
-  return {-1, real(gap_before)};
-}
-
-// An effect must cut the held-out gap by this much: the fixed minimum or floor_margin floors.
-double gap_margin(const DiagnosisOptions& o, double floor) { return std::max(o.min_gap_reduction, o.floor_margin * floor); }
-
-// Share of the summed squared residuals by (observable, phase + speed class), largest first.
-std::vector<Localization> localize(const std::vector<Item>& items, const std::vector<double>& r) {
-  std::map<std::pair<std::string, std::string>, std::pair<double, std::size_t>> acc;
-  double total = 0.0;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    const double r2 = r[i] * r[i];
-    auto& a = acc[{items[i].observable, items[i].phase + ", " + items[i].speed_class}];
-    if (a.first == 0.0 || r2 > r[a.second] * r[a.second]) a.second = i;
-    a.first += r2;
-    total += r2;
-  }
-  std::vector<Localization> out;
-  for (const auto& [key, a] : acc) out.push_back({key.first, key.second, items[a.second].where, total > 0.0 ? a.first / total : 0.0});
-  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.share > b.share; });
-  return out;
-}
-
 std::string join(const std::vector<std::string>& v, const std::string& sep) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
@@ -520,6 +410,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   report("baseline calibration");
   const std::vector<bool> all(n, true);
   const std::vector<double> w_held = weights(d.items, d.heldout);
+  const Multiplicity held_m = multiplicity(d.heldout);
   double sse_before = 0.0, calibrated_cost = calibrated.cost;
   int n_held = 0;
   for (bool h : d.heldout) n_held += h;
@@ -532,16 +423,14 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     d.baseline = breakdown(d.items, d.baseline_residuals, all);
     d.baseline_heldout = breakdown(d.items, d.baseline_residuals, d.heldout);
     d.best_simulated = d.baseline_simulated;
-    sse_before = weighted_sse(d.baseline_residuals, w_held);
+    sse_before = weighted_sse(d.baseline_residuals, w_held, held_m);
     calibrated_cost = f.cost;
   };
   set_baseline(calibrated);
   auto judge = [&](Candidate& c) {
     c.heldout_gap_before = d.baseline_heldout.gap;
-    const double sse_after = weighted_sse(c.residuals, w_held);
-    c.criterion = n_held * std::log(std::max(sse_after, 1e-300) / std::max(sse_before, 1e-300)) + c.extra_parameters * std::log(std::max(n_held, 2));
-    c.earns = c.criterion < 0.0 && c.heldout_gap_after <= (1.0 - o.min_relative_shrink) * c.heldout_gap_before &&
-              c.heldout_gap_before - c.heldout_gap_after >= margin;
+    c.criterion = criterion(weighted_sse(c.residuals, w_held, held_m), sse_before, n_held, c.extra_parameters);
+    c.earns = earns(c.criterion, c.heldout_gap_after, c.heldout_gap_before, o, margin);
   };
 
   // 2. Candidates.
@@ -709,54 +598,10 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       d.verdict.remaining_where = l.front().observable + " (" + l.front().where + ", worst " + l.front().worst_item + ")";
   }
   {
-    std::vector<int> units;
-    for (std::size_t i = 0; i < n; ++i)
-      if (d.heldout[i]) units.push_back(d.items[i].unit);
-    std::sort(units.begin(), units.end());
-    units.erase(std::unique(units.begin(), units.end()), units.end());
-    std::mt19937_64 rng(o.seed ^ 0x9e3779b97f4a7c15ULL);
-    std::uniform_int_distribution<std::size_t> pick(0, units.empty() ? 0 : units.size() - 1);
-    int agree = 0;
-    double s1 = 0.0, s2 = 0.0;
-    for (int b = 0; b < o.bootstrap_samples && !units.empty(); ++b) {
-      std::map<int, int> times;
-      for (std::size_t k = 0; k < units.size(); ++k) ++times[units[pick(rng)]];
-      std::vector<bool> mask(n, false);
-      std::vector<double> mult(n, 0.0);
-      int nh = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        if (d.heldout[i] && times.count(d.items[i].unit)) mask[i] = true, mult[i] = times[d.items[i].unit], nh += times[d.items[i].unit];
-      const std::vector<double> w = weights(d.items, mask);
-      auto sse = [&](const std::vector<double>& r) {
-        double s = 0.0;
-        for (std::size_t i = 0; i < n; ++i) s += mult[i] * w[i] * w[i] * r[i] * r[i];
-        return s;
-      };
-      auto gap_of = [&](const std::vector<double>& r) {
-        std::map<std::string, std::pair<double, double>> acc;
-        for (std::size_t i = 0; i < n; ++i)
-          if (mask[i]) acc[d.items[i].observable].first += mult[i] * r[i] * r[i], acc[d.items[i].observable].second += mult[i];
-        double g = 0.0;
-        for (const auto& [k, a] : acc) g += std::sqrt(a.first / a.second);
-        return acc.empty() ? 0.0 : g / static_cast<double>(acc.size());
-      };
-      const double before = sse(d.baseline_residuals), gap_before = gap_of(d.baseline_residuals);
-      const double floor = gap_of(noise_r), resample_margin = gap_margin(o, floor);
-      std::vector<Standing> standing;
-      for (const Candidate& c : d.candidates) {
-        const double crit = nh * std::log(std::max(sse(c.residuals), 1e-300) / std::max(before, 1e-300)) + c.extra_parameters * std::log(std::max(nh, 2));
-        const double after = gap_of(c.residuals);
-        standing.push_back({crit, after, crit < 0.0 && after <= (1.0 - o.min_relative_shrink) * gap_before && gap_before - after >= resample_margin});
-      }
-      const Decision k = decide(d.candidates, standing, o, resample_margin, gap_before, floor);
-      const std::string winner = k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(d.candidates[static_cast<std::size_t>(k.index)].effects);
-      agree += winner == verdict_name(d.verdict);
-      const double g = gap_of(chosen ? chosen->residuals : d.baseline_residuals);
-      s1 += g, s2 += g * g;
-    }
-    const int B = units.empty() ? 0 : o.bootstrap_samples;
-    d.verdict.confidence = B ? static_cast<double>(agree) / B : 0.0;
-    d.verdict.heldout_gap_after_std = B > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / B) / (B - 1))) : 0.0;
+    const Confidence c = bootstrap_confidence(d.items, d.heldout, noise_r, d.baseline_residuals, d.candidates,
+                                              chosen ? chosen->residuals : d.baseline_residuals, verdict_name(d.verdict), o);
+    d.verdict.confidence = c.agreement;
+    d.verdict.heldout_gap_after_std = c.heldout_gap_after_std;
   }
 
   char buf[900];

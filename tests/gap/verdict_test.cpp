@@ -1,0 +1,150 @@
+// The diagnosis' stages after the fits (gap/verdict.h) on hand-made items and residuals: the gap
+// and criterion against their definitions (diagnosis.h), the verdict rule's three outcomes, where
+// the residual lies, and the bootstrap confidence at its two ends. No simulation: milliseconds.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "gap/verdict.h"
+
+namespace tribo::gap {
+namespace {
+
+Item item(const std::string& observable, int unit, const std::string& phase = "cycle") {
+  Item it;
+  it.observable = observable;
+  it.unit = unit;
+  it.phase = phase;
+  it.regime = "stick_slip";
+  it.speed_class = unit < 2 ? "low v" : "high v";
+  it.where = observable + " unit " + std::to_string(unit);
+  return it;
+}
+
+Candidate candidate(const std::string& effect, int parameters, std::vector<double> residuals) {
+  Candidate c;
+  c.effects = {effect};
+  c.extra_parameters = parameters;
+  c.residuals = std::move(residuals);
+  return c;
+}
+
+// Two observables, three items of one and one of the other: the gap is the mean over observables
+// of the RMS residual, so the lone item weighs as much as the three (definition in diagnosis.h).
+TEST(Verdict, GapIsTheMeanOverObservablesOfTheRmsResidual) {
+  const std::vector<Item> items{item("mu_peak", 0), item("mu_peak", 1), item("mu_peak", 2), item("period_s", 3)};
+  const std::vector<double> r{0.1, -0.2, 0.2, 0.5};
+  const double expected = 0.5 * (std::sqrt((0.01 + 0.04 + 0.04) / 3.0) + 0.5);
+  EXPECT_NEAR(gap(items, r, multiplicity({true, true, true, true})), expected, 1e-15);
+  EXPECT_NEAR(breakdown(items, r, {true, true, true, true}).gap, expected, 1e-15);
+  EXPECT_NEAR(breakdown(items, r, {true, true, true, true}).by_observable.at("mu_peak"), std::sqrt(0.03), 1e-15);
+  // Outside the split an item does not count; counted twice it counts as two copies would.
+  EXPECT_NEAR(gap(items, r, multiplicity({true, false, false, false})), 0.1, 1e-15);
+  const std::vector<Item> doubled{item("mu_peak", 0), item("mu_peak", 1), item("mu_peak", 1)};
+  EXPECT_NEAR(gap(items, r, {1.0, 2.0, 0.0, 0.0}), gap(doubled, {0.1, -0.2, -0.2}, {1.0, 1.0, 1.0}), 1e-15);
+  EXPECT_EQ(gap(items, r, {0.0, 0.0, 0.0, 0.0}), 0.0);
+}
+
+// Weights make every observable's summed squared weight 1 / N_obs, whatever its item count.
+TEST(Verdict, WeightsGiveEveryObservableTheSameShare) {
+  const std::vector<Item> items{item("mu_peak", 0), item("mu_peak", 1), item("mu_peak", 2), item("period_s", 3)};
+  const std::vector<double> w = weights(items, {true, true, true, true});
+  EXPECT_NEAR(w[0] * w[0] + w[1] * w[1] + w[2] * w[2], 0.5, 1e-15);
+  EXPECT_NEAR(w[3] * w[3], 0.5, 1e-15);
+  EXPECT_NEAR(weighted_sse({1.0, 1.0, 1.0, 1.0}, w, {1.0, 1.0, 1.0, 1.0}), 1.0, 1e-15);
+  EXPECT_EQ(weights(items, {true, false, false, false})[1], 0.0);
+}
+
+// BIC form: halving S over 10 items with one parameter gives 10 ln ½ + ln 10 = −4.605; the same
+// cut with four parameters (+4 ln 10 = 9.21) does not pay.
+TEST(Verdict, CriterionIsTheBicForm) {
+  EXPECT_NEAR(criterion(0.5, 1.0, 10, 1), 10.0 * std::log(0.5) + std::log(10.0), 1e-13);
+  EXPECT_LT(criterion(0.5, 1.0, 10, 1), 0.0);
+  EXPECT_GT(criterion(0.5, 1.0, 10, 4), 0.0);
+  EXPECT_NEAR(criterion(1.0, 1.0, 1, 1), std::log(2.0), 1e-15);  // n below 2 counts as 2
+  const DiagnosisOptions o;                                       // shrink 20 %, margin 0.0025
+  EXPECT_TRUE(earns(-1.0, 0.079, 0.1, o, 0.0025));
+  EXPECT_FALSE(earns(-1.0, 0.081, 0.1, o, 0.0025));   // cuts 19 %
+  EXPECT_FALSE(earns(-1.0, 0.0079, 0.01, o, 0.0025)); // 21 % but only 0.0021
+  EXPECT_FALSE(earns(0.5, 0.01, 0.1, o, 0.0025));     // the criterion says no
+}
+
+// The verdict rule: the simplest earning candidate; a larger one only when it beats it by the
+// margins and by more than 2 in the criterion; unexplained above 5 floors when nothing halves the
+// excess over the floor; none below.
+TEST(Verdict, RuleNamesTheSimplestEarnerAndOwnsUpToWhatItCannotExplain) {
+  const DiagnosisOptions o;
+  const std::vector<Candidate> cs{candidate("a", 1, {}), candidate("b", 2, {})};
+  // b is better, but not by 2 in C: a stays.
+  EXPECT_EQ(verdict_index(cs, {{-10.0, 0.05, true}, {-11.5, 0.01, true}}, o, 0.0025), 0);
+  // b by 3 in C and 80 % in gap: b.
+  EXPECT_EQ(verdict_index(cs, {{-10.0, 0.05, true}, {-13.0, 0.01, true}}, o, 0.0025), 1);
+  EXPECT_EQ(verdict_index(cs, {{1.0, 0.05, false}, {2.0, 0.01, false}}, o, 0.0025), -1);
+
+  const double floor = 0.01;
+  // Gap 0.2 = 20 floors; a leaves 0.15: its excess is not halved → unexplained.
+  Decision d = decide(cs, {{-5.0, 0.15, true}, {1.0, 0.2, false}}, o, 0.0025, 0.2, floor);
+  EXPECT_EQ(d.index, -1);
+  EXPECT_TRUE(d.unexplained);
+  // a brings it to 0.02 (2 floors): named.
+  d = decide(cs, {{-5.0, 0.02, true}, {1.0, 0.2, false}}, o, 0.0025, 0.2, floor);
+  EXPECT_EQ(d.index, 0);
+  EXPECT_FALSE(d.unexplained);
+  // 3 floors and no earner: none, not unexplained (the rig-constants-off controls' case).
+  d = decide(cs, {{1.0, 0.03, false}, {1.0, 0.03, false}}, o, 0.0025, 0.03, floor);
+  EXPECT_EQ(d.index, -1);
+  EXPECT_FALSE(d.unexplained);
+  // Without a floor nothing is unexplained.
+  EXPECT_FALSE(decide(cs, {{1.0, 0.2, false}, {1.0, 0.2, false}}, o, 0.0025, 0.2, 0.0).unexplained);
+}
+
+TEST(Verdict, LocalisationSharesSumToOneLargestFirstWithTheWorstItem) {
+  const std::vector<Item> items{item("mu_peak", 0, "slip onset"), item("mu_peak", 1, "slip onset"), item("period_s", 2)};
+  const std::vector<Localization> l = localize(items, {0.1, 0.3, 0.2});
+  ASSERT_EQ(l.size(), 2u);  // (mu_peak; slip onset, low v) holds units 0 and 1; (period_s; cycle, high v)
+  double total = 0.0;
+  for (const Localization& x : l) total += x.share;
+  EXPECT_NEAR(total, 1.0, 1e-15);
+  EXPECT_EQ(l.front().observable, "mu_peak");
+  EXPECT_NEAR(l.front().share, (0.01 + 0.09) / 0.14, 1e-15);
+  EXPECT_EQ(l.front().worst_item, "mu_peak unit 1");
+}
+
+// Confidence at its ends: a candidate that cuts every held-out unit's residual tenfold wins in
+// every resample (1.0), and its gap does not vary; a candidate that helps one unit of eight and
+// spoils none wins only in resamples that draw that unit often enough — well below 1.
+TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
+  std::vector<Item> items;
+  std::vector<bool> held;
+  for (int u = 0; u < 8; ++u)
+    for (const char* obs : {"mu_peak", "period_s"}) {
+      items.push_back(item(obs, u));
+      held.push_back(true);
+    }
+  const std::size_t n = items.size();
+  // No noise floor: the rule is the criterion and the margins alone (no "unexplained").
+  const std::vector<double> baseline(n, 0.2), noise(n, 0.0);
+  DiagnosisOptions o;
+  o.bootstrap_samples = 400;
+  std::vector<double> uniform(n, 0.02);
+  const std::vector<Candidate> one{candidate("uniform", 1, uniform)};
+  const Confidence sure = bootstrap_confidence(items, held, noise, baseline, one, uniform, "uniform", o);
+  EXPECT_EQ(sure.agreement, 1.0);
+  EXPECT_NEAR(sure.heldout_gap_after_std, 0.0, 1e-8);  // a constant 0.02, up to the sums' rounding
+
+  std::vector<double> local = baseline;
+  local[0] = local[1] = 0.0;  // unit 0 only
+  const std::vector<Candidate> other{candidate("local", 1, local)};
+  const Confidence weak = bootstrap_confidence(items, held, noise, baseline, other, local, "local", o);
+  // On the full data it cuts the gap by 1 − sqrt(7/8) = 6.5 %, under the 20 % rule: a resample
+  // needs unit 0 drawn k ≥ 3 times of eight (gap 0.2 sqrt(1 − k/8) ≤ 0.16), P = 0.067 for a
+  // binomial(8, 1/8); 400 resamples estimate it to ± 0.0125.
+  EXPECT_GT(weak.agreement, 0.02);
+  EXPECT_LT(weak.agreement, 0.15);
+  EXPECT_GT(weak.heldout_gap_after_std, 0.0);
+  // No held-out unit: no confidence.
+  EXPECT_EQ(bootstrap_confidence(items, std::vector<bool>(n, false), noise, baseline, one, uniform, "uniform", o).agreement, 0.0);
+}
+
+}  // namespace
+}  // namespace tribo::gap
