@@ -15,6 +15,7 @@
 #include "apps/rig_output.h"
 #include "gap/bundle.h"
 #include "gap/diagnosis.h"
+#include "gap/report.h"
 #include "gap/selftest.h"
 
 namespace tribo::cli {

@@ -38,8 +38,6 @@
 // `floor_margin`; off by default, see there.)
 #pragma once
 
-#include <nlohmann/json.hpp>
-
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -139,9 +137,6 @@ std::vector<std::string> default_candidates(const rig::FrictionModel& model, con
 
 // The model's rig with every [rig] key the bundle gives.
 rig::RigParameters apply_bundle_rig(const ExperimentBundle& bundle, rig::RigParameters rig);
-
-// gap_report.json content (keys of DESIGN §7 plus details).
-nlohmann::json report_json(const Diagnosis& d);
 
 std::string verdict_name(const std::vector<std::string>& effects);  // "none", "a" or "a+b"
 std::string verdict_name(const Verdict& v);                         // the same, or "unexplained"

@@ -8,6 +8,7 @@
 
 #include "gap/compare.h"
 #include "gap/diagnosis.h"
+#include "gap/report.h"
 
 namespace tribo::gap {
 namespace {

@@ -1,0 +1,120 @@
+#include "gap/report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace tribo::gap {
+namespace {
+
+std::string join(const std::vector<std::string>& v, const std::string& sep) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
+  return s;
+}
+
+}  // namespace
+
+std::string verdict_name(const std::vector<std::string>& effects) { return effects.empty() ? "none" : join(effects, "+"); }
+
+std::string verdict_name(const Verdict& v) { return v.unexplained ? "unexplained" : verdict_name(v.effects); }
+
+std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
+  char buf[900];
+  const Localization* top = d.localization.empty() ? nullptr : &d.localization.front();
+  char floor_text[160] = "";
+  if (d.verdict.noise_floor > 0.0)
+    std::snprintf(floor_text, sizeof floor_text, " (%.1f noise floors; the data's own noise leaves %.3g)", d.verdict.remaining_floors,
+                  d.verdict.noise_floor);
+  const std::string closest = d.candidates.empty() ? std::string("-") : verdict_name(d.candidates.front().effects);
+  const double closest_gap = d.candidates.empty() ? d.verdict.heldout_gap_before : d.candidates.front().heldout_gap_after;
+  if (chosen) {
+    std::string params;
+    for (const auto& [k, v] : chosen->params)
+      if (k.rfind("baseline.", 0) != 0 && k.rfind("rig.", 0) != 0) {
+        char p[96];
+        std::snprintf(p, sizeof p, "%s%s = %.3g", params.empty() ? "" : ", ", k.c_str(), v);
+        params += p;
+      }
+    std::snprintf(buf, sizeof buf,
+                  "Add %s to the model (%s): it cuts the held-out gap from %.3g to %.3g%s (%.0f %% smaller, bootstrap confidence %.0f %%); "
+                  "the baseline misses most in %s (%s, %.0f %% of the squared residual).",
+                  join(chosen->effects, " and ").c_str(), params.c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
+                  floor_text, 100.0 * (1.0 - d.verdict.heldout_gap_after / std::max(d.verdict.heldout_gap_before, 1e-300)),
+                  100.0 * d.verdict.confidence, top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
+                  top ? 100.0 * top->share : 0.0);
+  } else if (d.verdict.unexplained) {
+    std::snprintf(buf, sizeof buf,
+                  "Unexplained: the calibrated baseline (mu_s = %.3g, mu_k = %.3g) leaves a held-out gap of %.3g%s, and no catalogue "
+                  "effect halves its excess over the floor (closest %s at %.3g); most of it lies in %s. Look for a mechanism outside "
+                  "the catalogue there (bootstrap confidence %.0f %%).",
+                  d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, floor_text, closest.c_str(), closest_gap,
+                  d.verdict.remaining_where.c_str(), 100.0 * d.verdict.confidence);
+  } else {
+    std::snprintf(buf, sizeof buf,
+                  "No catalogue effect earns its parameters on held-out data: keep the calibrated baseline (mu_s = %.3g, mu_k = %.3g), "
+                  "whose held-out gap is %.3g%s; the largest remaining share is %s (%s, %.0f %%), closest candidate %s at held-out gap %.3g.",
+                  d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, floor_text,
+                  top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0, closest.c_str(),
+                  closest_gap);
+  }
+  return buf;
+}
+
+nlohmann::json report_json(const Diagnosis& d) {
+  using nlohmann::json;
+  auto breakdown_json = [](const GapBreakdown& g) {
+    return json{{"gap", g.gap}, {"by_observable", g.by_observable}, {"by_regime", g.by_regime}, {"by_phase", g.by_phase}, {"by_speed", g.by_speed}};
+  };
+  json j;
+  j["gap_definition"] =
+      "r_i = (simulated_i - measured_i) / s_o with s_o the RMS of the measured values of observable o (for friction levels - mu_peak, "
+      "mu_trough, mean_mu, mu_s_vs_load_rate, steady_mu - the RMS of all measured levels); r_i = 1 where the simulation lacks the "
+      "feature; gap_o = sqrt(mean r_i^2) over the items of o; gap = mean over observables of gap_o";
+  j["baseline"] = breakdown_json(d.baseline);
+  j["baseline"]["heldout"] = breakdown_json(d.baseline_heldout);
+  j["baseline"]["calibrated"] = d.calibrated_params;
+  j["heldout_is_in_sample"] = !d.has_heldout;
+  j["localization"] = json::array();
+  for (const auto& l : d.localization)
+    j["localization"].push_back({{"observable", l.observable}, {"where", l.where}, {"share", l.share}, {"worst_item", l.worst_item}});
+  j["candidates"] = json::array();
+  for (const auto& c : d.candidates) {
+    json e = c.effects.size() == 1 ? json(c.effects.front()) : json(c.effects);
+    j["candidates"].push_back({{"effect", e},
+                               {"params", c.params},
+                               {"extra_parameters", c.extra_parameters},
+                               {"train_gap", c.train_gap},
+                               {"heldout_gap_before", c.heldout_gap_before},
+                               {"heldout_gap_after", c.heldout_gap_after},
+                               {"heldout_after_by_observable", c.heldout_after_by_observable},
+                               {"criterion", c.criterion},
+                               {"earns_parameters", c.earns}});
+  }
+  json effect = d.verdict.effects.size() > 1 ? json(d.verdict.effects) : json(verdict_name(d.verdict));
+  j["verdict"] = {{"effect", effect},
+                  {"heldout_gap_before", d.verdict.heldout_gap_before},
+                  {"heldout_gap_after", d.verdict.heldout_gap_after},
+                  {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},
+                  {"confidence", d.verdict.confidence},
+                  {"noise_floor", d.verdict.noise_floor},
+                  {"remaining_gap_in_floors", std::isfinite(d.verdict.remaining_floors) ? json(d.verdict.remaining_floors) : json(nullptr)},
+                  {"remaining_where", d.verdict.remaining_where},
+                  {"conclusion", d.verdict.conclusion}};
+  j["noise_floor_definition"] =
+      "gap of the items' standard errors read off the data (blocks of each run analysed as repeats; a step bin's high-pass noise / "
+      "sqrt(samples)): the held-out gap a model right in every mechanism would still leave";
+  j["items"] = json::array();
+  for (std::size_t i = 0; i < d.items.size(); ++i)
+    j["items"].push_back({{"observable", d.items[i].observable},
+                          {"where", d.items[i].where},
+                          {"phase", d.items[i].phase},
+                          {"heldout", static_cast<bool>(d.heldout[i])},
+                          {"measured", d.measured[i]},
+                          {"noise", d.items[i].noise},
+                          {"baseline", std::isfinite(d.baseline_simulated[i]) ? json(d.baseline_simulated[i]) : json(nullptr)},
+                          {"best", std::isfinite(d.best_simulated[i]) ? json(d.best_simulated[i]) : json(nullptr)}});
+  return j;
+}
+
+}  // namespace tribo::gap

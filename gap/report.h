@@ -1,0 +1,22 @@
+// The diagnosis' last stage (diagnosis.h): what it says — the verdict's name, the one sentence a
+// tribologist can act on, and gap_report.json.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+#include "gap/diagnosis.h"
+
+namespace tribo::gap {
+
+// The conclusion for a finished diagnosis (verdict, confidence, localisation and candidates set):
+// "Add EFFECT to the model (its parameters): it cuts the held-out gap from … to …", or
+// "Unexplained: …" with where the gap lies, or "No catalogue effect earns its parameters …".
+// `chosen`: the verdict's candidate, nullptr for "none" and "unexplained".
+std::string conclusion(const Diagnosis& d, const Candidate* chosen);
+
+// gap_report.json content (keys of DESIGN §7 plus details).
+nlohmann::json report_json(const Diagnosis& d);
+
+}  // namespace tribo::gap

@@ -1,0 +1,68 @@
+// The diagnosis' report stage (gap/report.h) on a hand-made diagnosis: the sentence for each of the
+// three verdicts carries the numbers it is built from, and gap_report.json the verdict's keys.
+#include <gtest/gtest.h>
+
+#include "gap/report.h"
+
+namespace tribo::gap {
+namespace {
+
+Diagnosis made_up() {
+  Diagnosis d;
+  d.calibrated.baseline.mu_s = 0.62;
+  d.calibrated.baseline.mu_k = 0.41;
+  d.localization = {{"mu_after_step", "slip transient, high v", "0-0.1 um after step 1", 0.985}};
+  Candidate c;
+  c.effects = {"slip_transient"};
+  c.params = {{"baseline.mu_s", 0.62}, {"slip_transient.decay_distance_m", 6.8e-6}, {"rig.damping_ratio", 0.9}};
+  c.heldout_gap_after = 0.157;
+  d.candidates = {c};
+  d.verdict.heldout_gap_before = 0.34;
+  d.verdict.noise_floor = 0.02;
+  d.verdict.confidence = 0.95;
+  d.verdict.remaining_where = "mu_after_step (slip transient, high v, worst 0-0.1 um after step 1)";
+  return d;
+}
+
+TEST(Report, NamedVerdictGivesTheEffectItsParametersAndTheShrink) {
+  Diagnosis d = made_up();
+  d.verdict.effects = {"slip_transient"};
+  d.verdict.heldout_gap_after = 0.157;
+  d.verdict.remaining_floors = 0.157 / 0.02;
+  const std::string s = conclusion(d, &d.candidates.front());
+  // Effect parameters only (not the baseline's or the rig's), the gap before and after, the
+  // shrink 1 − 0.157/0.34 = 54 %, the confidence and where the baseline misses.
+  EXPECT_NE(s.find("Add slip_transient to the model (slip_transient.decay_distance_m = 6.8e-06)"), std::string::npos) << s;
+  EXPECT_NE(s.find("from 0.34 to 0.157 (7.8 noise floors"), std::string::npos) << s;
+  EXPECT_NE(s.find("54 % smaller, bootstrap confidence 95 %"), std::string::npos) << s;
+  EXPECT_NE(s.find("mu_after_step (slip transient, high v, 98 % of the squared residual)"), std::string::npos) << s;
+  EXPECT_EQ(s.find("baseline.mu_s"), std::string::npos) << s;
+  d.verdict.conclusion = s;
+  d.baseline_simulated = d.best_simulated = d.measured = {};
+  const nlohmann::json j = report_json(d);
+  EXPECT_EQ(j["verdict"]["effect"], "slip_transient");
+  EXPECT_DOUBLE_EQ(j["verdict"]["confidence"].get<double>(), 0.95);
+  EXPECT_EQ(j["verdict"]["conclusion"], s);
+}
+
+TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {
+  Diagnosis d = made_up();
+  d.verdict.unexplained = true;
+  d.verdict.heldout_gap_after = 0.34;
+  d.verdict.remaining_floors = 17.0;
+  std::string s = conclusion(d, nullptr);
+  EXPECT_EQ(s.rfind("Unexplained: the calibrated baseline (mu_s = 0.62, mu_k = 0.41) leaves a held-out gap of 0.34 (17.0 noise floors", 0), 0u) << s;
+  EXPECT_NE(s.find("closest slip_transient at 0.157"), std::string::npos) << s;
+  EXPECT_NE(s.find("most of it lies in mu_after_step (slip transient, high v, worst 0-0.1 um after step 1)"), std::string::npos) << s;
+  EXPECT_EQ(verdict_name(d.verdict), "unexplained");
+
+  d.verdict.unexplained = false;
+  s = conclusion(d, nullptr);
+  EXPECT_EQ(s.rfind("No catalogue effect earns its parameters on held-out data: keep the calibrated baseline (mu_s = 0.62, mu_k = 0.41)", 0), 0u) << s;
+  EXPECT_NE(s.find("closest candidate slip_transient at held-out gap 0.157"), std::string::npos) << s;
+  EXPECT_EQ(verdict_name(d.verdict), "none");
+  EXPECT_EQ(verdict_name(std::vector<std::string>{"a", "b"}), "a+b");
+}
+
+}  // namespace
+}  // namespace tribo::gap
