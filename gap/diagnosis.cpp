@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "contact/junction_locus.h"
+#include "gap/calibration.h"
 #include "gap/report.h"
 #include "gap/verdict.h"
 
@@ -374,17 +375,9 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // maxima or static points, μk midway between maxima and minima as in Coulomb stick-slip).
   Setup guess{model_rig, model};
   {
-    std::map<std::string, std::pair<double, int>> m;
-    for (const Item& it : d.items) m[it.observable].first += it.measured, ++m[it.observable].second;
-    auto avg = [&](const char* k) { return m.count(k) ? m[k].first / m[k].second : std::numeric_limits<double>::quiet_NaN(); };
-    double mu_s = avg("mu_peak");
-    if (!std::isfinite(mu_s)) mu_s = avg("mu_s_vs_load_rate");
-    double mu_k = std::isfinite(avg("mu_trough")) && std::isfinite(avg("mu_peak")) ? 0.5 * (avg("mu_peak") + avg("mu_trough")) : avg("steady_mu");
-    if (!std::isfinite(mu_k)) mu_k = avg("mean_mu");
-    if (!std::isfinite(mu_s)) mu_s = std::isfinite(mu_k) ? mu_k : model.baseline.mu_s;
-    if (!std::isfinite(mu_k)) mu_k = model.baseline.mu_k;
-    guess.model.baseline.mu_s = std::clamp(mu_s, 0.011, 1.49);
-    guess.model.baseline.mu_k = std::clamp(mu_k, 0.05 * guess.model.baseline.mu_s, guess.model.baseline.mu_s);
+    const FrictionLevels levels = friction_levels_from_data(d.items, {model.baseline.mu_s, model.baseline.mu_k});
+    guess.model.baseline.mu_s = levels.mu_s;
+    guess.model.baseline.mu_k = levels.mu_k;
     // A machine nobody describes: its stiffness from the elastic rise after a velocity step, and
     // half-critical damping (a servo-driven load point is far from the thesis rig's ζ ≈ 0.01).
     const auto calibrated = [&](const char* key) { return std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), key) > 0; };
