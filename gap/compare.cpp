@@ -548,11 +548,12 @@ int samples_per_period(const rig::RigParameters& rig, double spacing_s) {
 // as measured when `trace` is given. Empty for a parameter set the rig rejects (e.g. overdamped):
 // its items have no prediction, residual 1.
 Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const rig::FrictionModel& model, const rig::FrictionLaw& law,
-                      std::uint64_t seed, std::optional<SimulatedRun>* trace) {
+                      std::uint64_t seed, double tolerance, std::optional<SimulatedRun>* trace) {
   Features f;
   const double W = rig.normal_load_N, k = rig.stiffness_N_per_m;
   rig::SimulationOptions options;
   options.max_events = 200'000;
+  options.relative_tolerance = options.displacement_tolerance_fraction = tolerance;
   try {
     switch (plan.kind) {
       case RunPlan::Kind::constant_speed:
@@ -809,6 +810,24 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     const double rms = std::sqrt(acc.first / acc.second);
     scales_.emplace_back(it.observable, rms > 0.0 ? rms : 1.0);
   }
+  if (const double noise = median_relative_noise(); noise > 0.0)
+    tolerance_ = std::clamp(kToleranceBelowNoise * noise, kFinestTolerance, kCoarsestTolerance);
+}
+
+double Comparison::median_relative_noise() const {
+  std::vector<double> relative;
+  for (const Item& it : items_)
+    if (it.noise > 0.0) relative.push_back(it.noise / scale(it.observable));
+  if (relative.empty()) return 0.0;
+  const auto middle = relative.begin() + static_cast<long>(relative.size() / 2);
+  std::nth_element(relative.begin(), middle, relative.end());
+  return *middle;
+}
+
+void Comparison::set_integration_tolerance(double relative_tolerance) {
+  if (!(relative_tolerance >= kFinestTolerance && relative_tolerance <= kCoarsestTolerance))
+    throw std::invalid_argument("integration tolerance must lie in [1e-10, 1e-6]");
+  tolerance_ = relative_tolerance;
 }
 
 double Comparison::scale(const std::string& observable) const {
@@ -844,7 +863,7 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
   for (std::size_t p = 0; p < plans_.size(); ++p) {
     if (!plan_needed[p]) continue;
     try {
-      features[p] = predict_plan(plans_[p], rig, model, *law, seed, traces ? &plan_traces[p] : nullptr);
+      features[p] = predict_plan(plans_[p], rig, model, *law, seed, tolerance_, traces ? &plan_traces[p] : nullptr);
     } catch (...) {
 #pragma omp critical(tribo_gap_predict_failure)
       if (!failure) failure = std::current_exception();

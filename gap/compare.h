@@ -130,12 +130,25 @@ class Comparison {
   // fits of a velocity-step test.
   const StepResponse& step_response() const { return step_response_; }
 
+  // CVODE's relative tolerance (and displacement tolerance fraction) for the predictions, matched
+  // to the data: kToleranceBelowNoise times the median relative noise of the items
+  // (Item::noise / scale of its observable, in the gap's units), within [kFinestTolerance,
+  // kCoarsestTolerance] — the simulation's own error orders of magnitude below what the data
+  // resolve, rather than at the rig's default 1e-10 (most of a fit's time is CVODE stepping). The
+  // median, not the smallest: a channel recorded without noise (a synthetic displacement) must not
+  // set the tolerance for all. Data that cannot tell their noise get kFinestTolerance.
+  static constexpr double kToleranceBelowNoise = 1e-3, kFinestTolerance = 1e-10, kCoarsestTolerance = 1e-6;
+  double integration_tolerance() const { return tolerance_; }
+  void set_integration_tolerance(double relative_tolerance);  // e.g. a reference at kFinestTolerance
+  double median_relative_noise() const;                        // 0 when no item carries a noise
+
  private:
   std::vector<Item> items_;
   std::vector<RunPlan> plans_;
   std::vector<std::pair<std::string, double>> scales_;
   int units_ = 0;
   StepResponse step_response_;
+  double tolerance_ = kFinestTolerance;
 };
 
 }  // namespace tribo::gap

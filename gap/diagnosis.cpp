@@ -348,6 +348,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   const Comparison comparison(bundle, model_rig);
   Diagnosis d;
   d.items = comparison.items();
+  d.integration_tolerance = comparison.integration_tolerance();
   const std::size_t n = d.items.size();
   std::vector<bool> train(n);
   d.heldout.resize(n);

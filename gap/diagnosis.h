@@ -125,6 +125,7 @@ struct Diagnosis {
   std::vector<Localization> localization;
   std::vector<Candidate> candidates;  // best first
   Verdict verdict;
+  double integration_tolerance = 0.0;  // CVODE's relative tolerance of the predictions (Comparison)
 };
 
 // `model_rig` is the model's rig with the bundle's [rig] keys applied by the caller (apply_bundle_rig).

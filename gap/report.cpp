@@ -75,6 +75,7 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"]["heldout"] = breakdown_json(d.baseline_heldout);
   j["baseline"]["calibrated"] = d.calibrated_params;
   j["heldout_is_in_sample"] = !d.has_heldout;
+  j["integration_relative_tolerance"] = d.integration_tolerance;
   j["localization"] = json::array();
   for (const auto& l : d.localization)
     j["localization"].push_back({{"observable", l.observable}, {"where", l.where}, {"share", l.share}, {"worst_item", l.worst_item}});

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -38,6 +39,36 @@ TEST(Comparison, TruthReproducesItsOwnMeasurementsAndMiscalibrationShows) {
   };
   EXPECT_LT(rms(truth), 0.01);
   EXPECT_GT(rms(rig::coulomb(0.352, 0.2)), 0.05);
+}
+
+// The predictions' integration tolerance follows the data's noise (compare.h): 1e-3 of the
+// median relative item noise, within [1e-10, 1e-6]. What it buys must cost nothing the data can
+// see: against the same predictions at 1e-10 (a thermal-thinning law, so stick-slip with a
+// speed-dependent slip), no item moves by more than 5 % of the median noise, in the gap's units.
+TEST(Comparison, NoiseMatchedToleranceMovesNoItemByMoreThanAFractionOfTheNoise) {
+  const rig::RigParameters rig;
+  rig::FrictionModel truth = rig::coulomb(0.32, 0.2);
+  truth.set("thermal_thinning", "traction_coefficient_N_s_per_m", 20.0);
+  const ExperimentBundle b = synthesize_bundle(rig, truth, small(), 3);
+  Comparison c(b, rig);
+  const double noise = c.median_relative_noise();
+  EXPECT_DOUBLE_EQ(c.integration_tolerance(),
+                   std::clamp(Comparison::kToleranceBelowNoise * noise, Comparison::kFinestTolerance, Comparison::kCoarsestTolerance));
+  EXPECT_GT(c.integration_tolerance(), 1e-7) << noise;  // 1 % sensor noise: far coarser than the rig's default
+  const rig::FrictionModel model = rig::coulomb(0.33, 0.21);  // not the truth: a fit's trial point
+  const std::vector<double> matched = c.predict(rig, model, 3);
+  c.set_integration_tolerance(Comparison::kFinestTolerance);
+  const std::vector<double> reference = c.predict(rig, model, 3);
+  int compared = 0;
+  for (std::size_t i = 0; i < matched.size(); ++i) {
+    const Item& it = c.items()[i];
+    ASSERT_EQ(std::isfinite(matched[i]), std::isfinite(reference[i])) << it.observable << " " << it.where;
+    if (!std::isfinite(reference[i])) continue;
+    EXPECT_LT(std::abs(matched[i] - reference[i]) / c.scale(it.observable), 0.05 * noise) << it.observable << " " << it.where;
+    ++compared;
+  }
+  EXPECT_GT(compared, 20);
+  EXPECT_THROW(c.set_integration_tolerance(1e-3), std::invalid_argument);
 }
 
 // The instrument reads every observable, the breakaway points too: with a gain of 1.25 and a 2 ms
