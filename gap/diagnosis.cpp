@@ -174,6 +174,7 @@ struct Cost {
 struct FitResult {
   Setup setup;
   double cost = 0.0;
+  FitTermination termination;  // of the start that won
 };
 
 // How finely the least-squares steps resolve the cost. Searching: forward differences with a step
@@ -192,7 +193,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   const std::vector<double> w = weights(c.items(), train_mask);
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(1.0, 2.0);
-  FitResult best{start, std::numeric_limits<double>::infinity()};
+  FitResult best{start, std::numeric_limits<double>::infinity(), {}};
   // Solves for the leading coordinates with the trailing `tail` fixed; returns the final cost.
   auto solve = [&](std::vector<double>& u, const std::vector<double>& tail, int iterations) {
     const bool refine = resolution == Resolution::refine;
@@ -219,7 +220,9 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     so.function_tolerance = refine ? 1e-6 : 1e-4;  // |Δcost|/cost
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
-    return summary.final_cost;
+    return std::make_pair(summary.final_cost,
+                          FitTermination{ceres::TerminationTypeToString(summary.termination_type),
+                                         std::max(0, static_cast<int>(summary.iterations.size()) - 1), iterations});
   };
   // Starts: the best points of a coarse grid over the effect's coordinates (up to two), each with
   // the baseline parameters re-fitted (a short profile fit): the baseline co-adapts with the
@@ -242,7 +245,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     while (true) {
       std::vector<double> tail(initial.begin() + static_cast<long>(randomised_from), initial.end()), lead = idx[0] == 0 ? lead0 : previous;
       for (std::size_t d = 0; d < grid_dims; ++d) tail[d] = levels[idx[d]];
-      const double cu = solve(lead, tail, 3);
+      const double cu = solve(lead, tail, 3).first;
       previous = lead;
       lead.insert(lead.end(), tail.begin(), tail.end());
       grid.emplace_back(cu, lead);
@@ -253,7 +256,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     // A start read off the data competes with the grid points on the same terms.
     if (start_read_off_data) {
       std::vector<double> lead = lead0, tail(initial.begin() + static_cast<long>(randomised_from), initial.end());
-      const double cu = solve(lead, tail, 3);
+      const double cu = solve(lead, tail, 3).first;
       lead.insert(lead.end(), tail.begin(), tail.end());
       grid.emplace_back(cu, lead);
     }
@@ -266,9 +269,10 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     } else if (k > 0) {
       for (std::size_t i = randomised_from; i < u.size(); ++i) u[i] = uniform(rng);
     }
-    const double final_cost = solve(u, {}, o.max_iterations);
+    const auto [final_cost, termination] = solve(u, {}, o.max_iterations);
     if (final_cost < best.cost) {
       best.cost = final_cost;
+      best.termination = termination;
       best.setup = start;
       apply(space, u, best.setup);
     }
@@ -404,6 +408,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     d.calibrated = f.setup.model;
     d.rig = f.setup.rig;
     d.calibrated_params = values(base_space, f.setup);
+    d.calibration_fit = f.termination;
     d.baseline_simulated = comparison.predict(d.rig, d.calibrated, o.seed);
     d.baseline_residuals = comparison.residuals(d.baseline_simulated);
     d.baseline = breakdown(d.items, d.baseline_residuals, all);
@@ -427,12 +432,13 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       for (FitParameter p : effect_parameters(e)) space.push_back(p);
     return space;
   };
-  auto candidate_from = [&](const std::vector<std::string>& effects, const std::vector<FitParameter>& space, const Setup& fitted) {
+  auto candidate_from = [&](const std::vector<std::string>& effects, const std::vector<FitParameter>& space, const FitResult& fitted) {
     Candidate c;
     c.effects = effects;
-    c.model = fitted.model;
-    c.rig = fitted.rig;
-    c.params = values(space, fitted);
+    c.model = fitted.setup.model;
+    c.rig = fitted.setup.rig;
+    c.params = values(space, fitted.setup);
+    c.fit = fitted.termination;
     c.extra_parameters = static_cast<int>(space.size() - base_space.size());
     c.residuals = comparison.residuals(comparison.predict(c.rig, c.model, o.seed));
     c.train_gap = breakdown(d.items, c.residuals, train).gap;
@@ -483,7 +489,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     }
     const std::vector<FitParameter> space = space_of(effects);
     const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, base_space.size(), Resolution::search, read_off);
-    Candidate c = candidate_from(effects, space, r.setup);
+    Candidate c = candidate_from(effects, space, r);
     report("fitted " + verdict_name(effects));
     return c;
   };
@@ -495,7 +501,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   auto refine = [&](const Candidate& c) {
     const std::vector<FitParameter> space = space_of(c.effects);
     const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, train, refining, o.seed, 1, space.size(), Resolution::refine);
-    Candidate refined = candidate_from(c.effects, space, r.setup);
+    Candidate refined = candidate_from(c.effects, space, r);
     report("refined " + verdict_name(c.effects));
     return refined;
   };

@@ -89,6 +89,14 @@ struct Localization {
   double share = 0.0;  // of the baseline's summed squared residuals
 };
 
+// How a least-squares fit (Ceres) ended: its termination type ("CONVERGENCE", "NO_CONVERGENCE" when
+// the iteration limit stopped it, ...) and iterations, for the start that gave the result.
+struct FitTermination {
+  std::string termination = "not fitted";
+  int iterations = 0;
+  int max_iterations = 0;
+};
+
 struct Candidate {
   std::vector<std::string> effects;
   std::map<std::string, double> params;  // "effect.parameter" → fitted value (plus refitted baseline)
@@ -100,6 +108,7 @@ struct Candidate {
   rig::FrictionModel model;
   rig::RigParameters rig;
   std::vector<double> residuals;
+  FitTermination fit;  // the last fit that made it (search, or refinement for the leaders)
 };
 
 struct Verdict {
@@ -120,6 +129,7 @@ struct Diagnosis {
   rig::FrictionModel calibrated;      // baseline after calibration
   rig::RigParameters rig;
   std::map<std::string, double> calibrated_params;
+  FitTermination calibration_fit;
   GapBreakdown baseline, baseline_heldout;
   std::vector<double> baseline_residuals, measured, baseline_simulated, best_simulated;
   std::vector<Localization> localization;

@@ -13,6 +13,10 @@ std::string join(const std::vector<std::string>& v, const std::string& sep) {
   return s;
 }
 
+nlohmann::json fit_json(const FitTermination& f) {
+  return {{"termination", f.termination}, {"iterations", f.iterations}, {"max_iterations", f.max_iterations}};
+}
+
 }  // namespace
 
 std::string verdict_name(const std::vector<std::string>& effects) { return effects.empty() ? "none" : join(effects, "+"); }
@@ -74,6 +78,7 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"] = breakdown_json(d.baseline);
   j["baseline"]["heldout"] = breakdown_json(d.baseline_heldout);
   j["baseline"]["calibrated"] = d.calibrated_params;
+  j["baseline"]["fit"] = fit_json(d.calibration_fit);
   j["heldout_is_in_sample"] = !d.has_heldout;
   j["integration_relative_tolerance"] = d.integration_tolerance;
   j["localization"] = json::array();
@@ -90,7 +95,8 @@ nlohmann::json report_json(const Diagnosis& d) {
                                {"heldout_gap_after", c.heldout_gap_after},
                                {"heldout_after_by_observable", c.heldout_after_by_observable},
                                {"criterion", c.criterion},
-                               {"earns_parameters", c.earns}});
+                               {"earns_parameters", c.earns},
+                               {"fit", fit_json(c.fit)}});
   }
   json effect = d.verdict.effects.size() > 1 ? json(d.verdict.effects) : json(verdict_name(d.verdict));
   j["verdict"] = {{"effect", effect},

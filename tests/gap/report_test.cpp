@@ -43,6 +43,7 @@ TEST(Report, NamedVerdictGivesTheEffectItsParametersAndTheShrink) {
   EXPECT_EQ(j["verdict"]["effect"], "slip_transient");
   EXPECT_DOUBLE_EQ(j["verdict"]["confidence"].get<double>(), 0.95);
   EXPECT_EQ(j["verdict"]["conclusion"], s);
+  EXPECT_EQ(j["candidates"][0]["fit"]["termination"], "not fitted");  // every candidate says how its fit ended
 }
 
 TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {
