@@ -101,7 +101,12 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
      << ". Items are split by unit (run, static point, bin after a step) in order of speed: even units train, odd units held out"
      << (d.has_heldout ? "" : " (this bundle has a single unit: held-out numbers are in-sample)") << ".\n\n";
   md << "## Baseline after calibration\n\n";
-  for (const auto& [k, v] : d.calibrated_params) md << "- " << k << " = " << fmt(v, "%.4g") << "\n";
+  for (const auto& [k, v] : d.calibrated_params) {
+    md << "- " << k << " = " << fmt(v, "%.4g");
+    if (const auto u = d.rig_relative_uncertainty.find(k.substr(k.find('.') + 1)); k.rfind("rig.", 0) == 0 && u != d.rig_relative_uncertainty.end())
+      md << " (refined within ± " << fmt(100.0 * u->second, "%.3g") << " % of the bundle's value)";
+    md << "\n";
+  }
   md << "\nFit: " << d.calibration_fit.termination << " after " << d.calibration_fit.iterations << " of "
      << d.calibration_fit.max_iterations << " iterations (Ceres). Predictions integrated at relative tolerance "
      << fmt(d.integration_tolerance, "%.1e") << " (1e-3 of the items' median relative noise).\n";

@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -67,7 +68,33 @@ std::optional<double> rig_key(const toml::table& rig, const std::string& key, co
   return v;
 }
 
+// [rig.relative_uncertainty]: a refinable key, given in [rig] itself, with u ∈ (0, 1).
+std::map<std::string, double> relative_uncertainties(const toml::table& table, const ExperimentBundle& b, const fs::path& file) {
+  std::map<std::string, double> out;
+  for (const auto& [key, node] : table) {
+    const std::string k(key.str());
+    const long line = static_cast<long>(node.source().begin.line);
+    const auto& keys = refinable_rig_keys();
+    if (std::find(keys.begin(), keys.end(), k) == keys.end())
+      rig::fail_at(file, line, "[rig.relative_uncertainty] " + k + ": only mass_kg, stiffness_N_per_m and damping_N_s_per_m can be refined");
+    const std::optional<double>& given = k == "mass_kg" ? b.mass_kg : k == "stiffness_N_per_m" ? b.stiffness_N_per_m : b.damping_N_s_per_m;
+    if (!given) rig::fail_at(file, line, "[rig.relative_uncertainty] " + k + ": [rig] gives no " + k + " to be uncertain about");
+    const auto u = node.value<double>();
+    if (!u || !std::isfinite(*u) || !(*u > 0.0 && *u < 1.0))
+      rig::fail_at(file, line, "[rig.relative_uncertainty] " + k + " must be a fraction in (0, 1)");
+    if (k == "damping_N_s_per_m" && !(*given > 0.0))
+      rig::fail_at(file, line, "[rig.relative_uncertainty] damping_N_s_per_m: a relative uncertainty of zero damping says nothing");
+    out[k] = *u;
+  }
+  return out;
+}
+
 }  // namespace
+
+const std::vector<std::string>& refinable_rig_keys() {
+  static const std::vector<std::string> keys{"mass_kg", "stiffness_N_per_m", "damping_N_s_per_m"};
+  return keys;
+}
 
 ExperimentBundle read_bundle(const fs::path& dir) {
   if (!fs::is_directory(dir)) throw std::invalid_argument(dir.string() + ": not a directory (expected an experiment bundle)");
@@ -101,7 +128,13 @@ ExperimentBundle read_bundle(const fs::path& dir) {
                        "[rig] kind must be \"pin_on_disc\", \"velocity_step\" or \"slide_hold_slide\"");
         b.kind = *s;
       }
-      const std::set<std::string> known{"mass_kg", "stiffness_N_per_m", "damping_N_s_per_m", "normal_load_N", "slider_radius_m", "kind"};
+      if (const toml::node* u = rig->get("relative_uncertainty")) {
+        const toml::table* table = u->as_table();
+        if (!table) rig::fail_at(toml_file, static_cast<long>(u->source().begin.line), "[rig] relative_uncertainty must be a table");
+        b.relative_uncertainty = relative_uncertainties(*table, b, toml_file);
+      }
+      const std::set<std::string> known{"mass_kg", "stiffness_N_per_m", "damping_N_s_per_m", "normal_load_N", "slider_radius_m", "kind",
+                                        "relative_uncertainty"};
       for (const auto& [key, node] : *rig)
         if (!known.count(std::string(key.str())))
           b.warnings.push_back(toml_file.string() + ": unknown key [rig] " + std::string(key.str()) + " ignored");
@@ -192,6 +225,10 @@ void write_bundle(const ExperimentBundle& b, const fs::path& dir) {
     key("damping_N_s_per_m", b.damping_N_s_per_m);
     key("normal_load_N", b.normal_load_N);
     key("slider_radius_m", b.slider_radius_m);
+    if (!b.relative_uncertainty.empty()) {
+      os << "\n[rig.relative_uncertainty]\n";
+      for (const auto& [k, u] : b.relative_uncertainty) os << k << " = " << u << "\n";
+    }
   }
   if (!b.static_points.empty()) {
     std::ofstream os = open(dir / "static_friction.csv");

@@ -5,6 +5,11 @@
 //                         from the model), kind = "pin_on_disc" | "velocity_step" |
 //                         "slide_hold_slide" — the analysis (compare.h): constant driven speed
 //                         per run, or a drive history read from v_drive_m_per_s;
+//                         [rig.relative_uncertainty] mass_kg, stiffness_N_per_m,
+//                         damping_N_s_per_m: how well the bundle knows the constants it gives,
+//                         as a fraction u (the true value within ± u of the stated one, as
+//                         "k = 168 N/m ± 3 %"); the diagnosis refines a constant within that
+//                         interval, and takes one without a stated uncertainty as exact;
 //                         optional [materials], [lubricant], [notes] (kept as text, not read)
 //   static_friction.csv   phi_dot_per_s,mu_s                 one row per stick event (optional)
 //   runs.csv              run_id,v_m_per_s,file               one trace per driven speed (optional)
@@ -19,6 +24,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,11 +60,19 @@ struct ExperimentBundle {
   std::string name;  // directory name
   std::string kind = "pin_on_disc";
   std::optional<double> mass_kg, stiffness_N_per_m, damping_N_s_per_m, normal_load_N, slider_radius_m;
+  // [rig] key → relative uncertainty u ∈ (0, 1) of the value given there (refinable keys only:
+  // refinable_rig_keys()).
+  std::map<std::string, double> relative_uncertainty;
   std::vector<StaticPoint> static_points;
   std::vector<Run> runs;
   std::vector<RegimePoint> regimes;
   std::vector<std::string> warnings;  // unknown columns and keys, one line each
 };
+
+// The [rig] constants a bundle may state an uncertainty for. The normal load is not among them:
+// friction laws proportional to W leave a W error indistinguishable from a scale of μ, which the
+// calibration fits anyway.
+const std::vector<std::string>& refinable_rig_keys();
 
 // Reads and validates a bundle directory.
 ExperimentBundle read_bundle(const std::filesystem::path& dir);

@@ -280,7 +280,12 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   return best;
 }
 
-std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const rig::RigParameters& rig, const DiagnosisOptions& o) {
+// The baseline's parameters: μs, μk/μs, the rig keys nobody gives (calibrate_rig, wide ranges) and
+// the rig constants the bundle gives with a stated relative uncertainty u, refined within ± u of
+// the stated value (a rig known to a few per cent must not make a mechanism out of its
+// own constants' error) — unless the options calibrate that key anyway.
+std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const rig::RigParameters& rig, const DiagnosisOptions& o,
+                                         const std::map<std::string, double>& relative_uncertainty) {
   std::vector<FitParameter> space;
   FitParameter p;
   p.target = FitParameter::Target::mu_s;
@@ -298,6 +303,19 @@ std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const 
     p.lower = v / 100.0, p.upper = v * 100.0, p.log = true;
     // ζ from nearly undamped (the thesis rig: 8.5e-3) to just under critical (the rig's limit).
     if (key == "damping_ratio") p.lower = 1e-3, p.upper = 0.9;
+    space.push_back(p);
+  }
+  const auto calibrated = [&](const std::string& key) {
+    return std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), key) > 0 ||
+           (key == "damping_N_s_per_m" && std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), "damping_ratio") > 0);
+  };
+  for (const auto& [key, u] : relative_uncertainty) {
+    if (calibrated(key)) continue;
+    const double v = rig_value(rig, key);
+    if (!(v > 0.0 && u > 0.0 && u < 1.0)) throw std::invalid_argument("gap: rig key '" + key + "' cannot be refined around " + std::to_string(v));
+    p.target = FitParameter::Target::rig;
+    p.name = key;
+    p.lower = v * (1.0 - u), p.upper = v * (1.0 + u), p.log = false;
     space.push_back(p);
   }
   return space;
@@ -353,6 +371,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   Diagnosis d;
   d.items = comparison.items();
   d.integration_tolerance = comparison.integration_tolerance();
+  d.rig_relative_uncertainty = bundle.relative_uncertainty;
   const std::size_t n = d.items.size();
   std::vector<bool> train(n);
   d.heldout.resize(n);
@@ -375,7 +394,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   };
 
   // 1. Calibration of the model's own parameters.
-  const std::vector<FitParameter> base_space = baseline_space(model, model_rig, o);
+  const std::vector<FitParameter> base_space = baseline_space(model, model_rig, o, bundle.relative_uncertainty);
   // Two starts: the model's own values and a guess read off the data (μs from the friction
   // maxima or static points, μk midway between maxima and minima as in Coulomb stick-slip).
   Setup guess{model_rig, model};

@@ -13,7 +13,8 @@
 // order of speed / bin, even units train, odd units are held out.
 //
 // Procedure.
-//  1. Calibrate the model's own free parameters on train (μs, μk, rig keys the model lacks).
+//  1. Calibrate the model's own free parameters on train (μs, μk, rig keys the model lacks, and
+//     the rig constants the bundle states with a relative uncertainty, within it).
 //  2. For each catalogue effect not in the model: add it, fit its parameters together with the
 //     baseline ones on train (Ceres, bounded, forward numeric differences over simulate(), several
 //     starts), evaluate on held-out.
@@ -128,7 +129,8 @@ struct Diagnosis {
   bool has_heldout = true;            // false: one unit only, the "held-out" gap is in-sample
   rig::FrictionModel calibrated;      // baseline after calibration
   rig::RigParameters rig;
-  std::map<std::string, double> calibrated_params;
+  std::map<std::string, double> calibrated_params;  // "baseline.mu_s", "rig.stiffness_N_per_m", ...
+  std::map<std::string, double> rig_relative_uncertainty;  // the bundle's, for the rig keys refined within it
   FitTermination calibration_fit;
   GapBreakdown baseline, baseline_heldout;
   std::vector<double> baseline_residuals, measured, baseline_simulated, best_simulated;

@@ -78,6 +78,7 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"] = breakdown_json(d.baseline);
   j["baseline"]["heldout"] = breakdown_json(d.baseline_heldout);
   j["baseline"]["calibrated"] = d.calibrated_params;
+  j["baseline"]["rig_relative_uncertainty"] = d.rig_relative_uncertainty;  // refined within ± u of the bundle's value
   j["baseline"]["fit"] = fit_json(d.calibration_fit);
   j["heldout_is_in_sample"] = !d.has_heldout;
   j["integration_relative_tolerance"] = d.integration_tolerance;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 #include <stdexcept>
 
@@ -21,6 +22,12 @@ RigConstants as_it_is(const RigConstants& told, double constant_spread, double d
   actual.normal_load_N *= spread(constant_spread);
   actual.damping_N_s_per_m *= spread(damping_spread);
   return actual;
+}
+
+// What the bundle says of how well it knows k, M and r: the spreads as_it_is() draws within, as an
+// operator states a calibration's tolerance. (W's error is a scale of μ for these laws; not stated.)
+std::map<std::string, double> stated_uncertainty(double constant_spread, double damping_spread) {
+  return {{"mass_kg", constant_spread}, {"stiffness_N_per_m", constant_spread}, {"damping_N_s_per_m", damping_spread}};
 }
 
 // Stick time of undamped Coulomb stick-slip, 2Δ/v (integrator.h's reference), to place the
@@ -145,6 +152,7 @@ IndependentCase make_drive_history_case(const std::string& kind, const std::stri
   bundle.damping_N_s_per_m = c.told.damping_N_s_per_m;
   bundle.normal_load_N = c.told.normal_load_N;
   bundle.slider_radius_m = c.told.slider_radius_m;
+  bundle.relative_uncertainty = stated_uncertainty(o.constant_spread, o.damping_spread);
   std::mt19937_64 noise_rng(seed * 0x9E3779B97F4A7C15ULL + 29);
   Run run;
   run.run_id = "0";
@@ -176,6 +184,7 @@ ExperimentBundle record_bundle(const IndependentLaw& truth, const RigConstants& 
   b.damping_N_s_per_m = told.damping_N_s_per_m;
   b.normal_load_N = told.normal_load_N;
   b.slider_radius_m = told.slider_radius_m;
+  b.relative_uncertainty = stated_uncertainty(o.constant_spread, o.damping_spread);
   std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ULL + 17);
   for (std::size_t k = 0; k < o.speeds_m_per_s.size(); ++k) {
     const double v = o.speeds_m_per_s[k];

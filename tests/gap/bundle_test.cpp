@@ -99,6 +99,33 @@ TEST_F(BundleTest, NegativeLoadIsRejected) {
   EXPECT_NE(error().find("a.csv:3: negative normal load"), std::string::npos) << error();
 }
 
+// [rig.relative_uncertainty]: written and read back, and refused with the line and the reason
+// when it names a key that cannot be refined, a constant [rig] does not give, or no fraction.
+TEST_F(BundleTest, RelativeUncertaintyRoundTripsAndBadOnesAreRejected) {
+  ExperimentBundle b;
+  b.stiffness_N_per_m = 168.0;
+  b.damping_N_s_per_m = 0.05;
+  b.relative_uncertainty = {{"stiffness_N_per_m", 0.03}, {"damping_N_s_per_m", 0.5}};
+  b.static_points = {{0.5, 0.31}};
+  write_bundle(b, dir_);
+  const ExperimentBundle c = read_bundle(dir_);
+  EXPECT_EQ(c.relative_uncertainty, b.relative_uncertainty);
+  EXPECT_TRUE(c.warnings.empty());
+
+  const std::string rig = "[rig]\nstiffness_N_per_m = 168.0\n[rig.relative_uncertainty]\n";
+  write("experiment.toml", rig + "normal_load_N = 0.02\n");
+  EXPECT_NE(error().find("experiment.toml:4: [rig.relative_uncertainty] normal_load_N: only mass_kg"), std::string::npos) << error();
+  write("experiment.toml", rig + "mass_kg = 0.02\n");
+  EXPECT_NE(error().find("experiment.toml:4: [rig.relative_uncertainty] mass_kg: [rig] gives no mass_kg"), std::string::npos) << error();
+  for (const char* u : {"0.0", "1.0", "-0.1", "nan", "\"3 %\""}) {
+    write("experiment.toml", rig + "stiffness_N_per_m = " + u + "\n");
+    EXPECT_NE(error().find("experiment.toml:4: [rig.relative_uncertainty] stiffness_N_per_m must be a fraction in (0, 1)"), std::string::npos)
+        << u << ": " << error();
+  }
+  write("experiment.toml", "[rig]\nstiffness_N_per_m = 168.0\nrelative_uncertainty = 0.03\n");
+  EXPECT_NE(error().find("experiment.toml:3: [rig] relative_uncertainty must be a table"), std::string::npos) << error();
+}
+
 TEST_F(BundleTest, WrongNumberOfValuesAndEmptyBundleAreRejected) {
   EXPECT_NE(error().find("no data"), std::string::npos) << error();
   write("static_friction.csv", "phi_dot_per_s,mu_s\n0.1,0.3,4\n");
