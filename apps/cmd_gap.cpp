@@ -98,7 +98,8 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   md << "Command: `tribo gap diagnose --experiment " << args.experiment << " --model " << args.model << " --out " << args.out
      << (args.quick ? " --quick" : "") << "`\n\n";
   md << "## Definition\n\n" << j["gap_definition"].get<std::string>()
-     << ". Items are split by unit (run, static point, bin after a step) in order of speed: even units train, odd units held out"
+     << ". Items are split by block (everything at one driven speed; a drive segment's level; three contiguous bins after a step) in order of "
+        "speed: even blocks train, odd blocks held out"
      << (d.has_heldout ? "" : " (this bundle has a single unit: held-out numbers are in-sample)") << ".\n\n";
   md << "## Baseline after calibration\n\n";
   for (const auto& [k, v] : d.calibrated_params) {
@@ -203,7 +204,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
           {"heldout_gap_after", row.heldout_gap_after}, {"confidence", row.confidence},
-          {"correct", row.correct}};
+          {"correct", row.correct},           {"wall_s", row.wall_s}};
 }
 
 // Rows of an earlier run of the same set (quick or full) from OUT/cases.jsonl, one JSON object a
@@ -226,6 +227,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.heldout_gap_before = j.at("heldout_gap_before").get<double>();
       r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
       r.confidence = j.at("confidence").get<double>();
+      r.wall_s = j.value("wall_s", 0.0);  // journals before it was recorded: 0
       r.correct = r.verdict == r.c.true_effect;
       rows.push_back(r);
     } catch (const nlohmann::json::exception&) {

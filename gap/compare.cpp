@@ -19,6 +19,9 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr int kSlipDropPoints = 4;
 constexpr int kStepBins = 24;
+// Bins after a step are split in contiguous blocks of this many (issue 15): a held-out bin must not
+// sit between two trained neighbours, or any curve through the trained ones passes it.
+constexpr int kBinsPerBlock = 3;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
 constexpr int kNoiseBlocks = 4;        // repeats a run's window is cut into for its items' noise
 // Shortest drive segment, in samples: its steady level is the mean of its last 30 % in four
@@ -633,9 +636,48 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
   return f;
 }
 
+// What a provisional split unit is tied to: a driven speed (a constant-speed run, a static point
+// at the speed k v / W gives, a regime point), or nothing but itself (a drive segment's level, a
+// peak after a hold, a block of bins after a step).
+struct UnitKey {
+  double v_m_per_s = std::numeric_limits<double>::quiet_NaN();
+  static UnitKey at_speed(double v) { return {v}; }
+  static UnitKey own() { return {}; }
+};
+
+// Held-out data must be data the fit has not seen (issue 15): the split units are blocks. Units at
+// one driven speed (within kSameSpeed: a run and the static point read off it) form one block, so
+// a held-out speed is a speed nothing was trained at; blocks at speeds come first, in order of
+// speed, then the others in the order the data give them. Returns each provisional unit's block.
+std::vector<int> split_blocks(const std::vector<UnitKey>& keys) {
+  constexpr double kSameSpeed = 0.02;
+  std::vector<std::size_t> by_speed;
+  for (std::size_t u = 0; u < keys.size(); ++u)
+    if (std::isfinite(keys[u].v_m_per_s)) by_speed.push_back(u);
+  std::stable_sort(by_speed.begin(), by_speed.end(), [&](std::size_t a, std::size_t b) { return keys[a].v_m_per_s < keys[b].v_m_per_s; });
+  std::vector<int> block(keys.size(), -1);
+  int next = 0;
+  double block_v = 0.0;
+  for (std::size_t k = 0; k < by_speed.size(); ++k) {
+    const double v = keys[by_speed[k]].v_m_per_s;
+    if (k == 0 || !(std::abs(v - block_v) <= kSameSpeed * std::max(std::abs(block_v), std::abs(v)))) block_v = v, ++next;
+    block[by_speed[k]] = next - 1;
+  }
+  for (std::size_t u = 0; u < keys.size(); ++u)
+    if (block[u] < 0) block[u] = next++;
+  return block;
+}
+
 }  // namespace
 
 Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters& rig) {
+  // Provisional units, one per measurement the data give (a run, a static point, a regime point,
+  // a drive segment's level, a block of bins after a step), merged into split blocks at the end.
+  std::vector<UnitKey> unit_keys;
+  auto new_unit = [&](const UnitKey& key) {
+    unit_keys.push_back(key);
+    return static_cast<int>(unit_keys.size()) - 1;
+  };
   const double W = bundle.normal_load_N.value_or(rig.normal_load_N);
   std::vector<std::size_t> order(bundle.runs.size());
   std::iota(order.begin(), order.end(), 0);
@@ -709,22 +751,25 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
         const std::string key = "steady_mu_" + std::to_string(k);
         if (f.count(key) && std::isfinite(f.at(key)))
           add("steady_mu", 0, plan.label + ", v = " + numerics::fmt(plan.step_speeds_m_per_s[k], "%.3g") + " m/s", "steady_sliding",
-              plan.step_speeds_m_per_s[k], units_++, f.at(key), key, noise);
+              plan.step_speeds_m_per_s[k], new_unit(UnitKey::own()), f.at(key), key, noise);
         const std::string peak_key = "peak_after_hold_" + std::to_string(k);
         if (f.count(peak_key) && std::isfinite(f.at(peak_key))) {
           const double t_hold = plan.step_times_s[k + 1] - plan.step_times_s[k];
           add("peak_after_hold", 0, plan.label + ", after a " + numerics::fmt(t_hold, "%.3g") + " s hold", "stick_slip",
-              plan.step_speeds_m_per_s[k + 1], units_++, f.at(peak_key), peak_key, noise);
+              plan.step_speeds_m_per_s[k + 1], new_unit(UnitKey::own()), f.at(peak_key), peak_key, noise);
         }
         if (k == 0) continue;
         const auto& edges = plan.step_bin_edges_m[k - 1];
+        std::vector<int> block_unit(kStepBins / kBinsPerBlock + 1, -1);
         for (int j = 0; j < kStepBins; ++j) {
           const std::string bin_key = "after_step_" + std::to_string(k) + "_" + std::to_string(j);
           if (!f.count(bin_key)) continue;
+          int& unit = block_unit[static_cast<std::size_t>(j / kBinsPerBlock)];
+          if (unit < 0) unit = new_unit(UnitKey::own());
           add("mu_after_step", j,
               numerics::fmt(edges[static_cast<std::size_t>(j)] * 1e6, "%.3g") + "-" + numerics::fmt(edges[static_cast<std::size_t>(j) + 1] * 1e6, "%.3g") +
                   " um after step " + std::to_string(k),
-              "steady_sliding", plan.step_speeds_m_per_s[k], units_++, f.at(bin_key), bin_key, noise);
+              "steady_sliding", plan.step_speeds_m_per_s[k], unit, f.at(bin_key), bin_key, noise);
         }
       }
     } else {
@@ -745,7 +790,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       const Features noise = block_noise(s, plan.sample_spacing_s, step);
       plans_.push_back(plan);
       const std::string where = "v = " + numerics::fmt(run.v_m_per_s, "%.3g") + " m/s";
-      const int unit = units_++;
+      const int unit = new_unit(UnitKey::at_speed(run.v_m_per_s));
       for (const auto& [key, value] : f) {
         if (!std::isfinite(value)) continue;
         if (key.rfind("slip_drop_", 0) == 0) {
@@ -767,7 +812,8 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.v_m_per_s = p.phi_dot_per_s;  // a load rate; the speed follows from the simulated rig's k and W
     plan.duration_s = (2.0 * p.mu_s + 0.2) / p.phi_dot_per_s;
     plans_.push_back(plan);
-    add("mu_s_vs_load_rate", 0, plan.label, "static", p.phi_dot_per_s * W / rig.stiffness_N_per_m, units_++, p.mu_s, "mu_s", {});
+    const double v = p.phi_dot_per_s * W / rig.stiffness_N_per_m;
+    add("mu_s_vs_load_rate", 0, plan.label, "static", v, new_unit(UnitKey::at_speed(v)), p.mu_s, "mu_s", {});
   }
 
   std::vector<RegimePoint> regimes = bundle.regimes;
@@ -779,7 +825,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.regime = p.regime;
     plan.v_m_per_s = p.v_m_per_s;
     plans_.push_back(plan);
-    const int unit = units_++;
+    const int unit = new_unit(UnitKey::at_speed(p.v_m_per_s));
     add("regime_mismatch", 0, plan.label + " (" + p.regime + ")", p.regime, p.v_m_per_s, unit, 0.0, "regime_mismatch", {});
     if (std::isfinite(p.amplitude_m) && p.amplitude_m > 0.0)
       add("amplitude_m", 0, plan.label, p.regime, p.v_m_per_s, unit, p.amplitude_m, "amplitude_m", {});
@@ -788,6 +834,9 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
   }
 
   if (items_.empty()) throw std::invalid_argument("bundle " + bundle.name + ": no usable measurement (no trace long enough to analyse)");
+  const std::vector<int> block = split_blocks(unit_keys);
+  units_ = block.empty() ? 0 : *std::max_element(block.begin(), block.end()) + 1;
+  for (Item& it : items_) it.unit = block[static_cast<std::size_t>(it.unit)];
 
   std::vector<double> speeds;
   for (const Item& it : items_) speeds.push_back(it.v_m_per_s);

@@ -59,7 +59,8 @@ struct Item {
   std::string regime;   // measured regime of the run the item comes from
   std::string speed_class;  // "low v" or "high v" (below / above the median driven speed)
   double v_m_per_s = 0.0;   // driven speed the item was measured at
-  int unit = 0;         // split unit: items of one unit go to the same split
+  int unit = 0;         // split block: one driven speed, a drive segment's level or three contiguous
+                        // bins after a step; items of one unit go to the same split
   double measured = 0.0;
   // Standard error of `measured` read off the data itself (0 where the data cannot tell): the
   // scatter of the run's blocks analysed as repeats, or the record's high-pass noise averaged

@@ -9,8 +9,9 @@
 // over the items of a split: the gap is a relative RMS error, 0.1 = the model is off by 10 % of
 // the observable's typical size, averaged so that every observable weighs the same.
 //
-// Split. Items carry a unit (a run, a static point, a bin after a step); units are numbered in
-// order of speed / bin, even units train, odd units are held out.
+// Split. Items carry a unit, a block of data (compare.h: one driven speed — its run, static point
+// and regime point —, a drive segment's level, three contiguous bins after a step); even units
+// train, odd units are held out.
 //
 // Procedure.
 //  1. Calibrate the model's own free parameters on train (μs, μk, rig keys the model lacks, and

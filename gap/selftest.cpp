@@ -1,6 +1,7 @@
 #include "gap/selftest.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -183,8 +184,10 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   }
   diagnosis.seed = sc.seed;
   const rig::RigParameters rig = apply_bundle_rig(c.bundle, rig::RigParameters{});
+  const auto start = std::chrono::steady_clock::now();
   const Diagnosis d = diagnose(c.bundle, rig, c.model, diagnosis);
   SelftestRow row;
+  row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   row.c = sc;
   row.form = form;
   row.verdict = verdict_name(d.verdict);

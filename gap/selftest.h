@@ -66,6 +66,7 @@ struct SelftestRow {
   std::string form;  // independent generator: the form the mechanism was written in
   double heldout_gap_before = 0.0, heldout_gap_after = 0.0, confidence = 0.0;
   bool correct = false;
+  double wall_s = 0.0;  // the diagnosis' wall time (the speed target is per bundle); 0: not recorded
 };
 
 // Confusion matrix and shrink over one generator's cases (or all).

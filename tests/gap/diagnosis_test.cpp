@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
 
 #include "gap/compare.h"
 #include "gap/diagnosis.h"
@@ -225,6 +226,52 @@ TEST(Comparison, StepResponseReadsPeakStiffnessAndDecayDistance) {
   EXPECT_NEAR(s.peak_travel_m, x_peak, 0.1e-6);
   EXPECT_NEAR(s.loading_stiffness_N_per_m, rig.normal_load_N * rise / x_peak, 0.15 * rig.normal_load_N * rise / x_peak);
   EXPECT_NEAR(s.decay_distance_m, decay, 0.2e-6);  // two samples
+}
+
+// Held-out data are blocks (issue 15). At constant speed a run and the static point read off it
+// (φ̇ = k v / W) are one block, so a held-out speed is one nothing was trained at; blocks alternate
+// in order of speed. After a velocity step the bins go in contiguous blocks of three, so a held-out
+// bin never sits between two trained neighbours.
+TEST(Comparison, SplitUnitsAreSpeedsAndContiguousBlocksOfBins) {
+  const rig::RigParameters rig;
+  SyntheticOptions so = small();
+  const ExperimentBundle b = synthesize_bundle(rig, rig::coulomb(0.3, 0.2), so, 5);
+  ASSERT_EQ(b.static_points.size(), 3u);
+  const Comparison c(b, rig);
+  EXPECT_EQ(c.units(), 3);
+  std::map<int, std::set<double>> speeds_of_unit;
+  std::map<int, std::set<std::string>> observables_of_unit;
+  for (const Item& it : c.items()) {
+    speeds_of_unit[it.unit].insert(std::round(it.v_m_per_s * 1e6));
+    observables_of_unit[it.unit].insert(it.observable);
+  }
+  for (int u = 0; u < 3; ++u) {
+    EXPECT_EQ(speeds_of_unit[u].size(), 1u) << "unit " << u;
+    EXPECT_EQ(*speeds_of_unit[u].begin(), std::round(so.speeds_m_per_s[static_cast<std::size_t>(u)] * 1e6)) << "unit " << u;
+    EXPECT_TRUE(observables_of_unit[u].count("mu_s_vs_load_rate") && observables_of_unit[u].count("mu_peak")) << "unit " << u;
+  }
+
+  // The velocity step of StepResponseReadsPeakStiffnessAndDecayDistance: 24 bins after the step.
+  ExperimentBundle step;
+  step.kind = "velocity_step";
+  gap::Run run;
+  run.run_id = "0";
+  run.v_m_per_s = 3e-6;
+  for (int i = 0; i <= 7000; ++i) {
+    const double t = 0.01 * i, x = t < 20.0 ? 3e-6 * t : 6e-5 + 1e-5 * (t - 20.0), after = x - 6e-5;
+    run.trace.t_s.push_back(t);
+    run.trace.v_drive_m_per_s.push_back(t < 20.0 ? 3e-6 : 1e-5);
+    run.trace.x_drive_m.push_back(x);
+    run.trace.mu.push_back(0.6 + (after > 0.0 ? 0.01 * std::exp(-after / 8e-6) : 0.0));
+  }
+  step.runs.push_back(run);
+  const Comparison cs(step, rig);
+  std::vector<int> bin_units;
+  for (const Item& it : cs.items())
+    if (it.observable == "mu_after_step") bin_units.push_back(it.unit);
+  ASSERT_EQ(bin_units.size(), 24u);
+  for (std::size_t j = 0; j < bin_units.size(); ++j) EXPECT_EQ(bin_units[j], bin_units[0] + static_cast<int>(j / 3)) << "bin " << j;
+  EXPECT_EQ(cs.units(), 2 + 8);  // the two steady levels, eight blocks of bins
 }
 
 // A slide-hold-slide record as a servo machine writes it: slides at V = 10 µm/s (50 s) around holds

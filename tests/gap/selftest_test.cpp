@@ -17,8 +17,8 @@ TEST(Selftest, QuickSetIdentifiesWithheldEffectsAndControlsAnswerNone) {
   o.bootstrap_samples = 100;
   const SelftestResult r = run_selftest(selftest_cases(true, 1), SyntheticOptions{}, o, nullptr);
   for (const auto& row : r.rows)
-    std::printf("%-12s %-24s -> %-24s %.4f -> %.4f  confidence %.2f\n", row.c.generator.c_str(), row.c.true_effect.c_str(), row.verdict.c_str(),
-                row.heldout_gap_before, row.heldout_gap_after, row.confidence);
+    std::printf("%-12s %-24s -> %-24s %.4f -> %.4f  confidence %.2f  %.0f s\n", row.c.generator.c_str(), row.c.true_effect.c_str(),
+                row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, row.confidence, row.wall_s);
   for (const auto& b : r.reliability) std::printf("confidence [%.1f, %.1f]: %d verdicts, %d right\n", b.lower, b.upper, b.verdicts, b.right);
   ASSERT_TRUE(r.by_generator.count(kRigGenerator));
   ASSERT_TRUE(r.by_generator.count(kIndependentGenerator));
