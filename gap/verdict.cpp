@@ -146,30 +146,39 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
   if (units.empty() || o.bootstrap_samples <= 0) return {};
   std::mt19937_64 rng(o.seed ^ 0x9e3779b97f4a7c15ULL);
   std::uniform_int_distribution<std::size_t> pick(0, units.size() - 1);
+  std::normal_distribution<double> z;
   int agree = 0;
   double s1 = 0.0, s2 = 0.0;
+  std::vector<double> shift(n, 0.0);
+  const auto shifted = [&](const std::vector<double>& r) {
+    std::vector<double> out = r;
+    for (std::size_t i = 0; i < n; ++i) out[i] += shift[i];
+    return out;
+  };
   for (int b = 0; b < o.bootstrap_samples; ++b) {
     std::map<int, int> times;
     for (std::size_t k = 0; k < units.size(); ++k) ++times[units[pick(rng)]];
+    for (std::size_t i = 0; i < n; ++i) shift[i] = heldout[i] && noise_r[i] > 0.0 ? noise_r[i] * z(rng) : 0.0;
     std::vector<bool> mask(n, false);
     Multiplicity m(n, 0.0);
     double drawn = 0.0;
     for (std::size_t i = 0; i < n; ++i)
       if (heldout[i] && times.count(items[i].unit)) mask[i] = true, m[i] = times[items[i].unit], drawn += m[i];
-    const std::vector<double> w = weights(items, mask);
-    const double sse_before = weighted_sse(baseline_residuals, w, m), gap_before = gap(items, baseline_residuals, m);
+    const std::vector<double> w = weights(items, mask), before = shifted(baseline_residuals);
+    const double sse_before = weighted_sse(before, w, m), gap_before = gap(items, before, m);
     const double floor = gap(items, noise_r, m), margin = gap_margin(o, floor);
     std::vector<Standing> standing;
     for (const Candidate& c : candidates) {
-      const double crit = criterion(weighted_sse(c.residuals, w, m), sse_before, drawn, c.extra_parameters);
-      const double after = gap(items, c.residuals, m);
+      const std::vector<double> r = shifted(c.residuals);
+      const double crit = criterion(weighted_sse(r, w, m), sse_before, drawn, c.extra_parameters);
+      const double after = gap(items, r, m);
       standing.push_back({crit, after, earns(crit, after, gap_before, o, margin)});
     }
     const Decision k = decide(candidates, standing, o, margin, gap_before, floor);
     const std::string winner =
         k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(candidates[static_cast<std::size_t>(k.index)].effects);
     agree += winner == verdict;
-    const double g = gap(items, chosen_residuals, m);
+    const double g = gap(items, shifted(chosen_residuals), m);
     s1 += g, s2 += g * g;
   }
   const double B = o.bootstrap_samples;

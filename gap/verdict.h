@@ -62,9 +62,15 @@ Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& s
 // Share of the summed squared residuals by (observable, phase + speed class), largest first.
 std::vector<Localization> localize(const std::vector<Item>& items, const std::vector<double>& r);
 
-// The verdict's confidence: the share of `samples` bootstrap resamples of the held-out units
-// (drawn with replacement, seeded) whose standings give the same verdict name as `verdict`, and
-// the standard deviation over the resamples of the held-out gap `chosen_residuals` leave.
+// The verdict's confidence: the share of `samples` bootstrap resamples whose standings give the
+// same verdict name as `verdict`, and the standard deviation over the resamples of the held-out
+// gap `chosen_residuals` leave. A resample draws the held-out units (blocks) with replacement and
+// measures every held-out item again within its own standard error: r_i + noise_r_i z_i, z_i a
+// standard normal, the same shift for the baseline and every candidate (a new measurement moves
+// the measured value, not the models). Held-out data are a few blocks (two of five speeds), too
+// few for a block bootstrap alone to say whether a cut stands above the data's noise; with one
+// held-out block, the redrawn noise is all the resamples can vary. Seeded: the same inputs give
+// the same confidence.
 struct Confidence {
   double agreement = 0.0;
   double heldout_gap_after_std = 0.0;
