@@ -134,7 +134,7 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   }
   md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt(d.verdict.heldout_gap_before, "%.4g") << " -> "
      << fmt(d.verdict.heldout_gap_after, "%.4g") << " (bootstrap std " << fmt(d.verdict.heldout_gap_after_std, "%.2g") << "), confidence "
-     << fmt(100.0 * d.verdict.confidence, "%.0f %%") << ".\n\n";
+     << gap::confidence_text(d.verdict.confidence) << ".\n\n";
   md << "Plots: `gap_by_observable.png` (bar chart), `items.png` (measured vs simulated, before / after), `overlay.png` (traces).\n";
   return md.str();
 }
@@ -191,9 +191,9 @@ void run_diagnose(const DiagnoseArgs& args) {
       break;
     }
   write_overlays(dir / "overlay.csv", bundle, before, after, rig.normal_load_N, provenance);
-  std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %.0f %%) -> %s\n", d.verdict.conclusion.c_str(),
+  std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %s) -> %s\n", d.verdict.conclusion.c_str(),
               gap::verdict_name(d.verdict).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
-              100.0 * d.verdict.confidence, args.out.c_str());
+              gap::confidence_text(d.verdict.confidence).c_str(), args.out.c_str());
   if (args.plot && run_plot_script("gap", args.out) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
@@ -226,7 +226,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.verdict = j.at("verdict").get<std::string>();
       r.heldout_gap_before = j.at("heldout_gap_before").get<double>();
       r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
-      r.confidence = j.at("confidence").get<double>();
+      r.confidence = j.at("confidence").is_null() ? std::nan("") : j.at("confidence").get<double>();  // null: not estimable
       r.wall_s = j.value("wall_s", 0.0);  // journals before it was recorded: 0
       r.correct = r.verdict == r.c.true_effect;
       rows.push_back(r);

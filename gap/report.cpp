@@ -23,6 +23,13 @@ std::string verdict_name(const std::vector<std::string>& effects) { return effec
 
 std::string verdict_name(const Verdict& v) { return v.unexplained ? "unexplained" : verdict_name(v.effects); }
 
+std::string confidence_text(double confidence) {
+  if (!std::isfinite(confidence)) return "not estimable: one held-out block and no noise estimate";
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "%.0f %%", 100.0 * confidence);
+  return buf;
+}
+
 std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
   char buf[900];
   const Localization* top = d.localization.empty() ? nullptr : &d.localization.front();
@@ -41,19 +48,19 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
         params += p;
       }
     std::snprintf(buf, sizeof buf,
-                  "Add %s to the model (%s): it cuts the held-out gap from %.3g to %.3g%s (%.0f %% smaller, bootstrap confidence %.0f %%); "
+                  "Add %s to the model (%s): it cuts the held-out gap from %.3g to %.3g%s (%.0f %% smaller, bootstrap confidence %s); "
                   "the baseline misses most in %s (%s, %.0f %% of the squared residual).",
                   join(chosen->effects, " and ").c_str(), params.c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
                   floor_text, 100.0 * (1.0 - d.verdict.heldout_gap_after / std::max(d.verdict.heldout_gap_before, 1e-300)),
-                  100.0 * d.verdict.confidence, top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
+                  confidence_text(d.verdict.confidence).c_str(), top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
                   top ? 100.0 * top->share : 0.0);
   } else if (d.verdict.unexplained) {
     std::snprintf(buf, sizeof buf,
                   "Unexplained: the calibrated baseline (mu_s = %.3g, mu_k = %.3g) leaves a held-out gap of %.3g%s, and no catalogue "
                   "effect halves its excess over the floor (closest %s at %.3g); most of it lies in %s. Look for a mechanism outside "
-                  "the catalogue there (bootstrap confidence %.0f %%).",
+                  "the catalogue there (bootstrap confidence %s).",
                   d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, floor_text, closest.c_str(), closest_gap,
-                  d.verdict.remaining_where.c_str(), 100.0 * d.verdict.confidence);
+                  d.verdict.remaining_where.c_str(), confidence_text(d.verdict.confidence).c_str());
   } else {
     std::snprintf(buf, sizeof buf,
                   "No catalogue effect earns its parameters on held-out data: keep the calibrated baseline (mu_s = %.3g, mu_k = %.3g), "
@@ -104,7 +111,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"heldout_gap_before", d.verdict.heldout_gap_before},
                   {"heldout_gap_after", d.verdict.heldout_gap_after},
                   {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},
-                  {"confidence", d.verdict.confidence},
+                  {"confidence", std::isfinite(d.verdict.confidence) ? json(d.verdict.confidence) : json(nullptr)},
                   {"noise_floor", d.verdict.noise_floor},
                   {"remaining_gap_in_floors", std::isfinite(d.verdict.remaining_floors) ? json(d.verdict.remaining_floors) : json(nullptr)},
                   {"remaining_where", d.verdict.remaining_where},

@@ -16,7 +16,12 @@ namespace tribo::gap {
 // `chosen`: the verdict's candidate, nullptr for "none" and "unexplained".
 std::string conclusion(const Diagnosis& d, const Candidate* chosen);
 
-// gap_report.json content (keys of DESIGN §7 plus details).
+// "87 %", or what stands in for a confidence the data cannot give (NaN: one held-out block and no
+// noise estimate, bootstrap_confidence in verdict.h).
+std::string confidence_text(double confidence);
+
+// gap_report.json content (keys of DESIGN §7 plus details; a confidence that cannot be estimated
+// is null).
 nlohmann::json report_json(const Diagnosis& d);
 
 }  // namespace tribo::gap

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -144,6 +145,11 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
   std::sort(units.begin(), units.end());
   units.erase(std::unique(units.begin(), units.end()), units.end());
   if (units.empty() || o.bootstrap_samples <= 0) return {};
+  // One block and nothing measured about its noise: every resample is the data itself, and their
+  // agreement would say 100 % about nothing.
+  bool noisy = false;
+  for (std::size_t i = 0; i < n; ++i) noisy = noisy || (heldout[i] && noise_r[i] > 0.0);
+  if (units.size() < 2 && !noisy) return {std::numeric_limits<double>::quiet_NaN(), 0.0};
   std::mt19937_64 rng(o.seed ^ 0x9e3779b97f4a7c15ULL);
   std::uniform_int_distribution<std::size_t> pick(0, units.size() - 1);
   std::normal_distribution<double> z;

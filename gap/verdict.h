@@ -69,8 +69,8 @@ std::vector<Localization> localize(const std::vector<Item>& items, const std::ve
 // standard normal, the same shift for the baseline and every candidate (a new measurement moves
 // the measured value, not the models). Held-out data are a few blocks (two of five speeds), too
 // few for a block bootstrap alone to say whether a cut stands above the data's noise; with one
-// held-out block, the redrawn noise is all the resamples can vary. Seeded: the same inputs give
-// the same confidence.
+// held-out block, the redrawn noise is all the resamples can vary, and without a noise estimate
+// either the agreement is NaN (not estimable). Seeded: the same inputs give the same confidence.
 struct Confidence {
   double agreement = 0.0;
   double heldout_gap_after_std = 0.0;

@@ -2,6 +2,8 @@
 // three verdicts carries the numbers it is built from, and gap_report.json the verdict's keys.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "gap/report.h"
 
 namespace tribo::gap {
@@ -44,6 +46,12 @@ TEST(Report, NamedVerdictGivesTheEffectItsParametersAndTheShrink) {
   EXPECT_DOUBLE_EQ(j["verdict"]["confidence"].get<double>(), 0.95);
   EXPECT_EQ(j["verdict"]["conclusion"], s);
   EXPECT_EQ(j["candidates"][0]["fit"]["termination"], "not fitted");  // every candidate says how its fit ended
+
+  // A confidence the data cannot give (one held-out block, no noise estimate) is said so, and null.
+  d.verdict.confidence = std::nan("");
+  const std::string n = conclusion(d, &d.candidates.front());
+  EXPECT_NE(n.find("bootstrap confidence not estimable: one held-out block and no noise estimate"), std::string::npos) << n;
+  EXPECT_TRUE(report_json(d)["verdict"]["confidence"].is_null());
 }
 
 TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {

@@ -176,6 +176,14 @@ TEST(Verdict, BootstrapMeasuresTheHeldOutItemsAgainWithinTheirNoise) {
   EXPECT_LT(noisy.agreement, 0.8);
   EXPECT_GT(noisy.heldout_gap_after_std, exact.heldout_gap_after_std);
   EXPECT_EQ(bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, cut, "cut", o).agreement, noisy.agreement);
+
+  // One held-out block: with its noise the redraws still vary; without, nothing does — not estimable.
+  std::vector<bool> one_block(n, false);
+  one_block[0] = one_block[1] = true;
+  EXPECT_TRUE(std::isnan(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.0), baseline, one, cut, "cut", o).agreement));
+  const double from_noise = bootstrap_confidence(items, one_block, std::vector<double>(n, 0.1), baseline, one, cut, "cut", o).agreement;
+  EXPECT_GT(from_noise, 0.0);
+  EXPECT_LT(from_noise, 1.0);
 }
 
 }  // namespace
