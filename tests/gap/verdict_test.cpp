@@ -1,6 +1,7 @@
 // The diagnosis' stages after the fits (gap/verdict.h) on hand-made items and residuals: the gap
 // and criterion against their definitions (diagnosis.h), the verdict rule's three outcomes, where
-// the residual lies, and the bootstrap confidence at its two ends. No simulation: milliseconds.
+// the residual lies, and the bootstrap confidence at its two ends and with the data's noise. No
+// simulation: milliseconds.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,6 +29,14 @@ Candidate candidate(const std::string& effect, int parameters, std::vector<doubl
   c.extra_parameters = parameters;
   c.residuals = std::move(residuals);
   return c;
+}
+
+// Eight units of two items each (mu_peak, period_s), the bootstrap tests' held-out data.
+std::vector<Item> eight_held_out_units() {
+  std::vector<Item> items;
+  for (int u = 0; u < 8; ++u)
+    for (const char* obs : {"mu_peak", "period_s"}) items.push_back(item(obs, u));
+  return items;
 }
 
 // Two observables, three items of one and one of the other: the gap is the mean over observables
@@ -115,13 +124,8 @@ TEST(Verdict, LocalisationSharesSumToOneLargestFirstWithTheWorstItem) {
 // every resample (1.0), and its gap does not vary; a candidate that helps one unit of eight and
 // spoils none wins only in resamples that draw that unit often enough — well below 1.
 TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
-  std::vector<Item> items;
-  std::vector<bool> held;
-  for (int u = 0; u < 8; ++u)
-    for (const char* obs : {"mu_peak", "period_s"}) {
-      items.push_back(item(obs, u));
-      held.push_back(true);
-    }
+  const std::vector<Item> items = eight_held_out_units();
+  const std::vector<bool> held(items.size(), true);
   const std::size_t n = items.size();
   // No noise floor: the rule is the criterion and the margins alone (no "unexplained").
   const std::vector<double> baseline(n, 0.2), noise(n, 0.0);
@@ -155,13 +159,8 @@ TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
 // while q ≲ 0.0086 − 0.12 δ̄: a coin toss, widened by the units' redraw (measured 0.52 with this
 // seed). Without the redraw it would be 1. Seeded: the same inputs, the same confidence.
 TEST(Verdict, BootstrapMeasuresTheHeldOutItemsAgainWithinTheirNoise) {
-  std::vector<Item> items;
-  std::vector<bool> held;
-  for (int u = 0; u < 8; ++u)
-    for (const char* obs : {"mu_peak", "period_s"}) {
-      items.push_back(item(obs, u));
-      held.push_back(true);
-    }
+  const std::vector<Item> items = eight_held_out_units();
+  const std::vector<bool> held(items.size(), true);
   const std::size_t n = items.size();
   const std::vector<double> baseline(n, 0.2), cut(n, 0.15);
   const std::vector<Candidate> one{candidate("cut", 1, cut)};
