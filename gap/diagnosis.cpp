@@ -4,6 +4,7 @@
 #include <ceres/dynamic_numeric_diff_cost_function.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <mutex>
 #include <numeric>
@@ -187,6 +188,7 @@ enum class Resolution { search, refine };
 FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const Setup& start, const std::vector<bool>& train_mask,
               const DiagnosisOptions& o, std::uint64_t seed, int starts, std::size_t randomised_from,
               Resolution resolution = Resolution::search, bool start_read_off_data = false) {
+  const auto started = std::chrono::steady_clock::now();
   std::vector<int> train;
   for (std::size_t i = 0; i < train_mask.size(); ++i)
     if (train_mask[i]) train.push_back(static_cast<int>(i));
@@ -277,6 +279,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
       apply(space, u, best.setup);
     }
   }
+  best.termination.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return best;
 }
 
@@ -521,6 +524,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     const std::vector<FitParameter> space = space_of(c.effects);
     const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, train, refining, o.seed, 1, space.size(), Resolution::refine);
     Candidate refined = candidate_from(c.effects, space, r);
+    refined.fit.wall_s += c.fit.wall_s;  // the search's time too
     report("refined " + verdict_name(c.effects));
     return refined;
   };

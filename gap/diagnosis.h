@@ -97,6 +97,7 @@ struct FitTermination {
   std::string termination = "not fitted";
   int iterations = 0;
   int max_iterations = 0;
+  double wall_s = 0.0;  // wall time of the fit, grid and every start included (a candidate's: search and refinement)
 };
 
 struct Candidate {

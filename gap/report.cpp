@@ -14,7 +14,7 @@ std::string join(const std::vector<std::string>& v, const std::string& sep) {
 }
 
 nlohmann::json fit_json(const FitTermination& f) {
-  return {{"termination", f.termination}, {"iterations", f.iterations}, {"max_iterations", f.max_iterations}};
+  return {{"termination", f.termination}, {"iterations", f.iterations}, {"max_iterations", f.max_iterations}, {"wall_s", f.wall_s}};
 }
 
 }  // namespace
