@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <mutex>
 #include <numeric>
 #include <random>
@@ -28,6 +29,7 @@ struct FitParameter {
   double lower = 0.0, upper = 1.0;
   bool log = false;
   int effect_index = 0;
+  bool stated_constant = false;  // a rig constant the bundle gives with an uncertainty, refined within it
 
   double value(double u) const {
     const double w = std::clamp(u - 1.0, 0.0, 1.0);
@@ -319,6 +321,7 @@ std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const 
     p.target = FitParameter::Target::rig;
     p.name = key;
     p.lower = v * (1.0 - u), p.upper = v * (1.0 + u), p.log = false;
+    p.stated_constant = true;
     space.push_back(p);
   }
   return space;
@@ -448,8 +451,14 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
 
   // 2. Candidates.
   const std::vector<std::string> names = o.candidates.empty() ? default_candidates(model, bundle.kind) : o.candidates;
-  auto space_of = [&](const std::vector<std::string>& effects) {
-    std::vector<FitParameter> space = base_space;
+  // The candidates' searches hold the stated rig constants where the calibration put them (three
+  // more coordinates would triple a search's cost); the leaders' refinements, the pair and the
+  // re-calibration free them again within their intervals, so the candidates are compared with
+  // the constants at their best.
+  std::vector<FitParameter> search_base;
+  std::copy_if(base_space.begin(), base_space.end(), std::back_inserter(search_base), [](const FitParameter& p) { return !p.stated_constant; });
+  auto space_of = [&](const std::vector<std::string>& effects, bool with_stated_constants) {
+    std::vector<FitParameter> space = with_stated_constants ? base_space : search_base;
     for (const auto& e : effects)
       for (FitParameter p : effect_parameters(e)) space.push_back(p);
     return space;
@@ -461,7 +470,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     c.rig = fitted.setup.rig;
     c.params = values(space, fitted.setup);
     c.fit = fitted.termination;
-    c.extra_parameters = static_cast<int>(space.size() - base_space.size());
+    c.extra_parameters = static_cast<int>(
+        std::count_if(space.begin(), space.end(), [](const FitParameter& p) { return p.target == FitParameter::Target::effect; }));
     c.residuals = comparison.residuals(comparison.predict(c.rig, c.model, o.seed));
     c.train_gap = breakdown(d.items, c.residuals, train).gap;
     const GapBreakdown held = breakdown(d.items, c.residuals, d.heldout);
@@ -509,8 +519,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       start.model.set("slip_transient", "decay_distance_m", step.decay_distance_m);
       read_off = true;
     }
-    const std::vector<FitParameter> space = space_of(effects);
-    const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, base_space.size(), Resolution::search, read_off);
+    const std::vector<FitParameter> space = space_of(effects, false);
+    const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, search_base.size(), Resolution::search, read_off);
     Candidate c = candidate_from(effects, space, r);
     report("fitted " + verdict_name(effects));
     return c;
@@ -521,7 +531,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   DiagnosisOptions refining = o;
   refining.max_iterations = std::max(20, o.max_iterations);
   auto refine = [&](const Candidate& c) {
-    const std::vector<FitParameter> space = space_of(c.effects);
+    const std::vector<FitParameter> space = space_of(c.effects, true);
     const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, train, refining, o.seed, 1, space.size(), Resolution::refine);
     Candidate refined = candidate_from(c.effects, space, r);
     refined.fit.wall_s += c.fit.wall_s;  // the search's time too
