@@ -333,7 +333,11 @@ void add_gap_command(CLI::App& app) {
 
   auto diagnose_args = std::make_shared<DiagnoseArgs>();
   CLI::App* diagnose = gap->add_subcommand("diagnose", "Diagnose an experiment bundle (DESIGN §7) against a `tribo rig` model config");
-  diagnose->add_option("--experiment", diagnose_args->experiment, "Experiment bundle directory")->required();
+  diagnose->add_option("--experiment", diagnose_args->experiment,
+                       "Experiment bundle directory; its experiment.toml may state how well it knows the rig "
+                       "([rig.relative_uncertainty] stiffness_N_per_m = 0.03, mass_kg, damping_N_s_per_m), and those "
+                       "constants are refined within ± that fraction")
+      ->required();
   diagnose->add_option("--model", diagnose_args->model, "Model TOML ([rig], [friction] as for `tribo rig`)")->required();
   diagnose->add_option("--out", diagnose_args->out, "Output directory")->capture_default_str();
   diagnose->add_option("--seed", diagnose_args->seed, "Seed of random starts, bootstrap and instrument noise")->capture_default_str();
