@@ -640,7 +640,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
 // at the speed k v / W gives, a regime point), or nothing but itself (a drive segment's level, a
 // peak after a hold, a block of bins after a step).
 struct UnitKey {
-  double v_m_per_s = std::numeric_limits<double>::quiet_NaN();
+  double v_m_per_s = kNaN;
   static UnitKey at_speed(double v) { return {v}; }
   static UnitKey own() { return {}; }
 };

@@ -285,6 +285,13 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   return best;
 }
 
+// Whether the options calibrate a rig key over its wide range (the damping counts as calibrated
+// when its ratio ζ is).
+bool calibrates(const DiagnosisOptions& o, const std::string& key) {
+  const auto named = [&](const std::string& k) { return std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), k) > 0; };
+  return named(key) || (key == "damping_N_s_per_m" && named("damping_ratio"));
+}
+
 // The baseline's parameters: μs, μk/μs, the rig keys nobody gives (calibrate_rig, wide ranges) and
 // the rig constants the bundle gives with a stated relative uncertainty u, refined within ± u of
 // the stated value (a rig known to a few per cent must not make a mechanism out of its
@@ -310,12 +317,8 @@ std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const 
     if (key == "damping_ratio") p.lower = 1e-3, p.upper = 0.9;
     space.push_back(p);
   }
-  const auto calibrated = [&](const std::string& key) {
-    return std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), key) > 0 ||
-           (key == "damping_N_s_per_m" && std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), "damping_ratio") > 0);
-  };
   for (const auto& [key, u] : relative_uncertainty) {
-    if (calibrated(key)) continue;
+    if (calibrates(o, key)) continue;
     const double v = rig_value(rig, key);
     if (!(v > 0.0 && u > 0.0 && u < 1.0)) throw std::invalid_argument("gap: rig key '" + key + "' cannot be refined around " + std::to_string(v));
     p.target = FitParameter::Target::rig;
@@ -377,7 +380,6 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   Diagnosis d;
   d.items = comparison.items();
   d.integration_tolerance = comparison.integration_tolerance();
-  d.rig_relative_uncertainty = bundle.relative_uncertainty;
   const std::size_t n = d.items.size();
   std::vector<bool> train(n);
   d.heldout.resize(n);
@@ -401,6 +403,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
 
   // 1. Calibration of the model's own parameters.
   const std::vector<FitParameter> base_space = baseline_space(model, model_rig, o, bundle.relative_uncertainty);
+  for (const FitParameter& p : base_space)
+    if (p.stated_constant) d.rig_relative_uncertainty[p.name] = bundle.relative_uncertainty.at(p.name);
   // Two starts: the model's own values and a guess read off the data (μs from the friction
   // maxima or static points, μk midway between maxima and minima as in Coulomb stick-slip).
   Setup guess{model_rig, model};
@@ -410,10 +414,9 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     guess.model.baseline.mu_k = levels.mu_k;
     // A machine nobody describes: its stiffness from the elastic rise after a velocity step, and
     // half-critical damping (a servo-driven load point is far from the thesis rig's ζ ≈ 0.01).
-    const auto calibrated = [&](const char* key) { return std::count(o.calibrate_rig.begin(), o.calibrate_rig.end(), key) > 0; };
     const double k_read = comparison.step_response().loading_stiffness_N_per_m;
-    if (calibrated("stiffness_N_per_m") && std::isfinite(k_read)) guess.rig.stiffness_N_per_m = k_read;
-    if (calibrated("damping_ratio")) set_damping_ratio(guess.rig, 0.5);
+    if (calibrates(o, "stiffness_N_per_m") && std::isfinite(k_read)) guess.rig.stiffness_N_per_m = k_read;
+    if (calibrates(o, "damping_ratio")) set_damping_ratio(guess.rig, 0.5);
   }
   DiagnosisOptions calibration = o;
   calibration.max_iterations = std::max(50, 2 * o.max_iterations);  // few parameters: converge fully, so no
