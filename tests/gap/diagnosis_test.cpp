@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <random>
@@ -210,27 +211,35 @@ TEST(Comparison, TriangleWaveFeaturesMatchTheirClosedFormsAtAnySamplePhase) {
   }
 }
 
+// A made-up velocity-step record: 60 µm of load-point travel at 3 µm/s, then 10 µm/s for 50 s,
+// sampled at 100 Hz with the drive record; μ = 0.6 + excess(load-point travel since the step).
+ExperimentBundle velocity_step_bundle(const std::function<double(double)>& excess) {
+  ExperimentBundle b;
+  b.kind = "velocity_step";
+  gap::Run run;
+  run.run_id = "0";
+  run.v_m_per_s = 3e-6;
+  for (int i = 0; i <= 7000; ++i) {
+    const double t = 0.01 * i, x = t < 20.0 ? 3e-6 * t : 6e-5 + 1e-5 * (t - 20.0);
+    run.trace.t_s.push_back(t);
+    run.trace.v_drive_m_per_s.push_back(t < 20.0 ? 3e-6 : 1e-5);
+    run.trace.x_drive_m.push_back(x);
+    run.trace.mu.push_back(0.6 + excess(x - 6e-5));
+  }
+  b.runs.push_back(run);
+  return b;
+}
+
 // The response to a velocity step read off a made-up record with known shape: 60 µm at 3 µm/s,
 // then 10 µm/s; after the step μ rises linearly by 0.01 over 1 µm of load-point travel and decays
 // back as exp(−(X − 1 µm)/8 µm). Sampled at 100 Hz (0.1 µm per sample after the step): the
 // 3-sample running mean rounds the peak off by about a third of the rise over one sample (≈ 1.2 %)
 // and may place it one sample late, so ΔX_peak is good to 0.1 µm and k = W Δμ/ΔX to ≈ 12 %.
 TEST(Comparison, StepResponseReadsPeakStiffnessAndDecayDistance) {
-  ExperimentBundle b;
-  b.kind = "velocity_step";
-  gap::Run run;
-  run.run_id = "0";
-  run.v_m_per_s = 3e-6;
   const double rise = 0.01, x_peak = 1e-6, decay = 8e-6;
-  for (int i = 0; i <= 7000; ++i) {
-    const double t = 0.01 * i, x = t < 20.0 ? 3e-6 * t : 6e-5 + 1e-5 * (t - 20.0), after = x - 6e-5;
-    run.trace.t_s.push_back(t);
-    run.trace.v_drive_m_per_s.push_back(t < 20.0 ? 3e-6 : 1e-5);
-    run.trace.x_drive_m.push_back(x);
-    const double excess = after <= 0.0 ? 0.0 : after < x_peak ? rise * after / x_peak : rise * std::exp(-(after - x_peak) / decay);
-    run.trace.mu.push_back(0.6 + excess);
-  }
-  b.runs.push_back(run);
+  const ExperimentBundle b = velocity_step_bundle([&](double after) {
+    return after <= 0.0 ? 0.0 : after < x_peak ? rise * after / x_peak : rise * std::exp(-(after - x_peak) / decay);
+  });
   const rig::RigParameters rig;
   const StepResponse s = Comparison(b, rig).step_response();
   EXPECT_NEAR(s.peak_rise, rise, 0.02 * rise);
@@ -263,19 +272,7 @@ TEST(Comparison, SplitUnitsAreSpeedsAndContiguousBlocksOfBins) {
   }
 
   // The velocity step of StepResponseReadsPeakStiffnessAndDecayDistance: 24 bins after the step.
-  ExperimentBundle step;
-  step.kind = "velocity_step";
-  gap::Run run;
-  run.run_id = "0";
-  run.v_m_per_s = 3e-6;
-  for (int i = 0; i <= 7000; ++i) {
-    const double t = 0.01 * i, x = t < 20.0 ? 3e-6 * t : 6e-5 + 1e-5 * (t - 20.0), after = x - 6e-5;
-    run.trace.t_s.push_back(t);
-    run.trace.v_drive_m_per_s.push_back(t < 20.0 ? 3e-6 : 1e-5);
-    run.trace.x_drive_m.push_back(x);
-    run.trace.mu.push_back(0.6 + (after > 0.0 ? 0.01 * std::exp(-after / 8e-6) : 0.0));
-  }
-  step.runs.push_back(run);
+  const ExperimentBundle step = velocity_step_bundle([](double after) { return after > 0.0 ? 0.01 * std::exp(-after / 8e-6) : 0.0; });
   const Comparison cs(step, rig);
   std::vector<int> bin_units;
   for (const Item& it : cs.items())
