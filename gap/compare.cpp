@@ -555,7 +555,6 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
   Features f;
   const double W = rig.normal_load_N, k = rig.stiffness_N_per_m;
   rig::SimulationOptions options;
-  options.max_events = 200'000;
   options.relative_tolerance = options.displacement_tolerance_fraction = tolerance;
   try {
     switch (plan.kind) {
@@ -563,6 +562,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
       case RunPlan::Kind::drive_history: {
         const bool history = plan.kind == RunPlan::Kind::drive_history;
         options.duration_s = plan.duration_s;
+        options.max_events = Comparison::event_budget(rig, plan.duration_s);
         options.samples_per_period = history ? samples_per_period(rig, plan.sample_spacing_s) : kSamplesPerPeriod;
         options.start_in_steady_sliding = history;
         Simulated sim;
@@ -606,6 +606,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
       case RunPlan::Kind::static_point: {
         const double v = plan.v_m_per_s * W / k;
         options.duration_s = plan.duration_s;
+        options.max_events = Comparison::event_budget(rig, plan.duration_s);
         // Only the first breakaway matters: keep no samples and output as sparsely as allowed.
         options.samples_per_period = 4;  // the rig's minimum
         options.stick_samples_per_run = 10;
@@ -621,6 +622,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
       case RunPlan::Kind::regime_point: {
         const double mu_scale = std::max(model.baseline.mu_s, 0.05);
         options.duration_s = std::clamp(6.0 * mu_scale * W / (k * plan.v_m_per_s) + 1.0, 1.0, 60.0);
+        options.max_events = Comparison::event_budget(rig, options.duration_s);
         const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(plan.v_m_per_s), law, options);
         if (!r.summary.completed) break;
         const rig::RunObservables o = rig::summarise(rig, r.samples, r.events, rig::analysis_start_s(0.0, r.summary.end_time_s));
@@ -877,6 +879,12 @@ void Comparison::set_integration_tolerance(double relative_tolerance) {
   if (!(relative_tolerance >= kFinestTolerance && relative_tolerance <= kCoarsestTolerance))
     throw std::invalid_argument("integration tolerance must lie in [1e-10, 1e-6]");
   tolerance_ = relative_tolerance;
+}
+
+long Comparison::event_budget(const rig::RigParameters& rig, double duration_s) {
+  const double periods = duration_s * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
+  if (!std::isfinite(periods)) return kFewestEvents;
+  return std::max(kFewestEvents, static_cast<long>(std::ceil(kEventsPerPeriod * periods)));
 }
 
 double Comparison::scale(const std::string& observable) const {

@@ -143,6 +143,16 @@ class Comparison {
   void set_integration_tolerance(double relative_tolerance);  // e.g. a reference at kFinestTolerance
   double median_relative_noise() const;                        // 0 when no item carries a noise
 
+  // Events a prediction of `duration_s` may have before it stops as chattering (no prediction):
+  // kEventsPerPeriod per natural period of `rig`, at least kFewestEvents. Stick-slip needs two
+  // events a cycle, and a cycle is longer than a natural period. What it stops: a Zeno velocity
+  // match, where a law that drops steeply within µm/s of U = 0 (hydrodynamic lift with a small U½)
+  // is integrated at a tolerance coarser than that speed and every slip re-attaches at once; at
+  // the rig's default budget of millions of events one such prediction cost seconds of a fit.
+  static constexpr double kEventsPerPeriod = 20.0;
+  static constexpr long kFewestEvents = 1000;
+  static long event_budget(const rig::RigParameters& rig, double duration_s);
+
  private:
   std::vector<Item> items_;
   std::vector<RunPlan> plans_;

@@ -135,6 +135,42 @@ TEST(Comparison, ResidualIsUnimodalOnAFineScanAroundTheTruth) {
 
 // A bundle of static-friction points only, from a Coulomb rig: calibration recovers μs to 1 %
 // (noise 1 % of μk W on each point, averaged over points) and nothing earns its parameters.
+// The predictions' event budget (Comparison::event_budget) stops a chattering prediction and
+// leaves stick-slip alone. The chatter is numerical: μs = μk with hydrodynamic lift that halves its
+// drop at U½ = 40 µm/s, on the thesis rig at 6 mm/s, is one stick-slip cycle every 0.54 s at the
+// rig's default tolerance (1e-10), but at the coarsest tolerance a prediction is given (1e-6:
+// ẋ resolved to ≈ 1 µm/s) every slip re-attaches at once — the case a lift search wandered into,
+// which at 200 000 events cost 0.55 s a run. Strong Coulomb stick-slip at the selftest's fastest
+// speed uses under a tenth of the budget.
+TEST(Comparison, EventBudgetStopsChatteringPredictionsAndLeavesStickSlipAlone) {
+  const rig::RigParameters rig;
+  const double duration_s = 2.0, periods = duration_s * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
+  const long budget = Comparison::event_budget(rig, duration_s);
+  EXPECT_EQ(budget, std::max(Comparison::kFewestEvents, static_cast<long>(std::ceil(Comparison::kEventsPerPeriod * periods))));
+  EXPECT_EQ(Comparison::event_budget(rig, 100.0), static_cast<long>(std::ceil(Comparison::kEventsPerPeriod * 50.0 * periods)));
+
+  rig::FrictionModel lift = rig::coulomb(0.357, 0.357);
+  lift.set("hydrodynamic_lift", "max_fraction", 0.475);
+  lift.set("hydrodynamic_lift", "half_speed_m_per_s", 4e-5);
+  rig::SimulationOptions o;
+  o.duration_s = duration_s;
+  o.max_events = budget;
+  const rig::SimulationResult fine = rig::simulate(rig, rig::Drive::constant(6e-3), *rig::make_friction_law(lift), o);
+  ASSERT_TRUE(fine.summary.completed) << fine.summary.message;
+  EXPECT_EQ(fine.summary.events, 6);  // breakaway at 0.54 s, 1.08 s, 1.61 s, each re-attaching
+  o.relative_tolerance = o.displacement_tolerance_fraction = Comparison::kCoarsestTolerance;
+  const rig::SimulationResult coarse = rig::simulate(rig, rig::Drive::constant(6e-3), *rig::make_friction_law(lift), o);
+  EXPECT_FALSE(coarse.summary.completed);
+  EXPECT_EQ(coarse.summary.events, budget + 1);
+  EXPECT_NEAR(coarse.summary.end_time_s, 0.539, 0.001);  // stuck at the first breakaway
+
+  const rig::SimulationResult stick_slip =
+      rig::simulate(rig, rig::Drive::constant(4.5e-2), *rig::make_friction_law(rig::coulomb(0.36, 0.16)), o);
+  ASSERT_TRUE(stick_slip.summary.completed) << stick_slip.summary.message;
+  EXPECT_GT(stick_slip.summary.events, 20);
+  EXPECT_LT(stick_slip.summary.events, budget / 10);
+}
+
 TEST(Diagnosis, StaticPointsOnlyCalibrateMuSAndAnswerNone) {
   const rig::RigParameters rig;
   ExperimentBundle b = synthesize_bundle(rig, rig::coulomb(0.3, 0.2), small(), 5);
