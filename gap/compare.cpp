@@ -499,9 +499,13 @@ Simulated simulate_steps(const rig::RigParameters& rig, const RunPlan& plan, con
   Simulated all;
   all.summary.completed = true;
   double t_offset = 0.0, x_drive_offset = 0.0, x_end = 0.0;
+  const std::vector<double> outputs = options.output_times_s;  // of the whole history
   for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
     const double t_end = k + 1 < plan.step_times_s.size() ? plan.step_times_s[k + 1] : plan.duration_s;
     options.duration_s = t_end - plan.step_times_s[k];
+    options.output_times_s.clear();
+    for (double t : outputs)
+      if (t >= plan.step_times_s[k] && t <= t_end) options.output_times_s.push_back(t - plan.step_times_s[k]);
     options.start_in_steady_sliding = k == 0;
     options.initial_displacement_m = x_end;
     const Simulated seg = run_simulation(rig, rig::Drive::constant(plan.step_speeds_m_per_s[k]), law, model, seed + k, options);
@@ -542,9 +546,16 @@ double median_spacing(const std::vector<double>& t) {
   return d[d.size() / 2];
 }
 
-int samples_per_period(const rig::RigParameters& rig, double spacing_s) {
-  const double period = 2.0 * M_PI / rig.natural_frequency_rad_per_s();
-  return static_cast<int>(std::clamp(std::round(period / spacing_s), 4.0, 100.0));
+// The instants a drive history's simulation outputs: the measured ones, and each `lag_s` earlier
+// (within the run) where an instrument with that lag reads the state; increasing, no repeats.
+std::vector<double> recorder_instants(const std::vector<double>& measured_s, double lag_s) {
+  std::vector<double> out = measured_s;
+  if (lag_s > 0.0)
+    for (double t : measured_s)
+      if (t - lag_s > 0.0) out.push_back(t - lag_s);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 // The simulation of one plan, analysed as the measured side was (features by key); the trace
@@ -563,7 +574,11 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         const bool history = plan.kind == RunPlan::Kind::drive_history;
         options.duration_s = plan.duration_s;
         options.max_events = Comparison::event_budget(rig, plan.duration_s);
-        options.samples_per_period = history ? samples_per_period(rig, plan.sample_spacing_s) : kSamplesPerPeriod;
+        options.samples_per_period = kSamplesPerPeriod;
+        // A drive history is read at the measured instants: the simulation outputs there (and τ
+        // earlier, where a lagging instrument reads the acceleration), not on a grid of its natural
+        // period — 4 samples per period of a 1e6 N/m machine were 13 times the record's 5850.
+        if (history) options.output_times_s = recorder_instants(plan.sample_times_s, rig::instrument_from(model, seed).lag_s);
         options.start_in_steady_sliding = history;
         Simulated sim;
         if (history) {

@@ -146,6 +146,11 @@ void validate(const SimulationOptions& o) {
   if (o.samples_per_period < 4) bad("samples_per_period must be at least 4");
   if (o.stick_samples_per_run < 1) bad("stick_samples_per_run must be at least 1");
   if (!std::isfinite(o.initial_displacement_m)) bad("initial_displacement_m must be finite");
+  for (std::size_t i = 0; i < o.output_times_s.size(); ++i) {
+    const double t = o.output_times_s[i];
+    if (!std::isfinite(t) || t < 0.0 || (i > 0 && !(t > o.output_times_s[i - 1])))
+      bad("output_times_s must be finite, non-negative and increasing (entry " + std::to_string(i) + ")");
+  }
 }
 
 }  // namespace
@@ -291,6 +296,14 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     }
   };
 
+  // The next output instant after `now`: on the phase's grid, or the next listed output time.
+  std::size_t listed = 0;
+  auto next_output_after = [&](double now) {
+    if (options.output_times_s.empty()) return now + (m.phase == Phase::stick ? dt_stick : dt_slip);
+    while (listed < options.output_times_s.size() && options.output_times_s[listed] <= now) ++listed;
+    return listed < options.output_times_s.size() ? options.output_times_s[listed] : t_end;
+  };
+
   emit_sample();
   double next_sample = 0.0;
   settle();
@@ -307,7 +320,11 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     cv.set_roots(root_callback, directions);
     cv.set_stop_time(t_stop);
     const double dt_phase = m.phase == Phase::stick ? dt_stick : dt_slip;
-    if (next_sample <= t || next_sample > t + dt_phase) next_sample = t + dt_phase;
+    if (!options.output_times_s.empty()) {
+      next_sample = next_output_after(t);
+    } else if (next_sample <= t || next_sample > t + dt_phase) {
+      next_sample = t + dt_phase;
+    }
     while (true) {
       const double t_out = std::min(next_sample, t_stop);
       double t_reached = t;
@@ -330,7 +347,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
           velocity_match();
         }
         settle();
-        next_sample = t + (m.phase == Phase::stick ? dt_stick : dt_slip);
+        next_sample = next_output_after(t);
         break;
       }
       if (t >= t_stop) {
@@ -353,11 +370,11 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
         if (m.phase == Phase::stick) y[kXdot] = drive.speed_m_per_s(t);  // follow a drive step
         settle();
         emit_sample();
-        next_sample = t + (m.phase == Phase::stick ? dt_stick : dt_slip);
+        next_sample = next_output_after(t);
         break;
       }
       emit_sample();
-      next_sample = t + (m.phase == Phase::stick ? dt_stick : dt_slip);
+      next_sample = next_output_after(t);
     }
     summary.integrator_steps += cv.steps();
   }

@@ -31,6 +31,10 @@ struct SimulationOptions {
   int samples_per_period = 200;
   // Output spacing while stuck: max(slip spacing, duration_s / stick_samples_per_run).
   int stick_samples_per_run = 4000;
+  // When not empty: samples at these instants (s from the start, increasing, within the run) and
+  // at the events, instead of the grid of the two options above — what a recorder sampling at
+  // known instants needs, where a stiff machine's natural period would ask for many times more.
+  std::vector<double> output_times_s;
   // A run with more events than this stops and says so (e.g. chattering at a velocity match).
   long max_events = 2'000'000;
   double initial_displacement_m = 0.0;  // slider displacement at t = 0

@@ -2,7 +2,10 @@
 // (rig/reference/closed_forms.h), and the energy balance over a cycle.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "rig/kinetic_laws.h"
 #include "rig/observables.h"
@@ -92,6 +95,62 @@ TEST(StickSlip, FrictionWorkEqualsDampingDissipationOverACycle) {
   // Trapezoid error with 2000 samples per period: (2π/2000)²/12 ≈ 1e-6 of the gross work.
   EXPECT_NEAR(friction_work, damping_work, 1e-5 * gross);
   EXPECT_GT(damping_work, 1e-3 * gross);
+}
+
+// A recorder's instants (SimulationOptions::output_times_s) replace the output grid and leave the
+// solution alone: samples only at listed instants and events; in every stick the slider rides
+// the surface, x = x_reattach + v (t − t_reattach) exactly; and listing more instants moves no
+// shared sample beyond CVODE's interpolation error (≈ 1e-9 of the stick-slip amplitude here).
+TEST(StickSlip, RecorderInstantsReplaceTheGridWithoutMovingTheSolution) {
+  const RigParameters rig;
+  const double v = 5e-3;
+  const auto ref = reference::coulomb_stick_slip(rig, 0.3, 0.2, v);
+  auto law = make_coulomb(0.3, 0.2);
+  SimulationOptions opt;
+  opt.duration_s = 3.5 * ref.period_s;
+  for (double t = 0.0; t <= opt.duration_s; t += 7e-3) opt.output_times_s.push_back(t);  // 7 ms: no multiple of the cycle
+  const SimulationResult coarse = simulate(rig, Drive::constant(v), *law, opt);
+  ASSERT_TRUE(coarse.summary.completed) << coarse.summary.message;
+  std::vector<double> event_times;
+  for (const Event& e : coarse.events) event_times.push_back(e.t_s);
+  ASSERT_GE(event_times.size(), 5u);
+  int in_stick = 0;
+  double t_reattach = -1.0, x_reattach = 0.0;
+  for (const Sample& s : coarse.samples) {
+    const bool listed = std::binary_search(opt.output_times_s.begin(), opt.output_times_s.end(), s.t_s);
+    const bool at_event = std::count(event_times.begin(), event_times.end(), s.t_s) > 0;
+    EXPECT_TRUE(listed || at_event || s.t_s == opt.duration_s) << "sample at t = " << s.t_s;
+    if (at_event && s.phase == Phase::slip) t_reattach = s.t_s, x_reattach = s.x_m;  // the state before the switch to stick
+    if (listed && s.phase == Phase::stick && t_reattach >= 0.0) {
+      EXPECT_NEAR(s.x_m, x_reattach + v * (s.t_s - t_reattach), 1e-12 * ref.peak_to_peak_m) << "t = " << s.t_s;
+      ++in_stick;
+    }
+  }
+  EXPECT_GT(in_stick, 80);  // 103 of the 7-ms instants fall in sticks
+
+  SimulationOptions finer = opt;
+  for (double t = 3.3e-3; t <= opt.duration_s; t += 7e-3) finer.output_times_s.push_back(t);
+  std::sort(finer.output_times_s.begin(), finer.output_times_s.end());
+  const SimulationResult fine = simulate(rig, Drive::constant(v), *law, finer);
+  ASSERT_TRUE(fine.summary.completed);
+  ASSERT_EQ(fine.events.size(), coarse.events.size());
+  for (std::size_t i = 0; i < coarse.events.size(); ++i) EXPECT_NEAR(fine.events[i].t_s, coarse.events[i].t_s, 1e-9 * ref.period_s);
+  int shared = 0;
+  for (const Sample& s : coarse.samples) {
+    const auto it = std::find_if(fine.samples.begin(), fine.samples.end(), [&](const Sample& f) { return f.t_s == s.t_s; });
+    if (it == fine.samples.end()) continue;
+    EXPECT_NEAR(it->x_m, s.x_m, 1e-9 * ref.peak_to_peak_m) << "t = " << s.t_s;
+    ++shared;
+  }
+  EXPECT_GE(shared, static_cast<int>(opt.output_times_s.size()));
+
+  opt.output_times_s = {0.1, 0.05};
+  try {
+    simulate(rig, Drive::constant(v), *law, opt);
+    FAIL() << "decreasing output times accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("output_times_s"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
