@@ -39,7 +39,7 @@ int slip_root(sunrealtype s, N_Vector y, sunrealtype* g, void* data) {
 bool advance(numerics::Cvode& cv, double s_out, double& s) {
   const int flag = cv.advance(s_out, s);
   if (flag < 0) {
-    throw std::runtime_error("junction ramp: CVODE failed at s = " + std::to_string(s) + " with " + numerics::Cvode::describe(flag));
+    throw std::runtime_error("junction ramp: CVODE failed at s = " + std::to_string(s) + " with " + numerics::Cvode::describe(flag) + ": " + cv.last_message());
   }
   return flag == CV_ROOT_RETURN;
 }

@@ -39,6 +39,7 @@ Cvode::Cvode(CVRhsFn rhs, void* user_data, const CvodeSettings& settings, double
     mem_ = check_ptr(CVodeCreate(settings.method == CvodeSettings::Method::adams ? CV_ADAMS : CV_BDF, ctx_), "CVodeCreate");
     check(CVodeInit(mem_, rhs, t0, y_), "CVodeInit");
     check(CVodeSetUserData(mem_, user_data), "CVodeSetUserData");
+    check(CVodeSetErrHandlerFn(mem_, &Cvode::keep_message, this), "CVodeSetErrHandlerFn");
     check(CVodeSVtolerances(mem_, settings.relative_tolerance, abstol_), "CVodeSVtolerances");
     matrix_ = check_ptr(SUNDenseMatrix(n, n, ctx_), "SUNDenseMatrix");
     solver_ = check_ptr(SUNLinSol_Dense(y_, matrix_, ctx_), "SUNLinSol_Dense");
@@ -53,6 +54,10 @@ Cvode::Cvode(CVRhsFn rhs, void* user_data, const CvodeSettings& settings, double
 }
 
 Cvode::~Cvode() { release(); }
+
+void Cvode::keep_message(int, const char*, const char*, char* message, void* self) {
+  static_cast<Cvode*>(self)->last_message_ = message != nullptr ? message : "";
+}
 
 void Cvode::release() {
   if (mem_) CVodeFree(&mem_);

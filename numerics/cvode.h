@@ -51,9 +51,15 @@ class Cvode {
 
   // "CV_ILL_INPUT (-22)": a CVODE return flag by name.
   static std::string describe(int flag);
+  // CVODE's own text of its last error or warning ("At t = … the corrector convergence test
+  // failed …"); empty if none. CVODE's messages are kept here, not printed: a failure reaches the
+  // caller through advance()'s flag, and a fit that probes stalling parameter sets would
+  // otherwise fill the terminal with them.
+  const std::string& last_message() const { return last_message_; }
 
  private:
   void release();
+  static void keep_message(int error_code, const char* module, const char* function, char* message, void* self);
 
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr;
@@ -63,6 +69,7 @@ class Cvode {
   void* mem_ = nullptr;
   std::size_t size_;
   std::size_t root_count_ = 0;
+  std::string last_message_;
 };
 
 }  // namespace tribo::numerics

@@ -331,7 +331,8 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
       const int flag = cv.advance(t_out, t_reached);
       if (flag < 0) {
         summary.message = "CVODE failed at t = " + std::to_string(t_reached) + " s with " + numerics::Cvode::describe(flag) +
-                          (m.callback_error.empty() ? "" : " (" + m.callback_error + ")");
+                          (m.callback_error.empty() ? "" : " (" + m.callback_error + ")") +
+                          (cv.last_message().empty() ? "" : ": " + cv.last_message());
         summary.end_time_s = t;
         summary.integrator_steps += cv.steps();
         return summary;
