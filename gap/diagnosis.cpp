@@ -463,8 +463,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   std::vector<FitParameter> search_base;
   std::copy_if(base_space.begin(), base_space.end(), std::back_inserter(search_base),
                [](const FitParameter& p) { return p.target != FitParameter::Target::rig; });
-  auto space_of = [&](const std::vector<std::string>& effects, bool with_stated_constants) {
-    std::vector<FitParameter> space = with_stated_constants ? base_space : search_base;
+  auto space_of = [&](const std::vector<std::string>& effects, bool with_rig) {
+    std::vector<FitParameter> space = with_rig ? base_space : search_base;
     for (const auto& e : effects)
       for (FitParameter p : effect_parameters(e)) space.push_back(p);
     return space;

@@ -133,8 +133,6 @@ TEST(Comparison, ResidualIsUnimodalOnAFineScanAroundTheTruth) {
   }
 }
 
-// A bundle of static-friction points only, from a Coulomb rig: calibration recovers μs to 1 %
-// (noise 1 % of μk W on each point, averaged over points) and nothing earns its parameters.
 // The predictions' event budget (Comparison::event_budget) stops a chattering prediction and
 // leaves stick-slip alone. The chatter is numerical: μs = μk with hydrodynamic lift that halves its
 // drop at U½ = 40 µm/s, on the thesis rig at 6 mm/s, is one stick-slip cycle every 0.54 s at the
@@ -171,6 +169,8 @@ TEST(Comparison, EventBudgetStopsChatteringPredictionsAndLeavesStickSlipAlone) {
   EXPECT_LT(stick_slip.summary.events, budget / 10);
 }
 
+// A bundle of static-friction points only, from a Coulomb rig: calibration recovers μs to 1 %
+// (noise 1 % of μk W on each point, averaged over points) and nothing earns its parameters.
 TEST(Diagnosis, StaticPointsOnlyCalibrateMuSAndAnswerNone) {
   const rig::RigParameters rig;
   ExperimentBundle b = synthesize_bundle(rig, rig::coulomb(0.3, 0.2), small(), 5);
