@@ -44,24 +44,32 @@ void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayX
   f.commit();
 }
 
-void run_contact(const ContactArgs& args) {
-  const ContactRun run = load_contact_run(args.config, false);
-  make_output_dir(args.out);
+// One solve of a loaded config (`hash`: the config's, for the provenance): contact.json to `sink`,
+// and unless args.summary_only the .npy fields into args.out, which exists.
+void run_contact(const ContactRun& run, const ContactArgs& args, const std::string& hash, const JsonSink& sink) {
   const std::filesystem::path dir(args.out);
   const ContactSolve solved = solve_contact_run(run);
   const contact::NormalContactResult& r = solved.result;
   nlohmann::json j = solved.summary;
-  j["provenance"] = contact_provenance(args.config, run);
+  j["provenance"] = contact_provenance(args.config, run, hash);
   if (!args.summary_only) {
     write_npy_atomically(dir / "pressure.npy", r.pressure_Pa);
     write_npy_atomically(dir / "gap.npy", r.gap_m);
     if (run.hardness_Pa) write_npy_atomically(dir / "plastic_displacement.npy", r.plastic_increment_m);
   }
-  write_file_atomically(dir / "contact.json", j.dump(2) + "\n");
+  sink("contact.json", j.dump(2) + "\n");
   std::printf("%s: area %.6g m^2 (%.4g %%), max pressure %.6g Pa, %d iterations, residual %.3g, %.3f s -> %s\n",
               run.surface_kind.c_str(), r.real_area_m2, 100.0 * r.area_fraction, r.max_pressure_Pa,
               j["iterations"].get<int>(), r.summary.residual, j["wall_s"].get<double>(), args.out.c_str());
   if (!r.summary.converged) throw std::runtime_error("contact solve " + r.summary.message);
+}
+
+void run_contact(const ContactArgs& args) {
+  const ContactRun run = load_contact_run(args.config, false);
+  make_output_dir(args.out);
+  const std::filesystem::path dir(args.out);
+  run_contact(run, args, "",
+              [&dir](const std::string& name, const std::string& text) { write_file_atomically(dir / name, text); });
 }
 
 void run_junction(const ContactArgs& args) {
@@ -155,6 +163,15 @@ void run_junction(const ContactArgs& args) {
 }
 
 }  // namespace
+
+void run_contact_summary(const toml::table& config, const std::filesystem::path& path, const std::string& hash,
+                         const std::string& out, const JsonSink& sink) {
+  ContactArgs args;
+  args.config = path.string();
+  args.out = out;
+  args.summary_only = true;
+  run_contact(load_contact_run(config, path, false), args, hash, sink);
+}
 
 void add_contact_command(CLI::App& app) {
   auto args = std::make_shared<ContactArgs>();

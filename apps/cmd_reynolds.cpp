@@ -41,15 +41,14 @@ struct Args {
   bool summary_only = false;
 };
 
-void run_reynolds(const Args& args) {
-  if (args.config.empty()) throw InputError("reynolds: a CONFIG.toml is required (see tribo reynolds --help)");
-  const ReynoldsRun run = load_reynolds_run(args.config);
-  make_output_dir(args.out);
+// One solve of a loaded config (`hash`: the config's, for the provenance): reynolds.json to
+// `sink`, and unless args.summary_only the .npy fields into args.out, which exists.
+void run_reynolds(const ReynoldsRun& run, const Args& args, const std::string& hash, const JsonSink& sink) {
   const std::filesystem::path dir(args.out);
   const ReynoldsSolve solved = solve_reynolds_run(run);
   const lub::ReynoldsSolution& s = solved.solution;
   nlohmann::json j = solved.summary;
-  j["provenance"] = provenance_json(args.config);
+  j["provenance"] = hash.empty() ? provenance_json(args.config) : provenance_json(args.config, hash);
   if (run.seed) j["provenance"]["seed"] = *run.seed;
   if (!args.summary_only) {
     j["fields"] = {{"pressure_Pa", "pressure_Pa.npy"}, {"fill_fraction", "fill_fraction.npy"}, {"gap_m", "gap_m.npy"},
@@ -58,11 +57,20 @@ void run_reynolds(const Args& args) {
     write_npy_atomically(dir / "fill_fraction.npy", s.fill_fraction);
     write_npy_atomically(dir / "gap_m.npy", run.problem.gap_m);
   }
-  write_file_atomically(dir / "reynolds.json", j.dump(2) + "\n");
+  sink("reynolds.json", j.dump(2) + "\n");
   std::printf("%s: load %.6g N, max pressure %.6g Pa, cavitated %.3g, %d iterations, %.3f s -> %s\n", run.kind.c_str(),
               s.load_N, s.max_pressure_Pa, s.cavitated_fraction, s.summary.iterations, s.summary.wall_s,
               args.out.c_str());
   if (!s.summary.converged) throw std::runtime_error("reynolds solve did not converge: " + s.summary.message);
+}
+
+void run_reynolds(const Args& args) {
+  if (args.config.empty()) throw InputError("reynolds: a CONFIG.toml is required (see tribo reynolds --help)");
+  const ReynoldsRun run = load_reynolds_run(args.config);
+  make_output_dir(args.out);
+  const std::filesystem::path dir(args.out);
+  run_reynolds(run, args, "",
+               [&dir](const std::string& name, const std::string& text) { write_file_atomically(dir / name, text); });
 }
 
 std::string csv_number(double v) {
@@ -145,6 +153,15 @@ void run_flow_factors(const Args& args) {
 }
 
 }  // namespace
+
+void run_reynolds_summary(const toml::table& config, const std::filesystem::path& path, const std::string& hash,
+                          const std::string& out, const JsonSink& sink) {
+  Args args;
+  args.config = path.string();
+  args.out = out;
+  args.summary_only = true;
+  run_reynolds(load_reynolds_run(config, path), args, hash, sink);
+}
 
 void add_reynolds_command(CLI::App& app) {
   auto args = std::make_shared<Args>();

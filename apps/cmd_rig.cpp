@@ -20,9 +20,9 @@ struct RigArgs {
   bool summary_only = false;
 };
 
-void run_rig(const RigArgs& args) {
-  const RigRun run = load_rig_run(args.config);  // everything validated before anything is written
-  make_output_dir(args.out);
+// One run of a loaded config (`hash`: the config's, for the provenance): summary.json to `sink`,
+// and unless args.summary_only trace.csv and events.csv into args.out, which exists.
+void run_rig(const RigRun& run, const RigArgs& args, const std::string& hash, const JsonSink& sink) {
   const std::filesystem::path dir(args.out);
   const auto start = std::chrono::steady_clock::now();
 
@@ -31,17 +31,17 @@ void run_rig(const RigArgs& args) {
   const auto& samples = result.samples;
   const auto& events = result.events;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const std::vector<double> measured = rig::measure_friction_N(run.rig, rig::instrument_from(run.friction, run.seed), samples);
 
-  nlohmann::json provenance = provenance_json(args.config);
+  nlohmann::json provenance = provenance_json(args.config, hash);
   provenance["seed"] = run.seed;  // the instrument's noise
-  const std::string csv_header = csv_provenance_header(provenance);
   const rig::RunObservables obs =
       rig::summarise(run.rig, samples, events, run.analysis_start_fraction * summary.end_time_s);
   nlohmann::json j = rig_summary_json(obs, summary, run.law->name(), run.rig, wall);
   j["provenance"] = provenance;
 
   if (!args.summary_only) {
+    const std::vector<double> measured = rig::measure_friction_N(run.rig, rig::instrument_from(run.friction, run.seed), samples);
+    const std::string csv_header = csv_provenance_header(provenance);
     AtomicFile trace(dir / "trace.csv");
     trace.stream() << csv_header;
     write_trace_header(trace.stream());
@@ -52,7 +52,7 @@ void run_rig(const RigArgs& args) {
     trace.commit();
     events_file.commit();
   }
-  write_file_atomically(dir / "summary.json", j.dump(2) + "\n");
+  sink("summary.json", j.dump(2) + "\n");
 
   std::printf("regime %s, period %.6g s, peak-to-peak %.6g m, mean mu_s %.4g, %ld events, %.3f s wall -> %s\n",
               obs.regime.c_str(), obs.period_s, obs.peak_to_peak_m, obs.mu_s_mean, summary.events, wall,
@@ -63,7 +63,24 @@ void run_rig(const RigArgs& args) {
   if (!summary.completed) throw std::runtime_error("rig run stopped early: " + summary.message);
 }
 
+void run_rig(const RigArgs& args) {
+  const RigRun run = load_rig_run(args.config);  // everything validated before anything is written
+  make_output_dir(args.out);
+  const std::filesystem::path dir(args.out);
+  run_rig(run, args, config_hash(args.config),
+          [&dir](const std::string& name, const std::string& text) { write_file_atomically(dir / name, text); });
+}
+
 }  // namespace
+
+void run_rig_summary(const toml::table& config, const std::filesystem::path& path, const std::string& hash,
+                     const std::string& out, const JsonSink& sink) {
+  RigArgs args;
+  args.config = path.string();
+  args.out = out;
+  args.summary_only = true;
+  run_rig(load_rig_run(config, path), args, hash, sink);
+}
 
 void add_rig_command(CLI::App& app) {
   auto args = std::make_shared<RigArgs>();

@@ -1,8 +1,10 @@
 // `tribo sweep SPEC.toml --out DIR`: a parameter study (apps/sweep_spec.h). Each point runs
-// `tribo COMMAND` in a worker process forked from the sweep (a fresh process under MPI; PointStart)
-// in DIR/points/NNNNN/ (config.toml, the command's outputs, log.txt) — or, for
-// the chain "homogenise+rig", two steps one after the other in DIR/points/NNNNN/homogenise/ and
-// .../rig/ — `jobs` points at a time with one OpenMP thread each; its row is appended to
+// `tribo COMMAND` in a worker process forked from the sweep (a fresh process under MPI; PointStart):
+// a rig, contact or reynolds point without artefacts on its config in memory, its JSON sent back
+// (no folder unless it fails: apps/sweep_point.h); any other in DIR/points/NNNNN/ (config.toml,
+// the command's outputs, log.txt) — or, for the chain "homogenise+rig", two steps one after the
+// other in DIR/points/NNNNN/homogenise/ and .../rig/ — `jobs` points at a time with one OpenMP
+// thread each; its row is appended to
 // DIR/results.csv and flushed as soon as it finishes. Started again with the same command after a
 // kill, the sweep skips the points already in results.csv (a torn last line is dropped); a changed
 // spec or base config is refused. At the end results.csv is rewritten sorted by point id.
@@ -40,6 +42,7 @@
 #include "apps/config.h"
 #include "apps/output.h"
 #include "apps/provenance.h"
+#include "apps/sweep_point.h"
 #include "apps/sweep_spec.h"
 #include "apps/sweep_workers.h"
 
@@ -148,12 +151,16 @@ std::string claim_output(const std::filesystem::path& dir, const SweepSpec& spec
   return csv_provenance_header(made);
 }
 
-std::string last_line(const std::filesystem::path& log) {
-  std::ifstream in(log);
+std::string last_line(std::istream& in) {
   std::string line, last;
   while (std::getline(in, line))
     if (!line.empty()) last = line;
   return last.empty() ? "no message" : last;
+}
+
+std::string last_line(const std::filesystem::path& log) {
+  std::ifstream in(log);
+  return last_line(in);
 }
 
 // The environment of a point process: one OpenMP thread when points run side by side, and none of
@@ -228,7 +235,9 @@ class PointPool {
   PointPool(const SweepSpec& spec, const std::vector<std::vector<double>>& points, std::filesystem::path dir, int jobs,
             PointStart how)
       : spec_(spec), points_(points), dir_(std::move(dir)), jobs_(jobs), env_(child_environment(jobs > 1)) {
-    if (how == PointStart::fork) workers_ = std::make_unique<SweepWorkers>(jobs, env_, jobs > 1);
+    if (how == PointStart::fork) workers_ = std::make_unique<SweepWorkers>(jobs, env_, jobs > 1, run_step);
+    // MPI ranks start each step as a fresh process (PointStart), which reads its config from a file.
+    in_memory_ = workers_ && !spec.artefacts && spec.steps.size() == 1 && runs_in_memory(spec.steps[0].command);
   }
 
   // Steps of cheap points queue behind each other on a worker (SweepWorkers::kQueue), so no worker
@@ -243,6 +252,17 @@ class PointPool {
 
   void start(int id) {
     const auto pdir = point_dir(dir_, id);
+    if (in_memory_) {
+      std::ostringstream config;
+      config << point_config(spec_, points_[id], 0) << "\n";
+      // Named and anchored as the file a file step would read, so that rows and errors are the same
+      // whichever way the point runs (MPI's, serial with artefacts); a failed point gets that file.
+      const auto file = pdir / "config.toml";
+      const long ticket =
+          workers_->start(in_memory_step(spec_.steps[0].command, config.str(), file, pdir.string()), "", cheap_);
+      running_[ticket] = {id, 0, std::chrono::steady_clock::now(), 0, config.str()};
+      return;
+    }
     for (std::size_t s = 0; s < spec_.steps.size(); ++s) {
       const auto sdir = pdir / step_folder(spec_, s);
       make_output_dir(sdir);
@@ -250,7 +270,7 @@ class PointPool {
       config << point_config(spec_, points_[id], s) << "\n";
       write_file_atomically(sdir / "config.toml", config.str());
     }
-    running_[launch(0, pdir, cheap_)] = {id, 0, std::chrono::steady_clock::now()};
+    running_[launch(0, pdir, cheap_)] = {id, 0, std::chrono::steady_clock::now(), 0, {}};
   }
 
   // The points finished since the last call. `block`: wait until at least one is (the pool must not
@@ -261,7 +281,7 @@ class PointPool {
       bool any = false;
       if (workers_) {
         for (const SweepWorkers::Finished& f : workers_->finished(block))
-          any = exited(f.ticket, f.wait_status, f.wall_s, done) || any;
+          any = exited(f.ticket, f.wait_status, f.wall_s, done, &f) || any;
         if (!any) break;
       } else if (block) {
         int status = 0;
@@ -290,6 +310,7 @@ class PointPool {
     std::size_t step = 0;
     std::chrono::steady_clock::time_point start;  // of the step
     double earlier_steps_s = 0;                   // a chain's finished steps' wall time
+    std::string config;                           // an in-memory point's config text
   };
 
   // Starts a step (on a worker, may queue behind another; or as a fresh process); returns the
@@ -298,12 +319,13 @@ class PointPool {
     const auto sdir = pdir / step_folder(spec_, step);
     std::vector<std::string> args = step_arguments(spec_.steps[step].command, sdir, spec_.artefacts);
     const std::string log = (sdir / "log.txt").string();
-    return workers_ ? workers_->start(args, log, queue) : spawn_step(std::move(args), log, env_);
+    return workers_ ? workers_->start(command_line_step(args), log, queue) : spawn_step(std::move(args), log, env_);
   }
 
   // Bookkeeping for a finished step (`wall_s` its own wall time, or -1: measured here, from its
-  // start): the next step, or the point's row.
-  bool exited(long handle, int status, double wall_s, std::vector<Finished>& done) {
+  // start; `worker`: what a worker sent back): the next step, or the point's row.
+  bool exited(long handle, int status, double wall_s, std::vector<Finished>& done,
+              const SweepWorkers::Finished* worker = nullptr) {
     const auto it = running_.find(handle);
     if (it == running_.end()) return false;
     const Running r = it->second;
@@ -314,13 +336,20 @@ class PointPool {
     const auto sdir = pdir / step_folder(spec_, r.step);
     std::string error, values;
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-      error = last_line(sdir / "log.txt");
+      if (in_memory_) {
+        std::istringstream log(worker->log);
+        error = last_line(log);
+      } else {
+        error = last_line(sdir / "log.txt");
+      }
       if (WIFSIGNALED(status)) error = "killed by signal " + std::to_string(WTERMSIG(status)) + " (" + strsignal(WTERMSIG(status)) + "): " + error;
       if (spec_.steps.size() > 1) error = spec_.steps[r.step].command + ": " + error;
     } else if (r.step + 1 < spec_.steps.size()) {
       // A step just ended, so a worker has room even when steps no longer queue.
-      running_[launch(r.step + 1, pdir, true)] = {r.id, r.step + 1, std::chrono::steady_clock::now(), r.earlier_steps_s + wall_s};
+      running_[launch(r.step + 1, pdir, true)] = {r.id, r.step + 1, std::chrono::steady_clock::now(), r.earlier_steps_s + wall_s, {}};
       return true;
+    } else if (in_memory_) {
+      values = in_memory_values(pdir, worker->answer, error);
     } else {
       try {
         for (const SweepOutput& o : spec_.outputs) values += "," + json_field(output_file(pdir, o), o.path);
@@ -329,6 +358,7 @@ class PointPool {
       }
     }
     const double wall = r.earlier_steps_s + wall_s;
+    if (!error.empty() && in_memory_) keep_failed_point(pdir, r.config, *worker);
     if (!error.empty()) values = std::string(spec_.outputs.size(), ',');
     std::string row = std::to_string(r.id);
     for (double v : points_[r.id]) row += "," + exact(v);
@@ -336,6 +366,37 @@ class PointPool {
            exact(wall) + values;
     done.push_back({r.id, row, !error.empty()});
     return true;
+  }
+
+  // An in-memory point's columns (",v1,v2,…") from the JSON it sent back, named as the files a
+  // file step writes; `error` gets the first missing one.
+  std::string in_memory_values(const std::filesystem::path& pdir, const std::vector<std::string>& answer,
+                               std::string& error) const {
+    std::string values;
+    try {
+      std::map<std::string, nlohmann::json> files;
+      for (std::size_t k = 0; k + 1 < answer.size(); k += 2) files[answer[k]] = nlohmann::json::parse(answer[k + 1]);
+      for (const SweepOutput& o : spec_.outputs) {
+        const auto it = files.find(o.file);
+        if (it == files.end()) throw std::runtime_error((pdir / o.file).string() + ": cannot read");
+        values += "," + json_field(it->second, pdir / o.file, o.path);
+      }
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    return values;
+  }
+
+  // A failed in-memory point's folder, as a file step leaves it: config.toml, log.txt and its JSON,
+  // so the error names files that exist and `tribo COMMAND DIR/points/NNNNN/config.toml` reruns it.
+  // Failures are few; a point that succeeds writes nothing.
+  void keep_failed_point(const std::filesystem::path& pdir, const std::string& config,
+                         const SweepWorkers::Finished& worker) const {
+    make_output_dir(pdir);
+    write_file_atomically(pdir / "config.toml", config);
+    write_file_atomically(pdir / "log.txt", worker.log);
+    for (std::size_t k = 0; k + 1 < worker.answer.size(); k += 2)
+      write_file_atomically(pdir / worker.answer[k], worker.answer[k + 1]);
   }
 
   // An output's file: in a chain "STEP/FILE" as written, else FILE of the last step that has it.
@@ -354,6 +415,7 @@ class PointPool {
   int jobs_;
   std::vector<std::string> env_;
   std::unique_ptr<SweepWorkers> workers_;  // PointStart::fork
+  bool in_memory_ = false;                 // points run on their config in memory (apps/sweep_point.h)
   bool cheap_ = false;                     // the last step took under kQueueBelow_s
   std::map<long, Running> running_;
 };

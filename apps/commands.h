@@ -2,6 +2,12 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <toml++/toml.h>
+
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <string>
 
 namespace tribo::cli {
 
@@ -18,6 +24,10 @@ void add_sweep_command(CLI::App& app);
 // through it in forked children.
 int run_command_line(int argc, char** argv);
 
+// What `tribo` does with a command's exception: prints it to stderr ("tribo: error: …" for bad
+// input, "tribo: failed: …" for a run failure) and returns the exit status (2 or 1).
+int report_failure(std::exception_ptr failure);
+
 // `--summary-only` on `tribo rig`, `contact` and `reynolds`: write the summary JSON alone, not the
 // traces or fields. `tribo sweep` passes it unless the spec asks for the points' artefacts: its
 // columns read only JSON, and on cheap points the trace's formatting and file creation are most of
@@ -26,5 +36,20 @@ inline CLI::Option* add_summary_only_flag(CLI::App* cmd, bool& summary_only, con
   return cmd->add_flag("--summary-only", summary_only,
                        std::string("write ") + summary_file + " only (no traces or fields), as `tribo sweep` does");
 }
+
+// Where a command's JSON result goes: into a file of its --out folder (the CLI), or back to a sweep
+// in memory (apps/sweep_point.h). `name` is the file's name, e.g. "summary.json".
+using JsonSink = std::function<void(const std::string& name, const std::string& text)>;
+
+// `tribo rig|contact|reynolds CONFIG --out OUT --summary-only` on a config already in memory (a
+// sweep's point): `path` names the config in errors and provenance and anchors its relative file
+// names, `hash` is its text's bytes_hash; the JSON goes to `sink` and nothing is written. stdout and
+// the errors thrown are the command's.
+void run_rig_summary(const toml::table& config, const std::filesystem::path& path, const std::string& hash,
+                     const std::string& out, const JsonSink& sink);
+void run_contact_summary(const toml::table& config, const std::filesystem::path& path, const std::string& hash,
+                         const std::string& out, const JsonSink& sink);
+void run_reynolds_summary(const toml::table& config, const std::filesystem::path& path, const std::string& hash,
+                          const std::string& out, const JsonSink& sink);
 
 }  // namespace tribo::cli

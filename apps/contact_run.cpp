@@ -19,7 +19,10 @@
 namespace tribo::cli {
 
 ContactRun load_contact_run(const std::filesystem::path& path, bool junction) {
-  const toml::table doc = parse_toml_file(path);
+  return load_contact_run(parse_toml_file(path), path, junction);
+}
+
+ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path& path, bool junction) {
   ConfigTable root(doc, path.string(), "");
   ContactRun run;
   auto surface = root.table("surface");
@@ -134,8 +137,8 @@ void apply_thread_count(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
 }
 
-nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run) {
-  nlohmann::json p = provenance_json(config);
+nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run, const std::string& hash) {
+  nlohmann::json p = hash.empty() ? provenance_json(config) : provenance_json(config, hash);
   if (run.seed) p["seed"] = *run.seed;
   return p;
 }

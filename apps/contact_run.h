@@ -10,6 +10,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <toml++/toml.h>
 #include <nlohmann/json.hpp>
 
 #include "contact/grid.h"
@@ -44,13 +45,15 @@ struct ContactRun {
 // Reads and checks `path` ([surface], [domain], [material], [load], [solver]; with `junction`,
 // also [junction]). Bad input is an InputError naming file, key and reason.
 ContactRun load_contact_run(const std::filesystem::path& path, bool junction);
+// The same on a parsed document; `path` names it in errors and anchors relative file names.
+ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path& path, bool junction);
 
 // [solver] threads caps both FFTW's threads and the OpenMP loops of the solver.
 void apply_thread_count(int threads);
 
 // The provenance block of contact.json / junction.json (after apply_thread_count, so that
-// "threads" is the count the solve uses).
-nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run);
+// "threads" is the count the solve uses). `hash`: the config's, when it is not read from `config`.
+nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run, const std::string& hash = "");
 
 struct ContactSolve {
   contact::NormalContactResult result;  // fields: pressure_Pa, gap_m, displacement_m, plastic_increment_m

@@ -32,17 +32,21 @@ bool writes_bare(const std::string& s) {
 
 }  // namespace
 
-std::string config_hash(const std::filesystem::path& config) {
-  std::ifstream in(config, std::ios::binary);
-  if (!in) throw InputError(config.string() + ": cannot read");
+std::string bytes_hash(std::string_view bytes) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (auto it = std::istreambuf_iterator<char>(in); it != std::istreambuf_iterator<char>(); ++it) {
-    h ^= static_cast<unsigned char>(*it);
+  for (char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
     h *= 0x100000001b3ULL;
   }
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
   return hex;
+}
+
+std::string config_hash(const std::filesystem::path& config) {
+  std::ifstream in(config, std::ios::binary);
+  if (!in) throw InputError(config.string() + ": cannot read");
+  return bytes_hash(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
 }
 
 void record_command_line(int argc, const char* const* argv) {

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -14,6 +15,8 @@ namespace tribo::cli {
 // FNV-1a 64-bit hash of the file's bytes, as 16 hex digits (identifies the inputs of a cached
 // result; not a cryptographic digest). Throws InputError when the file cannot be read.
 std::string config_hash(const std::filesystem::path& config);
+// The same hash of bytes in memory: a config that a sweep's point runs without writing it.
+std::string bytes_hash(std::string_view bytes);
 
 // {"tribo_version", "git_commit", "command_line" (when recorded), "config", "config_hash",
 // "date_utc", "threads"}. `git_commit` is the commit the binary was built from, with "+dirty"

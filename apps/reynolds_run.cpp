@@ -50,8 +50,9 @@ double read_speed(ConfigTable& root) {
 
 }  // namespace
 
-ReynoldsRun load_reynolds_run(const std::filesystem::path& path) {
-  const toml::table doc = parse_toml_file(path);
+ReynoldsRun load_reynolds_run(const std::filesystem::path& path) { return load_reynolds_run(parse_toml_file(path), path); }
+
+ReynoldsRun load_reynolds_run(const toml::table& doc, const std::filesystem::path& path) {
   ConfigTable root(doc, path.string(), "");
   ReynoldsRun run;
   double psi = 0.0;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include <nlohmann/json.hpp>
+#include <toml++/toml.h>
 
 #include "lubrication/flow_factors.h"
 #include "lubrication/reynolds.h"
@@ -28,6 +29,8 @@ struct ReynoldsRun {
 // Reads and checks `path` ([geometry] parallel_discs | gap_file | rough_pair, [lubricant], [motion],
 // [grid], [solver]; docs/lubrication.md). Bad input is an InputError naming file, key and reason.
 ReynoldsRun load_reynolds_run(const std::filesystem::path& path);
+// The same on a parsed document; `path` names it in errors and anchors relative file names.
+ReynoldsRun load_reynolds_run(const toml::table& doc, const std::filesystem::path& path);
 
 struct ReynoldsSolve {
   lubrication::ReynoldsSolution solution;

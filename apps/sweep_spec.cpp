@@ -289,8 +289,12 @@ std::string step_folder(const SweepSpec& spec, std::size_t step) {
 std::string json_field(const std::filesystem::path& file, const std::string& path) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file.string() + ": cannot read");
-  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (j.is_discarded()) throw std::runtime_error(file.string() + ": malformed JSON");
+  return json_field(j, file, path);
+}
+
+std::string json_field(const nlohmann::json& j, const std::filesystem::path& file, const std::string& path) {
   const nlohmann::json* at = &j;
   for (const std::string& part : split_dotted(path)) {
     if (at->is_array() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&

@@ -21,6 +21,7 @@
 //             names = [ … ] (optional) — the columns' names, one per column
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
 #include <filesystem>
@@ -80,5 +81,7 @@ std::string step_folder(const SweepSpec& spec, std::size_t step);
 // The value at `path` (dotted) of a JSON file as a CSV field (numbers with 17 digits, strings as
 // is, booleans 1/0); throws std::runtime_error naming the file and path when absent.
 std::string json_field(const std::filesystem::path& file, const std::string& path);
+// The same on the JSON already parsed; `file` names it in errors.
+std::string json_field(const nlohmann::json& json, const std::filesystem::path& file, const std::string& path);
 
 }  // namespace tribo::cli

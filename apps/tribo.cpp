@@ -7,6 +7,21 @@
 #include "apps/config.h"
 #include "apps/provenance.h"
 
+int tribo::cli::report_failure(std::exception_ptr failure) {
+  try {
+    std::rethrow_exception(failure);
+  } catch (const tribo::cli::InputError& e) {
+    std::fprintf(stderr, "tribo: error: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "tribo: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tribo: failed: %s\n", e.what());
+    return 1;
+  }
+}
+
 // The whole command line, in this process: main's body, and what a sweep's forked point runs.
 int tribo::cli::run_command_line(int argc, char** argv) {
   tribo::cli::record_command_line(argc, argv);  // into every output's provenance
@@ -31,15 +46,8 @@ int tribo::cli::run_command_line(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return 2;
-  } catch (const tribo::cli::InputError& e) {
-    std::fprintf(stderr, "tribo: error: %s\n", e.what());
-    return 2;
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "tribo: error: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "tribo: failed: %s\n", e.what());
-    return 1;
+  } catch (...) {
+    return tribo::cli::report_failure(std::current_exception());
   }
   return 0;
 }

@@ -20,11 +20,21 @@ if(NOT nfailed EQUAL 4)
   message(FATAL_ERROR "expected the 4 points with mass -1 to fail naming rig.mass_kg, found ${nfailed}")
 endif()
 
-# Per-point artefacts only on request: by default a rig point writes its summary.json alone; with
-# `[sweep] artefacts = true` it keeps trace.csv and events.csv too, and the rows are the same.
-if(NOT EXISTS ${WORK}/full/points/00000/summary.json OR EXISTS ${WORK}/full/points/00000/trace.csv
-   OR EXISTS ${WORK}/full/points/00000/events.csv)
-  message(FATAL_ERROR "a default sweep's rig point must hold summary.json and no trace.csv or events.csv")
+# Per-point files only on request: by default a rig point runs on its config in memory and leaves no
+# folder, unless it fails — then its folder holds the config.toml and log.txt its error names.
+# With `[sweep] artefacts = true` every point keeps its folder, trace.csv and events.csv included,
+# and the rows (config hashes too) are the same.
+file(GLOB point_folders LIST_DIRECTORIES true RELATIVE ${WORK}/full/points ${WORK}/full/points/*)
+if(NOT point_folders STREQUAL "00002;00005;00008;00011")
+  message(FATAL_ERROR "a default sweep must leave folders for its 4 failed points only, found: ${point_folders}")
+endif()
+file(STRINGS ${WORK}/full/points/00002/log.txt log)
+file(STRINGS ${WORK}/full/results.csv row REGEX "^2,")
+file(READ ${WORK}/full/points/00002/config.toml config)
+string(FIND "${row}" ",\"${log}\"," at)
+if(NOT log MATCHES "^tribo: error: .*/points/00002/config.toml: key 'rig.mass_kg'" OR at LESS 0
+   OR NOT config MATCHES "mass_kg = -1")
+  message(FATAL_ERROR "failed point 2: its log (${log}) must be its row's error (${row}) and its config hold mass -1:\n${config}")
 endif()
 file(READ ${WORK}/spec.toml spec)
 string(REPLACE "[sweep]\n" "[sweep]\nartefacts = true\n" spec "${spec}")

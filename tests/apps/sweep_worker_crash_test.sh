@@ -11,11 +11,10 @@ printf '[base]\ncommand = "rig"\nconfig = "rig.toml"\n[[axis]]\nkey = "run.durat
 
 "$tribo" sweep spec.toml --out out > sweep.log 2>&1 &
 sweep=$!
-# The worker: the sweep's child, once point 0 has started in it.
+# The worker: the sweep's child, forked to run point 0 (it runs in memory: no file to wait for).
 worker=""
 for _ in $(seq 100); do
   sleep 0.1
-  [ -f out/points/00000/log.txt ] || continue
   for stat in /proc/[0-9]*/stat; do
     read -r pid _ _ ppid _ < "$stat" 2>/dev/null || continue
     [ "$ppid" = "$sweep" ] && worker=$pid
@@ -31,4 +30,7 @@ echo "$rows"
 [ "$status" = 0 ] || { echo "the sweep exited with $status"; cat sweep.log; exit 1; }
 echo "$rows" | grep -q '^0,30000,failed,"killed by signal 9 ' || { echo "point 0 is not a failed row naming signal 9"; exit 1; }
 [ "$(echo "$rows" | grep -c ',ok,')" = 2 ] || { echo "points 1 and 2 must be ok"; exit 1; }
+# The killed point keeps its config to rerun by hand; the points that succeeded leave no folder.
+[ -f out/points/00000/config.toml ] && [ -f out/points/00000/log.txt ] && [ "$(ls out/points)" = 00000 ] ||
+  { echo "expected out/points/00000/{config.toml,log.txt} and no other point folder"; ls -R out/points; exit 1; }
 echo "worker crash: a failed row, and the sweep went on"
