@@ -45,11 +45,13 @@ lub::ReynoldsProblem textured(int n, lub::Cavitation cavitation) {
 }
 
 void run(benchmark::State& state, lub::Cavitation cavitation, lub::PressureSolver backend,
-         lub::CavitationPreconditioner preconditioner = lub::CavitationPreconditioner::block_triangular) {
+         lub::CavitationPreconditioner preconditioner = lub::CavitationPreconditioner::block_triangular,
+         bool structured_multigrid = true) {
   const int n = static_cast<int>(state.range(0));
   const lub::ReynoldsProblem pr = textured(n, cavitation);
   lub::ReynoldsOptions options;
   options.pressure_solver = backend;
+  options.structured_multigrid = structured_multigrid;
   options.cavitation_preconditioner = preconditioner;
   // The earlier whole-matrix AMG path: every Newton step to the full tolerance, from the full film.
   if (preconditioner == lub::CavitationPreconditioner::amg) {
@@ -89,8 +91,14 @@ void run(benchmark::State& state, lub::Cavitation cavitation, lub::PressureSolve
 void BM_ReynoldsFullFilm(benchmark::State& state) {
   run(state, lub::Cavitation::none, lub::PressureSolver::direct);
 }
+// Multigrid = PCG + PFMG (the default on this box grid); BoomerAmg = PCG + BoomerAMG, the
+// algebraic multigrid the disc domain and non-box grids use.
 void BM_ReynoldsFullFilmMultigrid(benchmark::State& state) {
   run(state, lub::Cavitation::none, lub::PressureSolver::multigrid);
+}
+void BM_ReynoldsFullFilmBoomerAmg(benchmark::State& state) {
+  run(state, lub::Cavitation::none, lub::PressureSolver::multigrid, lub::CavitationPreconditioner::block_triangular,
+      false);
 }
 // Newton steps on UMFPACK (direct) or GMRES + BoomerAMG (multigrid): the default block-triangular
 // preconditioner with inexact Newton and grid sequencing, and (WholeAmg) one V-cycle of the whole
@@ -107,6 +115,8 @@ void BM_ReynoldsCavitationMultigridWholeAmg(benchmark::State& state) {
 
 BENCHMARK(BM_ReynoldsFullFilm)->Arg(128)->Arg(256)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReynoldsFullFilmMultigrid)
+    ->Arg(128)->Arg(256)->Arg(512)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ReynoldsFullFilmBoomerAmg)
     ->Arg(128)->Arg(256)->Arg(512)->Arg(1024)->Arg(2048)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_ReynoldsCavitation)->Arg(128)->Arg(256)->Arg(512)->Unit(benchmark::kMillisecond)->Iterations(1);
 BENCHMARK(BM_ReynoldsCavitationMultigrid)

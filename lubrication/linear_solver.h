@@ -40,7 +40,8 @@ namespace tribo::lubrication {
 
 using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-enum class LinearSolverKind { cholmod, umfpack, amg_pcg, amg_gmres };
+// pfmg_pcg: structured-grid multigrid for box grids (lubrication/struct_multigrid.h).
+enum class LinearSolverKind { cholmod, umfpack, amg_pcg, amg_gmres, pfmg_pcg };
 
 std::string to_string(LinearSolverKind kind);
 
@@ -74,12 +75,14 @@ class SparseLinearSolver {
   virtual bool analyzed() const = 0;
 };
 
+// Any kind but pfmg_pcg, which needs its box (make_pfmg_solver; std::invalid_argument here).
 std::unique_ptr<SparseLinearSolver> make_linear_solver(LinearSolverKind kind,
                                                        const IterativeSolveOptions& iterative = {});
 
-// One BoomerAMG V-cycle (the settings of the AMG backends above, x₀ = 0) as a fixed linear
-// operator x ≈ A⁻¹ r, for block preconditioners that apply multigrid to one block of a larger
-// system (lubrication/cavitation_krylov.h). Same MPI/hypre runtime and mutex as the backends.
+// One BoomerAMG V-cycle (x₀ = 0) as a fixed linear operator x ≈ A⁻¹ r, for block preconditioners
+// of GMRES that apply multigrid to one block of a larger system (lubrication/cavitation_krylov.h):
+// the coarsening of the AMG backends above, aggressive on the first level, and a non-symmetric
+// cycle (forward Gauss–Seidel down, backward up) that GMRES does not mind and costs half. Same MPI/hypre runtime and mutex as the backends.
 class AmgVCycle {
  public:
   AmgVCycle();

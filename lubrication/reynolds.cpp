@@ -1,6 +1,7 @@
 #include "lubrication/reynolds.h"
 
 #include "lubrication/cavitation_krylov.h"
+#include "lubrication/struct_multigrid.h"
 
 #include <algorithm>
 #include <array>
@@ -19,11 +20,11 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // A hypre backend with the options' stopping rule (made on first use: it starts MPI).
+IterativeSolveOptions iterative_options(const ReynoldsOptions& options) {
+  return {options.multigrid_tolerance, options.multigrid_max_iterations};
+}
 std::unique_ptr<SparseLinearSolver> make_multigrid_solver(LinearSolverKind kind, const ReynoldsOptions& options) {
-  IterativeSolveOptions io;
-  io.relative_tolerance = options.multigrid_tolerance;
-  io.max_iterations = options.multigrid_max_iterations;
-  return make_linear_solver(kind, io);
+  return make_linear_solver(kind, iterative_options(options));
 }
 
 // A small residual in scientific notation (std::to_string prints 1e-10 as 0.000000).
@@ -317,6 +318,8 @@ struct ReynoldsSolver::Impl {
   std::unique_ptr<SparseLinearSolver> cholmod = make_linear_solver(LinearSolverKind::cholmod);
   std::unique_ptr<SparseLinearSolver> umfpack = make_linear_solver(LinearSolverKind::umfpack);
   std::unique_ptr<SparseLinearSolver> multigrid;        // created on first use (starts MPI and hypre)
+  std::unique_ptr<SparseLinearSolver> pfmg;             // structured multigrid of the box pfmg_box
+  BoxGrid pfmg_box;
   std::unique_ptr<SparseLinearSolver> multigrid_newton;  // GMRES + AMG for the reduced Newton system
   std::unique_ptr<CavitationKrylovSolver> block_newton;  // GMRES + block-triangular preconditioner
   std::optional<Signature> cholmod_signature, umfpack_signature;
@@ -327,6 +330,22 @@ struct ReynoldsSolver::Impl {
     if (options.pressure_solver == PressureSolver::automatic)
       return unknowns >= static_cast<std::size_t>(options.multigrid_min_unknowns);
     return options.pressure_solver == PressureSolver::multigrid;
+  }
+
+  // The unknowns of a rectangular domain as a box (build_topology numbers them row by row), when
+  // the options ask for structured multigrid and PFMG takes the box.
+  std::optional<BoxGrid> pfmg_box_of(const ReynoldsProblem& pr) const {
+    if (!options.structured_multigrid || pr.disc) return std::nullopt;
+    const bool periodic = pr.boundary_y == BoundaryY::periodic;
+    const BoxGrid box{static_cast<int>(pr.grid.nx - 2), static_cast<int>(periodic ? pr.grid.ny : pr.grid.ny - 2), periodic};
+    if (!pfmg_supports(box)) return std::nullopt;
+    return box;
+  }
+
+  // The backend solve_linear() takes for this problem with `unknowns` unknowns.
+  LinearSolverKind pressure_backend(const ReynoldsProblem& pr, std::size_t unknowns) const {
+    if (!use_multigrid(unknowns)) return LinearSolverKind::cholmod;
+    return pfmg_box_of(pr) ? LinearSolverKind::pfmg_pcg : LinearSolverKind::amg_pcg;
   }
 
   // Solves the linear (ϑ ≡ 1) problem into p (per unknown); returns the SPD system's rhs scale.
@@ -361,6 +380,18 @@ struct ReynoldsSolver::Impl {
     sig.cav = Cavitation::none;
     sig.upwind = 0;
     LinearSolveStatus s;
+    if (const std::optional<BoxGrid> box = pfmg_box_of(pr); box && use_multigrid(n)) {
+      if (!pfmg || box->ni != pfmg_box.ni || box->nj != pfmg_box.nj || box->periodic_j != pfmg_box.periodic_j) {
+        pfmg = make_pfmg_solver(*box, iterative_options(options));
+        pfmg_box = *box;
+      }
+      // PFMG's setup is cheap next to BoomerAMG's and is redone for every matrix.
+      s = pfmg->analyze(a);
+      if (s.ok) s = pfmg->factorize(a);
+      if (s.ok) s = pfmg->solve(b, p);
+      linear_s += seconds_since(t0);
+      return s;
+    }
     if (use_multigrid(n)) {
       if (!multigrid) multigrid = make_multigrid_solver(LinearSolverKind::amg_pcg, options);
       // AMG has no reusable symbolic phase: every solve sets up the hierarchy of its matrix.
@@ -502,7 +533,11 @@ struct ReynoldsSolver::Impl {
     coarse.couette_film_m = inject(pr.couette_film_m);
     // The coarse grid uses the backend its own size calls for (UMFPACK below the multigrid
     // threshold under `automatic`, which ends the recursion there), and coarsens again while it can.
-    ReynoldsSolver solver(options);
+    // The coarse answer is a start whose own discretisation error (O(dx²), ≈ 1e-4 of the
+    // pressure here) dwarfs a residual of 1e-6: a tighter coarse solve only costs its last steps.
+    ReynoldsOptions coarse_options = options;
+    coarse_options.newton_tolerance = std::max(options.newton_tolerance, options.grid_sequencing_tolerance);
+    ReynoldsSolver solver(coarse_options);
     ReynoldsSolution s = solver.solve(coarse);
     if (!s.summary.converged) return std::nullopt;
     return s;
@@ -566,7 +601,7 @@ struct ReynoldsSolver::Impl {
     sol.fill_fraction = pr.grid.field(1.0);
     ReynoldsSummary& sum = sol.summary;
     const bool multigrid_path = use_multigrid(n);
-    sum.linear_solver = multigrid_path ? to_string(LinearSolverKind::amg_pcg) : to_string(LinearSolverKind::cholmod);
+    sum.linear_solver = to_string(pressure_backend(pr, n));
 
     Eigen::VectorXd p;
     double rhs_scale = 0;
@@ -809,12 +844,13 @@ ReynoldsSolver::ReynoldsSolver(ReynoldsOptions options) : impl_(std::make_unique
       !(options.multigrid_tolerance > 0) || !(options.multigrid_tolerance < 1) ||
       options.multigrid_max_iterations < 1 || options.multigrid_min_unknowns < 0 ||
       !(options.amg_reuse_changed_fraction >= 0) || !(options.amg_reuse_changed_fraction <= 1) ||
-      !(options.max_forcing > 0) || !(options.max_forcing < 1) || options.grid_sequencing_min_nodes < 3)
+      !(options.max_forcing > 0) || !(options.max_forcing < 1) || options.grid_sequencing_min_nodes < 3 ||
+      !(options.grid_sequencing_tolerance > 0))
     throw std::invalid_argument(
         "reynolds options: need newton_tolerance > 0, max_newton_iterations >= 1, 0 < armijo_constant < 0.5, "
         "0 < min_step <= 1, 0 < multigrid_tolerance < 1, multigrid_max_iterations >= 1, "
         "multigrid_min_unknowns >= 0, 0 <= amg_reuse_changed_fraction <= 1, 0 < max_forcing < 1, "
-        "grid_sequencing_min_nodes >= 3");
+        "grid_sequencing_min_nodes >= 3, grid_sequencing_tolerance > 0");
   impl_->options = options;
 }
 ReynoldsSolver::~ReynoldsSolver() = default;

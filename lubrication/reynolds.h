@@ -140,6 +140,11 @@ struct ReynoldsOptions {
   // 96²–128² homogenisation cells that flow_factors spreads over OpenMP threads.
   PressureSolver pressure_solver = PressureSolver::automatic;
   int multigrid_min_unknowns = 40000;
+  // On the multigrid path, the full-film system of a rectangular domain is solved by PCG with
+  // hypre's structured PFMG (lubrication/struct_multigrid.h: a box grid, 5-point stencil) instead
+  // of BoomerAMG: same stopping rule, half the time at 1024² (bench/README.md). Taken when the
+  // box allows it (a periodic y needs 2^k nodes); the disc domain and other boxes stay on BoomerAMG.
+  bool structured_multigrid = true;
   // Multigrid PCG stops when ‖b − A p‖₂ ≤ multigrid_tolerance · ‖b‖₂ (true residual, checked
   // after the solve; b holds the Couette, squeeze and boundary fluxes of each cell). A solve that
   // misses it within multigrid_max_iterations is reported as not converged with that residual.
@@ -167,6 +172,9 @@ struct ReynoldsOptions {
   // fine solve meets the same tolerance (and is repeated from the full film if it fails).
   bool grid_sequencing = true;
   int grid_sequencing_min_nodes = 64;
+  // The coarse solves stop at max(newton_tolerance, grid_sequencing_tolerance): they only start
+  // the fine iteration, and the coarse grid's discretisation error is far above 1e-6.
+  double grid_sequencing_tolerance = 1e-6;
 };
 
 struct ReynoldsSummary {
@@ -175,7 +183,7 @@ struct ReynoldsSummary {
                                // solve; a grid-sequenced solve reports its coarse steps in message)
   double residual = 0.0;       // final scaled residual (see ReynoldsOptions)
   std::string message;         // why it stopped, or the SuiteSparse / hypre failure
-  std::string linear_solver;   // "cholmod" / "umfpack", or "boomeramg-pcg" / "boomeramg-gmres" (last used)
+  std::string linear_solver;   // "cholmod" / "umfpack", or "pfmg-pcg" / "boomeramg-pcg" / "boomeramg-gmres" (last used)
   double linear_solver_s = 0;  // wall time inside the linear solvers (analyse/setup + factorise + solve)
   // Multigrid path: Krylov iterations summed over the solve (PCG of the full film + GMRES of each
   // cavitation Newton step, coarse grids of grid sequencing included) and the largest relative residual ‖b − A x‖₂/‖b‖₂ they ended with

@@ -11,7 +11,7 @@
 # the date and the machine load (uptime before and after, which the tables must be read against).
 # Ratios are in process CPU time against an FFTW r2c + c2r pair measured in the same process.
 #
-# reynolds: builds bench/lubrication_bench and runs the full-film (CHOLMOD, BoomerAMG-PCG) and JFO
+# reynolds: builds bench/lubrication_bench and runs the full-film (CHOLMOD, BoomerAMG-PCG, PFMG-PCG) and JFO
 # cavitation (UMFPACK, whole-matrix AMG, block-triangular) solves at 128²…1024² (the two slow direct
 # paths and whole AMG stop at 512²: 1–2 min each), one process, and rewrites the block between
 # <!-- bench:reynolds:begin --> and <!-- bench:reynolds:end --> the same way (≈ 6 min idle).
@@ -31,7 +31,7 @@ if [ "$what" = reynolds ]; then
   load_before="$(uptime)"
   started="$(date -u '+%Y-%m-%d %H:%M UTC')"
   "$build/bench/lubrication_bench" \
-    --benchmark_filter='ReynoldsFullFilm(Multigrid)?/(128|256|512|1024)$|ReynoldsCavitation(MultigridWholeAmg)?/(128|256|512)/|ReynoldsCavitationMultigrid/(128|256|512|1024)/' \
+    --benchmark_filter='ReynoldsFullFilm(Multigrid|BoomerAmg)?/(128|256|512|1024)$|ReynoldsCavitation(MultigridWholeAmg)?/(128|256|512)/|ReynoldsCavitationMultigrid/(128|256|512|1024)/' \
     --benchmark_format=json --benchmark_out=out/bench/reynolds.json --benchmark_out_format=json >/dev/null
   load_after="$(uptime)"
   STARTED="$started" LOAD_BEFORE="$load_before" LOAD_AFTER="$load_after" python3 - <<'EOF'
@@ -52,11 +52,12 @@ def g(kind, n, key, fmt):
 out = [f"Measured {os.environ['STARTED']} by `tools/bench.sh reynolds`. Machine load — before: "
        f"`{os.environ['LOAD_BEFORE'].strip()}`; after: `{os.environ['LOAD_AFTER'].strip()}`.", "",
        "Full film (pressure only, CPU per solve; PCG stopped at ‖b − Ap‖₂ ≤ 1e-10‖b‖₂):", "",
-       "| grid | unknowns | CHOLMOD CPU | multigrid CPU | PCG iterations | multigrid unknowns per CPU s |",
+       "| grid | unknowns | CHOLMOD CPU | BoomerAMG-PCG: CPU, iterations | **PFMG-PCG**: CPU, iterations | PFMG unknowns per CPU s |",
        "|---|---|---|---|---|---|"]
 for n in (128, 256, 512, 1024):
-    out.append("| {}² | {} | {} s | {} s | {} | {} |".format(
+    out.append("| {}² | {} | {} s | {} s, {} | **{} s**, {} | {} |".format(
         n, g("ReynoldsFullFilmMultigrid", n, "unknowns", "{:.0f}"), g("ReynoldsFullFilm", n, "cpu_s", "{:.3g}"),
+        g("ReynoldsFullFilmBoomerAmg", n, "cpu_s", "{:.3g}"), g("ReynoldsFullFilmBoomerAmg", n, "pcg_iterations", "{:.0f}"),
         g("ReynoldsFullFilmMultigrid", n, "cpu_s", "{:.3g}"), g("ReynoldsFullFilmMultigrid", n, "pcg_iterations", "{:.0f}"),
         g("ReynoldsFullFilmMultigrid", n, "unknowns_per_s", "{:.3g}")))
 out += ["", "JFO cavitation (Newton steps on the finest grid; Krylov = all GMRES + PCG iterations):", "",

@@ -131,11 +131,14 @@ TEST(CavitationBlockPreconditioner, FischerBurmeisterUsesFactorisedTransportBloc
   EXPECT_NEAR(mg.cavitated_fraction, direct.cavitated_fraction, 1e-12);
 }
 
-// Krylov iterations per Newton step (every step to 1e-10) stay below a bound that grows by at most
-// 1.4× from 128² to 256², and below the whole-matrix AMG preconditioner's 35 and 51.
+// Krylov iterations per Newton step (every step to 1e-10) stay below the whole-matrix AMG
+// preconditioner's 35 and 51 (bench/README.md) and grow by at most 1.4× from 128² to 256². (With
+// a symmetric Gauss–Seidel cycle on S they were 24.5 and 31; the cheaper forward/backward cycle of
+// AmgVCycle needs 33 and 40, each iteration costing about half.)
 TEST(CavitationBlockPreconditioner, FewKrylovIterationsPerNewtonStep) {
   const int grids[] = {128, 256};
-  const double bound[] = {30.0, 42.0};
+  const double bound[] = {35.0, 51.0};
+  double per_step_of[2] = {0, 0};
   for (int g = 0; g < 2; ++g) {
     // Without grid sequencing, so that every Krylov iteration belongs to a counted Newton step.
     const ReynoldsSolution s = solve_reynolds(textured(grids[g]), block_options(false, false));
@@ -145,7 +148,9 @@ TEST(CavitationBlockPreconditioner, FewKrylovIterationsPerNewtonStep) {
     std::printf("  %d^2: %d Newton steps, %.1f Krylov iterations per step (bound %.0f)\n", grids[g],
                 s.summary.iterations, per_step, bound[g]);
     EXPECT_LE(per_step, bound[g]);
+    per_step_of[g] = per_step;
   }
+  EXPECT_LE(per_step_of[1], 1.4 * per_step_of[0]);
 }
 
 // A small system with the reduced Newton structure: a 1-D line of 30 unknowns, sliding along +x —
@@ -185,8 +190,10 @@ TEST(CavitationKrylovSolver, SolvesSmallSystemToTolerance) {
   ASSERT_TRUE(s.ok) << s.message;
   EXPECT_LE((b - a * x).norm(), 1e-12 * b.norm());
   EXPECT_LE(s.relative_residual, 1e-12);
-  // With the exact Schur complement of this 1-D line the preconditioner is exact up to AMG on S.
-  EXPECT_LE(s.iterations, 10);
+  // With the exact Schur complement of this 1-D line the preconditioner is exact up to one V-cycle
+  // on S (hypre relaxes rather than solves its coarsest level): 12 iterations with AmgVCycle's
+  // forward/backward cycle, at most half the 30 that unpreconditioned GMRES may need.
+  EXPECT_LE(s.iterations, 15);
   // The same split again reuses the hierarchy.
   ASSERT_TRUE(solver.setup(a, split).ok);
   EXPECT_EQ(solver.amg_setups(), 1);

@@ -1,5 +1,6 @@
-// Multigrid full-film Reynolds solve (BoomerAMG-preconditioned CG, lubrication/linear_solver.h)
-// against the direct CHOLMOD path, which stays the reference.
+// Multigrid full-film Reynolds solve (CG preconditioned by hypre's structured PFMG on box grids,
+// lubrication/struct_multigrid.h, or by BoomerAMG elsewhere, lubrication/linear_solver.h) against
+// the direct CHOLMOD path, which stays the reference.
 //
 // Tolerance. PCG stops at ‖b − A p‖₂ ≤ τ‖b‖₂; with A e = r for the error e = p_mg − p and
 // ‖b‖₂ ≤ ‖A‖₂‖p‖₂ this gives ‖e‖₂/‖p‖₂ ≤ κ(A)·τ (the direct solution's own error, κ·ε_machine,
@@ -40,10 +41,11 @@ double relative_error_bound(const ReynoldsProblem& pr, double tolerance, double 
   return lambda_max / lambda_min * tolerance;
 }
 
-ReynoldsOptions with(PressureSolver backend, double tolerance = 1e-10) {
+ReynoldsOptions with(PressureSolver backend, double tolerance = 1e-10, bool structured = true) {
   ReynoldsOptions o;
   o.pressure_solver = backend;
   o.multigrid_tolerance = tolerance;
+  o.structured_multigrid = structured;
   return o;
 }
 
@@ -58,21 +60,23 @@ double relative_difference(const ReynoldsSolution& a, const ReynoldsSolution& b)
   return std::sqrt(num / den);
 }
 
-// Solves with both backends; checks the multigrid summary and that the pressures agree to the
-// bound. Returns the observed relative difference.
-double expect_agreement(const ReynoldsProblem& pr, double tolerance, double theta_min) {
+// Solves directly and by multigrid (structured where the grid allows it, unless `structured` is
+// false); checks that the multigrid backend is `backend` and that the pressures agree to the bound.
+// Returns the observed relative difference.
+double expect_agreement(const ReynoldsProblem& pr, double tolerance, double theta_min, const std::string& backend,
+                        bool structured = true) {
   const ReynoldsSolution direct = solve_reynolds(pr, with(PressureSolver::direct));
-  const ReynoldsSolution mg = solve_reynolds(pr, with(PressureSolver::multigrid, tolerance));
+  const ReynoldsSolution mg = solve_reynolds(pr, with(PressureSolver::multigrid, tolerance, structured));
   EXPECT_TRUE(direct.summary.converged) << direct.summary.message;
   EXPECT_TRUE(mg.summary.converged) << mg.summary.message;
   EXPECT_EQ(direct.summary.linear_solver, "cholmod");
-  EXPECT_EQ(mg.summary.linear_solver, "boomeramg-pcg");
+  EXPECT_EQ(mg.summary.linear_solver, backend);
   EXPECT_GT(mg.summary.linear_iterations, 0);
   EXPECT_LE(mg.summary.linear_residual, tolerance);
   const double bound = relative_error_bound(pr, tolerance, theta_min);
   const double diff = relative_difference(mg, direct);
-  std::printf("  %d x %d nodes: %d PCG iterations, residual %.2e, |p_mg - p|/|p| = %.2e (bound %.2e)\n",
-              static_cast<int>(pr.grid.nx), static_cast<int>(pr.grid.ny), mg.summary.linear_iterations,
+  std::printf("  %d x %d nodes, %s: %d PCG iterations, residual %.2e, |p_mg - p|/|p| = %.2e (bound %.2e)\n",
+              static_cast<int>(pr.grid.nx), static_cast<int>(pr.grid.ny), backend.c_str(), mg.summary.linear_iterations,
               mg.summary.linear_residual, diff, bound);
   EXPECT_LE(diff, bound);
   // The load is Σ w p with node weights w ≤ dx·dy: |ΔW| ≤ ‖w‖₂‖p_mg − p‖₂ (Cauchy–Schwarz).
@@ -87,7 +91,7 @@ double expect_agreement(const ReynoldsProblem& pr, double tolerance, double thet
 // The benchmark film: h = h₀(1 + 0.4 cos(2πx/λ) cos(2πy/λ)), λ = L/4, sliding at 1 m/s, periodic
 // in y, ambient at x = 0 and L; (n + 1) × n nodes. Half of every dimple diverges (sub-ambient
 // pressure without cavitation).
-ReynoldsProblem textured(int n, Cavitation cavitation = Cavitation::none) {
+ReynoldsProblem textured(int n, Cavitation cavitation = Cavitation::none, BoundaryY boundary_y = BoundaryY::periodic) {
   ReynoldsProblem pr;
   const double length = 1e-3, wavelength = length / 4;
   pr.grid = contact::Grid{n + 1, n, length / n, length / n};
@@ -98,13 +102,14 @@ ReynoldsProblem textured(int n, Cavitation cavitation = Cavitation::none) {
                                          std::cos(2 * std::numbers::pi * j * pr.grid.dy_m / wavelength));
   pr.viscosity_Pa_s = kEta;
   pr.sliding_speed_m_per_s = 1.0;
-  pr.boundary_y = BoundaryY::periodic;
+  pr.boundary_y = boundary_y;
   pr.cavitation = cavitation;
   return pr;
 }
 
 // Inclined pad of reynolds_test (Hamrock et al. §8.4), h = h₀(1 + K(1 − x/L)), K = 1.5: a 1-D
-// film (ny = 3, periodic) whose conductance varies 15× along x.
+// film (ny = 3, periodic) whose conductance varies 15× along x. A period of 3 nodes is not one
+// PFMG can halve, so this box goes to BoomerAMG.
 TEST(MultigridPressure, AgreesWithDirectOnInclinedPad) {
   const double length = 5e-3, h0 = 2e-6, k = 1.5;
   ReynoldsProblem pr;
@@ -116,20 +121,28 @@ TEST(MultigridPressure, AgreesWithDirectOnInclinedPad) {
   pr.viscosity_Pa_s = kEta;
   pr.sliding_speed_m_per_s = 1.0;
   pr.boundary_y = BoundaryY::periodic;
-  expect_agreement(pr, 1e-10, 1.0);
+  expect_agreement(pr, 1e-10, 1.0, "boomeramg-pcg");
 }
 
 // Squeeze film between parallel discs (thesis App. III): the masked domain with Gibou cut links
 // at the rim. The rim links widen the κ bound by 1/θ_min = 10³, so τ = 1e-12 here.
 TEST(MultigridPressure, AgreesWithDirectOnParallelDiscs) {
   const ReynoldsProblem pr = parallel_discs_problem(4.7625e-3, 1e-6, -1e-6, kEta, 0.3, 83);
-  expect_agreement(pr, 1e-12, 1e-3);
+  expect_agreement(pr, 1e-12, 1e-3, "boomeramg-pcg");
 }
 
-// A genuinely 2-D film with sub-ambient regions, on an odd and an even grid.
+// A genuinely 2-D film with sub-ambient regions, on an odd and an even grid: periodic in y with a
+// period of 2^6 nodes (PFMG, and BoomerAMG when asked) or of 97 (not halvable: BoomerAMG).
 TEST(MultigridPressure, AgreesWithDirectOnTexturedFilm) {
-  expect_agreement(textured(64), 1e-10, 1.0);
-  expect_agreement(textured(97), 1e-10, 1.0);
+  expect_agreement(textured(64), 1e-10, 1.0, "pfmg-pcg");
+  expect_agreement(textured(64), 1e-10, 1.0, "boomeramg-pcg", false);
+  expect_agreement(textured(97), 1e-10, 1.0, "boomeramg-pcg");
+}
+
+// Ambient in y (p = 0 on y = 0 and Ly): a box of any size is PFMG's; odd and even node counts.
+TEST(MultigridPressure, StructuredAgreesWithDirectOnOddAndEvenBoxes) {
+  expect_agreement(textured(64, Cavitation::none, BoundaryY::ambient), 1e-10, 1.0, "pfmg-pcg");
+  expect_agreement(textured(97, Cavitation::none, BoundaryY::ambient), 1e-10, 1.0, "pfmg-pcg");
 }
 
 // JFO cavitation: on the multigrid path the full film is solved by AMG-PCG and every reduced
@@ -157,25 +170,29 @@ TEST(MultigridPressure, CavitationAgreesWithDirect) {
   }
 }
 
-// A multigrid solve stopped before its tolerance is reported, never returned as an answer.
+// A multigrid solve stopped before its tolerance is reported, never returned as an answer (PFMG
+// and BoomerAMG alike).
 TEST(MultigridPressure, NonConvergenceIsReportedWithItsResidual) {
-  ReynoldsOptions o = with(PressureSolver::multigrid, 1e-14);
-  o.multigrid_max_iterations = 1;
-  const ReynoldsSolution s = solve_reynolds(textured(64), o);
-  EXPECT_FALSE(s.summary.converged);
-  EXPECT_EQ(s.summary.linear_iterations, 1);
-  EXPECT_GT(s.summary.linear_residual, 1e-14);
-  EXPECT_EQ(s.summary.residual, s.summary.linear_residual);
-  EXPECT_NE(s.summary.message.find("relative residual"), std::string::npos) << s.summary.message;
+  for (const bool structured : {true, false}) {
+    ReynoldsOptions o = with(PressureSolver::multigrid, 1e-14, structured);
+    o.multigrid_max_iterations = 1;
+    const ReynoldsSolution s = solve_reynolds(textured(64), o);
+    EXPECT_EQ(s.summary.linear_solver, structured ? "pfmg-pcg" : "boomeramg-pcg");
+    EXPECT_FALSE(s.summary.converged);
+    EXPECT_EQ(s.summary.linear_iterations, 1);
+    EXPECT_GT(s.summary.linear_residual, 1e-14);
+    EXPECT_EQ(s.summary.residual, s.summary.linear_residual);
+    EXPECT_NE(s.summary.message.find("relative residual"), std::string::npos) << s.summary.message;
+  }
 }
 
-// automatic: CHOLMOD below multigrid_min_unknowns, multigrid from there on.
+// automatic: CHOLMOD below multigrid_min_unknowns, multigrid from there on (PFMG on this box).
 TEST(MultigridPressure, AutomaticChoosesByGridSize) {
   const ReynoldsProblem pr = textured(32);  // 31 × 32 unknowns
   EXPECT_EQ(solve_reynolds(pr).summary.linear_solver, "cholmod");
   ReynoldsOptions o;
   o.multigrid_min_unknowns = 31 * 32;
-  EXPECT_EQ(solve_reynolds(pr, o).summary.linear_solver, "boomeramg-pcg");
+  EXPECT_EQ(solve_reynolds(pr, o).summary.linear_solver, "pfmg-pcg");
   o.multigrid_min_unknowns = 31 * 32 + 1;
   EXPECT_EQ(solve_reynolds(pr, o).summary.linear_solver, "cholmod");
 }
