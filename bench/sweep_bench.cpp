@@ -1,8 +1,8 @@
 // `tribo sweep` costs (issue 17): what the sweep adds per point beyond the point's own process, and
 // the throughput of many cheap rig points on 1 and 2 cores. Everything runs the real
 // `tribo` executable (TRIBO_EXE), as a user would: what a point costs beyond its work is the
-// sweep's machinery (worker processes, files, rows), which an in-process stand-in would not measure.
-//   build-sweep/bench/sweep_bench --benchmark_counters_tabular=true
+// sweep's machinery (worker processes, messages, rows), which an in-process stand-in would not measure.
+//   build/bench/sweep_bench --benchmark_counters_tabular=true --benchmark_repetitions=6
 #include <benchmark/benchmark.h>
 
 #include <fcntl.h>
@@ -28,14 +28,15 @@ namespace {
 namespace fs = std::filesystem;
 
 // Points per sweep. The overhead pair runs kPoints direct `tribo rig` processes too (≈ 15–20 ms
-// each); the throughput sweeps run kThroughputPoints, "many cheap points" (issue 17): at ≈ 1–2 ms a
-// point on a worker, the sweep's own start-up and final sort (≈ 40–60 ms whatever the jobs) are
-// then ≈ 2 % of a one-job sweep instead of ≈ 20 % at 200 points.
+// each); the throughput sweeps run kThroughputPoints, "many cheap points" (issue 17): at ≈ 0.5 ms of
+// CPU a point in memory on a worker, the sweep's own start-up and final sort (≈ 20–30 ms whatever
+// the jobs) are then ≈ 2–3 % of a one-job sweep instead of ≈ 20 % at 200 points.
 constexpr int kPoints = 200;
 constexpr int kThroughputPoints = 2000;
 
 // A cheap rig point: Coulomb stick-slip for 0.5 s of rig time (≈ the cheapest useful point). Its
-// direct runs write summary.json only, as the sweep's points do (`--summary-only`).
+// direct runs write summary.json only (`--summary-only`), the least a process run can; the sweep's
+// points run on their config in memory and write nothing.
 fs::path workdir() {
   const fs::path dir = fs::temp_directory_path() / "tribo_sweep_bench";
   fs::create_directories(dir);
