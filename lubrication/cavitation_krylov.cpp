@@ -1,8 +1,8 @@
 #include "lubrication/cavitation_krylov.h"
+#include "numerics/format.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <queue>
 #include <string>
 #include <utility>
@@ -26,14 +26,6 @@ void multiply(const RowMatrix& a, const Eigen::VectorXd& x, Eigen::VectorXd& y) 
     for (int k = outer[i]; k < outer[i + 1]; ++k) s += value[k] * x[inner[k]];
     y[i] = s;
   }
-}
-
-LinearSolveStatus failure(std::string message) { return {false, std::move(message)}; }
-
-std::string scientific(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3e", v);
-  return text;
 }
 
 }  // namespace
@@ -126,9 +118,9 @@ bool CavitationKrylovSolver::triangular_transport_block() const { return impl_->
 LinearSolveStatus CavitationKrylovSolver::setup(const SparseMatrix& matrix, const std::vector<char>& is_pressure) {
   Impl& m = *impl_;
   if (matrix.rows() != matrix.cols() || matrix.rows() == 0)
-    return failure("block-triangular GMRES: matrix is not square or empty");
+    return solve_failure("block-triangular GMRES: matrix is not square or empty");
   if (is_pressure.size() != static_cast<std::size_t>(matrix.rows()))
-    return failure("block-triangular GMRES: split has the wrong size");
+    return solve_failure("block-triangular GMRES: split has the wrong size");
   const int n = static_cast<int>(matrix.rows());
   const bool same_size = m.n == n;
   m.n = n;
@@ -165,8 +157,8 @@ LinearSolveStatus CavitationKrylovSolver::setup(const SparseMatrix& matrix, cons
       diagonal_sum += std::abs(diagonal);
       ++pressure_rows;
     } else if (!(std::isfinite(diagonal) && diagonal != 0.0)) {
-      return failure("block-triangular GMRES: cavitated unknown " + std::to_string(i) +
-                     " has transport diagonal " + scientific(diagonal) + " (no upwind outflow)");
+      return solve_failure("block-triangular GMRES: cavitated unknown " + std::to_string(i) +
+                     " has transport diagonal " + numerics::fmt(diagonal, "%.3e") + " (no upwind outflow)");
     }
   }
   const double filler = pressure_rows > 0 ? diagonal_sum / pressure_rows : 1.0;
@@ -274,7 +266,7 @@ LinearSolveStatus CavitationKrylovSolver::setup(const SparseMatrix& matrix, cons
     if (!m.block_lu) m.block_lu = make_linear_solver(LinearSolverKind::umfpack);
     s = m.block_lu->analyze(m.block);  // the block's pattern changes with the split
     if (s.ok) s = m.block_lu->factorize(m.block);
-    if (!s.ok) return failure("block-triangular GMRES: transport block: " + s.message);
+    if (!s.ok) return solve_failure("block-triangular GMRES: transport block: " + s.message);
   }
   return {};
 }
@@ -282,8 +274,8 @@ LinearSolveStatus CavitationKrylovSolver::setup(const SparseMatrix& matrix, cons
 LinearSolveStatus CavitationKrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                                 double relative_tolerance) {
   Impl& m = *impl_;
-  if (m.n == 0 || !m.amg.ready()) return failure("block-triangular GMRES: solve() before setup()");
-  if (b.size() != m.n) return failure("block-triangular GMRES: right-hand side has the wrong size");
+  if (m.n == 0 || !m.amg.ready()) return solve_failure("block-triangular GMRES: solve() before setup()");
+  if (b.size() != m.n) return solve_failure("block-triangular GMRES: right-hand side has the wrong size");
   x = Eigen::VectorXd::Zero(m.n);
   const double b_norm = b.norm();
   if (b_norm == 0.0) return {};
@@ -356,8 +348,8 @@ LinearSolveStatus CavitationKrylovSolver::solve(const Eigen::VectorXd& b, Eigen:
     if (iterations >= m.options.max_iterations || k == 0) break;
   }
   status.ok = false;
-  status.message = "block-triangular GMRES: relative residual " + scientific(status.relative_residual) + " after " +
-                   std::to_string(iterations) + " iterations, tolerance " + scientific(relative_tolerance);
+  status.message = "block-triangular GMRES: relative residual " + numerics::fmt(status.relative_residual, "%.3e") + " after " +
+                   std::to_string(iterations) + " iterations, tolerance " + numerics::fmt(relative_tolerance, "%.3e");
   return status;
 }
 

@@ -4,12 +4,12 @@
 #include <umfpack.h>
 
 #include "lubrication/hypre_runtime.h"  // before hypre's other headers (mpi.h first)
+#include "numerics/format.h"
 #include <HYPRE.h>
 #include <HYPRE_IJ_mv.h>
 #include <HYPRE_parcsr_ls.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <mutex>
 #include <numeric>
@@ -35,15 +35,6 @@ namespace {
 using detail::hypre_error;
 using detail::hypre_runtime;
 using detail::start_hypre_locked;
-
-LinearSolveStatus failure(std::string message) { return {false, std::move(message)}; }
-
-// A small residual or tolerance in scientific notation (std::to_string prints 1e-10 as 0.000000).
-std::string scientific(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3e", v);
-  return text;
-}
 
 // A non-owning cholmod_sparse view of an Eigen compressed column matrix.
 cholmod_sparse view_of(const SparseMatrix& a, int stype) {
@@ -83,23 +74,23 @@ class CholmodSolver final : public SparseLinearSolver {
     if (factor_) cholmod_free_factor(&factor_, &common_);
     cholmod_sparse view = view_of(a, -1);  // lower triangle holds the symmetric matrix
     factor_ = cholmod_analyze(&view, &common_);
-    if (!factor_ || common_.status != CHOLMOD_OK) return failure("cholmod_analyze failed, status " + std::to_string(common_.status));
+    if (!factor_ || common_.status != CHOLMOD_OK) return solve_failure("cholmod_analyze failed, status " + std::to_string(common_.status));
     return {};
   }
 
   LinearSolveStatus factorize(const SparseMatrix& a) override {
-    if (!factor_) return failure("cholmod: factorize() before analyze()");
+    if (!factor_) return solve_failure("cholmod: factorize() before analyze()");
     cholmod_sparse view = view_of(a, -1);
     const int ok = cholmod_factorize(&view, factor_, &common_);
     if (!ok || common_.status == CHOLMOD_NOT_POSDEF)
-      return failure("cholmod_factorize: matrix not positive definite (status " + std::to_string(common_.status) +
+      return solve_failure("cholmod_factorize: matrix not positive definite (status " + std::to_string(common_.status) +
                      ", column " + std::to_string(factor_->minor) + ")");
-    if (common_.status != CHOLMOD_OK) return failure("cholmod_factorize failed, status " + std::to_string(common_.status));
+    if (common_.status != CHOLMOD_OK) return solve_failure("cholmod_factorize failed, status " + std::to_string(common_.status));
     return {};
   }
 
   LinearSolveStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    if (!factor_) return failure("cholmod: solve() before factorize()");
+    if (!factor_) return solve_failure("cholmod: solve() before factorize()");
     cholmod_dense rhs{};
     rhs.nrow = static_cast<size_t>(b.size());
     rhs.ncol = 1;
@@ -111,7 +102,7 @@ class CholmodSolver final : public SparseLinearSolver {
     cholmod_dense* sol = cholmod_solve(CHOLMOD_A, factor_, &rhs, &common_);
     if (!sol || common_.status != CHOLMOD_OK) {
       if (sol) cholmod_free_dense(&sol, &common_);
-      return failure("cholmod_solve failed, status " + std::to_string(common_.status));
+      return solve_failure("cholmod_solve failed, status " + std::to_string(common_.status));
     }
     x = Eigen::Map<Eigen::VectorXd>(static_cast<double*>(sol->x), b.size());
     cholmod_free_dense(&sol, &common_);
@@ -145,13 +136,13 @@ class UmfpackSolver final : public SparseLinearSolver {
                                            a.innerIndexPtr(), a.valuePtr(), &symbolic_, control_, info_);
     if (status != UMFPACK_OK) {
       symbolic_ = nullptr;
-      return failure("umfpack_di_symbolic failed, status " + std::to_string(status));
+      return solve_failure("umfpack_di_symbolic failed, status " + std::to_string(status));
     }
     return {};
   }
 
   LinearSolveStatus factorize(const SparseMatrix& a) override {
-    if (!symbolic_) return failure("umfpack: factorize() before analyze()");
+    if (!symbolic_) return solve_failure("umfpack: factorize() before analyze()");
     if (numeric_) umfpack_di_free_numeric(&numeric_);
     const int status =
         umfpack_di_numeric(a.outerIndexPtr(), a.innerIndexPtr(), a.valuePtr(), symbolic_, &numeric_, control_, info_);
@@ -159,7 +150,7 @@ class UmfpackSolver final : public SparseLinearSolver {
       // UMFPACK_WARNING_singular_matrix still returns a factor, but a solve with it is meaningless.
       if (numeric_) umfpack_di_free_numeric(&numeric_);
       numeric_ = nullptr;
-      return failure("umfpack_di_numeric failed, status " + std::to_string(status) +
+      return solve_failure("umfpack_di_numeric failed, status " + std::to_string(status) +
                      (status == UMFPACK_WARNING_singular_matrix ? " (singular matrix)" : ""));
     }
     matrix_ = &a;
@@ -167,11 +158,11 @@ class UmfpackSolver final : public SparseLinearSolver {
   }
 
   LinearSolveStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    if (!numeric_ || !matrix_) return failure("umfpack: solve() before factorize()");
+    if (!numeric_ || !matrix_) return solve_failure("umfpack: solve() before factorize()");
     x.resize(b.size());
     const int status = umfpack_di_solve(UMFPACK_A, matrix_->outerIndexPtr(), matrix_->innerIndexPtr(),
                                         matrix_->valuePtr(), x.data(), b.data(), numeric_, control_, info_);
-    if (status != UMFPACK_OK) return failure("umfpack_di_solve failed, status " + std::to_string(status));
+    if (status != UMFPACK_OK) return solve_failure("umfpack_di_solve failed, status " + std::to_string(status));
     return {};
   }
 
@@ -208,7 +199,7 @@ class AmgKrylovSolver final : public SparseLinearSolver {
 
   // AMG has no symbolic phase separate from its setup; only the size is recorded.
   LinearSolveStatus analyze(const SparseMatrix& a) override {
-    if (a.rows() != a.cols()) return failure(std::string(name()) + ": matrix is not square");
+    if (a.rows() != a.cols()) return solve_failure(std::string(name()) + ": matrix is not square");
     n_ = static_cast<int>(a.rows());
     indices_.resize(static_cast<std::size_t>(n_));
     std::iota(indices_.begin(), indices_.end(), HYPRE_BigInt{0});
@@ -218,12 +209,12 @@ class AmgKrylovSolver final : public SparseLinearSolver {
 
   // Copies A into a hypre ParCSR matrix and runs the BoomerAMG setup (coarse grids, interpolation).
   LinearSolveStatus factorize(const SparseMatrix& a) override {
-    if (!analyzed_) return failure(std::string(name()) + ": factorize() before analyze()");
+    if (!analyzed_) return solve_failure(std::string(name()) + ": factorize() before analyze()");
     if (a.rows() != n_ || a.cols() != n_)
-      return failure(std::string(name()) + ": matrix size differs from the analysed one");
+      return solve_failure(std::string(name()) + ": matrix size differs from the analysed one");
     matrix_ = &a;
     std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
-    if (std::string e = start_hypre_locked(); !e.empty()) return failure(e);
+    if (std::string e = start_hypre_locked(); !e.empty()) return solve_failure(e);
     release_locked();
     // hypre takes rows: the transpose of the column-major A is its row-major form (A is
     // symmetric for this backend, but the copy stays correct for any A).
@@ -295,15 +286,15 @@ class AmgKrylovSolver final : public SparseLinearSolver {
   }
 
   LinearSolveStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    if (!krylov_ || !matrix_) return failure(std::string(name()) + ": solve() before factorize()");
-    if (b.size() != n_) return failure(std::string(name()) + ": right-hand side has the wrong size");
+    if (!krylov_ || !matrix_) return solve_failure(std::string(name()) + ": solve() before factorize()");
+    if (b.size() != n_) return solve_failure(std::string(name()) + ": right-hand side has the wrong size");
     x = Eigen::VectorXd::Zero(n_);
     const double b_norm = b.norm();
     if (b_norm == 0.0) return {};  // x = 0 solves A x = 0 exactly
     int iterations = 0;
     {
       std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
-      if (hypre_runtime().finalized) return failure(std::string(name()) + ": hypre already finalised");
+      if (hypre_runtime().finalized) return solve_failure(std::string(name()) + ": hypre already finalised");
       HYPRE_Int e;
       if (LinearSolveStatus s = set_vector_locked(ij_b_, &par_b_, b); !s.ok) return s;
       if (LinearSolveStatus s = set_vector_locked(ij_x_, &par_x_, x); !s.ok) return s;
@@ -312,21 +303,21 @@ class AmgKrylovSolver final : public SparseLinearSolver {
       // HYPRE_ERROR_CONV only says the tolerance was not met: judged below from the true residual.
       if (e & HYPRE_ERROR_CONV) HYPRE_ClearError(HYPRE_ERROR_CONV);
       if (e & ~HYPRE_ERROR_CONV)
-        return failure(hypre_error(symmetric_ ? "HYPRE_ParCSRPCGSolve" : "HYPRE_ParCSRGMRESSolve", e));
+        return solve_failure(hypre_error(symmetric_ ? "HYPRE_ParCSRPCGSolve" : "HYPRE_ParCSRGMRESSolve", e));
       HYPRE_Int its = 0;
       e = symmetric_ ? HYPRE_PCGGetNumIterations(krylov_, &its) : HYPRE_GMRESGetNumIterations(krylov_, &its);
-      if (e) return failure(hypre_error("HYPRE_*GetNumIterations", e));
+      if (e) return solve_failure(hypre_error("HYPRE_*GetNumIterations", e));
       iterations = static_cast<int>(its);
       if ((e = HYPRE_IJVectorGetValues(ij_x_, n_, indices_.data(), x.data())))
-        return failure(hypre_error("HYPRE_IJVectorGetValues", e));
+        return solve_failure(hypre_error("HYPRE_IJVectorGetValues", e));
     }
     LinearSolveStatus s;
     s.iterations = iterations;
     s.relative_residual = (b - *matrix_ * x).norm() / b_norm;
     if (!std::isfinite(s.relative_residual) || s.relative_residual > options_.relative_tolerance) {
       s.ok = false;
-      s.message = std::string(name()) + ": relative residual " + scientific(s.relative_residual) + " after " +
-                  std::to_string(iterations) + " iterations, tolerance " + scientific(options_.relative_tolerance);
+      s.message = std::string(name()) + ": relative residual " + numerics::fmt(s.relative_residual, "%.3e") + " after " +
+                  std::to_string(iterations) + " iterations, tolerance " + numerics::fmt(options_.relative_tolerance, "%.3e");
     }
     return s;
   }
@@ -335,29 +326,29 @@ class AmgKrylovSolver final : public SparseLinearSolver {
   LinearSolveStatus set_vector_locked(HYPRE_IJVector ij, HYPRE_ParVector* par, const Eigen::VectorXd& v) {
     HYPRE_Int e;
     if ((e = HYPRE_IJVectorSetValues(ij, n_, indices_.data(), v.data())))
-      return failure(hypre_error("HYPRE_IJVectorSetValues", e));
-    if ((e = HYPRE_IJVectorAssemble(ij))) return failure(hypre_error("HYPRE_IJVectorAssemble", e));
+      return solve_failure(hypre_error("HYPRE_IJVectorSetValues", e));
+    if ((e = HYPRE_IJVectorAssemble(ij))) return solve_failure(hypre_error("HYPRE_IJVectorAssemble", e));
     void* object = nullptr;
-    if ((e = HYPRE_IJVectorGetObject(ij, &object))) return failure(hypre_error("HYPRE_IJVectorGetObject", e));
+    if ((e = HYPRE_IJVectorGetObject(ij, &object))) return solve_failure(hypre_error("HYPRE_IJVectorGetObject", e));
     *par = static_cast<HYPRE_ParVector>(object);
     return {};
   }
   LinearSolveStatus make_vector_locked(HYPRE_IJVector* ij, HYPRE_ParVector* par) {
     HYPRE_Int e;
     const HYPRE_BigInt last = n_ - 1;
-    if ((e = HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, last, ij))) return failure(hypre_error("HYPRE_IJVectorCreate", e));
+    if ((e = HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, last, ij))) return solve_failure(hypre_error("HYPRE_IJVectorCreate", e));
     if ((e = HYPRE_IJVectorSetObjectType(*ij, HYPRE_PARCSR)))
-      return failure(hypre_error("HYPRE_IJVectorSetObjectType", e));
-    if ((e = HYPRE_IJVectorInitialize(*ij))) return failure(hypre_error("HYPRE_IJVectorInitialize", e));
-    if ((e = HYPRE_IJVectorAssemble(*ij))) return failure(hypre_error("HYPRE_IJVectorAssemble", e));
+      return solve_failure(hypre_error("HYPRE_IJVectorSetObjectType", e));
+    if ((e = HYPRE_IJVectorInitialize(*ij))) return solve_failure(hypre_error("HYPRE_IJVectorInitialize", e));
+    if ((e = HYPRE_IJVectorAssemble(*ij))) return solve_failure(hypre_error("HYPRE_IJVectorAssemble", e));
     void* object = nullptr;
-    if ((e = HYPRE_IJVectorGetObject(*ij, &object))) return failure(hypre_error("HYPRE_IJVectorGetObject", e));
+    if ((e = HYPRE_IJVectorGetObject(*ij, &object))) return solve_failure(hypre_error("HYPRE_IJVectorGetObject", e));
     *par = static_cast<HYPRE_ParVector>(object);
     return {};
   }
   LinearSolveStatus release_with(std::string message) {
     release_locked();
-    return failure(std::move(message));
+    return solve_failure(std::move(message));
   }
   // Frees every hypre object (mutex held). After finalisation at exit they are left to the OS.
   void release_locked() {
@@ -483,17 +474,17 @@ bool AmgVCycle::ready() const { return impl_ && impl_->amg != nullptr; }
 int AmgVCycle::size() const { return impl_ ? impl_->n : 0; }
 
 LinearSolveStatus AmgVCycle::setup(const SparseMatrix& a) {
-  if (a.rows() != a.cols() || a.rows() == 0) return failure("boomeramg v-cycle: matrix is not square or empty");
+  if (a.rows() != a.cols() || a.rows() == 0) return solve_failure("boomeramg v-cycle: matrix is not square or empty");
   Impl& m = *impl_;
   std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
-  if (std::string e = start_hypre_locked(); !e.empty()) return failure(e);
+  if (std::string e = start_hypre_locked(); !e.empty()) return solve_failure(e);
   m.release_locked();
   m.n = static_cast<int>(a.rows());
   m.indices.resize(static_cast<std::size_t>(m.n));
   std::iota(m.indices.begin(), m.indices.end(), HYPRE_BigInt{0});
   auto fail = [&](std::string message) {
     m.release_locked();
-    return failure(std::move(message));
+    return solve_failure(std::move(message));
   };
   if (std::string e = make_parcsr_locked(a, m.indices, &m.setup_ij, &m.setup_par); !e.empty()) return fail(e);
   m.fine_ij = m.setup_ij;
@@ -527,38 +518,38 @@ LinearSolveStatus AmgVCycle::setup(const SparseMatrix& a) {
 
 LinearSolveStatus AmgVCycle::update_fine_matrix(const SparseMatrix& a) {
   Impl& m = *impl_;
-  if (!m.amg) return failure("boomeramg v-cycle: update_fine_matrix() before setup()");
-  if (a.rows() != m.n || a.cols() != m.n) return failure("boomeramg v-cycle: matrix size differs from the set-up one");
+  if (!m.amg) return solve_failure("boomeramg v-cycle: update_fine_matrix() before setup()");
+  if (a.rows() != m.n || a.cols() != m.n) return solve_failure("boomeramg v-cycle: matrix size differs from the set-up one");
   std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
-  if (hypre_runtime().finalized) return failure("boomeramg v-cycle: hypre already finalised");
+  if (hypre_runtime().finalized) return solve_failure("boomeramg v-cycle: hypre already finalised");
   m.release_fine_locked();
   if (std::string e = make_parcsr_locked(a, m.indices, &m.fine_ij, &m.fine_par); !e.empty()) {
     m.fine_ij = m.setup_ij;  // the hierarchy's own matrix stays usable
     m.fine_par = m.setup_par;
-    return failure(e);
+    return solve_failure(e);
   }
   return {};
 }
 
 LinearSolveStatus AmgVCycle::apply(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
   Impl& m = *impl_;
-  if (!m.amg) return failure("boomeramg v-cycle: apply() before setup()");
-  if (r.size() != m.n) return failure("boomeramg v-cycle: vector has the wrong size");
+  if (!m.amg) return solve_failure("boomeramg v-cycle: apply() before setup()");
+  if (r.size() != m.n) return solve_failure("boomeramg v-cycle: vector has the wrong size");
   x.setZero(m.n);
   std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
-  if (hypre_runtime().finalized) return failure("boomeramg v-cycle: hypre already finalised");
+  if (hypre_runtime().finalized) return solve_failure("boomeramg v-cycle: hypre already finalised");
   HYPRE_Int e;
   if ((e = HYPRE_IJVectorSetValues(m.ij_b, m.n, m.indices.data(), r.data())))
-    return failure(hypre_error("HYPRE_IJVectorSetValues", e));
+    return solve_failure(hypre_error("HYPRE_IJVectorSetValues", e));
   if ((e = HYPRE_IJVectorSetValues(m.ij_x, m.n, m.indices.data(), x.data())))
-    return failure(hypre_error("HYPRE_IJVectorSetValues", e));
-  if ((e = HYPRE_IJVectorAssemble(m.ij_b))) return failure(hypre_error("HYPRE_IJVectorAssemble", e));
-  if ((e = HYPRE_IJVectorAssemble(m.ij_x))) return failure(hypre_error("HYPRE_IJVectorAssemble", e));
+    return solve_failure(hypre_error("HYPRE_IJVectorSetValues", e));
+  if ((e = HYPRE_IJVectorAssemble(m.ij_b))) return solve_failure(hypre_error("HYPRE_IJVectorAssemble", e));
+  if ((e = HYPRE_IJVectorAssemble(m.ij_x))) return solve_failure(hypre_error("HYPRE_IJVectorAssemble", e));
   // One cycle with tolerance 0 always ends with HYPRE_ERROR_CONV unset (no residual is computed).
   if ((e = HYPRE_BoomerAMGSolve(m.amg, m.fine_par, m.par_b, m.par_x)))
-    return failure(hypre_error("HYPRE_BoomerAMGSolve", e));
+    return solve_failure(hypre_error("HYPRE_BoomerAMGSolve", e));
   if ((e = HYPRE_IJVectorGetValues(m.ij_x, m.n, m.indices.data(), x.data())))
-    return failure(hypre_error("HYPRE_IJVectorGetValues", e));
+    return solve_failure(hypre_error("HYPRE_IJVectorGetValues", e));
   return {};
 }
 

@@ -35,6 +35,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace tribo::lubrication {
 
@@ -59,6 +60,9 @@ struct LinearSolveStatus {
   int iterations = 0;              // Krylov iterations of an iterative solve (0 for direct)
   double relative_residual = 0.0;  // ‖b − A x‖₂ / ‖b‖₂ after an iterative solve
 };
+
+// A failed status carrying `message`.
+inline LinearSolveStatus solve_failure(std::string message) { return {false, std::move(message)}; }
 
 class SparseLinearSolver {
  public:

@@ -2,12 +2,12 @@
 
 #include "lubrication/cavitation_krylov.h"
 #include "lubrication/struct_multigrid.h"
+#include "numerics/format.h"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <deque>
 #include <sstream>
 #include <stdexcept>
@@ -25,13 +25,6 @@ IterativeSolveOptions iterative_options(const ReynoldsOptions& options) {
 }
 std::unique_ptr<SparseLinearSolver> make_multigrid_solver(LinearSolverKind kind, const ReynoldsOptions& options) {
   return make_linear_solver(kind, iterative_options(options));
-}
-
-// A small residual in scientific notation (std::to_string prints 1e-10 as 0.000000).
-std::string scientific(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3e", v);
-  return text;
 }
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("reynolds: " + what); }
@@ -625,7 +618,7 @@ struct ReynoldsSolver::Impl {
     sum.iterations = 1;
     sum.residual = s.relative_residual;
     sum.message = multigrid_path ? "linear solve (no cavitation), multigrid PCG: " + std::to_string(s.iterations) +
-                                       " iterations, relative residual " + scientific(s.relative_residual)
+                                       " iterations, relative residual " + numerics::fmt(s.relative_residual, "%.3e")
                                  : "linear solve (no cavitation)";
     // The linear solution satisfies the complementarity conditions wherever it is ≥ 0; only a
     // sub-ambient pressure calls for the Newton solve.

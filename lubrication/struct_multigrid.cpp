@@ -1,11 +1,10 @@
 #include "lubrication/struct_multigrid.h"
 
 #include "lubrication/hypre_runtime.h"  // first: mpi.h before hypre's headers
+#include "numerics/format.h"
 #include <HYPRE_struct_ls.h>
 
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <utility>
 #include <vector>
 
@@ -15,14 +14,6 @@ namespace {
 using detail::hypre_error;
 using detail::hypre_runtime;
 using detail::start_hypre_locked;
-
-LinearSolveStatus failure(std::string message) { return {false, std::move(message)}; }
-
-std::string scientific(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3e", v);
-  return text;
-}
 
 // The 5-point stencil: centre, west, east, south, north (offsets in i, j).
 constexpr int kStencilSize = 5;
@@ -45,21 +36,21 @@ class PfmgPcgSolver final : public SparseLinearSolver {
   LinearSolveStatus analyze(const SparseMatrix& a) override {
     analyzed_ = false;
     if (!pfmg_supports(box_))
-      return failure("pfmg-pcg: box " + std::to_string(box_.ni) + " x " + std::to_string(box_.nj) +
+      return solve_failure("pfmg-pcg: box " + std::to_string(box_.ni) + " x " + std::to_string(box_.nj) +
                      (box_.periodic_j ? " (periodic in j)" : "") + " is not one PFMG takes");
     const long n = static_cast<long>(box_.ni) * box_.nj;
     if (a.rows() != n || a.cols() != n)
-      return failure("pfmg-pcg: matrix is " + std::to_string(a.rows()) + " x " + std::to_string(a.cols()) +
+      return solve_failure("pfmg-pcg: matrix is " + std::to_string(a.rows()) + " x " + std::to_string(a.cols()) +
                      ", the box has " + std::to_string(n) + " unknowns");
     analyzed_ = true;
     return {};
   }
 
   LinearSolveStatus factorize(const SparseMatrix& a) override {
-    if (!analyzed_) return failure("pfmg-pcg: factorize() before analyze()");
+    if (!analyzed_) return solve_failure("pfmg-pcg: factorize() before analyze()");
     matrix_ = nullptr;  // no solve() with an earlier hierarchy if this one fails
     if (a.rows() != static_cast<long>(box_.ni) * box_.nj || a.cols() != a.rows())
-      return failure("pfmg-pcg: matrix size differs from the analysed one");
+      return solve_failure("pfmg-pcg: matrix size differs from the analysed one");
     // Stencil values per box point, the layout HYPRE_StructMatrixSetBoxValues reads (i fastest).
     const std::size_t n = static_cast<std::size_t>(a.rows());
     std::vector<double> values(kStencilSize * n, 0.0);
@@ -68,19 +59,19 @@ class PfmgPcgSolver final : public SparseLinearSolver {
         const int r = a.innerIndexPtr()[k];
         const int s = stencil_slot(r, c);
         if (s < 0)
-          return failure("pfmg-pcg: entry (" + std::to_string(r) + ", " + std::to_string(c) +
+          return solve_failure("pfmg-pcg: entry (" + std::to_string(r) + ", " + std::to_string(c) +
                          ") is not a 5-point coupling on the box");
         values[kStencilSize * static_cast<std::size_t>(r) + static_cast<std::size_t>(s)] += a.valuePtr()[k];
       }
     matrix_ = &a;
 
     std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
-    if (std::string e = start_hypre_locked(); !e.empty()) return failure(e);
+    if (std::string e = start_hypre_locked(); !e.empty()) return solve_failure(e);
     release_locked();
     auto fail = [&](const char* routine, HYPRE_Int code) {
       std::string m = hypre_error(routine, code);
       release_locked();
-      return failure(m);
+      return solve_failure(m);
     };
     HYPRE_Int lower[2] = {0, 0}, upper[2] = {box_.ni - 1, box_.nj - 1};
     HYPRE_Int periodic[2] = {0, box_.periodic_j ? box_.nj : 0};
@@ -132,38 +123,38 @@ class PfmgPcgSolver final : public SparseLinearSolver {
   }
 
   LinearSolveStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) override {
-    if (!pcg_ || !matrix_) return failure("pfmg-pcg: solve() before factorize()");
-    if (b.size() != matrix_->rows()) return failure("pfmg-pcg: right-hand side has the wrong size");
+    if (!pcg_ || !matrix_) return solve_failure("pfmg-pcg: solve() before factorize()");
+    if (b.size() != matrix_->rows()) return solve_failure("pfmg-pcg: right-hand side has the wrong size");
     x = Eigen::VectorXd::Zero(b.size());
     const double b_norm = b.norm();
     if (b_norm == 0.0) return {};  // x = 0 solves A x = 0 exactly
     int iterations = 0;
     {
       std::lock_guard<std::mutex> lock(hypre_runtime().mutex);
-      if (hypre_runtime().finalized) return failure("pfmg-pcg: hypre already finalised");
+      if (hypre_runtime().finalized) return solve_failure("pfmg-pcg: hypre already finalised");
       HYPRE_Int lower[2] = {0, 0}, upper[2] = {box_.ni - 1, box_.nj - 1};
       HYPRE_Int e;
       if ((e = HYPRE_StructVectorSetBoxValues(b_, lower, upper, const_cast<double*>(b.data()))))
-        return failure(hypre_error("HYPRE_StructVectorSetBoxValues", e));
+        return solve_failure(hypre_error("HYPRE_StructVectorSetBoxValues", e));
       if ((e = HYPRE_StructVectorSetBoxValues(x_, lower, upper, x.data())))
-        return failure(hypre_error("HYPRE_StructVectorSetBoxValues", e));
+        return solve_failure(hypre_error("HYPRE_StructVectorSetBoxValues", e));
       e = HYPRE_StructPCGSolve(pcg_, matrix_hypre_, b_, x_);
       // HYPRE_ERROR_CONV only says the tolerance was not met: judged below from the true residual.
       if (e & HYPRE_ERROR_CONV) HYPRE_ClearError(HYPRE_ERROR_CONV);
-      if (e & ~HYPRE_ERROR_CONV) return failure(hypre_error("HYPRE_StructPCGSolve", e));
+      if (e & ~HYPRE_ERROR_CONV) return solve_failure(hypre_error("HYPRE_StructPCGSolve", e));
       HYPRE_Int its = 0;
-      if ((e = HYPRE_StructPCGGetNumIterations(pcg_, &its))) return failure(hypre_error("HYPRE_StructPCGGetNumIterations", e));
+      if ((e = HYPRE_StructPCGGetNumIterations(pcg_, &its))) return solve_failure(hypre_error("HYPRE_StructPCGGetNumIterations", e));
       iterations = static_cast<int>(its);
       if ((e = HYPRE_StructVectorGetBoxValues(x_, lower, upper, x.data())))
-        return failure(hypre_error("HYPRE_StructVectorGetBoxValues", e));
+        return solve_failure(hypre_error("HYPRE_StructVectorGetBoxValues", e));
     }
     LinearSolveStatus s;
     s.iterations = iterations;
     s.relative_residual = (b - *matrix_ * x).norm() / b_norm;
     if (!std::isfinite(s.relative_residual) || s.relative_residual > options_.relative_tolerance) {
       s.ok = false;
-      s.message = "pfmg-pcg: relative residual " + scientific(s.relative_residual) + " after " +
-                  std::to_string(iterations) + " iterations, tolerance " + scientific(options_.relative_tolerance);
+      s.message = "pfmg-pcg: relative residual " + numerics::fmt(s.relative_residual, "%.3e") + " after " +
+                  std::to_string(iterations) + " iterations, tolerance " + numerics::fmt(options_.relative_tolerance, "%.3e");
     }
     return s;
   }
