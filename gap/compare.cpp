@@ -124,6 +124,28 @@ double window_mean(const std::vector<double>& t, const std::vector<double>& y, d
 // Steady μ of a drive segment [t_a, t_b]: the mean over its last 30 %, after the transient.
 double steady_mu(const Signal& s, double t_a, double t_b) { return window_mean(s.t, s.mu, t_b - 0.3 * (t_b - t_a), t_b); }
 
+// Scatter of y about its least-squares line over [t_a, t_b], less the sensor's white noise:
+// √max(0, var_detrended − noise²). A drift across the window is not scatter; stick-slip, ringing
+// or a slowly wandering level are. NaN with fewer than three samples.
+double excess_scatter(const std::vector<double>& t, const std::vector<double>& y, double t_a, double t_b, double noise) {
+  double n = 0, st = 0, sy = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t_a && t[i] <= t_b) ++n, st += t[i], sy += y[i];
+  if (n < 3) return kNaN;
+  const double tm = st / n, ym = sy / n;
+  double stt = 0, sty = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t_a && t[i] <= t_b) stt += (t[i] - tm) * (t[i] - tm), sty += (t[i] - tm) * (y[i] - ym);
+  const double slope = stt > 0 ? sty / stt : 0.0;
+  double var = 0;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t_a && t[i] <= t_b) {
+      const double r = y[i] - ym - slope * (t[i] - tm);
+      var += r * r;
+    }
+  return std::sqrt(std::max(0.0, var / n - noise * noise));
+}
+
 // Trapezoidal time average of y over [a, b] (t_front ≤ a < b ≤ t_back), ends interpolated.
 double time_average(const std::vector<double>& t, const std::vector<double>& y, double a, double b) {
   double area = 0.0, t_prev = a, y_prev = interp(t, y, a);
@@ -367,12 +389,21 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
     }
     steady[k] = steady_mu(s, a, b);
     f["steady_mu_" + std::to_string(k)] = steady[k];
+    // The same window's scatter: a record that slides steadily there has only its noise (and slow
+    // wander); a model that stick-slips or rings there has the oscillation. The record's white
+    // noise is taken off (sample_noise, 0 for a simulation, which has none).
+    const double from = b - 0.3 * (b - a);
+    f["steady_scatter_" + std::to_string(k)] = excess_scatter(s.t, s.mu, from, b, sample_noise);
     if (noise) {
-      std::vector<double> parts;
-      const double from = b - 0.3 * (b - a), width = (b - from) / kNoiseBlocks;
-      for (int j = 0; j < kNoiseBlocks; ++j)
-        if (const double m = window_mean(s.t, s.mu, from + j * width, from + (j + 1) * width); std::isfinite(m)) parts.push_back(m);
+      std::vector<double> parts, scatters;
+      const double width = (b - from) / kNoiseBlocks;
+      for (int j = 0; j < kNoiseBlocks; ++j) {
+        const double lo = from + j * width, hi = from + (j + 1) * width;
+        if (const double m = window_mean(s.t, s.mu, lo, hi); std::isfinite(m)) parts.push_back(m);
+        if (const double e = excess_scatter(s.t, s.mu, lo, hi, sample_noise); std::isfinite(e)) scatters.push_back(e);
+      }
       (*noise)["steady_mu_" + std::to_string(k)] = standard_error(parts);
+      (*noise)["steady_scatter_" + std::to_string(k)] = standard_error(scatters);
     }
   }
   for (std::size_t k = 1; k < segments; ++k) {
@@ -431,7 +462,7 @@ std::string phase_of(const std::string& observable, int index, const std::string
   if (observable == "slip_drop") return index <= 2 ? "slip transient" : "late slip";
   if (observable == "mu_trough") return "slip end";
   if (observable == "rise_time_s") return "stick";
-  if (observable == "steady_mu") return "stable slip";
+  if (observable == "steady_mu" || observable == "steady_scatter") return "stable slip";
   if (observable == "peak_after_hold") return "slip onset after hold";
   if (observable == "mu_after_step") return index < kStepBins / 2 ? "slip transient after step" : "stable slip after step";
   if (observable == "mean_mu" && regime == "steady_sliding") return "stable slip";
@@ -696,6 +727,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     return static_cast<int>(unit_keys.size()) - 1;
   };
   const double W = bundle.normal_load_N.value_or(rig.normal_load_N);
+  double scatter_floor = 0.0;  // largest sample noise of the drive-history records (steady_scatter's scale)
   std::vector<std::size_t> order(bundle.runs.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return bundle.runs[a].v_m_per_s < bundle.runs[b].v_m_per_s; });
@@ -766,9 +798,15 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       plans_.push_back(plan);
       for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
         const std::string key = "steady_mu_" + std::to_string(k);
-        if (f.count(key) && std::isfinite(f.at(key)))
-          add("steady_mu", 0, plan.label + ", v = " + numerics::fmt(plan.step_speeds_m_per_s[k], "%.3g") + " m/s", "steady_sliding",
-              plan.step_speeds_m_per_s[k], new_unit(UnitKey::own()), f.at(key), key, noise);
+        if (f.count(key) && std::isfinite(f.at(key))) {
+          const std::string where = plan.label + ", v = " + numerics::fmt(plan.step_speeds_m_per_s[k], "%.3g") + " m/s";
+          const int unit = new_unit(UnitKey::own());
+          add("steady_mu", 0, where, "steady_sliding", plan.step_speeds_m_per_s[k], unit, f.at(key), key, noise);
+          const std::string scatter_key = "steady_scatter_" + std::to_string(k);
+          if (f.count(scatter_key) && std::isfinite(f.at(scatter_key)))
+            add("steady_scatter", 0, where, "steady_sliding", plan.step_speeds_m_per_s[k], unit, f.at(scatter_key), scatter_key, noise);
+          scatter_floor = std::max(scatter_floor, high_pass_noise(s.mu));
+        }
         const std::string peak_key = "peak_after_hold_" + std::to_string(k);
         if (f.count(peak_key) && std::isfinite(f.at(peak_key))) {
           const double t_hold = plan.step_times_s[k + 1] - plan.step_times_s[k];
@@ -873,7 +911,10 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
   for (const Item& it : items_) {
     if (std::any_of(scales_.begin(), scales_.end(), [&](const auto& s) { return s.first == it.observable; })) continue;
     const auto& acc = sq.at(is_friction_level(it.observable) ? std::string(kFrictionLevel) : it.observable);
-    const double rms = std::sqrt(acc.first / acc.second);
+    double rms = std::sqrt(acc.first / acc.second);
+    // A record that slides as steadily as its noise allows has no scatter to scale by: its
+    // sensor noise is the yardstick then (a model's oscillation is judged against it).
+    if (it.observable == "steady_scatter") rms = std::max(rms, scatter_floor);
     scales_.emplace_back(it.observable, rms > 0.0 ? rms : 1.0);
   }
   if (const double noise = median_relative_noise(); noise > 0.0)
@@ -914,6 +955,10 @@ std::vector<double> Comparison::residuals(const std::vector<double>& simulated) 
   for (std::size_t i = 0; i < items_.size(); ++i) {
     const Item& it = items_[i];
     r[i] = std::isfinite(simulated[i]) ? (simulated[i] - it.measured) / scale_of.at(it.observable) : 1.0;
+    // A steady window's scatter is a ceiling: a model that oscillates more than the record
+    // fluctuates misses; one that slides more steadily than the record's slow wander (which no
+    // friction law in the catalogue makes) does not.
+    if (it.observable == "steady_scatter") r[i] = std::max(r[i], 0.0);
   }
   return r;
 }

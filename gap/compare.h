@@ -21,6 +21,11 @@
 //   regime_mismatch    0 when the simulated regime is the measured one, else 1 (regimes.csv)
 //   amplitude_m, frequency_rad_per_s  from regimes.csv
 //   steady_mu          μ over the last 30 % of each drive segment (velocity steps)
+//   steady_scatter     the scatter of μ about its trend line in that window, less the record's
+//                      white noise: ≈ 0 for steady sliding, the oscillation for a model that
+//                      stick-slips or rings there (scaled by max(RMS of the measured scatters,
+//                      the record's noise), so such a model cannot pass for a steady record); a
+//                      ceiling: only a simulated scatter above the measured one is a residual
 //   mu_after_step      μ − μ_before-step, averaged over bins of load-point displacement after a
 //                      step between two slides (bins finer near the step)
 //   peak_after_hold    the peak of μ on re-sliding after a hold (slide-hold-slide) above the steady
@@ -33,8 +38,8 @@
 // state (the contact's age) carried through the holds.
 // Noise: a constant-speed run's analysis window is also cut into four contiguous blocks, each
 // analysed as a run of its own; an item's noise is the blocks' standard deviation / √blocks. A
-// step bin's is the record's high-pass noise / √(samples in the bin); a steady level's the
-// scatter of four sub-window means / 2.
+// step bin's is the record's high-pass noise / √(samples in the bin); a steady level's (and a
+// steady scatter's) the scatter of the four sub-windows' values / 2.
 // Runs use the part of the trace after the start-up window (rig::analysis_start_s), with μ
 // averaged over ±2 measured sample spacings in time; extrema are the maxima and minima of that
 // smoothed μ, located between samples, and an extremum cut by the window's start is left out.

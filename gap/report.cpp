@@ -80,7 +80,8 @@ nlohmann::json report_json(const Diagnosis& d) {
   json j;
   j["gap_definition"] =
       "r_i = (simulated_i - measured_i) / s_o with s_o the RMS of the measured values of observable o (for friction levels - mu_peak, "
-      "mu_trough, mean_mu, mu_s_vs_load_rate, steady_mu - the RMS of all measured levels); r_i = 1 where the simulation lacks the "
+      "mu_trough, mean_mu, mu_s_vs_load_rate, steady_mu - the RMS of all measured levels; for steady_scatter at least the record's "
+      "noise, and only a simulated scatter above the measured one counts: r_i = max(r_i, 0)); r_i = 1 where the simulation lacks the "
       "feature; gap_o = sqrt(mean r_i^2) over the items of o; gap = mean over observables of gap_o";
   j["baseline"] = breakdown_json(d.baseline);
   j["baseline"]["heldout"] = breakdown_json(d.baseline_heldout);

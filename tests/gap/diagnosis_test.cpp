@@ -284,6 +284,47 @@ TEST(Comparison, StepResponseReadsPeakStiffnessAndDecayDistance) {
   EXPECT_NEAR(s.decay_distance_m, decay, 0.2e-6);  // two samples
 }
 
+// A drive segment's steady window (its last 30 %) gives a level and a scatter. The record: μ = 0.6
+// with white noise σ = 3e-4 (100 Hz) and, in the 10 µm/s segment, a slow wander of amplitude 1e-3
+// (period 5 s, three periods in the window). The scatter is the excess over the noise the record's
+// second differences give: ≈ 0 before the step, 1e-3/√2 after it (a sine's RMS; the trend line
+// takes little of three periods). For a simulation, which has no sensor noise, it is the whole
+// scatter: ≈ 0 for a Coulomb model with μs = μk, which slides steadily, and after the step (where
+// the contact re-locks and breaks away) the stick-slip sawtooth for μs = 0.62 > μk = 0.58, whose
+// first segment starts in steady sliding at μk and stays there. The residual is a ceiling: the
+// steady model is not blamed for the wander, the stick-slipping one misses by many times the scale
+// (here the measured scatters' RMS).
+TEST(Comparison, SteadyScatterIsTheRecordsExcessOverItsNoiseAndACeilingForTheModel) {
+  ExperimentBundle b = velocity_step_bundle([](double) { return 0.0; });
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> noise(0.0, 3e-4);
+  gap::Trace& tr = b.runs[0].trace;
+  for (std::size_t i = 0; i < tr.t_s.size(); ++i)
+    tr.mu[i] += noise(rng) + (tr.t_s[i] > 20.0 ? 1e-3 * std::sin(2.0 * M_PI * tr.t_s[i] / 5.0) : 0.0);
+  const rig::RigParameters rig;
+  const Comparison c(b, rig);
+  std::vector<std::size_t> scatter;
+  for (std::size_t i = 0; i < c.items().size(); ++i)
+    if (c.items()[i].observable == "steady_scatter") scatter.push_back(i);
+  ASSERT_EQ(scatter.size(), 2u);
+  const double before = c.items()[scatter[0]].measured, after = c.items()[scatter[1]].measured;
+  EXPECT_LT(before, 1e-4);  // a third of σ: what is left of pure noise after its own estimate
+  EXPECT_NEAR(after, 1e-3 / std::sqrt(2.0), 0.1 * 1e-3 / std::sqrt(2.0));
+  EXPECT_NEAR(c.scale("steady_scatter"), std::sqrt(0.5 * (before * before + after * after)), 1e-12);
+
+  const std::vector<double> steady = c.predict(rig, rig::coulomb(0.6, 0.6), 1);
+  const std::vector<double> stick_slip = c.predict(rig, rig::coulomb(0.62, 0.58), 1);
+  const std::vector<double> r_steady = c.residuals(steady), r_stick_slip = c.residuals(stick_slip);
+  for (std::size_t i : scatter) {
+    EXPECT_LT(steady[i], 1e-6) << c.items()[i].where;
+    EXPECT_EQ(r_steady[i], 0.0) << c.items()[i].where;
+  }
+  EXPECT_LT(stick_slip[scatter[0]], 1e-6);
+  EXPECT_EQ(r_stick_slip[scatter[0]], 0.0);
+  EXPECT_GT(stick_slip[scatter[1]], 5e-3);
+  EXPECT_GT(r_stick_slip[scatter[1]], 5.0);
+}
+
 // Held-out data are blocks (issue 15). At constant speed a run and the static point read off it
 // (φ̇ = k v / W) are one block, so a held-out speed is one nothing was trained at; blocks alternate
 // in order of speed. After a velocity step the bins go in contiguous blocks of three, so a held-out

@@ -64,7 +64,17 @@ TEST(Diagnosis, VelocityStepCalibratesStiffnessAndDampingAndNamesTheSlipTransien
   o.candidates = {"slip_transient", "viscous_friction", "strain_rate_hardening"};
   const Diagnosis d = diagnose(b, rig::RigParameters{}, rig::coulomb(0.62, 0.6), o);
   ASSERT_EQ(verdict_name(d.verdict.effects), "slip_transient") << report_json(d)["candidates"].dump(1);
-  EXPECT_EQ(d.localization.front().observable, "mu_after_step");
+  // The calibrated Coulomb baseline needs μs > μk for a peak after the step, and then stick-slips at
+  // 10 µm/s where the truth slides steadily: its misses all lie after the step — the transient's
+  // bins and the steady window's scatter — none before it.
+  double after_step = 0.0, transient = 0.0;
+  for (const auto& l : d.localization) {
+    if (l.where.find("high v") != std::string::npos) after_step += l.share;
+    if (l.observable == "mu_after_step" && l.where.find("slip transient after step") != std::string::npos) transient += l.share;
+  }
+  const std::string where = report_json(d)["localization"].dump(1);
+  EXPECT_GT(after_step, 0.99) << where;
+  EXPECT_GT(transient, 0.2) << where;
   EXPECT_LT(d.verdict.heldout_gap_after, 0.5 * d.verdict.heldout_gap_before);
   // D_c within a factor 1.5 of the truth: noise 3e-4 on a 0.011 peak, eight LM iterations.
   const double dc = d.candidates.front().params.at("slip_transient.decay_distance_m");
