@@ -794,6 +794,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       }
       Features noise;
       const Features f = analyse_drive_history(s, plan, &plan.step_bin_edges_m, &noise);
+      const double record_noise = high_pass_noise(s.mu);
       if (!std::isfinite(step_response_.peak_rise)) step_response_ = read_step_response(s, plan, W);
       plans_.push_back(plan);
       for (std::size_t k = 0; k < plan.step_times_s.size(); ++k) {
@@ -805,7 +806,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
           const std::string scatter_key = "steady_scatter_" + std::to_string(k);
           if (f.count(scatter_key) && std::isfinite(f.at(scatter_key)))
             add("steady_scatter", 0, where, "steady_sliding", plan.step_speeds_m_per_s[k], unit, f.at(scatter_key), scatter_key, noise);
-          scatter_floor = std::max(scatter_floor, high_pass_noise(s.mu));
+          scatter_floor = std::max(scatter_floor, record_noise);
         }
         const std::string peak_key = "peak_after_hold_" + std::to_string(k);
         if (f.count(peak_key) && std::isfinite(f.at(peak_key))) {

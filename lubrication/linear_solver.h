@@ -86,7 +86,8 @@ std::unique_ptr<SparseLinearSolver> make_linear_solver(LinearSolverKind kind,
 // One BoomerAMG V-cycle (x₀ = 0) as a fixed linear operator x ≈ A⁻¹ r, for block preconditioners
 // of GMRES that apply multigrid to one block of a larger system (lubrication/cavitation_krylov.h):
 // the coarsening of the AMG backends above, aggressive on the first level, and a non-symmetric
-// cycle (forward Gauss–Seidel down, backward up) that GMRES does not mind and costs half. Same MPI/hypre runtime and mutex as the backends.
+// cycle (forward Gauss–Seidel down, backward up) that GMRES does not mind and costs half. Same
+// MPI/hypre runtime and mutex as the backends.
 class AmgVCycle {
  public:
   AmgVCycle();

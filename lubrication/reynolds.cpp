@@ -19,10 +19,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// A hypre backend with the options' stopping rule (made on first use: it starts MPI).
+// The options' stopping rule for the iterative (hypre) backends.
 IterativeSolveOptions iterative_options(const ReynoldsOptions& options) {
   return {options.multigrid_tolerance, options.multigrid_max_iterations};
 }
+// A hypre backend with that rule (made on first use: it starts MPI).
 std::unique_ptr<SparseLinearSolver> make_multigrid_solver(LinearSolverKind kind, const ReynoldsOptions& options) {
   return make_linear_solver(kind, iterative_options(options));
 }
@@ -341,6 +342,20 @@ struct ReynoldsSolver::Impl {
     return pfmg_box_of(pr) ? LinearSolverKind::pfmg_pcg : LinearSolverKind::amg_pcg;
   }
 
+  // The structured multigrid of `box` (made again when the box changes) and the BoomerAMG-PCG
+  // backend, both made on first use.
+  SparseLinearSolver& pfmg_for(const BoxGrid& box) {
+    if (!pfmg || box.ni != pfmg_box.ni || box.nj != pfmg_box.nj || box.periodic_j != pfmg_box.periodic_j) {
+      pfmg = make_pfmg_solver(box, iterative_options(options));
+      pfmg_box = box;
+    }
+    return *pfmg;
+  }
+  SparseLinearSolver& amg_pcg() {
+    if (!multigrid) multigrid = make_multigrid_solver(LinearSolverKind::amg_pcg, options);
+    return *multigrid;
+  }
+
   // Solves the linear (ϑ ≡ 1) problem into p (per unknown); returns the SPD system's rhs scale.
   // With multigrid, a solve that misses its tolerance returns ok = false with its iterate in p.
   LinearSolveStatus solve_linear(const ReynoldsProblem& pr, const Topology& t, Eigen::VectorXd& p, double& rhs_scale) {
@@ -373,24 +388,13 @@ struct ReynoldsSolver::Impl {
     sig.cav = Cavitation::none;
     sig.upwind = 0;
     LinearSolveStatus s;
-    if (const std::optional<BoxGrid> box = pfmg_box_of(pr); box && use_multigrid(n)) {
-      if (!pfmg || box->ni != pfmg_box.ni || box->nj != pfmg_box.nj || box->periodic_j != pfmg_box.periodic_j) {
-        pfmg = make_pfmg_solver(*box, iterative_options(options));
-        pfmg_box = *box;
-      }
-      // PFMG's setup is cheap next to BoomerAMG's and is redone for every matrix.
-      s = pfmg->analyze(a);
-      if (s.ok) s = pfmg->factorize(a);
-      if (s.ok) s = pfmg->solve(b, p);
-      linear_s += seconds_since(t0);
-      return s;
-    }
-    if (use_multigrid(n)) {
-      if (!multigrid) multigrid = make_multigrid_solver(LinearSolverKind::amg_pcg, options);
-      // AMG has no reusable symbolic phase: every solve sets up the hierarchy of its matrix.
-      s = multigrid->analyze(a);
-      if (s.ok) s = multigrid->factorize(a);
-      if (s.ok) s = multigrid->solve(b, p);
+    if (const LinearSolverKind kind = pressure_backend(pr, n); kind != LinearSolverKind::cholmod) {
+      // Multigrid has no reusable symbolic phase: every solve sets up the hierarchy of its matrix
+      // (cheap for PFMG, the bulk of the solve for BoomerAMG).
+      SparseLinearSolver& mg = kind == LinearSolverKind::pfmg_pcg ? pfmg_for(*pfmg_box_of(pr)) : amg_pcg();
+      s = mg.analyze(a);
+      if (s.ok) s = mg.factorize(a);
+      if (s.ok) s = mg.solve(b, p);
       linear_s += seconds_since(t0);
       return s;
     }
