@@ -67,9 +67,7 @@ void run_contact(const ContactRun& run, const ContactArgs& args, const std::stri
 void run_contact(const ContactArgs& args) {
   const ContactRun run = load_contact_run(args.config, false);
   make_output_dir(args.out);
-  const std::filesystem::path dir(args.out);
-  run_contact(run, args, "",
-              [&dir](const std::string& name, const std::string& text) { write_file_atomically(dir / name, text); });
+  run_contact(run, args, config_hash(args.config), folder_sink(args.out));
 }
 
 void run_junction(const ContactArgs& args) {
@@ -88,7 +86,7 @@ void run_junction(const ContactArgs& args) {
   const double f_cap = std::sqrt(std::max(0.0, std::pow(opt.hardness_Pa * run.grid.area_m2(), 2) - w * w) / std::max(run.alpha, 1e-300));
   const double f_over_w_max = std::min(run.f_over_w_max, 0.999 * f_cap / w);
 
-  const nlohmann::json provenance = contact_provenance(args.config, run);
+  const nlohmann::json provenance = contact_provenance(args.config, run, config_hash(args.config));
   AtomicFile csv(dir / "junction.csv");
   csv.stream() << csv_provenance_header(provenance) << "f_over_w,bem_area_m2,tabor_area_m2,bem_growth,tabor_growth,bem_over_tabor_growth,"
                   "plastic_fraction,pressure_cap_Pa,shear_stress_Pa,converged\n";

@@ -48,7 +48,7 @@ void run_reynolds(const ReynoldsRun& run, const Args& args, const std::string& h
   const ReynoldsSolve solved = solve_reynolds_run(run);
   const lub::ReynoldsSolution& s = solved.solution;
   nlohmann::json j = solved.summary;
-  j["provenance"] = hash.empty() ? provenance_json(args.config) : provenance_json(args.config, hash);
+  j["provenance"] = provenance_json(args.config, hash);
   if (run.seed) j["provenance"]["seed"] = *run.seed;
   if (!args.summary_only) {
     j["fields"] = {{"pressure_Pa", "pressure_Pa.npy"}, {"fill_fraction", "fill_fraction.npy"}, {"gap_m", "gap_m.npy"},
@@ -68,9 +68,7 @@ void run_reynolds(const Args& args) {
   if (args.config.empty()) throw InputError("reynolds: a CONFIG.toml is required (see tribo reynolds --help)");
   const ReynoldsRun run = load_reynolds_run(args.config);
   make_output_dir(args.out);
-  const std::filesystem::path dir(args.out);
-  run_reynolds(run, args, "",
-               [&dir](const std::string& name, const std::string& text) { write_file_atomically(dir / name, text); });
+  run_reynolds(run, args, config_hash(args.config), folder_sink(args.out));
 }
 
 std::string csv_number(double v) {

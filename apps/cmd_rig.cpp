@@ -66,9 +66,7 @@ void run_rig(const RigRun& run, const RigArgs& args, const std::string& hash, co
 void run_rig(const RigArgs& args) {
   const RigRun run = load_rig_run(args.config);  // everything validated before anything is written
   make_output_dir(args.out);
-  const std::filesystem::path dir(args.out);
-  run_rig(run, args, config_hash(args.config),
-          [&dir](const std::string& name, const std::string& text) { write_file_atomically(dir / name, text); });
+  run_rig(run, args, config_hash(args.config), folder_sink(args.out));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include "apps/output.h"
 #include <toml++/toml.h>
 
 #include <exception>
@@ -40,6 +41,11 @@ inline CLI::Option* add_summary_only_flag(CLI::App* cmd, bool& summary_only, con
 // Where a command's JSON result goes: into a file of its --out folder (the CLI), or back to a sweep
 // in memory (apps/sweep_point.h). `name` is the file's name, e.g. "summary.json".
 using JsonSink = std::function<void(const std::string& name, const std::string& text)>;
+
+// The CLI's sink: each JSON into `dir / name`, atomically.
+inline JsonSink folder_sink(const std::filesystem::path& dir) {
+  return [dir](const std::string& name, const std::string& text) { write_file_atomically(dir / name, text); };
+}
 
 // `tribo rig|contact|reynolds CONFIG --out OUT --summary-only` on a config already in memory (a
 // sweep's point): `path` names the config in errors and provenance and anchors its relative file

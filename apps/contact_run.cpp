@@ -138,7 +138,7 @@ void apply_thread_count(int threads) {
 }
 
 nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run, const std::string& hash) {
-  nlohmann::json p = hash.empty() ? provenance_json(config) : provenance_json(config, hash);
+  nlohmann::json p = provenance_json(config, hash);
   if (run.seed) p["seed"] = *run.seed;
   return p;
 }

@@ -52,8 +52,9 @@ ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path&
 void apply_thread_count(int threads);
 
 // The provenance block of contact.json / junction.json (after apply_thread_count, so that
-// "threads" is the count the solve uses). `hash`: the config's, when it is not read from `config`.
-nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run, const std::string& hash = "");
+// "threads" is the count the solve uses). `hash`: the config's (config_hash, or bytes_hash of a
+// config held in memory).
+nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run, const std::string& hash);
 
 struct ContactSolve {
   contact::NormalContactResult result;  // fields: pressure_Pa, gap_m, displacement_m, plastic_increment_m
