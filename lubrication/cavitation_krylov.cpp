@@ -48,6 +48,7 @@ struct CavitationKrylovSolver::Impl {
   Eigen::VectorXd rp, xp;              // work vectors of the preconditioner
   std::vector<Eigen::VectorXd> basis;  // GMRES work space
   Eigen::VectorXd w, z, r;
+  Eigen::VectorXd trial, trial_residual;  // an iterate tested against the max-norm tolerance
 
   // x = P⁻¹ r (see the header).
   LinearSolveStatus apply(const Eigen::VectorXd& r, Eigen::VectorXd& x) {
@@ -111,6 +112,9 @@ CavitationKrylovSolver::CavitationKrylovSolver(CavitationKrylovOptions options) 
   impl_->options = options;
 }
 CavitationKrylovSolver::~CavitationKrylovSolver() = default;
+void CavitationKrylovSolver::set_amg_reuse_changed_fraction(double fraction) {
+  impl_->options.amg_reuse_changed_fraction = fraction;
+}
 int CavitationKrylovSolver::amg_setups() const { return impl_->setups; }
 int CavitationKrylovSolver::amg_reuses() const { return impl_->reuses; }
 bool CavitationKrylovSolver::triangular_transport_block() const { return impl_->sweep != Impl::Sweep::lu; }
@@ -272,7 +276,7 @@ LinearSolveStatus CavitationKrylovSolver::setup(const SparseMatrix& matrix, cons
 }
 
 LinearSolveStatus CavitationKrylovSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                                                double relative_tolerance) {
+                                                double relative_tolerance, double max_norm_tolerance) {
   Impl& m = *impl_;
   if (m.n == 0 || !m.amg.ready()) return solve_failure("block-triangular GMRES: solve() before setup()");
   if (b.size() != m.n) return solve_failure("block-triangular GMRES: right-hand side has the wrong size");
@@ -294,6 +298,18 @@ LinearSolveStatus CavitationKrylovSolver::solve(const Eigen::VectorXd& b, Eigen:
   double r_norm = b_norm;
   int iterations = 0;
   LinearSolveStatus status;
+  double max_norm_check = 16.0 * max_norm_tolerance;  // next 2-norm level for a max-norm test
+  // x + P⁻¹ V y for the first k Arnoldi vectors (y = H⁻¹ g): the preconditioner is linear, so one
+  // application to V y replaces keeping the k preconditioned vectors.
+  auto update = [&](int k, Eigen::VectorXd& x_out) -> LinearSolveStatus {
+    Eigen::VectorXd y = h.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
+    Eigen::VectorXd& vy = m.w;
+    vy.setZero(m.n);
+    for (int i = 0; i < k; ++i) vy += y[i] * v[i];
+    if (LinearSolveStatus s = m.apply(vy, z); !s.ok) return s;
+    x_out = x + z;
+    return {};
+  };
   while (true) {
     v[0] = r / r_norm;
     g.setZero();
@@ -327,16 +343,21 @@ LinearSolveStatus CavitationKrylovSolver::solve(const Eigen::VectorXd& b, Eigen:
         ++k;
         break;
       }
+      if (max_norm_tolerance > 0.0 && std::abs(g[k + 1]) <= max_norm_check) {
+        max_norm_check *= 0.5;
+        if (LinearSolveStatus s = update(k + 1, m.trial); !s.ok) return s;
+        multiply(m.a, m.trial, m.trial_residual);
+        m.trial_residual = b - m.trial_residual;
+        if (m.trial_residual.lpNorm<Eigen::Infinity>() <= max_norm_tolerance) {
+          x = m.trial;
+          status.iterations = iterations;
+          status.relative_residual = m.trial_residual.norm() / b_norm;
+          return status;
+        }
+      }
     }
     if (k > 0) {
-      // y = H⁻¹ g (upper triangular), x += P⁻¹ V y: the preconditioner is linear, so one
-      // application to V y replaces keeping the k preconditioned vectors.
-      Eigen::VectorXd y = h.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(g.head(k));
-      Eigen::VectorXd& vy = m.w;
-      vy.setZero(m.n);
-      for (int i = 0; i < k; ++i) vy += y[i] * v[i];
-      if (LinearSolveStatus s = m.apply(vy, z); !s.ok) return s;
-      x += z;
+      if (LinearSolveStatus s = update(k, x); !s.ok) return s;
     }
     multiply(m.a, x, r);
     r = b - r;

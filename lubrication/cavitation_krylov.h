@@ -42,8 +42,8 @@
 // (CavitationKrylovOptions::amg_reuse_changed_fraction) the hierarchy can be kept and only the
 // fine-level matrix replaced (AmgVCycle::update_fine_matrix). GMRES runs on the true A either way, so
 // reuse changes the iteration count, never the answer. For the minimum function an unchanged split
-// means an unchanged matrix, so the default reuses exactly then (a stale hierarchy for a moved
-// front cost more iterations than the setups it saved, measured at 256²).
+// means an unchanged matrix, so this option's default reuses exactly then; ReynoldsOptions keeps a
+// hierarchy while ≤ 0.3 % of the unknowns moved (reynolds.h).
 //
 // The Krylov method is right-preconditioned restarted GMRES (Saad & Schultz 1986, modified
 // Gram–Schmidt, Givens rotations), stopped on ‖b − A x‖₂ ≤ τ‖b‖₂ for the true residual recomputed
@@ -83,8 +83,16 @@ class CavitationKrylovSolver {
   // 0: Δϑ unknown). Fails (ok = false, message) if a diagonal entry of A_ϑϑ is zero or not finite,
   // or on a hypre / UMFPACK error. A is copied.
   LinearSolveStatus setup(const SparseMatrix& a, const std::vector<char>& is_pressure);
-  // Solves A x = b to ‖b − A x‖₂ ≤ relative_tolerance·‖b‖₂ (x₀ = 0).
-  LinearSolveStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance);
+  // Solves A x = b to ‖b − A x‖₂ ≤ relative_tolerance·‖b‖₂ (x₀ = 0) or, when max_norm_tolerance
+  // > 0, to ‖b − A x‖∞ ≤ max_norm_tolerance, whichever comes first. The max-norm test is made on
+  // the true residual (one more preconditioner application and product) each time GMRES's 2-norm
+  // estimate falls below 16, 8, 4, … times max_norm_tolerance: a Newton step needs its residual
+  // small at every node, and the 2-norm over n nodes is several times the largest entry.
+  LinearSolveStatus solve(const Eigen::VectorXd& b, Eigen::VectorXd& x, double relative_tolerance,
+                          double max_norm_tolerance = 0.0);
+
+  // Changes CavitationKrylovOptions::amg_reuse_changed_fraction for the next setup() calls.
+  void set_amg_reuse_changed_fraction(double fraction);
 
   int amg_setups() const;  // hierarchies built so far
   int amg_reuses() const;  // setup() calls that kept the hierarchy

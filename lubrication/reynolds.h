@@ -154,16 +154,24 @@ struct ReynoldsOptions {
   // Multigrid path with cavitation: the Newton steps' preconditioner (see CavitationPreconditioner),
   // and for block_triangular the share of unknowns that may change side (full film ↔ cavitated)
   // before the pressure block's AMG hierarchy is rebuilt (kept otherwise, with its fine level
-  // updated; the answer does not depend on it, only the GMRES iteration count).
+  // updated; the answer does not depend on it, only the GMRES iteration count). Applied after a
+  // coarse start, whose fine steps move 0.03–0.1 % of the unknowns: a setup of S costs as much as
+  // 10–13 GMRES iterations (0.85 s at 1024²), and keeping the hierarchy through such steps cost 0–10
+  // more (512² 2.3 → 2.1 s, 1024² 14.5 → 13.4 s). From the full film, whose steps move fronts by
+  // whole bands, only an identical split keeps it (3e-3 there: 434 → 553 iterations at 512²).
   CavitationPreconditioner cavitation_preconditioner = CavitationPreconditioner::block_triangular;
-  double amg_reuse_changed_fraction = 0.0;
+  double amg_reuse_changed_fraction = 3e-3;
   // Inexact Newton on the block-triangular path: each step's GMRES stops at the Eisenstat–Walker
   // forcing term η_k ∈ [multigrid_tolerance, max_forcing] instead of multigrid_tolerance (early
   // steps need 1–5 iterations instead of 20–40). The Newton test on the residual is unchanged.
-  // max_forcing = 1e-2 halved the Krylov work at 512² but doubled the Newton steps (43 against
-  // 22 solved exactly), each with its own AMG setup; 1e-3 needs 26 for the same total time.
+  // The cap depends on the start. From the relaxed coarse answer (grid sequencing, below) the
+  // fronts are nearly in place: 1e-2 takes the same steps as 1e-3 and saves 10 % of the GMRES
+  // work (1024²: 14.5 → 13.6 s); 3e-2 takes 2 more steps. From the full film each step moves the
+  // fronts by a band and a loose step costs more steps, each with its own AMG setup (512²: 43
+  // against 22 solved exactly with 1e-2, 26 with 1e-3; 65²: 10 against 8), hence the tighter cap.
   bool inexact_newton = true;
-  double max_forcing = 1e-3;
+  double max_forcing = 1e-2;
+  double max_forcing_full_film_start = 1e-3;
   // Grid sequencing on the multigrid path with cavitation (rectangular domains whose nodes
   // coarsen by two: nx − 1 even, ny even if periodic else ny − 1 even): the Newton iteration
   // starts from the bilinear interpolation of the same problem solved on every other node
@@ -175,6 +183,16 @@ struct ReynoldsOptions {
   // The coarse solves stop at max(newton_tolerance, grid_sequencing_tolerance): they only start
   // the fine iteration, and the coarse grid's discretisation error is far above 1e-6.
   double grid_sequencing_tolerance = 1e-6;
+  // After a coarse answer is interpolated, symmetric sweeps (forward, then backward over the
+  // unknowns) of projected nonlinear Gauss–Seidel on the JFO conditions, before Newton: each node
+  // takes the (p, ϑ) that balances its own cell. The coarse fronts sit about a fine cell off the
+  // fine ones (first-order upwind transport), a local error the sweeps remove, and a sweep in the
+  // flow direction carries ϑ across a cavity in one pass. 20 sweeps cut the fine Newton steps from
+  // 8 to 4 at 512² (10 left 6). Only the start changes; 0 starts Newton from the interpolation.
+  // (From the full film, whose fronts are far off, the same sweeps halved the steps on the textured
+  // film but left rough lift cells and the Fischer–Burmeister 1-D bearing with a start from which
+  // the line search crawled a node per step: not used there.)
+  int coarse_start_sweeps = 20;
 };
 
 struct ReynoldsSummary {

@@ -22,7 +22,9 @@
 #include <string>
 #include <vector>
 
+#include "contact/surface.h"
 #include "lubrication/cavitation_krylov.h"
+#include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
 
 namespace tribo::lubrication {
@@ -108,6 +110,77 @@ TEST(CavitationBlockPreconditioner, GridSequencingReproducesDirectAnswer) {
   EXPECT_LT(with.summary.iterations, without.summary.iterations);
   EXPECT_NEAR(with.load_N / without.load_N, 1.0, 1e-7);
   EXPECT_NEAR(with.cavitated_fraction, without.cavitated_fraction, 1e-12);
+}
+
+// The sweeps of projected Gauss–Seidel after the coarse interpolation (coarse_start_sweeps) move
+// the coarse fronts, about a fine cell off, onto the fine grid: the fine Newton iteration needs at
+// least two steps fewer (measured 3 against 5 at 128², 3 against 6 at 256²) and ends at the same
+// answer, to the Newton tolerance's 1e-7 in the load and the same cavitated set.
+TEST(CavitationBlockPreconditioner, CoarseStartSweepsSaveNewtonStepsNotAccuracy) {
+  const ReynoldsProblem pr = textured(128);
+  ReynoldsOptions plain = block_options();
+  plain.coarse_start_sweeps = 0;
+  const ReynoldsSolution swept = solve_reynolds(pr, block_options());
+  const ReynoldsSolution unswept = solve_reynolds(pr, plain);
+  ASSERT_TRUE(swept.summary.converged) << swept.summary.message;
+  ASSERT_TRUE(unswept.summary.converged) << unswept.summary.message;
+  std::printf("  fine Newton steps: %d with %d sweeps, %d without\n", swept.summary.iterations,
+              block_options().coarse_start_sweeps, unswept.summary.iterations);
+  EXPECT_LE(swept.summary.iterations, unswept.summary.iterations - 2);
+  EXPECT_NEAR(swept.load_N / unswept.load_N, 1.0, 1e-7);
+  EXPECT_NEAR(swept.cavitated_fraction, unswept.cavitated_fraction, 1e-12);
+}
+
+// The same on rough films (Gaussian heights, ℓ = L/16: the lift cells of homogenisation at
+// 257 × 256 nodes, on the multigrid path), where cavities are many, small and irregular: the sweeps
+// must not cost steps or change the answer. Measured: 6–9 fine steps swept against 12–18 unswept
+// at h/σ = 1 and 4 (the film floored at 0.05 σ), 13–43 % of it cavitated.
+TEST(CavitationBlockPreconditioner, CoarseStartSweepsOnRoughFilmsKeepTheAnswer) {
+  contact::GaussianSurfaceParams sp;
+  sp.grid = 256;
+  sp.size_m = 1e-3;
+  sp.kind = contact::SpectrumKind::gaussian_acf;
+  sp.rms_height_m = 0.5e-6;
+  sp.correlation_length_m = sp.size_m / 16;
+  for (std::uint64_t seed : {1u, 2u}) {
+    sp.seed = seed;
+    const Eigen::ArrayXXd z = contact::gaussian_surface(sp);
+    for (double ratio : {1.0, 4.0}) {
+      ReynoldsProblem pr = periodic_film_cell((ratio * sp.rms_height_m + z).max(0.05 * sp.rms_height_m), sp.size_m);
+      pr.viscosity_Pa_s = 0.021;
+      pr.sliding_speed_m_per_s = 1.0;
+      pr.cavitation = Cavitation::mass_conserving;
+      ReynoldsOptions plain = block_options();
+      plain.coarse_start_sweeps = 0;
+      const ReynoldsSolution swept = solve_reynolds(pr, block_options());
+      const ReynoldsSolution unswept = solve_reynolds(pr, plain);
+      ASSERT_TRUE(swept.summary.converged) << swept.summary.message;
+      ASSERT_TRUE(unswept.summary.converged) << unswept.summary.message;
+      std::printf("  seed %d, h/sigma %.0f: cavitated %.3f, fine Newton steps %d swept, %d unswept; %s\n",
+                  static_cast<int>(seed), ratio, swept.cavitated_fraction, swept.summary.iterations,
+                  unswept.summary.iterations, swept.summary.message.c_str());
+      EXPECT_LE(swept.summary.iterations, unswept.summary.iterations);
+      EXPECT_NEAR(swept.load_N / unswept.load_N, 1.0, 1e-7);
+      EXPECT_NEAR(swept.cavitated_fraction, unswept.cavitated_fraction, 1e-12);
+    }
+  }
+}
+
+// A film that does not cavitate, with the mass-conserving model on the multigrid path: the coarse
+// grid is solved first (its answer would start the Newton iteration) and, as it does not cavitate
+// either, the fine full-film solve is the answer — the same as with cavitation switched off.
+TEST(CavitationBlockPreconditioner, FilmThatDoesNotCavitateKeepsItsLinearSolve) {
+  ReynoldsProblem pr = textured(128);
+  for (Eigen::Index j = 0; j < pr.grid.ny; ++j)  // a converging wedge, 2 µm to 1 µm
+    for (Eigen::Index i = 0; i < pr.grid.nx; ++i)
+      pr.gap_m(i, j) = 2e-6 - 1e-6 * static_cast<double>(i) / static_cast<double>(pr.grid.nx - 1);
+  const ReynoldsSolution jfo = solve_reynolds(pr, block_options());
+  pr.cavitation = Cavitation::none;
+  const ReynoldsSolution linear = solve_reynolds(pr, block_options());
+  ASSERT_TRUE(jfo.summary.converged) << jfo.summary.message;
+  EXPECT_EQ(jfo.cavitated_fraction, 0.0);
+  EXPECT_NE(jfo.summary.message.find("linear solve (no cavitation)"), std::string::npos) << jfo.summary.message;
+  EXPECT_NEAR(jfo.load_N / linear.load_N, 1.0, 1e-12);
 }
 
 // Sliding towards −x: the transport block is upper-triangular in the unknowns' order (backward sweep).
@@ -200,6 +273,27 @@ TEST(CavitationKrylovSolver, SolvesSmallSystemToTolerance) {
   EXPECT_EQ(solver.amg_reuses(), 1);
 }
 
+// With a max-norm tolerance GMRES stops once the largest residual entry is below it — tested on
+// the true residual — even though the 2-norm test (1e-14, out of reach here in 12 iterations) has
+// not been met; the status reports that residual.
+TEST(CavitationKrylovSolver, StopsAtTheMaxNormToleranceOnTheTrueResidual) {
+  std::vector<char> split;
+  const SparseMatrix a = line_system(split);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.rows(), 1.0, 2.0);
+  CavitationKrylovSolver solver;
+  ASSERT_TRUE(solver.setup(a, split).ok);
+  Eigen::VectorXd x, x_two_norm;
+  const double max_norm = 1e-6;
+  const LinearSolveStatus two_norm = solver.solve(b, x_two_norm, 1e-12);
+  const LinearSolveStatus s = solver.solve(b, x, 1e-14, max_norm);
+  ASSERT_TRUE(s.ok) << s.message;
+  const Eigen::VectorXd r = b - a * x;
+  EXPECT_LE(r.lpNorm<Eigen::Infinity>(), max_norm);
+  EXPECT_GT(r.norm(), 1e-14 * b.norm());  // stopped by the max norm, not by the 2-norm
+  EXPECT_NEAR(s.relative_residual, r.norm() / b.norm(), 1e-12);
+  EXPECT_LT(s.iterations, two_norm.iterations);
+}
+
 // A solve stopped before its tolerance returns ok = false with its residual and iteration count.
 TEST(CavitationKrylovSolver, NonConvergenceIsReportedWithItsResidual) {
   std::vector<char> split;
@@ -239,8 +333,15 @@ TEST(CavitationBlockPreconditioner, RejectsBadOptions) {
   o.max_forcing = 1.0;
   EXPECT_THROW(ReynoldsSolver{o}, std::invalid_argument);
   o = {};
+  o.max_forcing_full_film_start = 0.0;
+  EXPECT_THROW(ReynoldsSolver{o}, std::invalid_argument);
+  o = {};
   o.grid_sequencing_min_nodes = 2;
   EXPECT_THROW(ReynoldsSolver{o}, std::invalid_argument);
+  o = {};
+  o.coarse_start_sweeps = -1;
+  EXPECT_THROW(ReynoldsSolver{o}, std::invalid_argument);
+
 }
 
 }  // namespace
