@@ -116,12 +116,17 @@ TEST(CavitationBlockPreconditioner, GridSequencingReproducesDirectAnswer) {
 // the coarse fronts, about a fine cell off, onto the fine grid: the fine Newton iteration needs at
 // least two steps fewer (measured 3 against 5 at 128², 3 against 6 at 256²) and ends at the same
 // answer, to the Newton tolerance's 1e-7 in the load and the same cavitated set.
-TEST(CavitationBlockPreconditioner, CoarseStartSweepsSaveNewtonStepsNotAccuracy) {
-  const ReynoldsProblem pr = textured(128);
+struct SweptAndUnswept {
+  ReynoldsSolution swept, unswept;
+};
+SweptAndUnswept solve_with_and_without_sweeps(const ReynoldsProblem& pr) {
   ReynoldsOptions plain = block_options();
   plain.coarse_start_sweeps = 0;
-  const ReynoldsSolution swept = solve_reynolds(pr, block_options());
-  const ReynoldsSolution unswept = solve_reynolds(pr, plain);
+  return {solve_reynolds(pr, block_options()), solve_reynolds(pr, plain)};
+}
+
+TEST(CavitationBlockPreconditioner, CoarseStartSweepsSaveNewtonStepsNotAccuracy) {
+  const auto [swept, unswept] = solve_with_and_without_sweeps(textured(128));
   ASSERT_TRUE(swept.summary.converged) << swept.summary.message;
   ASSERT_TRUE(unswept.summary.converged) << unswept.summary.message;
   std::printf("  fine Newton steps: %d with %d sweeps, %d without\n", swept.summary.iterations,
@@ -150,10 +155,7 @@ TEST(CavitationBlockPreconditioner, CoarseStartSweepsOnRoughFilmsKeepTheAnswer) 
       pr.viscosity_Pa_s = 0.021;
       pr.sliding_speed_m_per_s = 1.0;
       pr.cavitation = Cavitation::mass_conserving;
-      ReynoldsOptions plain = block_options();
-      plain.coarse_start_sweeps = 0;
-      const ReynoldsSolution swept = solve_reynolds(pr, block_options());
-      const ReynoldsSolution unswept = solve_reynolds(pr, plain);
+      const auto [swept, unswept] = solve_with_and_without_sweeps(pr);
       ASSERT_TRUE(swept.summary.converged) << swept.summary.message;
       ASSERT_TRUE(unswept.summary.converged) << unswept.summary.message;
       std::printf("  seed %d, h/sigma %.0f: cavitated %.3f, fine Newton steps %d swept, %d unswept; %s\n",
