@@ -496,10 +496,10 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     Setup start{d.rig, d.calibrated};
     for (const auto& e : effects) {
       start.model.add(e);
-      if (e == "rate_and_state" && median_v > 0.0) {
+      if ((e == "rate_and_state" || e == "slip_transient") && median_v > 0.0) {
         // Reference speed at the data's median driven speed (not fitted: another V0 only moves
         // the baseline μk, which is fitted), so the increments stay small where the data are.
-        start.model.set("rate_and_state", "reference_speed_m_per_s", std::clamp(median_v, 1e-9, 10.0));
+        start.model.set(e, "reference_speed_m_per_s", std::clamp(median_v, 1e-9, 10.0));
       }
       if (e == "rate_dependent_static") {
         // Start the locus through the calibrated μs at the median load rate of the data.

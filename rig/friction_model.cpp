@@ -50,7 +50,13 @@ std::vector<EffectInfo> build_catalogue() {
        "after slip onset friction decays from the breakaway level with slip distance (not time)",
        "thesis section 5.2a, Figs 5.2.3-5.2.6",
        {{"amplitude", "1", 1.0, 0.0, 1.0, "share of (mu_s - mu_k) present at slip onset", FitRange{0.0, 1.0, false}},
-        {"decay_distance_m", "m", 1e-4, 1e-7, 1e-2, "e-folding slip distance D_c", FitRange{1e-7, 1e-2, true}}}},
+        {"decay_distance_m", "m", 1e-4, 1e-7, 1e-2, "e-folding slip distance D_c", FitRange{1e-7, 1e-2, true}},
+        // Ruina's slip law: the stable curve the transient relaxes to falls by β per e-fold of slip
+        // speed (β = b − a). Range as rate_and_state's b; 0 is the thesis form.
+        {"rate_weakening", "1", 0.0, 0.0, 0.1, "fall of the stable kinetic level per e-fold of slip speed, beta = b - a of Ruina's slip law",
+         FitRange{0.0, 0.05, false}},
+        {"reference_speed_m_per_s", "m/s", 1e-2, 1e-9, 10.0,
+         "U_ref, where the rate part of the stable level is zero (only moves the level mu_k absorbs)"}}},
       {"rate_and_state",
        "Dieterich-Ruina rate-and-state friction, ageing law: a ln(V/V0) + b ln(V0 theta/D_c); static friction heals as b ln(hold time)",
        "Dieterich (1979) JGR 84:2161; Ruina (1983) JGR 88:10359; Marone (1998); cf. thesis section 5.2a",
@@ -212,7 +218,9 @@ std::shared_ptr<const FrictionLaw> make_friction_law(const FrictionModel& m) {
   std::vector<std::unique_ptr<FrictionEffect>> effects;
   auto p = [&](const char* effect, const char* parameter) { return m.get(effect, parameter); };
   if (m.has("slip_transient")) {
-    effects.push_back(std::make_unique<effects::SlipTransient>(p("slip_transient", "amplitude"), p("slip_transient", "decay_distance_m")));
+    effects.push_back(std::make_unique<effects::SlipTransient>(p("slip_transient", "amplitude"), p("slip_transient", "decay_distance_m"),
+                                                               p("slip_transient", "rate_weakening"),
+                                                               p("slip_transient", "reference_speed_m_per_s")));
   }
   if (m.has("rate_and_state")) {
     effects.push_back(std::make_unique<effects::RateAndState>(p("rate_and_state", "a"), p("rate_and_state", "b"),

@@ -4,8 +4,23 @@
 //
 //     Δμ(s) = a · (μs,eff − μk(0)) · exp(−s / D_c),    added to the solid kinetic coefficient.
 //
-// State: Δμ at onset (set at each breakaway). The picture is a fluid film built up by lift as the
-// slider travels, like the rate-and-state D_c.
+// The stable curve it decays to may itself fall with slip speed (the thesis normalises each
+// transient by "the value of friction at which they met the stable kinetic friction curve"). With
+// a rate weakening β > 0 the increment relaxes over the same slip distance towards
+//
+//     Δμ_ss(U) = −β ln(|U| / U_ref),    dΔμ/dt = −(|U| / D_c) (Δμ − Δμ_ss(|U|)),
+//
+// which is Ruina's slip law written for μ (Ruina 1983, JGR 88:10359, eq. 8; with Ψ = b ln(V0θ/D_c),
+// dθ/dt = −(Vθ/D_c) ln(Vθ/D_c) gives dΨ/dt = −(V/D_c)(Ψ + b ln(V/V0))): its steady state
+// μss = μ0 − (b − a) ln(V/V0) with β = b − a when the direct effect a is small. β = 0 is the
+// thesis form above exactly. U_ref only moves the level that μk absorbs (diagnosis: the data's
+// median driven speed).
+//
+// State: Δμ at onset (set at each breakaway) and the rate part R (reset to 0 at each breakaway),
+// dR/dt = −(|U|/D_c)(R − Δμ_ss(|U|)); the increment is Δμ(onset) e^{−s/D_c} + R, which satisfies
+// the relaxation above (it is linear) and keeps the closed form for β = 0. At |U| → 0 the target
+// diverges but its rate |U| ln|U| → 0: R freezes while stuck and re-attaching.
+// The picture is a fluid film built up by lift as the slider travels, like the rate-and-state D_c.
 #pragma once
 
 #include "rig/effect.h"
@@ -14,15 +29,20 @@ namespace tribo::rig::effects {
 
 class SlipTransient final : public FrictionEffect {
  public:
-  SlipTransient(double amplitude, double decay_distance_m);
+  SlipTransient(double amplitude, double decay_distance_m, double rate_weakening = 0.0, double reference_speed_m_per_s = 1e-2);
   std::string name() const override { return "slip_transient"; }
-  std::size_t state_size() const override { return 1; }
-  void initial_state(std::span<double> state) const override { state[0] = 0.0; }
+  std::size_t state_size() const override { return 2; }
+  void initial_state(std::span<double> state) const override { state[0] = 0.0, state[1] = 0.0; }
+  // R is a friction coefficient: 1e-9 is far below any measured μ.
+  void state_tolerances(std::span<double> atol) const override { atol[0] = 1e-10, atol[1] = 1e-9; }
+  void state_rates(const EffectContext& c, std::span<double> rates) const override;
   void on_slip_onset(const EffectContext& c, std::span<double> state) const override;
   double kinetic_increment(const EffectContext& c) const override;
+  // Δμ_ss at slip speed |U| (> 0).
+  double steady_increment(double speed_m_per_s) const;
 
  private:
-  double amplitude_, decay_distance_m_;
+  double amplitude_, decay_distance_m_, rate_weakening_, reference_speed_m_per_s_;
 };
 
 }  // namespace tribo::rig::effects

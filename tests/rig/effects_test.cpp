@@ -4,9 +4,11 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "contact/junction_locus.h"
 #include "rig/composite_law.h"
+#include "rig/effects/slip_transient.h"
 #include "rig/friction_model.h"
 #include "rig/instrument.h"
 #include "rig/observables.h"
@@ -65,6 +67,48 @@ TEST(SlipTransient, DecaysWithSlipDistanceNotTimeAtBothRigFrequencies) {
     return slip.back().t_s - slip.front().t_s;
   };
   EXPECT_GT(half_decay_time(slip_heavy) / half_decay_time(slip_light), 1.2);
+}
+
+TEST(SlipTransient, RateWeakeningRelaxesOverDcToRuinasSlipLawSteadyState) {
+  // rig/effects/slip_transient.h: with β > 0 the increment relaxes over D_c of slip towards
+  // Δμ_ss(U) = −β ln(U/U_ref) (Ruina 1983, slip law). Steady sliding at v with a viscous film
+  // c = 40 N s/m so that c + r exceeds the weakening slope W β / v (≈ 19 N s/m) and sliding is
+  // stable: after 3 s (1500 D_c of slip) friction is W (μk + Δμ_ss(v)) + c v.
+  const RigParameters rig;
+  const double beta = 0.01, u_ref = 0.01, v = 0.05, dc = 1e-4;
+  FrictionModel m = coulomb(0.3, 0.15);
+  m.set("slip_transient", "decay_distance_m", dc);
+  m.set("slip_transient", "rate_weakening", beta);
+  m.set("slip_transient", "reference_speed_m_per_s", u_ref);
+  m.set("viscous_friction", "coefficient_N_s_per_m", 40.0);
+  const auto r = run(rig, m, v, 3.0, /*steady_start=*/true);
+  const Sample& last = r.samples.back();
+  const double expected = (0.15 - beta * std::log(v / u_ref)) * rig.normal_load_N + 40.0 * v;
+  EXPECT_NEAR(last.friction_N, expected, 1e-6 * expected);
+  // At one speed the state relaxes exponentially in slip distance: from R = 0 after s = D_c,
+  // R = Δμ_ss (1 − e^{−1}); the rate vanishes at rest (|U| ln|U| → 0) and for β = 0.
+  const effects::SlipTransient e(1.0, dc, beta, u_ref);
+  const double target = e.steady_increment(v);
+  EXPECT_NEAR(target, -beta * std::log(5.0), 1e-15);
+  std::vector<double> state{0.0, 0.0}, rates(2);
+  FrictionContext fc;
+  fc.relative_speed_m_per_s = v;
+  const int steps = 100000;
+  const double dt = dc / v / steps;
+  for (int k = 0; k < steps; ++k) {  // midpoint rule, error O(dt²)
+    fc.state = state;
+    e.state_rates(EffectContext{&fc, 0.3, 0.15, state}, rates);
+    std::vector<double> mid{state[0], state[1] + 0.5 * dt * rates[1]};
+    e.state_rates(EffectContext{&fc, 0.3, 0.15, mid}, rates);
+    state[1] += dt * rates[1];
+  }
+  EXPECT_NEAR(state[1], target * (1.0 - std::exp(-1.0)), 1e-9);
+  fc.relative_speed_m_per_s = 0.0;
+  e.state_rates(EffectContext{&fc, 0.3, 0.15, state}, rates);
+  EXPECT_EQ(rates[1], 0.0);
+  fc.relative_speed_m_per_s = v;
+  effects::SlipTransient(1.0, dc).state_rates(EffectContext{&fc, 0.3, 0.15, state}, rates);
+  EXPECT_EQ(rates[1], 0.0);
 }
 
 TEST(RateDependentStatic, BreakawayLiesOnTheJunctionLocus) {
