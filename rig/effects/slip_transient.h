@@ -16,7 +16,7 @@
 // thesis form above exactly. U_ref only moves the level that μk absorbs (diagnosis: the data's
 // median driven speed).
 //
-// State: Δμ at onset (set at each breakaway) and the rate part R (reset to 0 at each breakaway),
+// State: Δμ at onset (set at each breakaway) and, when β > 0, the rate part R (reset to 0 at each breakaway),
 // dR/dt = −(|U|/D_c)(R − Δμ_ss(|U|)); the increment is Δμ(onset) e^{−s/D_c} + R, which satisfies
 // the relaxation above (it is linear) and keeps the closed form for β = 0. At |U| → 0 the target
 // diverges but its rate |U| ln|U| → 0: R freezes while stuck and re-attaching.
@@ -31,10 +31,17 @@ class SlipTransient final : public FrictionEffect {
  public:
   SlipTransient(double amplitude, double decay_distance_m, double rate_weakening = 0.0, double reference_speed_m_per_s = 1e-2);
   std::string name() const override { return "slip_transient"; }
-  std::size_t state_size() const override { return 2; }
-  void initial_state(std::span<double> state) const override { state[0] = 0.0, state[1] = 0.0; }
+  // R only with a rate weakening: β = 0 integrates the thesis form with its one state exactly as
+  // before (an idle second state would change CVODE's error norm, hence its steps).
+  std::size_t state_size() const override { return rate_weakening_ > 0.0 ? 2 : 1; }
+  void initial_state(std::span<double> state) const override {
+    for (double& x : state) x = 0.0;
+  }
   // R is a friction coefficient: 1e-9 is far below any measured μ.
-  void state_tolerances(std::span<double> atol) const override { atol[0] = 1e-10, atol[1] = 1e-9; }
+  void state_tolerances(std::span<double> atol) const override {
+    atol[0] = 1e-10;
+    if (atol.size() > 1) atol[1] = 1e-9;
+  }
   void state_rates(const EffectContext& c, std::span<double> rates) const override;
   void on_slip_onset(const EffectContext& c, std::span<double> state) const override;
   double kinetic_increment(const EffectContext& c) const override;

@@ -513,16 +513,16 @@ TEST(HomogenisedLaw, CompositeWithoutEffectsEqualsTheBareLawAndEffectsStackOnTop
     bare.state_rates(c, r2);
     EXPECT_EQ(r1, r2);
   }
-  // viscous_friction adds c U (channel 4) and slip_transient its two states after the base's two.
+  // viscous_friction adds c U (channel 4) and slip_transient its state after the base's two.
   m.set("viscous_friction", "coefficient_N_s_per_m", 40.0);
   m.add("slip_transient");
   const auto stacked = make_friction_law(m);
-  ASSERT_EQ(stacked->state_size(), 4u);
-  std::vector<double> s3(4);
+  ASSERT_EQ(stacked->state_size(), 3u);
+  std::vector<double> s3(3);
   stacked->initial_state(s3);
   EXPECT_EQ(s3[0], base->initial_separation_m());
   EXPECT_EQ(s3[1], 0.0);
-  const std::vector<double> with_effect_state = {state[0], state[1], 0.0, 0.0};
+  const std::vector<double> with_effect_state = {state[0], state[1], 0.0};
   const FrictionContext c = context_at(with_effect_state, 0.01, W);
   EXPECT_NEAR(stacked->kinetic_force_N(c), bare.kinetic_force_N(context_at(state, 0.01, W)) + 40.0 * 0.01, 1e-12 * W);
   // The table carries the static locus: listing rate_dependent_static as well is a config error.
