@@ -39,9 +39,10 @@ struct FitParameter {
   // lands beyond it and sees no slope; at the lower bound the step goes into the box, and a
   // parameter whose default is that bound starts there — slip_transient's rate weakening at 0, the
   // thesis form (started at 2 % of its range, 0.001, the search on a stiff velocity-step machine
-  // fell into a stick-slipping basin: tests/gap/velocity_step_test.cpp). Except rig keys, placed where the calibration put them, bounds included: moved
-  // inside, a rig at its damping bound would start a candidate fit from a different machine (one
-  // that stick-slips after a velocity step where the calibrated one slides). A refinement
+  // fell into a stick-slipping basin: tests/gap/velocity_step_test.cpp). Except rig keys, placed
+  // where the calibration put them, bounds included: moved inside, a rig at its damping bound
+  // would start a candidate fit from a different machine (one that stick-slips after a velocity
+  // step where the calibrated one slides). A refinement
   // (`inside` false) continues a fit where it stopped, on a bound too: moved 2 % inside, it
   // started from a worse point than the search had found and could stop there — independent
   // selftest seed 403 (Dieterich–Ruina slip law), slip_transient's amplitude searched to its
