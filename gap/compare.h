@@ -17,7 +17,8 @@
 //   period_s           mean time between maxima
 //   peak_to_peak_m     range of the slider displacement x
 //   mean_mu            time-averaged μ
-//   mu_s_vs_load_rate  μs at breakaway from rest at the load rate φ̇ of static_friction.csv
+//   mu_s_vs_load_rate  μs at the load rate φ̇ of static_friction.csv: the mean breakaway of stick-slip
+//                      at v = φ̇ W / k after the start-up (a row is a stick event, DESIGN §7)
 //   regime_mismatch    0 when the simulated regime is the measured one, else 1 (regimes.csv)
 //   amplitude_m, frequency_rad_per_s  from regimes.csv
 //   steady_mu          μ over the last 30 % of each drive segment (velocity steps)
