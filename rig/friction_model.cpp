@@ -83,7 +83,7 @@ std::vector<EffectInfo> build_catalogue() {
        "thesis (3.2.2), Appendix III, section 5.2a, Fig 5.2.2",
        {{"film_fraction", "1", 0.8, 0.0, 0.99, "largest share of W the film carries", FitRange{0.0, 0.95, false}},
         {"build_up_distance_m", "m", 2e-3, 1e-7, 1e-1, "slip distance over which lift builds the film", FitRange{1e-6, 1e-1, true}},
-        {"film_thickness_m", "m", 1e-6, 1e-8, 1e-4, "film thickness h at which squeeze-out starts (time to h/2)"},
+        {"film_thickness_m", "m", 1e-6, 1e-8, 1e-4, "film thickness h at which squeeze-out starts (time to h/2)", FitRange{1e-7, 1e-4, true}},
         {"patch_radius_m", "m", 2e-3, 1e-5, 1e-2, "radius R of the region the oil is squeezed from (<= slider radius)"},
         {"viscosity_Pa_s", "Pa s", 0.021, 1e-4, 10.0, "lubricant viscosity; thesis oil 120 SSU at 80 F"}}},
       {"hydrodynamic_lift",
