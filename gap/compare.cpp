@@ -25,6 +25,7 @@ constexpr int kStepBins = 24;
 constexpr int kBinsPerBlock = 3;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
 constexpr int kNoiseBlocks = 4;        // repeats a run's window is cut into for its items' noise
+constexpr long kStaticPointEvents = 40;  // a static point's run stops after this many events (20 stick-slip cycles or more)
 // Shortest drive segment, in samples: its steady level is the mean of its last 30 % in four
 // blocks (steady_mu and its noise), which needs a few samples each.
 constexpr std::size_t kMinSegmentSamples = 20;
@@ -658,25 +659,30 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         // still there at an in-cycle breakaway, never at the first one.
         const double v = plan.v_m_per_s * W / k;
         options.duration_s = plan.duration_s;
-        options.max_events = Comparison::event_budget(rig, plan.duration_s);
+        // A few cycles of breakaways are all it reads: a law that chatters at a velocity match, or
+        // many short cycles, end the run at the event limit instead of the budget of a trace.
+        options.max_events = std::min<long>(Comparison::event_budget(rig, plan.duration_s), kStaticPointEvents);
         // Only breakaways matter: keep no samples and output as sparsely as allowed.
         options.samples_per_period = 4;  // the rig's minimum
         options.stick_samples_per_run = 10;
         // Read off the same friction channel as the traces.
         const rig::InstrumentModel instrument = rig::instrument_from(model, seed);
         const double window_start_s = rig::analysis_start_s(0.0, plan.duration_s);
-        double sum = 0.0, last = std::numeric_limits<double>::quiet_NaN();
-        int in_window = 0;
+        std::vector<double> readings;
+        std::size_t first_in_window = 0;
         rig::SimulationObserver observer;
         observer.on_event = [&](const rig::Event& e) {
           if (e.kind != rig::EventKind::breakaway) return;
-          last = rig::breakaway_reading(instrument, e.mu);
-          if (e.t_s >= window_start_s) sum += last, ++in_window;
+          if (e.t_s < window_start_s) first_in_window = readings.size() + 1;
+          readings.push_back(rig::breakaway_reading(instrument, e.mu));
         };
         rig::simulate(rig, rig::Drive::constant(v), law, options, observer);
-        // No stick event after the start-up (the slider slides steadily): the last one there was.
-        if (in_window > 0) f["mu_s"] = sum / in_window;
-        else if (std::isfinite(last)) f["mu_s"] = last;
+        // None after the start-up: the later half of those there were (the run stopped at its event
+        // limit), or the last one when the slider slides steadily after it.
+        if (first_in_window >= readings.size()) first_in_window = readings.size() / 2;
+        if (!readings.empty())
+          f["mu_s"] = std::accumulate(readings.begin() + static_cast<long>(first_in_window), readings.end(), 0.0) /
+                      static_cast<double>(readings.size() - first_in_window);
         break;
       }
       case RunPlan::Kind::regime_point: {

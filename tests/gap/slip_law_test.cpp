@@ -9,9 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gap/diagnosis.h"
-#include "gap/independent/generator.h"
-#include "rig/friction_model.h"
+#include "tests/gap/one_candidate_fit.h"
 
 namespace tribo::gap {
 namespace {
@@ -22,10 +20,7 @@ TEST(SlipLaw, SlipTransientFitRecoversResetDecayDistanceAndSteadyStateWeakening)
   ASSERT_TRUE(c.truth.rate_state.has_value());
   const independent::RateState& rs = *c.truth.rate_state;
   ASSERT_EQ(rs.evolution, independent::RateState::Evolution::slip);
-  DiagnosisOptions o;
-  o.bootstrap_samples = 20;
-  o.candidates = {"slip_transient"};
-  const Diagnosis d = diagnose(c.bundle, apply_bundle_rig(c.bundle, rig::RigParameters{}), rig::coulomb(c.model_mu_s, c.model_mu_k), o);
+  const Diagnosis d = diagnose_with_one_candidate(c, "slip_transient");
   ASSERT_EQ(d.candidates.size(), 1u);
   const auto& p = d.candidates.front().params;
   const double amplitude = p.at("slip_transient.amplitude"), dc = p.at("slip_transient.decay_distance_m"),

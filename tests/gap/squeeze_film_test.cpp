@@ -11,10 +11,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gap/diagnosis.h"
-#include "gap/independent/generator.h"
 #include "lubrication/reference/squeeze_film.h"
-#include "rig/friction_model.h"
+#include "tests/gap/one_candidate_fit.h"
 
 namespace tribo::gap {
 namespace {
@@ -23,18 +21,14 @@ TEST(SqueezeFilm, FitFindsTheFilmShareAndASqueezeOutTimeOfTheRightOrder) {
   const independent::IndependentCase c = independent::make_independent_case("squeeze_film", 405);
   ASSERT_TRUE(c.truth.squeeze.has_value());
   const independent::SqueezeFilmOde& s = *c.truth.squeeze;
-  DiagnosisOptions o;
-  o.bootstrap_samples = 20;
-  o.candidates = {"squeeze_film"};
-  const rig::RigParameters rig = apply_bundle_rig(c.bundle, rig::RigParameters{});
-  const Diagnosis d = diagnose(c.bundle, rig, rig::coulomb(c.model_mu_s, c.model_mu_k), o);
+  const Diagnosis d = diagnose_with_one_candidate(c, "squeeze_film");
   ASSERT_EQ(d.candidates.size(), 1u);
   const Candidate& k = d.candidates.front();
   const double share = k.params.at("squeeze_film.film_fraction"), h = k.params.at("squeeze_film.film_thickness_m");
   // The time to squeeze the film to half its thickness: the catalogue's under the whole load, the
   // truth's under the film's share of it (closed form of the h⁻³ law, laws.h).
   const double tau_fit = lubrication::squeeze_out_time_s(k.model.get("squeeze_film", "viscosity_Pa_s"),
-                                                         k.model.get("squeeze_film", "patch_radius_m"), rig.normal_load_N, h, 0.5 * h);
+                                                         k.model.get("squeeze_film", "patch_radius_m"), k.rig.normal_load_N, h, 0.5 * h);
   const double W = c.actual.normal_load_N;
   const double tau_true = 7.0 * M_PI * s.viscosity_Pa_s * std::pow(s.radius_m, 4) / (2.0 * s.max_fraction * W * s.full_thickness_m * s.full_thickness_m);
   std::printf("film share %.3f (truth %.3f), half time %.4f s (truth %.4f s), held-out gap %.4f -> %.4f\n", share, s.max_fraction, tau_fit,
