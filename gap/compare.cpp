@@ -668,22 +668,22 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         options.stick_samples_per_run = 10;
         // Read off the same friction channel as the traces.
         const rig::InstrumentModel instrument = rig::instrument_from(model, seed);
-        const double window_start_s = rig::analysis_start_s(0.0, plan.duration_s);
-        std::vector<double> readings;
-        std::size_t first_in_window = 0;
+        std::vector<std::pair<double, double>> breakaways;  // (t_s, reading)
         rig::SimulationObserver observer;
         observer.on_event = [&](const rig::Event& e) {
-          if (e.kind != rig::EventKind::breakaway) return;
-          if (e.t_s < window_start_s) first_in_window = readings.size() + 1;
-          readings.push_back(rig::breakaway_reading(instrument, e.mu));
+          if (e.kind == rig::EventKind::breakaway) breakaways.emplace_back(e.t_s, rig::breakaway_reading(instrument, e.mu));
         };
         rig::simulate(rig, rig::Drive::constant(v), law, options, observer);
         // None after the start-up: the later half of those there were (the run stopped at its event
         // limit), or the last one when the slider slides steadily after it.
-        if (first_in_window >= readings.size()) first_in_window = readings.size() / 2;
-        if (!readings.empty())
-          f["mu_s"] = std::accumulate(readings.begin() + static_cast<long>(first_in_window), readings.end(), 0.0) /
-                      static_cast<double>(readings.size() - first_in_window);
+        const double window_start_s = rig::analysis_start_s(0.0, plan.duration_s);
+        auto read = std::find_if(breakaways.begin(), breakaways.end(), [&](const auto& b) { return b.first >= window_start_s; });
+        if (read == breakaways.end()) read = breakaways.begin() + static_cast<long>(breakaways.size() / 2);
+        if (read != breakaways.end()) {
+          double sum = 0.0;
+          for (auto it = read; it != breakaways.end(); ++it) sum += it->second;
+          f["mu_s"] = sum / static_cast<double>(breakaways.end() - read);
+        }
         break;
       }
       case RunPlan::Kind::regime_point: {
