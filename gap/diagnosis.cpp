@@ -81,6 +81,22 @@ std::vector<FitParameter> effect_parameters(const std::string& effect) {
   return out;
 }
 
+// The effects a candidate's fit moves. strain_rate_hardening reshapes the junction locus that
+// rate_dependent_static gives (catalogue: "implies the locus"); on a model without that locus it
+// brings the locus's own fitted parameters, not the thesis defaults, so that it is judged as the
+// locus with hardening — which reduces to rate_dependent_static at m = 0 — rather than as a
+// hardening index on a static friction fixed elsewhere (independent Johnson–Cook seeds 302, 402
+// fitted m alone to a held-out gap of 0.25–0.49, worse than no effect).
+std::vector<std::string> implied_effects(const std::vector<std::string>& effects, const rig::FrictionModel& model) {
+  std::vector<std::string> out;
+  const bool locus = model.has("rate_dependent_static") || std::count(effects.begin(), effects.end(), "rate_dependent_static");
+  for (const auto& e : effects) {
+    if (e == "strain_rate_hardening" && !locus) out.push_back("rate_dependent_static");
+    out.push_back(e);
+  }
+  return out;
+}
+
 // Nested effects: `general` reduces to `special` in a limit of its other parameters, where
 // special.special_parameter = general.general_parameter. Thermal thinning with U_T far above the
 // slip speeds is viscous friction with c = c0 (rig/effects/thermal_thinning.h).
@@ -474,7 +490,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
                [](const FitParameter& p) { return p.target != FitParameter::Target::rig; });
   auto space_of = [&](const std::vector<std::string>& effects, bool with_rig) {
     std::vector<FitParameter> space = with_rig ? base_space : search_base;
-    for (const auto& e : effects)
+    for (const auto& e : implied_effects(effects, model))
       for (FitParameter p : effect_parameters(e)) space.push_back(p);
     return space;
   };
@@ -510,9 +526,16 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
         // the baseline μk, which is fitted), so the increments stay small where the data are.
         start.model.set(e, "reference_speed_m_per_s", std::clamp(median_v, 1e-9, 10.0));
       }
+    }
+    for (const auto& e : implied_effects(effects, model)) {
+      const double phi = d.rig.stiffness_N_per_m * median_v / d.rig.normal_load_N;
+      if (e == "strain_rate_hardening" && phi > 0.0) {
+        // Hardening referred to the data's median load rate, where the locus below starts.
+        start.model.set(e, "reference_load_rate_per_s", std::clamp(phi, 1e-6, 1e3));
+      }
       if (e == "rate_dependent_static") {
         // Start the locus through the calibrated μs at the median load rate of the data.
-        const double phi = d.rig.stiffness_N_per_m * median_v / d.rig.normal_load_N;
+        start.model.add(e);
         contact::JunctionLocus shape;
         const double mu_s_max = std::max(start.model.get("rate_dependent_static", "mu_s_max"), 1.2 * d.calibrated.baseline.mu_s);
         shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, shape.alpha);
