@@ -519,23 +519,20 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   }();
   auto evaluate = [&](const std::vector<std::string>& effects, std::uint64_t seed) {
     Setup start{d.rig, d.calibrated};
-    for (const auto& e : effects) {
+    const double phi = d.rig.stiffness_N_per_m * median_v / d.rig.normal_load_N;  // the data's median load rate
+    for (const auto& e : implied_effects(effects, model)) {
       start.model.add(e);
       if ((e == "rate_and_state" || e == "slip_transient") && median_v > 0.0) {
         // Reference speed at the data's median driven speed (not fitted: another V0 only moves
         // the baseline μk, which is fitted), so the increments stay small where the data are.
         start.model.set(e, "reference_speed_m_per_s", std::clamp(median_v, 1e-9, 10.0));
       }
-    }
-    for (const auto& e : implied_effects(effects, model)) {
-      const double phi = d.rig.stiffness_N_per_m * median_v / d.rig.normal_load_N;
       if (e == "strain_rate_hardening" && phi > 0.0) {
-        // Hardening referred to the data's median load rate, where the locus below starts.
+        // Hardening referred to the median load rate, where the locus below starts.
         start.model.set(e, "reference_load_rate_per_s", std::clamp(phi, 1e-6, 1e3));
       }
       if (e == "rate_dependent_static") {
         // Start the locus through the calibrated μs at the median load rate of the data.
-        start.model.add(e);
         contact::JunctionLocus shape;
         const double mu_s_max = std::max(start.model.get("rate_dependent_static", "mu_s_max"), 1.2 * d.calibrated.baseline.mu_s);
         shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, shape.alpha);
