@@ -1,10 +1,11 @@
-// `tribo gap diagnose --experiment DIR --model MODEL.toml --out OUT`: where a model and a measured
+// `tribo gap diagnose --experiment DIR --model MODEL.toml [--test DIR] --out OUT`: where a model and a measured
 // experiment bundle disagree, which catalogue effect closes the gap and by how much (gap/diagnosis.h).
 // `tribo gap selftest [--out OUT] [--quick]`: the diagnosis on synthetic bundles with a withheld effect.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "apps/commands.h"
@@ -17,12 +18,13 @@
 #include "gap/diagnosis.h"
 #include "gap/report.h"
 #include "gap/selftest.h"
+#include "gap/test_block.h"
 
 namespace tribo::cli {
 namespace {
 
 struct DiagnoseArgs {
-  std::string experiment, model, out = "out/gap";
+  std::string experiment, model, test, out = "out/gap";
   std::uint64_t seed = 1;
   bool quick = false, plot = true;
 };
@@ -91,12 +93,13 @@ void write_overlays(const std::filesystem::path& path, const gap::ExperimentBund
   f.commit();
 }
 
-std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, const nlohmann::json& j) {
+std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, const nlohmann::json& j,
+                            const std::optional<gap::TestBlockGap>& test) {
   std::ostringstream md;
   md << "# Gap report: " << args.experiment << " vs " << args.model << "\n\n";
   md << "**Conclusion.** " << d.verdict.conclusion << "\n\n";
   md << "Command: `tribo gap diagnose --experiment " << args.experiment << " --model " << args.model << " --out " << args.out
-     << (args.quick ? " --quick" : "") << "`\n\n";
+     << (args.test.empty() ? "" : " --test " + args.test) << (args.quick ? " --quick" : "") << "`\n\n";
   md << "## Definition\n\n" << j["gap_definition"].get<std::string>()
      << ". Items are split by block (everything at one driven speed; a drive segment's level; three contiguous bins after a step) in order of "
         "speed: even blocks train, odd blocks held out"
@@ -135,6 +138,13 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt(d.verdict.heldout_gap_before, "%.4g") << " -> "
      << fmt(d.verdict.heldout_gap_after, "%.4g") << " (bootstrap std " << fmt(d.verdict.heldout_gap_after_std, "%.2g") << "), confidence "
      << gap::confidence_text(d.verdict.confidence) << ".\n\n";
+  if (test)
+    md << "On the test block `" << args.test << "` (" << test->items << " items, neither fitted nor used to choose the verdict): gap "
+       << fmt(test->gap_before, "%.4g") << " -> " << fmt(test->gap_after, "%.4g") << ", shrink " << fmt(100.0 * test->shrink(), "%.0f %%")
+       << ", its noise floor " << fmt(test->noise_floor, "%.2g") << ".\n\n";
+  else
+    md << "The held-out shrink is measured on the blocks that chose the verdict, so it is the winner's number; `--test DIR` measures it on a "
+          "bundle of its own.\n\n";
   md << "Plots: `gap_by_observable.png` (bar chart), `items.png` (measured vs simulated, before / after), `overlay.png` (traces).\n";
   return md.str();
 }
@@ -147,6 +157,17 @@ void run_diagnose(const DiagnoseArgs& args) {
     throw InputError(e.what());
   }
   for (const auto& w : bundle.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
+  std::optional<gap::ExperimentBundle> test;
+  if (!args.test.empty()) {
+    try {
+      test = gap::read_bundle(args.test);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(e.what());
+    }
+    if (test->kind != bundle.kind)
+      throw InputError(args.test + "/experiment.toml: [rig] kind '" + test->kind + "' is not the diagnosed bundle's '" + bundle.kind + "'");
+    for (const auto& w : test->warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
+  }
   const Model model = load_model(args.model);
   gap::DiagnosisOptions o = fitting_options(args.quick, args.seed);
   for (const std::string& key : model.missing_rig_keys) {
@@ -178,8 +199,20 @@ void run_diagnose(const DiagnoseArgs& args) {
   provenance["seed"] = args.seed;
   nlohmann::json j = report_json(d);
   j["provenance"] = provenance;
+  std::optional<gap::TestBlockGap> tb;
+  if (test) {
+    try {
+      tb = gap::test_block_gap(*test, gap::apply_bundle_rig(*test, model.rig), d, args.seed);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(args.test + ": " + e.what());
+    }
+    provenance["test"] = std::filesystem::absolute(args.test).string();
+    j["provenance"] = provenance;
+    j["test_block"] = {{"bundle", args.test}, {"items", tb->items}, {"gap_before", tb->gap_before}, {"gap_after", tb->gap_after},
+                       {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}};
+  }
   write_file_atomically(dir / "gap_report.json", j.dump(2) + "\n");
-  write_file_atomically(dir / "report.md", markdown_report(d, args, j));
+  write_file_atomically(dir / "report.md", markdown_report(d, args, j, tb));
 
   const gap::Comparison comparison(bundle, rig);
   std::vector<gap::SimulatedRun> before, after;
@@ -194,9 +227,12 @@ void run_diagnose(const DiagnoseArgs& args) {
   std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %s) -> %s\n", d.verdict.conclusion.c_str(),
               gap::verdict_name(d.verdict).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
               gap::confidence_text(d.verdict.confidence).c_str(), args.out.c_str());
+  if (tb) std::printf("test block %s: gap %.4g -> %.4g (shrink %.0f %%)\n", args.test.c_str(), tb->gap_before, tb->gap_after, 100.0 * tb->shrink());
   if (args.plot && run_plot_script("gap", args.out) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
+
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
   return {{"generator", row.c.generator},   {"form", row.form},
@@ -204,6 +240,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
           {"heldout_gap_after", row.heldout_gap_after}, {"confidence", row.confidence},
+          {"test_gap_before", finite_or_null(row.test_gap_before)}, {"test_gap_after", finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s}};
 }
 
@@ -228,6 +265,8 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
       r.confidence = j.at("confidence").is_null() ? std::nan("") : j.at("confidence").get<double>();  // null: not estimable
       r.wall_s = j.value("wall_s", 0.0);  // journals before it was recorded: 0
+      for (auto [key, field] : {std::pair{"test_gap_before", &r.test_gap_before}, std::pair{"test_gap_after", &r.test_gap_after}})
+        if (j.contains(key) && j.at(key).is_number()) *field = j.at(key).get<double>();  // absent before the test block: NaN
       r.correct = r.verdict == r.c.true_effect;
       rows.push_back(r);
     } catch (const nlohmann::json::exception&) {
@@ -294,29 +333,37 @@ void run_selftest(const SelftestArgs& args) {
   j["identified_fraction"] = r.identified_fraction;
   j["controls_none_fraction"] = r.controls_none_fraction;
   j["mean_heldout_shrink"] = r.mean_shrink;
+  j["mean_test_shrink"] = r.mean_test_shrink;
   j["confusion"] = r.confusion;
   for (const auto& [g, sum] : r.by_generator)
     j["by_generator"][g] = {{"identified_fraction", sum.identified_fraction}, {"controls_none_fraction", sum.controls_none_fraction},
                             {"effect_cases", sum.effect_cases}, {"controls", sum.controls},
-                            {"mean_heldout_shrink", sum.mean_shrink}, {"confusion", sum.confusion}};
+                            {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
+                            {"confusion", sum.confusion}};
   j["reliability"] = nlohmann::json::array();
   for (const auto& b : r.reliability)
     j["reliability"].push_back({{"confidence_from", b.lower}, {"confidence_to", b.upper}, {"verdicts", b.verdicts}, {"right", b.right}});
   j["cases"] = nlohmann::json::array();
   for (const auto& row : r.rows) j["cases"].push_back(row_json(row, args.quick));
   write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");
-  std::printf("%-12s %-24s %-18s %-40s %10s %10s %6s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after", "conf");
+  std::printf("%-12s %-24s %-18s %-40s %10s %10s %6s %22s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after", "conf",
+              "test block before/after");
   for (const auto& row : r.rows) {
     std::string has;
     for (const auto& e : row.c.model_effects) has += (has.empty() ? "" : "+") + e;
-    std::printf("%-12s %-24s %-18s %-40s %10.4f %10.4f %5.0f%%%s\n", row.c.generator.c_str(), row.c.true_effect.c_str(), has.empty() ? "-" : has.c_str(),
-                row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, 100.0 * row.confidence, row.correct ? "" : "  <- wrong");
+    std::printf("%-12s %-24s %-18s %-40s %10.4f %10.4f %5.0f%% %10.4f/%-11.4f%s\n", row.c.generator.c_str(), row.c.true_effect.c_str(),
+                has.empty() ? "-" : has.c_str(), row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, 100.0 * row.confidence,
+                row.test_gap_before, row.test_gap_after, row.correct ? "" : "  <- wrong");
   }
   for (const auto& [g, sum] : r.by_generator) {
     std::printf("\ngenerator %s: confusion matrix (rows: true effect, columns: verdict)\n%s", g.c_str(), confusion_csv(sum.confusion).c_str());
     std::printf("identified %.0f %% of %d withheld effects; controls answering none %.0f %% of %d\n", 100.0 * sum.identified_fraction, sum.effect_cases,
                 100.0 * sum.controls_none_fraction, sum.controls);
-    for (const auto& [e, s] : sum.mean_shrink) std::printf("  mean held-out gap shrink, %s: %.0f %%\n", e.c_str(), 100.0 * s);
+    for (const auto& [e, s] : sum.mean_shrink) {
+      std::printf("  mean gap shrink, %s: held-out %.0f %%", e.c_str(), 100.0 * s);
+      if (const auto t = sum.mean_test_shrink.find(e); t != sum.mean_test_shrink.end()) std::printf(", test block %.0f %%", 100.0 * t->second);
+      std::printf("\n");
+    }
   }
   std::printf("\nreliability over both generators (confidence bin -> fraction of verdicts right)\n");
   for (const auto& b : r.reliability)
@@ -339,6 +386,9 @@ void add_gap_command(CLI::App& app) {
                        "constants are refined within ± that fraction")
       ->required();
   diagnose->add_option("--model", diagnose_args->model, "Model TOML ([rig], [friction] as for `tribo rig`)")->required();
+  diagnose->add_option("--test", diagnose_args->test,
+                       "Test bundle of the same machine and kind (other runs, other speeds): the fitted baseline and the verdict's "
+                       "candidate predict it, and the shrink is reported on data that neither the fits nor the verdict saw");
   diagnose->add_option("--out", diagnose_args->out, "Output directory")->capture_default_str();
   diagnose->add_option("--seed", diagnose_args->seed, "Seed of random starts, bootstrap and instrument noise")->capture_default_str();
   diagnose->add_flag("--quick", diagnose_args->quick, "Fewer iterations per fit");

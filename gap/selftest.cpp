@@ -8,6 +8,7 @@
 
 #include "contact/junction_locus.h"
 #include "gap/independent/generator.h"
+#include "gap/test_block.h"
 #include "rig/drive.h"
 #include "rig/instrument.h"
 #include "rig/observables.h"
@@ -164,6 +165,8 @@ namespace {
 
 SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis) {
   SyntheticCase c;
+  ExperimentBundle test;  // the same truth at the test speeds, its noise drawn with another seed
+  const std::uint64_t test_seed = sc.seed + 1'000'003;
   std::string form;
   if (sc.generator == kIndependentGenerator) {
     if (!sc.model_effects.empty()) throw std::invalid_argument("selftest: the independent generator takes no model effects");
@@ -172,12 +175,18 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
     go.duration_s = synthetic.duration_s;
     go.noise_fraction = synthetic.noise_fraction;
     independent::IndependentCase ic = independent::make_independent_case(sc.true_effect, sc.seed, go);
+    go.speeds_m_per_s = synthetic.test_speeds_m_per_s;
+    test = independent::record_bundle(ic.truth, ic.actual, ic.told, ic.friction_chain, ic.displacement_chain, ic.velocity_chain, go,
+                                      test_seed);
     c.true_effect = sc.true_effect;
     c.model = rig::coulomb(ic.model_mu_s, ic.model_mu_k);
     c.bundle = std::move(ic.bundle);
     form = ic.form;
   } else if (sc.generator == kRigGenerator) {
     c = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
+    SyntheticOptions at_test = synthetic;
+    at_test.speeds_m_per_s = synthetic.test_speeds_m_per_s;
+    test = synthesize_bundle(rig::RigParameters{}, c.truth, at_test, test_seed);
     form = "catalogue";
   } else {
     throw std::invalid_argument("selftest: unknown generator '" + sc.generator + "'");
@@ -195,6 +204,11 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.heldout_gap_after = d.verdict.heldout_gap_after;
   row.confidence = d.verdict.confidence;
   row.correct = row.verdict == sc.true_effect;
+  if (!synthetic.test_speeds_m_per_s.empty()) {
+    const TestBlockGap t = test_block_gap(test, apply_bundle_rig(test, rig::RigParameters{}), d, sc.seed);
+    row.test_gap_before = t.gap_before;
+    row.test_gap_after = t.gap_after;
+  }
   return row;
 }
 
@@ -203,7 +217,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
 SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
   SelftestSummary out;
   int effect_right = 0, controls_none = 0;
-  std::map<std::string, std::pair<double, int>> shrink;
+  std::map<std::string, std::pair<double, int>> shrink, test_shrink;
   for (const SelftestRow& row : rows) {
     ++out.confusion[row.c.true_effect][row.verdict];
     if (row.c.true_effect == "none") {
@@ -214,11 +228,16 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
         shrink[row.c.true_effect].first += 1.0 - row.heldout_gap_after / row.heldout_gap_before;
         ++shrink[row.c.true_effect].second;
       }
+      if (row.correct && row.test_gap_before > 0.0 && std::isfinite(row.test_gap_after)) {
+        test_shrink[row.c.true_effect].first += 1.0 - row.test_gap_after / row.test_gap_before;
+        ++test_shrink[row.c.true_effect].second;
+      }
     }
   }
   out.identified_fraction = out.effect_cases ? static_cast<double>(effect_right) / out.effect_cases : 1.0;
   out.controls_none_fraction = out.controls ? static_cast<double>(controls_none) / out.controls : 1.0;
   for (const auto& [e, sh] : shrink) out.mean_shrink[e] = sh.first / sh.second;
+  for (const auto& [e, sh] : test_shrink) out.mean_test_shrink[e] = sh.first / sh.second;
   return out;
 }
 
@@ -251,6 +270,7 @@ SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const Synthe
   out.identified_fraction = all.identified_fraction;
   out.controls_none_fraction = all.controls_none_fraction;
   out.mean_shrink = all.mean_shrink;
+  out.mean_test_shrink = all.mean_test_shrink;
   for (const char* g : {kRigGenerator, kIndependentGenerator}) {
     std::vector<SelftestRow> mine;
     for (const SelftestRow& r : out.rows)

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ struct SyntheticOptions {
   int samples_per_period = 50;    // trace density while slipping (rig/simulator.h)
   // rms noise of the friction sensor as a fraction of μk W (thesis strain-gauge channel ≈ 1 %).
   double noise_fraction = 0.01;
+  // The test block (gap/test_block.h): runs of the same truth at speeds between the diagnosed
+  // ones (their geometric means), with noise drawn afresh — data neither the fits nor the
+  // verdict saw, on which the reported shrink is measured.
+  std::vector<double> test_speeds_m_per_s{7.7e-3, 1.3e-2, 2.2e-2, 3.55e-2};
 };
 
 // "Measured" bundle: the truth simulated at every speed, measured through its instrument plus
@@ -65,6 +70,8 @@ struct SelftestRow {
   std::string verdict;
   std::string form;  // independent generator: the form the mechanism was written in
   double heldout_gap_before = 0.0, heldout_gap_after = 0.0, confidence = 0.0;
+  // On the test block (SyntheticOptions::test_speeds_m_per_s); NaN in journals from before it.
+  double test_gap_before = std::numeric_limits<double>::quiet_NaN(), test_gap_after = std::numeric_limits<double>::quiet_NaN();
   bool correct = false;
   double wall_s = 0.0;  // the diagnosis' wall time (the speed target is per bundle); 0: not recorded
 };
@@ -76,6 +83,7 @@ struct SelftestSummary {
   double identified_fraction = 0.0;   // effect cases with the right verdict
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink;  // per true effect, of correctly identified cases: 1 − after/before
+  std::map<std::string, double> mean_test_shrink;  // the same on the test block (cases that have one)
 };
 
 // Reliability of the reported confidence: verdicts with confidence in [lower, upper) (the last
@@ -91,7 +99,7 @@ struct SelftestResult {
   std::map<std::string, std::map<std::string, int>> confusion;
   double identified_fraction = 0.0;
   double controls_none_fraction = 0.0;
-  std::map<std::string, double> mean_shrink;
+  std::map<std::string, double> mean_shrink, mean_test_shrink;
   std::map<std::string, SelftestSummary> by_generator;  // "rig", "independent"
   std::vector<ReliabilityBin> reliability;              // over both generators
 };

@@ -42,3 +42,12 @@ execute_process(COMMAND ${TRIBO} reynolds ${WORK}/bad_reynolds.toml --out ${WORK
 if(NOT status4 EQUAL 2 OR NOT err4 MATCHES "gap_m" OR EXISTS ${WORK}/out_reynolds)
   message(FATAL_ERROR "tribo reynolds, zero gap: expected status 2 naming gap_m and no output, got ${status4}: ${err4}")
 endif()
+
+# `tribo gap diagnose --test DIR`: a test bundle that cannot be read is refused before any fit,
+# naming it, and nothing is written.
+execute_process(COMMAND ${TRIBO} gap diagnose --experiment ${EXAMPLES}/gap-thesis-observations --model ${EXAMPLES}/gap-thesis-baseline.toml
+                        --test ${WORK}/no-such-bundle --out ${WORK}/out_gap
+                RESULT_VARIABLE status6 ERROR_VARIABLE err6)
+if(NOT status6 EQUAL 2 OR NOT err6 MATCHES "no-such-bundle" OR EXISTS ${WORK}/out_gap)
+  message(FATAL_ERROR "tribo gap diagnose, missing test bundle: expected status 2 naming it and no output, got ${status6}: ${err6}")
+endif()

@@ -1,0 +1,33 @@
+// The reported shrink on a separate test block (issue 15). The diagnosis fits on its train blocks
+// and chooses the verdict on its held-out blocks, so the held-out shrink it reports is the one
+// that won a contest on those very blocks: a winner's number, optimistic by however much luck
+// the choice absorbed. A test block is data neither the fits nor the choice saw — other runs of
+// the same machine and specimen (in the selftest: the same truth at driven speeds between the
+// diagnosed ones, with fresh noise). On it the calibrated baseline and the verdict's candidate,
+// as fitted, predict every item, and the shrink is 1 − gap_after / gap_before over all its items.
+#pragma once
+
+#include <cstdint>
+
+#include "gap/bundle.h"
+#include "gap/diagnosis.h"
+#include "rig/parameters.h"
+
+namespace tribo::gap {
+
+struct TestBlockGap {
+  int items = 0;
+  double gap_before = 0.0;   // the calibrated baseline's gap over all the test bundle's items
+  double gap_after = 0.0;    // the verdict candidate's (= gap_before for "none" and "unexplained")
+  double noise_floor = 0.0;  // the gap of the test items' own standard errors (Item::noise)
+  double shrink() const { return gap_before > 0.0 ? 1.0 - gap_after / gap_before : 0.0; }
+};
+
+// `model_rig` as for diagnose(): the model's rig with the test bundle's [rig] keys applied (the
+// comparison takes the normal load and what the bundle leaves out from it); the predictions use
+// the rig the diagnosis calibrated. Throws std::invalid_argument when the test bundle gives no
+// item to compare.
+TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParameters& model_rig, const Diagnosis& d,
+                            std::uint64_t seed);
+
+}  // namespace tribo::gap

@@ -1,0 +1,91 @@
+// The shrink on a separate test block (gap/test_block.h, issue 15): the fitted models predict runs
+// at driven speeds the diagnosis never saw, and the gap is measured there.
+//   - exactness: a model that is the truth leaves no gap on noiseless test runs, and the same
+//     model without the effect leaves the effect's whole signature;
+//   - the floor: on test runs with 1 % sensor noise the truth leaves a gap under the noise floor
+//     the test items' own standard errors give, and not far under it;
+//   - no inverse crime: a diagnosis of the independent generator's Kato-ageing case (another
+//     integrator, another form of rate-dependent static friction, a measuring chain) still
+//     halves the gap on that generator's runs at four speeds between the diagnosed five.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "gap/selftest.h"
+#include "gap/test_block.h"
+#include "tests/gap/one_candidate_fit.h"
+
+namespace tribo::gap {
+namespace {
+
+// A diagnosis whose baseline is `before` and whose verdict is `effect` fitted as `after`.
+Diagnosis diagnosis_of(const rig::FrictionModel& before, const rig::FrictionModel& after, const std::string& effect) {
+  Diagnosis d;
+  d.calibrated = before;
+  Candidate c;
+  c.effects = {effect};
+  c.model = after;
+  d.candidates.push_back(c);
+  d.verdict.effects = c.effects;
+  return d;
+}
+
+rig::FrictionModel viscous_truth() {
+  rig::FrictionModel m = rig::coulomb(0.32, 0.19);
+  m.set("viscous_friction", "coefficient_N_s_per_m", 35.0);
+  return m;
+}
+
+ExperimentBundle test_runs(const rig::FrictionModel& truth, double noise_fraction) {
+  SyntheticOptions o;
+  o.speeds_m_per_s = o.test_speeds_m_per_s;
+  o.noise_fraction = noise_fraction;
+  return synthesize_bundle(rig::RigParameters{}, truth, o, 17);
+}
+
+TEST(TestBlock, TheTruthLeavesNoGapOnNoiselessRunsAndTheModelWithoutTheEffectItsSignature) {
+  const rig::FrictionModel truth = viscous_truth();
+  const ExperimentBundle test = test_runs(truth, 0.0);
+  const TestBlockGap t = test_block_gap(test, rig::RigParameters{}, diagnosis_of(rig::coulomb(0.32, 0.19), truth, "viscous_friction"), 1);
+  std::printf("test block: %d items, gap %.5f -> %.5f, floor %.5f\n", t.items, t.gap_before, t.gap_after, t.noise_floor);
+  EXPECT_GE(t.items, 40);  // four runs: peaks, troughs, slip drops, times, a static point each
+  // The same simulator on both sides: only the integration tolerance, 1e-10 without noise, is left.
+  EXPECT_LT(t.gap_after, 1e-4);
+  // c = 35 N s/m at 8–36 mm/s adds 0.1–0.5 N to a friction of ≈ 1.9 N: several per cent of μ.
+  EXPECT_GT(t.gap_before, 0.01);
+  EXPECT_GT(t.shrink(), 0.99);
+}
+
+TEST(TestBlock, OnNoisyRunsTheTruthLeavesAGapUnderTheNoiseFloor) {
+  const rig::FrictionModel truth = viscous_truth();
+  const ExperimentBundle test = test_runs(truth, 0.01);
+  const TestBlockGap t = test_block_gap(test, rig::RigParameters{}, diagnosis_of(rig::coulomb(0.32, 0.19), truth, "viscous_friction"), 1);
+  std::printf("test block at 1 %% noise: gap %.5f -> %.5f, floor %.5f\n", t.gap_before, t.gap_after, t.noise_floor);
+  ASSERT_GT(t.noise_floor, 0.0);
+  // The floor bounds what a right model leaves. On 2-s runs it overstates it about twofold (0.0031
+  // against 0.0015 here): each of the four blocks holds one or two stick-slip cycles, and the
+  // blocks differ even without noise (floor 0.0022 on the noiseless runs above; docs/gap.md
+  // step 8). So: under the floor, and above a fifth of it — the noise does show.
+  EXPECT_LT(t.gap_after, t.noise_floor);
+  EXPECT_GT(t.gap_after, 0.2 * t.noise_floor);
+}
+
+TEST(TestBlock, ADiagnosisOfTheIndependentGeneratorHalvesTheGapAtSpeedsItNeverSaw) {
+  independent::GeneratorOptions go;
+  const independent::IndependentCase c = independent::make_independent_case("rate_dependent_static", 301, go);
+  const Diagnosis d = diagnose_with_one_candidate(c, "rate_dependent_static");
+  ASSERT_EQ(verdict_name(d.verdict), "rate_dependent_static");
+  go.speeds_m_per_s = SyntheticOptions{}.test_speeds_m_per_s;
+  const ExperimentBundle test = independent::record_bundle(c.truth, c.actual, c.told, c.friction_chain, c.displacement_chain,
+                                                           c.velocity_chain, go, 301 + 1'000'003);
+  const TestBlockGap t = test_block_gap(test, apply_bundle_rig(test, rig::RigParameters{}), d, 301);
+  const double heldout_shrink = 1.0 - d.verdict.heldout_gap_after / d.verdict.heldout_gap_before;
+  std::printf("held-out %.4f -> %.4f (%.0f %%); test block %.4f -> %.4f (%.0f %%), floor %.4f\n", d.verdict.heldout_gap_before,
+              d.verdict.heldout_gap_after, 100.0 * heldout_shrink, t.gap_before, t.gap_after, 100.0 * t.shrink(), t.noise_floor);
+  EXPECT_GT(t.shrink(), 0.5);
+  // The held-out shrink is the winner's number; on unseen speeds it may be lower, not by half.
+  EXPECT_GT(t.shrink(), heldout_shrink - 0.25);
+}
+
+}  // namespace
+}  // namespace tribo::gap
