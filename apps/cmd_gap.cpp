@@ -149,24 +149,25 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   return md.str();
 }
 
-void run_diagnose(const DiagnoseArgs& args) {
+// A bundle read for the command line: a malformed one is bad input (exit 2), its warnings go to stderr.
+gap::ExperimentBundle read_bundle_or_exit(const std::string& dir) {
   gap::ExperimentBundle bundle;
   try {
-    bundle = gap::read_bundle(args.experiment);
+    bundle = gap::read_bundle(dir);
   } catch (const std::invalid_argument& e) {
     throw InputError(e.what());
   }
   for (const auto& w : bundle.warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
+  return bundle;
+}
+
+void run_diagnose(const DiagnoseArgs& args) {
+  const gap::ExperimentBundle bundle = read_bundle_or_exit(args.experiment);
   std::optional<gap::ExperimentBundle> test;
   if (!args.test.empty()) {
-    try {
-      test = gap::read_bundle(args.test);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(e.what());
-    }
+    test = read_bundle_or_exit(args.test);
     if (test->kind != bundle.kind)
       throw InputError(args.test + "/experiment.toml: [rig] kind '" + test->kind + "' is not the diagnosed bundle's '" + bundle.kind + "'");
-    for (const auto& w : test->warnings) std::fprintf(stderr, "tribo: warning: %s\n", w.c_str());
   }
   const Model model = load_model(args.model);
   gap::DiagnosisOptions o = fitting_options(args.quick, args.seed);
@@ -218,11 +219,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   std::vector<gap::SimulatedRun> before, after;
   comparison.predict(d.rig, d.calibrated, args.seed, &before);
   // The overlay shows the verdict's candidate (not merely the best-ranked one).
-  for (const gap::Candidate& c : d.candidates)
-    if (!d.verdict.effects.empty() && c.effects == d.verdict.effects) {
-      comparison.predict(c.rig, c.model, args.seed, &after);
-      break;
-    }
+  if (const gap::Candidate* chosen = gap::verdict_candidate(d)) comparison.predict(chosen->rig, chosen->model, args.seed, &after);
   write_overlays(dir / "overlay.csv", bundle, before, after, rig.normal_load_N, provenance);
   std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %s) -> %s\n", d.verdict.conclusion.c_str(),
               gap::verdict_name(d.verdict).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,

@@ -950,10 +950,15 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     tolerance_ = std::clamp(kToleranceBelowNoise * noise, kFinestTolerance, kCoarsestTolerance);
 }
 
+std::vector<double> Comparison::relative_noise() const {
+  std::vector<double> out;
+  for (const Item& it : items_) out.push_back(it.noise / scale(it.observable));
+  return out;
+}
+
 double Comparison::median_relative_noise() const {
-  std::vector<double> relative;
-  for (const Item& it : items_)
-    if (it.noise > 0.0) relative.push_back(it.noise / scale(it.observable));
+  std::vector<double> relative = relative_noise();
+  std::erase_if(relative, [](double r) { return !(r > 0.0); });
   if (relative.empty()) return 0.0;
   const auto middle = relative.begin() + static_cast<long>(relative.size() / 2);
   std::nth_element(relative.begin(), middle, relative.end());

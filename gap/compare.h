@@ -132,6 +132,9 @@ class Comparison {
   // Dimensionless residuals (sim − measured)/scale(observable); 1 where the simulation is NaN.
   std::vector<double> residuals(const std::vector<double>& simulated) const;
   double scale(const std::string& observable) const;
+  // Each item's standard error in the gap's units, Item::noise / scale(observable) (0 where the
+  // data cannot tell): the residuals of the noise alone, whose gap is the noise floor.
+  std::vector<double> relative_noise() const;
 
   // The measured response to the first velocity step up (all NaN without one): starts for the
   // fits of a velocity-step test.

@@ -415,8 +415,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   }
   for (const Item& it : d.items) d.measured.push_back(it.measured);
   // The data's own noise in gap units, and the floor it puts under any model's held-out gap.
-  std::vector<double> noise_r(n);
-  for (std::size_t i = 0; i < n; ++i) noise_r[i] = d.items[i].noise / comparison.scale(d.items[i].observable);
+  const std::vector<double> noise_r = comparison.relative_noise();
   d.verdict.noise_floor = breakdown(d.items, noise_r, d.heldout).gap;
   const double margin = gap_margin(o, d.verdict.noise_floor);
   std::mutex progress_mutex;
@@ -677,6 +676,13 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
 
   d.verdict.conclusion = conclusion(d, chosen);
   return d;
+}
+
+const Candidate* verdict_candidate(const Diagnosis& d) {
+  if (d.verdict.effects.empty()) return nullptr;
+  for (const Candidate& c : d.candidates)
+    if (c.effects == d.verdict.effects) return &c;
+  return nullptr;
 }
 
 }  // namespace tribo::gap

@@ -153,6 +153,9 @@ std::vector<std::string> default_candidates(const rig::FrictionModel& model, con
 // The model's rig with every [rig] key the bundle gives.
 rig::RigParameters apply_bundle_rig(const ExperimentBundle& bundle, rig::RigParameters rig);
 
+// The candidate the verdict names; nullptr for "none" and "unexplained".
+const Candidate* verdict_candidate(const Diagnosis& d);
+
 std::string verdict_name(const std::vector<std::string>& effects);  // "none", "a" or "a+b"
 std::string verdict_name(const Verdict& v);                         // the same, or "unexplained"
 

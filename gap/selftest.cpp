@@ -224,14 +224,14 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
       ++out.controls, controls_none += row.correct;
     } else {
       ++out.effect_cases, effect_right += row.correct;
-      if (row.correct && row.heldout_gap_before > 0.0) {
-        shrink[row.c.true_effect].first += 1.0 - row.heldout_gap_after / row.heldout_gap_before;
-        ++shrink[row.c.true_effect].second;
-      }
-      if (row.correct && row.test_gap_before > 0.0 && std::isfinite(row.test_gap_after)) {
-        test_shrink[row.c.true_effect].first += 1.0 - row.test_gap_after / row.test_gap_before;
-        ++test_shrink[row.c.true_effect].second;
-      }
+      // Journals from before the test block carry NaN there: such a row counts for the held-out shrink only.
+      auto add = [&](std::map<std::string, std::pair<double, int>>& to, double before, double after) {
+        if (!row.correct || !(before > 0.0) || !std::isfinite(after)) return;
+        to[row.c.true_effect].first += 1.0 - after / before;
+        ++to[row.c.true_effect].second;
+      };
+      add(shrink, row.heldout_gap_before, row.heldout_gap_after);
+      add(test_shrink, row.test_gap_before, row.test_gap_after);
     }
   }
   out.identified_fraction = out.effect_cases ? static_cast<double>(effect_right) / out.effect_cases : 1.0;

@@ -19,16 +19,9 @@ TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParamete
     return breakdown(items, comparison.residuals(comparison.predict(rig, model, seed)), all).gap;
   };
   out.gap_before = gap_of(d.rig, d.calibrated);
-  out.gap_after = out.gap_before;
-  if (!d.verdict.effects.empty())
-    for (const Candidate& c : d.candidates)
-      if (c.effects == d.verdict.effects) {
-        out.gap_after = gap_of(c.rig, c.model);
-        break;
-      }
-  std::vector<double> noise_r(items.size());
-  for (std::size_t i = 0; i < items.size(); ++i) noise_r[i] = items[i].noise / comparison.scale(items[i].observable);
-  out.noise_floor = breakdown(items, noise_r, all).gap;
+  const Candidate* chosen = verdict_candidate(d);
+  out.gap_after = chosen ? gap_of(chosen->rig, chosen->model) : out.gap_before;
+  out.noise_floor = breakdown(items, comparison.relative_noise(), all).gap;
   return out;
 }
 

@@ -72,12 +72,6 @@ TEST(RateHardening, HardenedLocusFollowsJohnsonCookStaticFrictionWhereTheBareLoc
   EXPECT_EQ(verdict_name(d.verdict), "strain_rate_hardening");
 }
 
-}  // namespace
-}  // namespace tribo::gap
-
-namespace tribo::gap {
-namespace {
-
 // The other way round: the model has the junction locus (the rig generator's second-effect case,
 // seed 61 of the full set: truth = locus + hardening from the slowest load rate). The hardening
 // is then fitted on the locus the model gives, referred to the catalogue's rate; referred to the
