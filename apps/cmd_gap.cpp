@@ -184,8 +184,9 @@ void run_diagnose(const DiagnoseArgs& args) {
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
   const int candidates = static_cast<int>(gap::default_candidates(model.friction, bundle.kind).size());
-  // Steps reported: calibration, each candidate, the three leading refined, a pair and its refinement.
-  Progress progress("gap: fitting", 1 + candidates + std::min(3, candidates) + 2);
+  // Steps reported: calibration, each candidate, the four leading refined, a pair and its
+  // refinement, and the leaders' refits for the resamples.
+  Progress progress("gap: fitting", 1 + candidates + std::min(4, candidates) + 2 + 1);
   o.progress = [&](const std::string& what) { progress.step(what); };
   gap::Diagnosis d;
   try {
@@ -236,7 +237,8 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
           {"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
-          {"heldout_gap_after", row.heldout_gap_after}, {"confidence", row.confidence},
+          {"heldout_gap_after", row.heldout_gap_after}, {"confidence", finite_or_null(row.confidence)},
+          {"confidence_fixed_fits", finite_or_null(row.confidence_fixed_fits)},
           {"test_gap_before", finite_or_null(row.test_gap_before)}, {"test_gap_after", finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s}};
 }
@@ -262,8 +264,9 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
       r.confidence = j.at("confidence").is_null() ? std::nan("") : j.at("confidence").get<double>();  // null: not estimable
       r.wall_s = j.value("wall_s", 0.0);  // journals before it was recorded: 0
-      for (auto [key, field] : {std::pair{"test_gap_before", &r.test_gap_before}, std::pair{"test_gap_after", &r.test_gap_after}})
-        if (j.contains(key) && j.at(key).is_number()) *field = j.at(key).get<double>();  // absent before the test block: NaN
+      for (auto [key, field] : {std::pair{"test_gap_before", &r.test_gap_before}, std::pair{"test_gap_after", &r.test_gap_after},
+                                std::pair{"confidence_fixed_fits", &r.confidence_fixed_fits}})
+        if (j.contains(key) && j.at(key).is_number()) *field = j.at(key).get<double>();  // absent in older journals: NaN
       r.correct = r.verdict == r.c.true_effect;
       rows.push_back(r);
     } catch (const nlohmann::json::exception&) {

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 
@@ -74,7 +75,7 @@ Progress::Progress(std::string label, int total)
 
 void Progress::step(const std::string& what) {
   ++count_;
-  const double frac = total_ > 0 ? static_cast<double>(count_) / total_ : 1.0;
+  const double frac = total_ > 0 ? std::min(1.0, static_cast<double>(count_) / total_) : 1.0;  // a step past the estimate stays full
   const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   if (tty_) {
     const int width = 30, filled = static_cast<int>(frac * width);

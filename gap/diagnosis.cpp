@@ -15,6 +15,7 @@
 
 #include "contact/junction_locus.h"
 #include "gap/calibration.h"
+#include "gap/refit.h"
 #include "gap/report.h"
 #include "gap/verdict.h"
 
@@ -211,6 +212,7 @@ struct FitResult {
 // fit from the right basin at its minimum (a biased gradient leaves it short by a fraction of the
 // step, which on data at the noise level decides between nested candidates).
 enum class Resolution { search, refine };
+constexpr double kSearchStep = 0.01;  // the search's difference step in the coordinates u ∈ [1, 2]
 
 FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const Setup& start, const std::vector<bool>& train_mask,
               const DiagnosisOptions& o, std::uint64_t seed, int starts, std::size_t randomised_from,
@@ -227,7 +229,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   auto solve = [&](std::vector<double>& u, const std::vector<double>& tail, int iterations) {
     const bool refine = resolution == Resolution::refine;
     ceres::NumericDiffOptions nd;
-    nd.relative_step_size = refine ? 0.002 : 0.01;
+    nd.relative_step_size = refine ? 0.002 : kSearchStep;
     Cost* functor = new Cost{&c, &space, &start, train, w, o.seed, train_mask, tail};
     ceres::DynamicCostFunction* cost =
         refine ? static_cast<ceres::DynamicCostFunction*>(
@@ -361,6 +363,112 @@ std::map<std::string, double> values(const std::vector<FitParameter>& space, con
   return out;
 }
 
+// A fit the bootstrap refits (diagnosis.h step 4): its search coordinates (the rig held where
+// the fit put it), where it stopped, and the residuals it left.
+struct Fitted {
+  std::vector<FitParameter> space;
+  Setup setup;
+  const std::vector<double>* residuals;
+};
+
+// Each fit refitted to `samples` redraws of the training items within their noise (measured
+// value + noise_r_i z_i), linearised about where it stopped (gap/refit.h) with the Jacobian the
+// search's own difference step gives — forward, backward at the upper bound. Returns, per redraw,
+// the residuals of every fit on every item. The redraws are a stream of their own (the held-out
+// redraws are the bootstrap's), drawn for every item so that a redraw does not depend on the split.
+std::vector<std::vector<std::vector<double>>> refitted_residuals(const Comparison& c, const std::vector<Fitted>& fits,
+                                                                 const std::vector<bool>& train, const std::vector<double>& noise_r,
+                                                                 int samples, std::uint64_t seed) {
+  const std::size_t n = train.size();
+  std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (fit, coordinate); coordinate = size: at the fit itself
+  for (std::size_t f = 0; f < fits.size(); ++f)
+    for (std::size_t j = 0; j <= fits[f].space.size(); ++j) tasks.emplace_back(f, j);
+  std::vector<std::vector<double>> at(tasks.size());
+  std::vector<double> step(tasks.size(), 0.0);
+#pragma omp parallel for schedule(dynamic)
+  for (std::size_t t = 0; t < tasks.size(); ++t) {
+    const auto [f, j] = tasks[t];
+    std::vector<double> u = coordinates(fits[f].space, fits[f].setup, false);
+    if (j < u.size()) step[t] = u[j] + kSearchStep <= 2.0 ? kSearchStep : -kSearchStep, u[j] += step[t];
+    Setup s = fits[f].setup;
+    apply(fits[f].space, u, s);
+    try {
+      at[t] = c.residuals(c.predict(s.rig, s.model, seed));
+    } catch (const std::invalid_argument&) {
+      at[t].clear();  // not simulated there: that column stays 0
+    }
+  }
+  const std::vector<double> w_train = weights(c.items(), train);
+  std::vector<LinearisedRefit> linear;
+  for (std::size_t f = 0, t = 0; f < fits.size(); t += fits[f].space.size() + 1, ++f) {
+    const std::size_t p = fits[f].space.size();
+    const std::vector<double>& centre = at[t + p];
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p));
+    for (std::size_t j = 0; j < p; ++j)
+      if (!at[t + j].empty() && !centre.empty())
+        for (std::size_t i = 0; i < n; ++i)
+          J(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (at[t + j][i] - centre[i]) / step[t + j];
+    std::vector<double> below, above;
+    for (double x : coordinates(fits[f].space, fits[f].setup, false)) below.push_back(x - 1.0), above.push_back(2.0 - x);
+    linear.emplace_back(std::move(J), *fits[f].residuals, w_train, below, above);
+  }
+  // Each direction whose redraw steps reach past the difference step is probed two standard
+  // deviations of its step away (clipped to the box), and kept when the training residuals change
+  // there as J predicts, within half (refit.h).
+  struct Probe {
+    std::size_t fit, centre_task;
+    Eigen::Index direction;
+    Eigen::VectorXd du;
+  };
+  std::vector<Probe> probes;
+  for (std::size_t f = 0, t = 0; f < fits.size(); t += fits[f].space.size() + 1, ++f) {
+    const Eigen::VectorXd sd = linear[f].step_std(noise_r);
+    const std::vector<double> u = coordinates(fits[f].space, fits[f].setup, false);
+    for (Eigen::Index k = 0; k < sd.size(); ++k) {
+      // Within the difference step J is the secant the fit itself follows; probing shorter steps
+      // would read the simulation's own roughness (event timing, the integration tolerance).
+      if (!(2.0 * sd(k) > kSearchStep)) continue;
+      Eigen::VectorXd du = 2.0 * sd(k) * linear[f].directions().col(k);
+      for (Eigen::Index j = 0; j < du.size(); ++j) du(j) = std::clamp(u[static_cast<std::size_t>(j)] + du(j), 1.0, 2.0) - u[static_cast<std::size_t>(j)];
+      probes.push_back({f, t + fits[f].space.size(), k, du});
+    }
+  }
+  std::vector<char> linear_enough(probes.size(), 0);
+#pragma omp parallel for schedule(dynamic)
+  for (std::size_t q = 0; q < probes.size(); ++q) {
+    const Probe& pr = probes[q];
+    const std::vector<double>& centre = at[pr.centre_task];
+    if (centre.empty()) continue;  // the fit itself not simulated: its columns are 0 already
+    std::vector<double> u = coordinates(fits[pr.fit].space, fits[pr.fit].setup, false);
+    for (std::size_t j = 0; j < u.size(); ++j) u[j] += pr.du(static_cast<Eigen::Index>(j));
+    Setup s = fits[pr.fit].setup;
+    apply(fits[pr.fit].space, u, s);
+    try {
+      const std::vector<double> r = c.residuals(c.predict(s.rig, s.model, seed));
+      const Eigen::VectorXd predicted = linear[pr.fit].predicted_change(pr.du);
+      Eigen::VectorXd miss(static_cast<Eigen::Index>(n));
+      for (std::size_t i = 0; i < n; ++i) miss(static_cast<Eigen::Index>(i)) = r[i] - centre[i] - predicted(static_cast<Eigen::Index>(i));
+      linear_enough[q] = linear[pr.fit].train_norm(miss) <= 0.5 * linear[pr.fit].train_norm(predicted);
+    } catch (const std::invalid_argument&) {
+      linear_enough[q] = 0;  // not simulated there: no straight line to follow
+    }
+  }
+  for (std::size_t q = 0; q < probes.size(); ++q)
+    if (!linear_enough[q]) linear[probes[q].fit].drop(probes[q].direction);
+  std::mt19937_64 rng(seed ^ 0x5851f42d4c957f2dULL);
+  std::normal_distribution<double> z;
+  std::vector<double> shift(n, 0.0);
+  std::vector<std::vector<std::vector<double>>> out(static_cast<std::size_t>(samples));
+  for (auto& sample : out) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const double zi = z(rng);
+      shift[i] = train[i] ? noise_r[i] * zi : 0.0;
+    }
+    for (const LinearisedRefit& l : linear) sample.push_back(l.residuals(shift));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::string> default_candidates(const rig::FrictionModel& model, const std::string& kind) {
@@ -379,6 +487,7 @@ std::string DiagnosisOptions::invalid_reason() const {
   if (!(floor_margin >= 0.0)) return "floor_margin must not be negative";
   if (!(unexplained_floors > 1.0)) return "unexplained_floors must exceed 1";
   if (bootstrap_samples < 0) return "bootstrap_samples must not be negative";
+  if (refit_leaders < 0) return "refit_leaders must not be negative";
   for (const auto& k : calibrate_rig)
     if (k != "stiffness_N_per_m" && k != "damping_N_s_per_m" && k != "damping_ratio" && k != "mass_kg")
       return "cannot calibrate rig key '" + k + "'";
@@ -640,7 +749,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // Localization: share of the baseline's squared residuals by observable, phase and speed class.
   d.localization = localize(d.items, d.baseline_residuals);
 
-  // 3. Verdict with bootstrap over held-out units.
+  // 3. Verdict.
   const Candidate* chosen = nullptr;
   {
     std::vector<Standing> standing;
@@ -668,9 +777,38 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       d.verdict.remaining_where = l.front().observable + " (" + l.front().where + ", worst " + l.front().worst_item + ")";
   }
   {
-    const Confidence c = bootstrap_confidence(d.items, d.heldout, noise_r, d.baseline_residuals, d.candidates,
-                                              chosen ? chosen->residuals : d.baseline_residuals, verdict_name(d.verdict), o);
+    // 4. Confidence, with the leaders refitted on training data measured again within their noise:
+    // a cut that a fit found only in this draw of the training noise does not survive its redraws.
+    const int chosen_index = chosen ? static_cast<int>(chosen - d.candidates.data()) : -1;
+    std::vector<std::size_t> leaders;
+    if (chosen) leaders.push_back(static_cast<std::size_t>(chosen_index));
+    for (std::size_t k = 0; k < d.candidates.size() && leaders.size() < static_cast<std::size_t>(o.refit_leaders); ++k)
+      if (static_cast<int>(k) != chosen_index) leaders.push_back(k);
+    bool train_noise = false;
+    for (std::size_t i = 0; i < n; ++i) train_noise = train_noise || (train[i] && noise_r[i] > 0.0);
+    std::vector<Refit> refits;
+    if (train_noise && o.refit_leaders > 0 && o.bootstrap_samples > 0) {
+      std::vector<Fitted> fits{{search_base, Setup{d.rig, d.calibrated}, &d.baseline_residuals}};
+      for (std::size_t k : leaders) {
+        const Candidate& c = d.candidates[k];
+        fits.push_back({space_of(c.effects, false), Setup{c.rig, c.model}, &c.residuals});
+      }
+      const auto redrawn = refitted_residuals(comparison, fits, train, noise_r, o.bootstrap_samples, o.seed);
+      report("linearised the leaders' refits");
+      for (const auto& sample : redrawn) {
+        Refit& r = refits.emplace_back();
+        r.baseline = sample[0];
+        for (std::size_t k = 0; k < leaders.size(); ++k) r.candidates[leaders[k]] = sample[k + 1];
+      }
+      d.verdict.refitted.push_back("baseline");
+      for (std::size_t k : leaders) d.verdict.refitted.push_back(verdict_name(d.candidates[k].effects));
+    }
+    const std::string name = verdict_name(d.verdict);
+    const Confidence fixed = bootstrap_confidence(d.items, d.heldout, noise_r, d.baseline_residuals, d.candidates, chosen_index, name, o);
+    const Confidence c =
+        refits.empty() ? fixed : bootstrap_confidence(d.items, d.heldout, noise_r, d.baseline_residuals, d.candidates, chosen_index, name, o, refits);
     d.verdict.confidence = c.agreement;
+    d.verdict.confidence_fixed_fits = fixed.agreement;
     d.verdict.heldout_gap_after_std = c.heldout_gap_after_std;
   }
 

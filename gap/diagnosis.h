@@ -29,7 +29,7 @@
 //  4. Verdict: the simplest earning candidate, unless one with more parameters beats it by the
 //     same margins and by more than 2 in C (Kass & Raftery's "bare mention" BIC difference);
 //     else "none". Confidence: share of bootstrap resamples of the held-out units that give the
-//     same verdict.
+//     same verdict, with the baseline and the leading candidates refitted on redrawn training data.
 //
 // Open world. The data's own noise (Item::noise, compare.h) gives the *noise floor*: the gap of
 // the item standard errors, floor = mean_o sqrt(mean_{i in o} (noise_i / s_o)²) over held-out —
@@ -71,6 +71,11 @@ struct DiagnosisOptions {
   double unexplained_floors = 5.0;
   double pair_threshold = 0.5;         // pairs are tried when the best single closes less than this
   int bootstrap_samples = 200;
+  // Refits in the resamples: each resample also measures the training items again within their
+  // noise, and the baseline and this many leading candidates (the verdict's first) are refitted to
+  // it (linearised, gap/refit.h); the others keep their fits. 0, or data without a noise estimate
+  // on the training items: every candidate keeps its fit in every resample.
+  int refit_leaders = 2;
   std::uint64_t seed = 1;              // random starts, bootstrap, instrument noise
   // Rig keys the model leaves out: stiffness_N_per_m, mass_kg, damping_N_s_per_m (×/÷ 100 around the
   // start), or damping_ratio ζ = r / (2√(kM)) in [1e-3, 0.9] (the damping when k is fitted too).
@@ -122,6 +127,8 @@ struct Verdict {
   double remaining_floors = 0.0;     // heldout_gap_after / noise_floor (NaN without a floor)
   std::string remaining_where;       // observable and place holding most of what remains
   double confidence = 0.0;
+  double confidence_fixed_fits = 0.0;  // the same bootstrap with every fit held where it is
+  std::vector<std::string> refitted;   // refitted in the resamples: "baseline" and the leaders
   std::string conclusion;            // one sentence a tribologist can act on
 };
 

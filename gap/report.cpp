@@ -113,6 +113,8 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"heldout_gap_after", d.verdict.heldout_gap_after},
                   {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},
                   {"confidence", std::isfinite(d.verdict.confidence) ? json(d.verdict.confidence) : json(nullptr)},
+                  {"confidence_fixed_fits", std::isfinite(d.verdict.confidence_fixed_fits) ? json(d.verdict.confidence_fixed_fits) : json(nullptr)},
+                  {"refitted_in_resamples", d.verdict.refitted},
                   {"noise_floor", d.verdict.noise_floor},
                   {"remaining_gap_in_floors", std::isfinite(d.verdict.remaining_floors) ? json(d.verdict.remaining_floors) : json(nullptr)},
                   {"remaining_where", d.verdict.remaining_where},

@@ -203,6 +203,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.heldout_gap_before = d.verdict.heldout_gap_before;
   row.heldout_gap_after = d.verdict.heldout_gap_after;
   row.confidence = d.verdict.confidence;
+  row.confidence_fixed_fits = d.verdict.confidence_fixed_fits;
   row.correct = row.verdict == sc.true_effect;
   if (!synthetic.test_speeds_m_per_s.empty()) {
     const TestBlockGap t = test_block_gap(test, apply_bundle_rig(test, rig::RigParameters{}), d, sc.seed);

@@ -70,6 +70,8 @@ struct SelftestRow {
   std::string verdict;
   std::string form;  // independent generator: the form the mechanism was written in
   double heldout_gap_before = 0.0, heldout_gap_after = 0.0, confidence = 0.0;
+  // The bootstrap with every fit held (Verdict::confidence_fixed_fits); NaN in journals from before.
+  double confidence_fixed_fits = std::numeric_limits<double>::quiet_NaN();
   // On the test block (SyntheticOptions::test_speeds_m_per_s); NaN in journals from before it.
   double test_gap_before = std::numeric_limits<double>::quiet_NaN(), test_gap_after = std::numeric_limits<double>::quiet_NaN();
   bool correct = false;

@@ -136,8 +136,8 @@ std::vector<Localization> localize(const std::vector<Item>& items, const std::ve
 }
 
 Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vector<bool>& heldout, const std::vector<double>& noise_r,
-                                const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates,
-                                const std::vector<double>& chosen_residuals, const std::string& verdict, const DiagnosisOptions& o) {
+                                const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates, int chosen,
+                                const std::string& verdict, const DiagnosisOptions& o, const std::vector<Refit>& refits) {
   const std::size_t n = items.size();
   std::vector<int> units;
   for (std::size_t i = 0; i < n; ++i)
@@ -170,13 +170,21 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
     double drawn = 0.0;
     for (std::size_t i = 0; i < n; ++i)
       if (heldout[i] && times.count(items[i].unit)) mask[i] = true, m[i] = times[items[i].unit], drawn += m[i];
-    const std::vector<double> w = weights(items, mask), before = shifted(baseline_residuals);
+    const Refit* refit = refits.empty() ? nullptr : &refits[static_cast<std::size_t>(b) % refits.size()];
+    const auto fitted = [&](int k) -> const std::vector<double>& {
+      if (k < 0) return refit ? refit->baseline : baseline_residuals;
+      const std::size_t c = static_cast<std::size_t>(k);
+      if (refit)
+        if (const auto it = refit->candidates.find(c); it != refit->candidates.end()) return it->second;
+      return candidates[c].residuals;
+    };
+    const std::vector<double> w = weights(items, mask), before = shifted(fitted(-1));
     const double sse_before = weighted_sse(before, w, m), gap_before = gap(items, before, m);
     const double floor = gap(items, noise_r, m), margin = gap_margin(o, floor);
     std::vector<Standing> standing;
-    for (const Candidate& c : candidates) {
-      const std::vector<double> r = shifted(c.residuals);
-      const double crit = criterion(weighted_sse(r, w, m), sse_before, drawn, c.extra_parameters);
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      const std::vector<double> r = shifted(fitted(static_cast<int>(c)));
+      const double crit = criterion(weighted_sse(r, w, m), sse_before, drawn, candidates[c].extra_parameters);
       const double after = gap(items, r, m);
       standing.push_back({crit, after, earns(crit, after, gap_before, o, margin)});
     }
@@ -184,7 +192,7 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
     const std::string winner =
         k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(candidates[static_cast<std::size_t>(k.index)].effects);
     agree += winner == verdict;
-    const double g = gap(items, shifted(chosen_residuals), m);
+    const double g = gap(items, shifted(fitted(chosen)), m);
     s1 += g, s2 += g * g;
   }
   const double B = o.bootstrap_samples;

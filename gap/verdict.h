@@ -4,6 +4,7 @@
 // simulation, so their unit tests run in milliseconds (tests/gap/verdict_test.cpp).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -62,21 +63,33 @@ Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& s
 // Share of the summed squared residuals by (observable, phase + speed class), largest first.
 std::vector<Localization> localize(const std::vector<Item>& items, const std::vector<double>& r);
 
+// The leaders refitted on one redraw of the training data (diagnosis.cpp, refit_leaders): the
+// residuals the baseline and each refitted candidate (by its index in `candidates`) leave on every
+// item, held-out ones included.
+struct Refit {
+  std::vector<double> baseline;
+  std::map<std::size_t, std::vector<double>> candidates;
+};
+
 // The verdict's confidence: the share of `samples` bootstrap resamples whose standings give the
 // same verdict name as `verdict`, and the standard deviation over the resamples of the held-out
-// gap `chosen_residuals` leave. A resample draws the held-out units (blocks) with replacement and
+// gap the verdict's candidate (`chosen`, its index in `candidates`; −1 for the baseline) leaves.
+// A resample draws the held-out units (blocks) with replacement and
 // measures every held-out item again within its own standard error: r_i + noise_r_i z_i, z_i a
 // standard normal, the same shift for the baseline and every candidate (a new measurement moves
 // the measured value, not the models). Held-out data are a few blocks (two of five speeds), too
 // few for a block bootstrap alone to say whether a cut stands above the data's noise; with one
 // held-out block, the redrawn noise is all the resamples can vary, and without a noise estimate
 // either the agreement is NaN (not estimable). Seeded: the same inputs give the same confidence.
+// With `refits`, resample b takes the baseline's and the refitted candidates' residuals from
+// refits[b mod R] (the training redraws and the held-out redraws are independent, so pairing them
+// in turn samples both); the other candidates keep their fitted residuals.
 struct Confidence {
   double agreement = 0.0;
   double heldout_gap_after_std = 0.0;
 };
 Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vector<bool>& heldout, const std::vector<double>& noise_r,
-                                const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates,
-                                const std::vector<double>& chosen_residuals, const std::string& verdict, const DiagnosisOptions& o);
+                                const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates, int chosen,
+                                const std::string& verdict, const DiagnosisOptions& o, const std::vector<Refit>& refits = {});
 
 }  // namespace tribo::gap

@@ -133,14 +133,14 @@ TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
   o.bootstrap_samples = 400;
   std::vector<double> uniform(n, 0.02);
   const std::vector<Candidate> one{candidate("uniform", 1, uniform)};
-  const Confidence sure = bootstrap_confidence(items, held, noise, baseline, one, uniform, "uniform", o);
+  const Confidence sure = bootstrap_confidence(items, held, noise, baseline, one, 0, "uniform", o);
   EXPECT_EQ(sure.agreement, 1.0);
   EXPECT_NEAR(sure.heldout_gap_after_std, 0.0, 1e-8);  // a constant 0.02, up to the sums' rounding
 
   std::vector<double> local = baseline;
   local[0] = local[1] = 0.0;  // unit 0 only
   const std::vector<Candidate> other{candidate("local", 1, local)};
-  const Confidence weak = bootstrap_confidence(items, held, noise, baseline, other, local, "local", o);
+  const Confidence weak = bootstrap_confidence(items, held, noise, baseline, other, 0, "local", o);
   // On the full data it cuts the gap by 1 − sqrt(7/8) = 6.5 %, under the 20 % rule: a resample
   // needs unit 0 drawn k ≥ 3 times of eight (gap 0.2 sqrt(1 − k/8) ≤ 0.16), P = 0.067 for a
   // binomial(8, 1/8); 400 resamples estimate it to ± 0.0125.
@@ -148,7 +148,7 @@ TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
   EXPECT_LT(weak.agreement, 0.15);
   EXPECT_GT(weak.heldout_gap_after_std, 0.0);
   // No held-out unit: no confidence.
-  EXPECT_EQ(bootstrap_confidence(items, std::vector<bool>(n, false), noise, baseline, one, uniform, "uniform", o).agreement, 0.0);
+  EXPECT_EQ(bootstrap_confidence(items, std::vector<bool>(n, false), noise, baseline, one, 0, "uniform", o).agreement, 0.0);
 }
 
 // A resample measures the held-out items again within their own standard error. A candidate
@@ -167,22 +167,46 @@ TEST(Verdict, BootstrapMeasuresTheHeldOutItemsAgainWithinTheirNoise) {
   DiagnosisOptions o;
   o.bootstrap_samples = 400;
   o.unexplained_floors = 1e6;  // the floor rises with the noise; judge the margins alone here
-  const Confidence exact = bootstrap_confidence(items, held, std::vector<double>(n, 0.0), baseline, one, cut, "cut", o);
+  const Confidence exact = bootstrap_confidence(items, held, std::vector<double>(n, 0.0), baseline, one, 0, "cut", o);
   EXPECT_EQ(exact.agreement, 1.0);
-  const Confidence noisy = bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, cut, "cut", o);
+  const Confidence noisy = bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, 0, "cut", o);
   std::printf("confidence %.3f without noise, %.3f with\n", exact.agreement, noisy.agreement);
   EXPECT_GT(noisy.agreement, 0.1);
   EXPECT_LT(noisy.agreement, 0.8);
   EXPECT_GT(noisy.heldout_gap_after_std, exact.heldout_gap_after_std);
-  EXPECT_EQ(bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, cut, "cut", o).agreement, noisy.agreement);
+  EXPECT_EQ(bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, 0, "cut", o).agreement, noisy.agreement);
 
   // One held-out block: with its noise the redraws still vary; without, nothing does — not estimable.
   std::vector<bool> one_block(n, false);
   one_block[0] = one_block[1] = true;
-  EXPECT_TRUE(std::isnan(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.0), baseline, one, cut, "cut", o).agreement));
-  const double from_noise = bootstrap_confidence(items, one_block, std::vector<double>(n, 0.1), baseline, one, cut, "cut", o).agreement;
+  EXPECT_TRUE(std::isnan(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.0), baseline, one, 0, "cut", o).agreement));
+  const double from_noise = bootstrap_confidence(items, one_block, std::vector<double>(n, 0.1), baseline, one, 0, "cut", o).agreement;
   EXPECT_GT(from_noise, 0.0);
   EXPECT_LT(from_noise, 1.0);
+}
+
+// Refits in the resamples: resample b judges the candidate by its refit on training redraw b mod R.
+// A cut that holds with the fit as found (25 %, every resample without noise) but that half of
+// the refits lose (the candidate refitted to the baseline's residuals) is confirmed by exactly
+// the half of the resamples that pair with a refit keeping it — 0.5 with an even number of
+// resamples and no noise. Refitting the baseline to the candidate's residuals, none is.
+TEST(Verdict, BootstrapJudgesTheLeadersByTheirRefitsOnTheTrainingRedraws) {
+  const std::vector<Item> items = eight_held_out_units();
+  const std::vector<bool> held(items.size(), true);
+  const std::size_t n = items.size();
+  const std::vector<double> baseline(n, 0.2), cut(n, 0.15), noise(n, 0.0);
+  const std::vector<Candidate> one{candidate("cut", 1, cut)};
+  DiagnosisOptions o;
+  o.bootstrap_samples = 400;
+  const std::vector<Refit> half{{baseline, {{0, cut}}}, {baseline, {{0, baseline}}}};
+  const Confidence c = bootstrap_confidence(items, held, noise, baseline, one, 0, "cut", o, half);
+  EXPECT_EQ(c.agreement, 0.5);
+  // The chosen candidate's gap alternates between 0.15 and 0.2: its standard deviation is 0.025
+  // (times sqrt(400/399) for the sample estimate).
+  EXPECT_NEAR(c.heldout_gap_after_std, 0.025 * std::sqrt(400.0 / 399.0), 1e-9);
+  const std::vector<Refit> level{{cut, {{0, cut}}}};
+  EXPECT_EQ(bootstrap_confidence(items, held, noise, baseline, one, 0, "cut", o, level).agreement, 0.0);
+  EXPECT_EQ(bootstrap_confidence(items, held, noise, baseline, one, 0, "none", o, level).agreement, 1.0);
 }
 
 }  // namespace
