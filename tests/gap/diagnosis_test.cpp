@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <map>
@@ -241,6 +242,11 @@ TEST(Diagnosis, TracesOnlyNameViscousFrictionDeterministically) {
   ASSERT_EQ(verdict_name(d.verdict.effects), "viscous_friction") << report_json(d)["candidates"].dump(1);
   EXPECT_LT(d.verdict.heldout_gap_after, 0.5 * d.verdict.heldout_gap_before);
   EXPECT_NEAR(d.candidates.front().params.at("viscous_friction.coefficient_N_s_per_m"), 60.0, 20.0);  // 8 iterations on a piecewise-smooth cost
+  // The bootstrap refitted the baseline and the two leaders, the verdict's first (diagnosis.h step 4).
+  ASSERT_EQ(d.verdict.refitted.size(), 3u);
+  EXPECT_EQ(d.verdict.refitted[0], "baseline");
+  EXPECT_EQ(d.verdict.refitted[1], "viscous_friction");
+  std::printf("confidence %.3f with refits, %.3f with the fits held\n", d.verdict.confidence, d.verdict.confidence_fixed_fits);
   const Diagnosis again = diagnose(b, rig, rig::coulomb(0.3, 0.2), o);
   EXPECT_EQ(without_wall_times(report_json(d)).dump(), without_wall_times(report_json(again)).dump());
 }
