@@ -137,7 +137,13 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   }
   md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt(d.verdict.heldout_gap_before, "%.4g") << " -> "
      << fmt(d.verdict.heldout_gap_after, "%.4g") << " (bootstrap std " << fmt(d.verdict.heldout_gap_after_std, "%.2g") << "), confidence "
-     << gap::confidence_text(d.verdict.confidence) << ".\n\n";
+     << gap::confidence_text(d.verdict.confidence);
+  if (!d.verdict.refitted.empty()) {
+    std::string refitted;
+    for (const auto& r : d.verdict.refitted) refitted += (refitted.empty() ? "" : ", ") + r;
+    md << " (refitted in every resample: " << refitted << "; with every fit held: " << gap::confidence_text(d.verdict.confidence_fixed_fits) << ")";
+  }
+  md << ".\n\n";
   if (test)
     md << "On the test block `" << args.test << "` (" << test->items << " items, neither fitted nor used to choose the verdict): gap "
        << fmt(test->gap_before, "%.4g") << " -> " << fmt(test->gap_after, "%.4g") << ", shrink " << fmt(100.0 * test->shrink(), "%.0f %%")
