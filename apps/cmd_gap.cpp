@@ -236,16 +236,14 @@ void run_diagnose(const DiagnoseArgs& args) {
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
 
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-
 nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
   return {{"generator", row.c.generator},   {"form", row.form},
           {"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
-          {"heldout_gap_after", row.heldout_gap_after}, {"confidence", finite_or_null(row.confidence)},
-          {"confidence_fixed_fits", finite_or_null(row.confidence_fixed_fits)},
-          {"test_gap_before", finite_or_null(row.test_gap_before)}, {"test_gap_after", finite_or_null(row.test_gap_after)},
+          {"heldout_gap_after", row.heldout_gap_after}, {"confidence", gap::finite_or_null(row.confidence)},
+          {"confidence_fixed_fits", gap::finite_or_null(row.confidence_fixed_fits)},
+          {"test_gap_before", gap::finite_or_null(row.test_gap_before)}, {"test_gap_after", gap::finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s}};
 }
 

@@ -72,6 +72,8 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
   return buf;
 }
 
+nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
+
 nlohmann::json report_json(const Diagnosis& d) {
   using nlohmann::json;
   auto breakdown_json = [](const GapBreakdown& g) {
@@ -112,11 +114,11 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"heldout_gap_before", d.verdict.heldout_gap_before},
                   {"heldout_gap_after", d.verdict.heldout_gap_after},
                   {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},
-                  {"confidence", std::isfinite(d.verdict.confidence) ? json(d.verdict.confidence) : json(nullptr)},
-                  {"confidence_fixed_fits", std::isfinite(d.verdict.confidence_fixed_fits) ? json(d.verdict.confidence_fixed_fits) : json(nullptr)},
+                  {"confidence", finite_or_null(d.verdict.confidence)},
+                  {"confidence_fixed_fits", finite_or_null(d.verdict.confidence_fixed_fits)},
                   {"refitted_in_resamples", d.verdict.refitted},
                   {"noise_floor", d.verdict.noise_floor},
-                  {"remaining_gap_in_floors", std::isfinite(d.verdict.remaining_floors) ? json(d.verdict.remaining_floors) : json(nullptr)},
+                  {"remaining_gap_in_floors", finite_or_null(d.verdict.remaining_floors)},
                   {"remaining_where", d.verdict.remaining_where},
                   {"conclusion", d.verdict.conclusion}};
   j["noise_floor_definition"] =
@@ -130,8 +132,8 @@ nlohmann::json report_json(const Diagnosis& d) {
                           {"heldout", static_cast<bool>(d.heldout[i])},
                           {"measured", d.measured[i]},
                           {"noise", d.items[i].noise},
-                          {"baseline", std::isfinite(d.baseline_simulated[i]) ? json(d.baseline_simulated[i]) : json(nullptr)},
-                          {"best", std::isfinite(d.best_simulated[i]) ? json(d.best_simulated[i]) : json(nullptr)}});
+                          {"baseline", finite_or_null(d.baseline_simulated[i])},
+                          {"best", finite_or_null(d.best_simulated[i])}});
   return j;
 }
 

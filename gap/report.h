@@ -24,4 +24,7 @@ std::string confidence_text(double confidence);
 // is null).
 nlohmann::json report_json(const Diagnosis& d);
 
+// A number for JSON: null where it is not finite (a confidence not estimable, a gap not measured).
+nlohmann::json finite_or_null(double x);
+
 }  // namespace tribo::gap
