@@ -380,78 +380,80 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
                                                                  const std::vector<bool>& train, const std::vector<double>& noise_r,
                                                                  int samples, std::uint64_t seed) {
   const std::size_t n = train.size();
+  // Each fit's coordinates where it stopped, and the task that simulates it there.
+  std::vector<std::vector<double>> at_fit;
+  std::vector<std::size_t> centre_task;
   std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (fit, coordinate); coordinate = size: at the fit itself
-  for (std::size_t f = 0; f < fits.size(); ++f)
+  for (std::size_t f = 0; f < fits.size(); ++f) {
+    at_fit.push_back(coordinates(fits[f].space, fits[f].setup, false));
     for (std::size_t j = 0; j <= fits[f].space.size(); ++j) tasks.emplace_back(f, j);
+    centre_task.push_back(tasks.size() - 1);
+  }
+  // Simulates fit f at coordinates u: its residuals on every item, empty where it cannot be simulated.
+  const auto residuals_at = [&](std::size_t f, const std::vector<double>& u) {
+    Setup s = fits[f].setup;
+    apply(fits[f].space, u, s);
+    try {
+      return c.residuals(c.predict(s.rig, s.model, seed));
+    } catch (const std::invalid_argument&) {
+      return std::vector<double>{};
+    }
+  };
   std::vector<std::vector<double>> at(tasks.size());
   std::vector<double> step(tasks.size(), 0.0);
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t t = 0; t < tasks.size(); ++t) {
     const auto [f, j] = tasks[t];
-    std::vector<double> u = coordinates(fits[f].space, fits[f].setup, false);
+    std::vector<double> u = at_fit[f];
     if (j < u.size()) step[t] = u[j] + kSearchStep <= 2.0 ? kSearchStep : -kSearchStep, u[j] += step[t];
-    Setup s = fits[f].setup;
-    apply(fits[f].space, u, s);
-    try {
-      at[t] = c.residuals(c.predict(s.rig, s.model, seed));
-    } catch (const std::invalid_argument&) {
-      at[t].clear();  // not simulated there: that column stays 0
-    }
+    at[t] = residuals_at(f, u);  // empty: that column stays 0
   }
-  const std::vector<double> w_train = weights(c.items(), train);
-  std::vector<LinearisedRefit> linear;
-  for (std::size_t f = 0, t = 0; f < fits.size(); t += fits[f].space.size() + 1, ++f) {
-    const std::size_t p = fits[f].space.size();
-    const std::vector<double>& centre = at[t + p];
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p));
-    for (std::size_t j = 0; j < p; ++j)
-      if (!at[t + j].empty() && !centre.empty())
-        for (std::size_t i = 0; i < n; ++i)
-          J(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (at[t + j][i] - centre[i]) / step[t + j];
-    std::vector<double> below, above;
-    for (double x : coordinates(fits[f].space, fits[f].setup, false)) below.push_back(x - 1.0), above.push_back(2.0 - x);
-    linear.emplace_back(std::move(J), *fits[f].residuals, w_train, below, above);
-  }
-  // Each direction whose redraw steps reach past the difference step is probed two standard
-  // deviations of its step away (clipped to the box), and kept when the training residuals change
-  // there as J predicts, within half (refit.h).
+  // Each fit linearised; each direction whose redraw steps reach past the difference step is
+  // probed two standard deviations of its step away (clipped to the box), and kept when the
+  // training residuals change there as J predicts, within half (refit.h).
   struct Probe {
-    std::size_t fit, centre_task;
+    std::size_t fit;
     Eigen::Index direction;
     Eigen::VectorXd du;
   };
   std::vector<Probe> probes;
-  for (std::size_t f = 0, t = 0; f < fits.size(); t += fits[f].space.size() + 1, ++f) {
+  const std::vector<double> w_train = weights(c.items(), train);
+  std::vector<LinearisedRefit> linear;
+  for (std::size_t f = 0; f < fits.size(); ++f) {
+    const std::size_t p = fits[f].space.size(), first = centre_task[f] - p;
+    const std::vector<double>& centre = at[centre_task[f]];
+    const std::vector<double>& u = at_fit[f];
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p));
+    for (std::size_t j = 0; j < p; ++j)
+      if (!at[first + j].empty() && !centre.empty())
+        for (std::size_t i = 0; i < n; ++i)
+          J(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (at[first + j][i] - centre[i]) / step[first + j];
+    std::vector<double> below, above;
+    for (double x : u) below.push_back(x - 1.0), above.push_back(2.0 - x);
+    linear.emplace_back(std::move(J), *fits[f].residuals, w_train, below, above);
     const Eigen::VectorXd sd = linear[f].step_std(noise_r);
-    const std::vector<double> u = coordinates(fits[f].space, fits[f].setup, false);
     for (Eigen::Index k = 0; k < sd.size(); ++k) {
       // Within the difference step J is the secant the fit itself follows; probing shorter steps
       // would read the simulation's own roughness (event timing, the integration tolerance).
       if (!(2.0 * sd(k) > kSearchStep)) continue;
       Eigen::VectorXd du = 2.0 * sd(k) * linear[f].directions().col(k);
       for (Eigen::Index j = 0; j < du.size(); ++j) du(j) = std::clamp(u[static_cast<std::size_t>(j)] + du(j), 1.0, 2.0) - u[static_cast<std::size_t>(j)];
-      probes.push_back({f, t + fits[f].space.size(), k, du});
+      probes.push_back({f, k, du});
     }
   }
-  std::vector<char> linear_enough(probes.size(), 0);
+  std::vector<char> linear_enough(probes.size(), 0);  // 0 also where the fit or the probe cannot be simulated
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t q = 0; q < probes.size(); ++q) {
     const Probe& pr = probes[q];
-    const std::vector<double>& centre = at[pr.centre_task];
-    if (centre.empty()) continue;  // the fit itself not simulated: its columns are 0 already
-    std::vector<double> u = coordinates(fits[pr.fit].space, fits[pr.fit].setup, false);
+    const std::vector<double>& centre = at[centre_task[pr.fit]];
+    std::vector<double> u = at_fit[pr.fit];
     for (std::size_t j = 0; j < u.size(); ++j) u[j] += pr.du(static_cast<Eigen::Index>(j));
-    Setup s = fits[pr.fit].setup;
-    apply(fits[pr.fit].space, u, s);
-    try {
-      const std::vector<double> r = c.residuals(c.predict(s.rig, s.model, seed));
-      const Eigen::VectorXd predicted = linear[pr.fit].predicted_change(pr.du);
-      Eigen::VectorXd miss(static_cast<Eigen::Index>(n));
-      for (std::size_t i = 0; i < n; ++i) miss(static_cast<Eigen::Index>(i)) = r[i] - centre[i] - predicted(static_cast<Eigen::Index>(i));
-      linear_enough[q] = linear[pr.fit].train_norm(miss) <= 0.5 * linear[pr.fit].train_norm(predicted);
-    } catch (const std::invalid_argument&) {
-      linear_enough[q] = 0;  // not simulated there: no straight line to follow
-    }
+    const std::vector<double> r = centre.empty() ? std::vector<double>{} : residuals_at(pr.fit, u);
+    if (r.empty()) continue;
+    const Eigen::VectorXd predicted = linear[pr.fit].predicted_change(pr.du);
+    Eigen::VectorXd miss(static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i) miss(static_cast<Eigen::Index>(i)) = r[i] - centre[i] - predicted(static_cast<Eigen::Index>(i));
+    linear_enough[q] = linear[pr.fit].train_norm(miss) <= 0.5 * linear[pr.fit].train_norm(predicted);
   }
   for (std::size_t q = 0; q < probes.size(); ++q)
     if (!linear_enough[q]) linear[probes[q].fit].drop(probes[q].direction);
