@@ -1,14 +1,18 @@
 #include "contact/junction_locus.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
 namespace tribo::contact {
 namespace {
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("junction model: " + what);
+// The message is a literal, so a check that passes allocates nothing: the rig's event functions
+// ask for μs on the locus at every integrator step.
+void require(bool ok, const char* what) {
+  if (!ok) throw std::invalid_argument(std::string("junction model: ") + what);
 }
 
 // Shape factor g(μ) = μ^{-n} S^{-(1+n)} [√(1+αμ²) − Sμ] of (3.1.24); φ̇ = L g(μ).
@@ -48,8 +52,8 @@ double upper_asymptote(const JunctionLocus& l) {
 
 double load_rate_at_static_friction_per_s(const JunctionLocus& l, double mu_s) {
   const double mu_max = upper_asymptote(l);
-  require(std::isfinite(mu_s) && mu_s > 0.0 && mu_s <= mu_max,
-          "mu_s must lie in (0, " + std::to_string(mu_max) + "]");
+  if (!(std::isfinite(mu_s) && mu_s > 0.0 && mu_s <= mu_max))
+    throw std::invalid_argument("junction model: mu_s must lie in (0, " + std::to_string(mu_max) + "]");
   const double g = shape(l, mu_s);
   if (g <= 0.0) return 0.0;
   // φ̇^{1−m(1+n)} = L_ref φ̇_ref^{−m(1+n)} g(μ)   — (3.1.24) with (5.1.2)
@@ -61,14 +65,38 @@ double static_friction_from_load_rate(const JunctionLocus& l, double phi_dot_per
   const double mu_max = upper_asymptote(l);
   require(std::isfinite(phi_dot_per_s) && phi_dot_per_s >= 0.0, "load rate must be finite and non-negative");
   if (phi_dot_per_s == 0.0) return mu_max;
-  const double e = hardening_exponent(l);
-  const double target = std::pow(phi_dot_per_s, 1.0 - e) * std::pow(l.reference_load_rate_per_s, e) / l.location_per_s;
-  double lo = 0.0, hi = mu_max;  // g(lo) = +inf > target >= g(hi) = 0
-  for (int i = 0; i < 200 && hi - lo > 4e-16 * hi; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (shape(l, mid) > target ? lo : hi) = mid;
+  // (3.1.24) with (5.1.2) in logarithms: F(μ) = ln q(μ) − n ln μ − c = 0, q = √(1+αμ²) − Sμ and
+  // c = ln(φ̇^{1−m(1+n)} φ̇_ref^{m(1+n)} S^{1+n} / L_ref). q falls from 1 at μ = 0 to 0 at μs,max, so
+  // F falls from +∞ to −∞ and the root is unique. q is written as (1 − μ²/μs,max²)/(√(1+αμ²) + Sμ),
+  // which has no cancellation near the asymptote.
+  const double s = l.sigma0_over_tau_i, e = hardening_exponent(l);
+  const double c = (1.0 - e) * std::log(phi_dot_per_s) + e * std::log(l.reference_load_rate_per_s) + (1.0 + l.n) * std::log(s) -
+                   std::log(l.location_per_s);
+  // F and dF/d(ln μ) at μ.
+  auto residual = [&](double mu) {
+    const double r = std::sqrt(1.0 + l.alpha * mu * mu), x = mu / mu_max;
+    const double q = (1.0 - x) * (1.0 + x) / (r + s * mu);
+    return std::make_pair(std::log(q) - l.n * std::log(mu) - c, mu * (l.alpha * mu / r - s) / q - l.n);
+  };
+  // Since q ≤ 1, F(μ) ≤ −n ln μ − c: the root lies at or below e^{−c/n}, which is the root itself
+  // where q ≈ 1 (fast loading, small μs). Newton's method in ln μ from that side, where F is
+  // concave, approaches the root monotonically; a step out of the bracket bisects instead.
+  if (l.n == 0.0 && c >= 0.0) return 0.0;  // without anelastic damping, loading at φ̇ ≥ L_ref/S slips at once
+  double lo = 0.0, hi = mu_max;
+  if (l.n > 0.0) hi = std::min(hi, std::exp(-c / l.n));
+  if (!(hi > 0.0)) return 0.0;  // φ̇ so large that μs underflows
+  double mu = hi == mu_max ? 0.5 * mu_max : hi;
+  for (int i = 0; i < 200; ++i) {
+    const auto [f, slope] = residual(mu);
+    if (f == 0.0) return mu;
+    (f > 0.0 ? lo : hi) = mu;
+    double next = mu * std::exp(-f / slope);
+    if (std::abs(next - mu) <= 4e-16 * mu) return next;  // before the bracket: at the root, roundoff puts it on a bound
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (hi - lo <= 4e-16 * hi) return next;
+    mu = next;
   }
-  return 0.5 * (lo + hi);
+  throw std::logic_error("junction model: static friction root not found for load rate " + std::to_string(phi_dot_per_s));
 }
 
 double location_through_point_per_s(const JunctionLocus& shape_params, double phi_dot_per_s, double mu_s) {

@@ -40,7 +40,7 @@ double upper_asymptote(const JunctionLocus& locus);
 double load_rate_at_static_friction_per_s(const JunctionLocus& locus, double mu_s);
 
 // thesis (3.1.24) inverted: μs at load rate φ̇ ≥ 0; μs,max at φ̇ = 0, decreasing monotonically.
-// Solved by bisection on μs to machine precision (the locus is monotone in μs).
+// Solved to machine precision by a bracketed Newton iteration in ln μs (the locus is monotone).
 double static_friction_from_load_rate(const JunctionLocus& locus, double phi_dot_per_s);
 
 // L that puts the point (φ̇, μs) on the locus — how a measured static friction value fixes the

@@ -1,6 +1,7 @@
 #include "rig/composite_law.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "rig/homogenised_law.h"
@@ -48,21 +49,25 @@ double CompositeLaw::baseline_kinetic_coefficient(double u) const {
   return baseline_.kinetic ? baseline_.kinetic->mu(u) : baseline_.mu_k;
 }
 
-EffectContext CompositeLaw::effect_context(const FrictionContext& c, std::size_t i) const {
+// What every effect reads at one instant, computed once for all of them: μs on a junction locus
+// is a root solve (contact/junction_locus.h), and the event functions ask for it at every step.
+EffectContext CompositeLaw::effect_context(const FrictionContext& c) const {
   EffectContext e;
   e.rig = &c;
   e.mu_s = static_coefficient(c);
   e.mu_k_baseline = baseline_.homogenised ? baseline_.homogenised->solid_kinetic_coefficient(base_state(c))
                                           : baseline_kinetic_coefficient(c.relative_speed_m_per_s);
-  e.state = slice(c.state, i);
   return e;
 }
 
 CompositeLaw::Channels CompositeLaw::channels(const FrictionContext& c, double increment_start) const {
   Channels s;
   s.kinetic = increment_start;
+  if (effects_.empty()) return s;
+  EffectContext e = effect_context(c);
+  s.mu_s = e.mu_s;
   for (std::size_t i = 0; i < effects_.size(); ++i) {
-    const EffectContext e = effect_context(c, i);
+    e.state = slice(c.state, i);
     s.solid_fraction *= effects_[i]->solid_fraction(e);
     s.kinetic += effects_[i]->kinetic_increment(e);
     s.fluid_N += effects_[i]->fluid_force_N(e);
@@ -76,7 +81,8 @@ double CompositeLaw::static_limit_N(const FrictionContext& c) const {
   at_rest.relative_speed_m_per_s = 0.0;
   const Channels s = channels(at_rest, 0.0);
   if (baseline_.homogenised) return baseline_.homogenised->static_limit_N(c, s.solid_fraction, s.static_increment);
-  return s.solid_fraction * (static_coefficient(c) + s.static_increment) * c.normal_load_N;
+  const double mu_s = std::isnan(s.mu_s) ? static_coefficient(c) : s.mu_s;  // at rest or not, μs reads the load rate only
+  return s.solid_fraction * (mu_s + s.static_increment) * c.normal_load_N;
 }
 
 double CompositeLaw::kinetic_force_N(const FrictionContext& c) const {
@@ -94,7 +100,12 @@ void CompositeLaw::state_rates(const FrictionContext& c, std::span<double> rates
     const double fk = c.relative_speed_m_per_s > 0.0 ? kinetic_force_N(c) : 0.0;
     baseline_.homogenised->state_rates(c, fk, rates.first(base_size_));
   }
-  for (std::size_t i = 0; i < effects_.size(); ++i) effects_[i]->state_rates(effect_context(c, i), slice(rates, i));
+  if (effects_.empty()) return;
+  EffectContext e = effect_context(c);
+  for (std::size_t i = 0; i < effects_.size(); ++i) {
+    e.state = slice(c.state, i);
+    effects_[i]->state_rates(e, slice(rates, i));
+  }
 }
 
 bool CompositeLaw::stiff() const {
@@ -102,7 +113,12 @@ bool CompositeLaw::stiff() const {
 }
 
 void CompositeLaw::on_slip_onset(const FrictionContext& c, std::span<double> state) const {
-  for (std::size_t i = 0; i < effects_.size(); ++i) effects_[i]->on_slip_onset(effect_context(c, i), slice(state, i));
+  if (effects_.empty()) return;
+  EffectContext e = effect_context(c);
+  for (std::size_t i = 0; i < effects_.size(); ++i) {
+    e.state = slice(c.state, i);
+    effects_[i]->on_slip_onset(e, slice(state, i));
+  }
 }
 
 }  // namespace tribo::rig

@@ -9,6 +9,7 @@
 // The effects see μs(φ̇) of the table's locus and μk = τ_i A_r(h̄)/N_s(h̄).
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -50,9 +51,10 @@ class CompositeLaw final : public FrictionLaw {
     double kinetic = 0.0;
     double fluid_N = 0.0;
     double static_increment = 0.0;
+    double mu_s = std::numeric_limits<double>::quiet_NaN();  // channel 1, when the effects needed it
   };
   Channels channels(const FrictionContext& c, double increment_start) const;
-  EffectContext effect_context(const FrictionContext& c, std::size_t i) const;
+  EffectContext effect_context(const FrictionContext& c) const;  // without the effect's state
   std::span<const double> base_state(const FrictionContext& c) const { return c.state.first(base_size_); }
   template <class S>
   S slice(S state, std::size_t i) const { return state.subspan(offsets_[i], effects_[i]->state_size()); }

@@ -74,9 +74,11 @@ struct Machine {
 
   // A stuck contact cannot break away below the kinetic friction at zero relative speed: the
   // slider would at once be dragged back to the surface speed.
-  double breakaway_limit(double t, const double* y, int d) const {
-    return std::max(law.static_limit_N(context(t, y)), kinetic_at_onset(t, y, d));
+  double breakaway_limit(double t, const double* y, int d) const { return breakaway_limit(t, y, d, static_limit(t, y)); }
+  double breakaway_limit(double t, const double* y, int d, double static_limit_N) const {
+    return std::max(static_limit_N, kinetic_at_onset(t, y, d));
   }
+  double static_limit(double t, const double* y) const { return law.static_limit_N(context(t, y)); }
 
   double friction(double t, const double* y) const {
     if (phase == Phase::stick) return needed_force(t, y);
@@ -107,9 +109,9 @@ struct Machine {
   //   slip:  g0 = d U (velocity_match)
   void events(double t, const double* y, double* g) const {
     if (phase == Phase::stick) {
-      const double need = needed_force(t, y);
-      g[0] = breakaway_limit(t, y, +1) - need;
-      g[1] = breakaway_limit(t, y, -1) + need;
+      const double need = needed_force(t, y), limit = static_limit(t, y);  // the same both ways
+      g[0] = breakaway_limit(t, y, +1, limit) - need;
+      g[1] = breakaway_limit(t, y, -1, limit) + need;
     } else {
       g[0] = direction * (drive.speed_m_per_s(t) - y[kXdot]);
     }

@@ -196,6 +196,36 @@ TEST(JunctionOde, RampStaticFrictionIsBracketedByTheLocus) {
   EXPECT_NEAR(integrate_junction_ramp(ramp_for(l, 1e6)).static_friction * l.sigma0_over_tau_i, 1.0, 0.02);
 }
 
+// (3.1.24) inverted is (3.1.24) read forwards backwards: the μs returned for the closed-form load
+// rate of a given μs is that μs, to the roundoff of the forward map (a few ulps) times the
+// condition number of the inversion, from 1e-3 of the asymptote to 1e-9 below it, without and with anelastic
+// damping (n = 0, 1.25) and with strain-rate hardening (5.1.2).
+TEST(JunctionLocus, InversionReturnsTheStaticFrictionThatGaveTheLoadRate) {
+  double worst = 0.0;
+  for (const double n : {0.0, 1.0, 1.25, 1.5}) {
+    for (const double m : {0.0, 0.1}) {
+      JunctionLocus l = steel_locus();
+      l.n = n, l.strain_rate_index_m = m, l.reference_load_rate_per_s = 0.3;
+      const double mu_max = upper_asymptote(l);
+      for (const double fraction : {1e-3, 0.05, 0.3, 0.7, 0.95, 0.999, 1.0 - 1e-6, 1.0 - 1e-9}) {
+        const double mu_s = fraction * mu_max, phi_dot = load_rate_at_static_friction_per_s(l, mu_s);
+        // Condition number |d ln μs / d ln φ̇| = (1 − m(1+n)) / |n + μ (S − αμ/r)/q|, r = √(1+αμ²).
+        const double r = std::sqrt(1 + l.alpha * mu_s * mu_s), q = r - l.sigma0_over_tau_i * mu_s;
+        const double kappa = (1 - m * (1 + n)) / (n + mu_s * (l.sigma0_over_tau_i - l.alpha * mu_s / r) / q);
+        const double error = static_friction_from_load_rate(l, phi_dot) / mu_s - 1;
+        worst = std::max(worst, std::abs(error) / (1 + kappa));
+        EXPECT_LE(std::abs(error), 1e-14 * (1 + kappa))
+            << "n = " << n << ", m = " << m << ", mu_s/mu_s,max = " << fraction << ", phi_dot = " << phi_dot;
+      }
+    }
+  }
+  std::printf("  worst relative error / (1 + condition number): %.1e\n", worst);
+  // Without damping (n = 0) the locus meets μs = 0 at φ̇ = L/S (g(0) = 1/S): faster loading slips at once.
+  JunctionLocus undamped = steel_locus();
+  undamped.n = 0.0;
+  EXPECT_EQ(static_friction_from_load_rate(undamped, 1.01 * undamped.location_per_s / undamped.sigma0_over_tau_i), 0.0);
+}
+
 TEST(JunctionOde, BadParametersNameTheParameter) {
   auto p = ramp_for(steel_locus(), 1.0);
   p.load_rate_N_per_s = 0.0;
