@@ -1,6 +1,7 @@
 // Rig integration speed: simulated seconds per wall second (reported as the counter
 // `sim_s_per_wall_s`) for the thesis rig in stick-slip (Coulomb μs = 0.3, μk = 0.2) at three
-// drive speeds, and the number of stick-slip events per run.
+// drive speeds and with μs on the junction locus at two, the number of stick-slip events per run,
+// the locus inverted alone, and the demo's speed sweep on 1 and 2 threads.
 #include <benchmark/benchmark.h>
 
 #include "contact/junction_locus.h"
@@ -13,47 +14,35 @@
 
 namespace {
 
-void BM_ThesisRigStickSlip(benchmark::State& state) {
+// Ten simulated seconds of the thesis rig driven at state.range(0) × 1e-4 m/s with `law`.
+void stick_slip(benchmark::State& state, const tribo::rig::FrictionLaw& law) {
   const tribo::rig::RigParameters rig;
   const double v = static_cast<double>(state.range(0)) * 1e-4;  // m/s
-  auto law = tribo::rig::make_coulomb(0.3, 0.2);
   tribo::rig::SimulationOptions opt;
   opt.duration_s = 10.0;
   long events = 0;
   for (auto _ : state) {
     tribo::rig::SimulationObserver observer;
     observer.on_event = [&](const tribo::rig::Event&) { ++events; };
-    const auto summary = tribo::rig::simulate(rig, tribo::rig::Drive::constant(v), *law, opt, observer);
+    const auto summary = tribo::rig::simulate(rig, tribo::rig::Drive::constant(v), law, opt, observer);
     benchmark::DoNotOptimize(summary.integrator_steps);
   }
   state.counters["sim_s_per_wall_s"] =
       benchmark::Counter(opt.duration_s * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["events_per_run"] = static_cast<double>(events) / static_cast<double>(state.iterations());
 }
+
+void BM_ThesisRigStickSlip(benchmark::State& state) { stick_slip(state, *tribo::rig::make_coulomb(0.3, 0.2)); }
 BENCHMARK(BM_ThesisRigStickSlip)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond);
 
 // The same rig with μs on the junction locus (3.1.24) with strain-rate hardening (5.1.2) and a
 // slip transient beside it — the model of the gap selftest's second-effect cases, where every
 // breakaway event function asks for μs at the current load rate, i.e. for the locus inverted.
 void BM_LocusRigStickSlip(benchmark::State& state) {
-  const tribo::rig::RigParameters rig;
-  const double v = static_cast<double>(state.range(0)) * 1e-4;  // m/s
   tribo::rig::FrictionModel model = tribo::rig::coulomb(0.26, 0.2);
   model.add("strain_rate_hardening");
   model.add("slip_transient");
-  const auto law = tribo::rig::make_friction_law(model);
-  tribo::rig::SimulationOptions opt;
-  opt.duration_s = 10.0;
-  long events = 0;
-  for (auto _ : state) {
-    tribo::rig::SimulationObserver observer;
-    observer.on_event = [&](const tribo::rig::Event&) { ++events; };
-    const auto summary = tribo::rig::simulate(rig, tribo::rig::Drive::constant(v), *law, opt, observer);
-    benchmark::DoNotOptimize(summary.integrator_steps);
-  }
-  state.counters["sim_s_per_wall_s"] =
-      benchmark::Counter(opt.duration_s * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["events_per_run"] = static_cast<double>(events) / static_cast<double>(state.iterations());
+  stick_slip(state, *tribo::rig::make_friction_law(model));
 }
 BENCHMARK(BM_LocusRigStickSlip)->Arg(10)->Arg(100)->Unit(benchmark::kMillisecond);
 
