@@ -1,7 +1,6 @@
 #include "rig/composite_law.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include "rig/homogenised_law.h"
@@ -49,30 +48,30 @@ double CompositeLaw::baseline_kinetic_coefficient(double u) const {
   return baseline_.kinetic ? baseline_.kinetic->mu(u) : baseline_.mu_k;
 }
 
-// What every effect reads at one instant, computed once for all of them: μs on a junction locus
-// is a root solve (contact/junction_locus.h), and the event functions ask for it at every step.
-EffectContext CompositeLaw::effect_context(const FrictionContext& c) const {
+template <class Visit>
+std::optional<double> CompositeLaw::for_each_effect(const FrictionContext& c, Visit&& visit) const {
+  if (effects_.empty()) return std::nullopt;
   EffectContext e;
   e.rig = &c;
   e.mu_s = static_coefficient(c);
   e.mu_k_baseline = baseline_.homogenised ? baseline_.homogenised->solid_kinetic_coefficient(base_state(c))
                                           : baseline_kinetic_coefficient(c.relative_speed_m_per_s);
-  return e;
+  for (std::size_t i = 0; i < effects_.size(); ++i) {
+    e.state = slice(c.state, i);
+    visit(i, e);
+  }
+  return e.mu_s;
 }
 
 CompositeLaw::Channels CompositeLaw::channels(const FrictionContext& c, double increment_start) const {
   Channels s;
   s.kinetic = increment_start;
-  if (effects_.empty()) return s;
-  EffectContext e = effect_context(c);
-  s.mu_s = e.mu_s;
-  for (std::size_t i = 0; i < effects_.size(); ++i) {
-    e.state = slice(c.state, i);
+  s.mu_s = for_each_effect(c, [&](std::size_t i, const EffectContext& e) {
     s.solid_fraction *= effects_[i]->solid_fraction(e);
     s.kinetic += effects_[i]->kinetic_increment(e);
     s.fluid_N += effects_[i]->fluid_force_N(e);
     s.static_increment += effects_[i]->static_increment(e);
-  }
+  });
   return s;
 }
 
@@ -81,7 +80,7 @@ double CompositeLaw::static_limit_N(const FrictionContext& c) const {
   at_rest.relative_speed_m_per_s = 0.0;
   const Channels s = channels(at_rest, 0.0);
   if (baseline_.homogenised) return baseline_.homogenised->static_limit_N(c, s.solid_fraction, s.static_increment);
-  const double mu_s = std::isnan(s.mu_s) ? static_coefficient(c) : s.mu_s;  // at rest or not, μs reads the load rate only
+  const double mu_s = s.mu_s ? *s.mu_s : static_coefficient(c);  // at rest or not, μs reads the load rate only
   return s.solid_fraction * (mu_s + s.static_increment) * c.normal_load_N;
 }
 
@@ -100,12 +99,7 @@ void CompositeLaw::state_rates(const FrictionContext& c, std::span<double> rates
     const double fk = c.relative_speed_m_per_s > 0.0 ? kinetic_force_N(c) : 0.0;
     baseline_.homogenised->state_rates(c, fk, rates.first(base_size_));
   }
-  if (effects_.empty()) return;
-  EffectContext e = effect_context(c);
-  for (std::size_t i = 0; i < effects_.size(); ++i) {
-    e.state = slice(c.state, i);
-    effects_[i]->state_rates(e, slice(rates, i));
-  }
+  for_each_effect(c, [&](std::size_t i, const EffectContext& e) { effects_[i]->state_rates(e, slice(rates, i)); });
 }
 
 bool CompositeLaw::stiff() const {
@@ -113,12 +107,7 @@ bool CompositeLaw::stiff() const {
 }
 
 void CompositeLaw::on_slip_onset(const FrictionContext& c, std::span<double> state) const {
-  if (effects_.empty()) return;
-  EffectContext e = effect_context(c);
-  for (std::size_t i = 0; i < effects_.size(); ++i) {
-    e.state = slice(c.state, i);
-    effects_[i]->on_slip_onset(e, slice(state, i));
-  }
+  for_each_effect(c, [&](std::size_t i, const EffectContext& e) { effects_[i]->on_slip_onset(e, slice(state, i)); });
 }
 
 }  // namespace tribo::rig

@@ -9,7 +9,6 @@
 // The effects see μs(φ̇) of the table's locus and μk = τ_i A_r(h̄)/N_s(h̄).
 #pragma once
 
-#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -51,10 +50,14 @@ class CompositeLaw final : public FrictionLaw {
     double kinetic = 0.0;
     double fluid_N = 0.0;
     double static_increment = 0.0;
-    double mu_s = std::numeric_limits<double>::quiet_NaN();  // channel 1, when the effects needed it
+    std::optional<double> mu_s;  // channel 1, when the effects needed it
   };
   Channels channels(const FrictionContext& c, double increment_start) const;
-  EffectContext effect_context(const FrictionContext& c) const;  // without the effect's state
+  // Calls visit(i, context with effect i's state) for every effect, the shared part of the context
+  // (μs, a root solve on a junction locus, and the baseline μk) computed once; returns that μs, or
+  // nothing when there are no effects.
+  template <class Visit>
+  std::optional<double> for_each_effect(const FrictionContext& c, Visit&& visit) const;
   std::span<const double> base_state(const FrictionContext& c) const { return c.state.first(base_size_); }
   template <class S>
   S slice(S state, std::size_t i) const { return state.subspan(offsets_[i], effects_[i]->state_size()); }
