@@ -114,6 +114,9 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   md << "\nFit: " << d.calibration_fit.termination << " after " << d.calibration_fit.iterations << " of "
      << d.calibration_fit.max_iterations << " iterations (Ceres), " << fmt(d.calibration_fit.wall_s, "%.0f") << " s. Predictions integrated at relative tolerance "
      << fmt(d.integration_tolerance, "%.1e") << " (1e-3 of the items' median relative noise).\n";
+  md << "\nCalibration: " << d.calibration.starts << " starts, each searched and refined; the baseline leaves "
+     << fmt(d.calibration.train_gap, "%.4g") << " on the training items, " << fmt(d.calibration.train_floors(), "%.3g")
+     << " times their noise floor (" << fmt(d.calibration.train_noise_floor, "%.3g") << ").\n";
   md << "\nGap (all items) " << fmt(d.baseline.gap, "%.4g") << ", held-out " << fmt(d.baseline_heldout.gap, "%.4g") << ".\n\n";
   md << "| observable | gap |\n|---|---|\n";
   for (const auto& [k, v] : d.baseline.by_observable) md << "| " << k << " | " << fmt(v, "%.4g") << " |\n";
@@ -127,12 +130,12 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     const auto& l = d.localization[i];
     md << "| " << l.observable << " | " << l.where << " | " << fmt(100.0 * l.share, "%.1f %%") << " | " << l.worst_item << " |\n";
   }
-  md << "\n## Candidates (best first)\n\n| effect | fitted parameters | train gap | held-out before | held-out after | criterion | earns | fit (Ceres), wall time |\n|---|---|---|---|---|---|---|---|\n";
+  md << "\n## Candidates (best first)\n\n| effect | fitted parameters | train gap | held-out before | held-out after | evidence (nats ± se) | earns | fit (Ceres), wall time |\n|---|---|---|---|---|---|---|---|\n";
   for (const auto& c : d.candidates) {
     std::string params;
     for (const auto& [k, v] : c.params) params += (params.empty() ? "" : ", ") + k + " = " + fmt(v, "%.3g");
     md << "| " << gap::verdict_name(c.effects) << " | " << params << " | " << fmt(c.train_gap, "%.4g") << " | " << fmt(c.heldout_gap_before, "%.4g")
-       << " | " << fmt(c.heldout_gap_after, "%.4g") << " | " << fmt(c.criterion, "%.1f") << " | " << (c.earns ? "yes" : "no") << " | "
+       << " | " << fmt(c.heldout_gap_after, "%.4g") << " | " << fmt(c.evidence_nats, "%.1f") << " ± " << fmt(c.evidence_se_nats, "%.1f") << " | " << (c.earns ? "yes" : "no") << " | "
        << c.fit.termination << ", " << c.fit.iterations << "/" << c.fit.max_iterations << " iterations, " << fmt(c.fit.wall_s, "%.0f") << " s |\n";
   }
   md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt(d.verdict.heldout_gap_before, "%.4g") << " -> "

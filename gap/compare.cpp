@@ -580,6 +580,54 @@ double median_spacing(const std::vector<double>& t) {
   return d[d.size() / 2];
 }
 
+// How a constant-speed record was sampled: uniformly, or (a logger that samples on change, an
+// event-driven simulator's output) densely while the slider slips and sparsely while it sticks.
+// The spacing's 10th and 90th percentiles tell them apart: the sparse spacing at least
+// kAdaptiveSpacingRatio times the dense one is a policy, not jitter (a uniform record is left as
+// it is, read at its median spacing).
+constexpr double kAdaptiveSpacingRatio = 4.0;
+void read_sampling_policy(const std::vector<double>& t, RunPlan& plan) {
+  std::vector<double> d;
+  for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
+  if (d.size() < 10) return;
+  std::sort(d.begin(), d.end());
+  const double dense = d[d.size() / 10], sparse = d[d.size() * 9 / 10];
+  if (!(sparse > kAdaptiveSpacingRatio * dense)) return;
+  plan.slip_spacing_s = dense;
+  plan.stick_spacing_s = sparse;
+  // Read both sides smoothed over the sparse spacing: where the breakaway falls between two stick
+  // samples changes from cycle to cycle with the stick's own scatter, and a reading finer than
+  // the spacing would compare those phases rather than the friction.
+  plan.sample_spacing_s = sparse;
+}
+
+// A simulated run read as the record was sampled (RunPlan::slip_spacing_s): a sample every
+// stick spacing while the slider sticks, every slip spacing while it slips, the first slip sample
+// one slip spacing after the breakaway. A sparse record never holds the breakaway or the
+// re-attachment themselves — its peak is the last stick sample before the breakaway, its trough
+// the first one after the slip, up to a stick spacing away — and the simulation, read densely,
+// would: at 7 mm/s on a 20-ms stick spacing that is 0.015 in μ at every peak and trough.
+Signal sampled_as_recorded(const Signal& s, const std::vector<bool>& slipping, const RunPlan& plan) {
+  Signal out;
+  std::size_t i = 0;
+  for (double t = s.t.front(); t <= s.t.back();) {
+    while (i + 1 < s.t.size() && s.t[i + 1] <= t) ++i;
+    out.t.push_back(t);
+    const bool last = i + 1 == s.t.size();
+    out.mu.push_back(last ? s.mu.back() : interp(s.t, s.mu, t));
+    if (!s.x.empty()) out.x.push_back(last ? s.x.back() : interp(s.t, s.x, t));
+    double next = t + (slipping[i] ? plan.slip_spacing_s : plan.stick_spacing_s);
+    if (!slipping[i])
+      for (std::size_t j = i + 1; j < s.t.size() && s.t[j] < next; ++j)
+        if (slipping[j]) {
+          next = s.t[j] + plan.slip_spacing_s;
+          break;
+        }
+    t = next;
+  }
+  return out;
+}
+
 // The instants a drive history's simulation outputs: the measured ones, and each `lag_s` earlier
 // (within the run) where an instrument with that lag reads the state; increasing, no repeats.
 std::vector<double> recorder_instants(const std::vector<double>& measured_s, double lag_s) {
@@ -623,13 +671,16 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         }
         if (!sim.summary.completed || sim.samples.size() < 3) break;
         Signal s;
+        std::vector<bool> slipping;
         for (std::size_t i = 0; i < sim.samples.size(); ++i) {
           if (!s.t.empty() && !(sim.samples[i].t_s > s.t.back())) continue;
           s.t.push_back(sim.samples[i].t_s);
           s.mu.push_back(sim.friction_N[i] / W);
           s.x.push_back(sim.samples[i].x_m);
           s.x_drive.push_back(sim.samples[i].drive_displacement_m);
+          slipping.push_back(sim.samples[i].phase != rig::Phase::stick);
         }
+        if (!history && plan.slip_spacing_s > 0.0) s = sampled_as_recorded(s, slipping, plan);
         if (history) {
           // Sampled where the measurement was: a bin near the step holds one or two measured
           // samples, and the simulated bin must average the same instants, not the whole bin.
@@ -786,6 +837,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.v_m_per_s = run.v_m_per_s;
     plan.duration_s = tr.t_s.back() - tr.t_s.front();
     plan.sample_spacing_s = median_spacing(tr.t_s);
+    if (bundle.kind == "pin_on_disc") read_sampling_policy(tr.t_s, plan);
     if (!(plan.sample_spacing_s > 0.0)) throw std::invalid_argument("run " + run.run_id + ": trace time t_s does not increase");
     const bool history_kind = bundle.kind == "velocity_step" || bundle.kind == "slide_hold_slide";
     if (history_kind && !tr.has_drive_history())
@@ -882,6 +934,23 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
 
   std::vector<StaticPoint> points = bundle.static_points;
   std::stable_sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.phi_dot_per_s < b.phi_dot_per_s; });
+  // A row is one breakaway: rows repeated at one load rate scatter by the breakaway's own
+  // cycle-to-cycle spread and the reading's noise, which is each row's standard error — pooled
+  // over the rates that repeat (0 when none does).
+  const double static_noise = [&] {
+    double ss = 0.0;
+    int dof = 0;
+    for (std::size_t a = 0; a < points.size();) {
+      std::size_t b = a;
+      while (b < points.size() && points[b].phi_dot_per_s == points[a].phi_dot_per_s) ++b;
+      double m = 0.0;
+      for (std::size_t i = a; i < b; ++i) m += points[i].mu_s / static_cast<double>(b - a);
+      for (std::size_t i = a; i < b; ++i) ss += (points[i].mu_s - m) * (points[i].mu_s - m);
+      dof += static_cast<int>(b - a) - 1;
+      a = b;
+    }
+    return dof > 0 ? std::sqrt(ss / dof) : 0.0;
+  }();
   for (const StaticPoint& p : points) {
     RunPlan plan;
     plan.kind = RunPlan::Kind::static_point;
@@ -897,7 +966,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     plan.duration_s = load_s + std::min(2.0 * load_s, kStaticPointCycles_s);
     plans_.push_back(plan);
     const double v = p.phi_dot_per_s * W / rig.stiffness_N_per_m;
-    add("mu_s_vs_load_rate", 0, plan.label, "static", v, new_unit(UnitKey::at_speed(v)), p.mu_s, "mu_s", {});
+    add("mu_s_vs_load_rate", 0, plan.label, "static", v, new_unit(UnitKey::at_speed(v)), p.mu_s, "mu_s", {{"mu_s", static_noise}});
   }
 
   std::vector<RegimePoint> regimes = bundle.regimes;

@@ -86,6 +86,9 @@ struct RunPlan {
   double duration_s = 0.0;
   std::vector<double> step_times_s, step_speeds_m_per_s;  // drive history (velocity steps)
   double sample_spacing_s = 0.0;                          // measured median spacing
+  // A constant-speed record sampled densely in slip and sparsely in stick (0: uniform): the
+  // simulation is read the same way (compare.cpp, sampled_as_recorded).
+  double stick_spacing_s = 0.0, slip_spacing_s = 0.0;
   double slip_step_s = 0.0;                               // Δ of slip_drop (from the measured run)
   std::vector<std::vector<double>> step_bin_edges_m;      // per step: displacement bin edges
   std::vector<double> sample_times_s;                     // drive history: measured times − first

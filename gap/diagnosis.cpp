@@ -19,6 +19,7 @@
 #include "gap/refit.h"
 #include "gap/report.h"
 #include "gap/verdict.h"
+#include "numerics/format.h"
 
 namespace tribo::gap {
 namespace {
@@ -509,9 +510,6 @@ std::vector<std::string> default_candidates(const rig::FrictionModel& model, con
 std::string DiagnosisOptions::invalid_reason() const {
   if (starts < 1) return "starts must be at least 1";
   if (max_iterations < 1) return "max_iterations must be at least 1";
-  if (!(min_relative_shrink >= 0.0 && min_relative_shrink < 1.0)) return "min_relative_shrink must lie in [0, 1)";
-  if (!(min_gap_reduction >= 0.0)) return "min_gap_reduction must not be negative";
-  if (!(floor_margin >= 0.0)) return "floor_margin must not be negative";
   if (!(unexplained_floors > 1.0)) return "unexplained_floors must exceed 1";
   if (bootstrap_samples < 0) return "bootstrap_samples must not be negative";
   if (refit_leaders < 0) return "refit_leaders must not be negative";
@@ -554,7 +552,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // The data's own noise in gap units, and the floor it puts under any model's held-out gap.
   const std::vector<double> noise_r = comparison.relative_noise();
   d.verdict.noise_floor = breakdown(d.items, noise_r, d.heldout).gap;
-  const double margin = gap_margin(o, d.verdict.noise_floor);
+  const std::vector<double> item_sd = item_noise(d.items, noise_r);
   std::mutex progress_mutex;
   auto report = [&](const std::string& what) {
     if (!o.progress) return;
@@ -582,35 +580,60 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   DiagnosisOptions calibration = o;
   calibration.max_iterations = std::max(50, 2 * o.max_iterations);  // few parameters: converge fully, so no
                                                                     // candidate wins by mere recalibration
-  FitResult calibrated = fit(comparison, base_space, Setup{model_rig, model}, train, calibration, o.seed, 1, base_space.size());
-  if (const FitResult from_guess = fit(comparison, base_space, guess, train, calibration, o.seed, 1, base_space.size());
-      from_guess.cost < calibrated.cost)
-    calibrated = from_guess;
-  report("baseline calibration");
+  // Multi-start, each start searched and then refined (central differences, tighter stop) to
+  // where its gradient vanishes: the search's forward 1 % step stops short on the kinks of
+  // event-based observables (a foreign Coulomb control: CONVERGENCE after 2 iterations, μs 2 %
+  // below the truth, the period of every run 10 % short, and the rest blamed on a mechanism).
+  // Starts: the model's values, the levels read off the data, and that reading with the excess
+  // μs − μk 20 % smaller and larger (the amplitude and period of stick-slip scale with it).
+  std::vector<Setup> starts{Setup{model_rig, model}, guess};
+  if (!model.baseline.kinetic)
+    for (double f : {0.8, 1.2}) {
+      Setup s = guess;
+      const double mu_k = s.model.baseline.mu_k, excess = s.model.baseline.mu_s - mu_k;
+      s.model.baseline.mu_s = std::clamp(mu_k + f * excess, 0.011, 1.49);
+      starts.push_back(s);
+    }
+  std::vector<FitResult> from_start(starts.size());
+#pragma omp parallel for schedule(dynamic)
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const FitResult searched = fit(comparison, base_space, starts[k], train, calibration, o.seed, 1, base_space.size());
+    from_start[k] = fit(comparison, base_space, searched.setup, train, calibration, o.seed, 1, base_space.size(), Resolution::refine);
+    if (searched.cost < from_start[k].cost) from_start[k] = searched;
+    from_start[k].termination.wall_s += searched.termination.wall_s;
+  }
+  FitResult calibrated = from_start.front();
+  for (const FitResult& f : from_start)
+    if (f.cost < calibrated.cost) calibrated = f;
+  d.calibration.starts = static_cast<int>(starts.size());
   const std::vector<bool> all(n, true);
-  const std::vector<double> w_held = weights(d.items, d.heldout);
   const Multiplicity held_m = multiplicity(d.heldout);
-  double sse_before = 0.0, calibrated_cost = calibrated.cost;
-  int n_held = 0;
-  for (bool h : d.heldout) n_held += h;
+  std::vector<double> baseline_lpd;
+  double calibrated_cost = calibrated.cost;
   auto set_baseline = [&](const FitResult& f) {
     d.calibrated = f.setup.model;
     d.rig = f.setup.rig;
     d.calibrated_params = values(base_space, f.setup);
     d.calibration_fit = f.termination;
+    d.calibration.train_gap = breakdown(d.items, comparison.residuals(comparison.predict(d.rig, d.calibrated, o.seed)), train).gap;
     d.baseline_simulated = comparison.predict(d.rig, d.calibrated, o.seed);
     d.baseline_residuals = comparison.residuals(d.baseline_simulated);
     d.baseline = breakdown(d.items, d.baseline_residuals, all);
     d.baseline_heldout = breakdown(d.items, d.baseline_residuals, d.heldout);
     d.best_simulated = d.baseline_simulated;
-    sse_before = weighted_sse(d.baseline_residuals, w_held, held_m);
+    baseline_lpd = log_density(d.baseline_residuals, predictive_sd(d.items, d.baseline_residuals, item_sd, train));
     calibrated_cost = f.cost;
   };
   set_baseline(calibrated);
+  d.calibration.train_noise_floor = breakdown(d.items, noise_r, train).gap;
+  report("baseline calibration: train gap " + numerics::fmt(d.calibration.train_gap, "%.3g") + ", " +
+         numerics::fmt(d.calibration.train_floors(), "%.3g") + " noise floors");
   auto judge = [&](Candidate& c) {
     c.heldout_gap_before = d.baseline_heldout.gap;
-    c.criterion = criterion(weighted_sse(c.residuals, w_held, held_m), sse_before, n_held, c.extra_parameters);
-    c.earns = earns(c.criterion, c.heldout_gap_after, c.heldout_gap_before, o, margin);
+    const Standing st = standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, held_m);
+    const Evidence e = evidence(st.lpd, baseline_lpd, held_m);
+    c.evidence_nats = e.gain, c.evidence_se_nats = e.se;
+    c.earns = st.earns;
   };
 
   // 2. Candidates.
@@ -721,7 +744,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   for (std::size_t k = 0; k < names.size(); ++k) singles[k] = evaluate({names[k]}, o.seed * 7919 + k);
   auto better = [](const Candidate& a, const Candidate& b) {
     if (a.earns != b.earns) return a.earns;
-    return a.criterion < b.criterion;
+    return a.evidence_nats > b.evidence_nats;
   };
   std::stable_sort(singles.begin(), singles.end(), better);
   // A fair baseline: re-calibrate it from the baseline parameters the best candidates settled on,
@@ -771,7 +794,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     const Candidate& best = singles.front();
     const double closed = best.heldout_gap_before > 0.0 ? 1.0 - best.heldout_gap_after / best.heldout_gap_before : 1.0;
     if (closed < o.pair_threshold && d.baseline_heldout.gap > 0.0) {
-      // Against the singles it must win by the margins of verdict_index().
+      // Against the singles it must have decisive evidence over the simpler one (verdict_index()).
       d.candidates.push_back(refine(evaluate({singles[0].effects[0], singles[1].effects[0]}, o.seed * 7919 + 104729)));
       std::stable_sort(d.candidates.begin(), d.candidates.end(), better);
     }
@@ -784,8 +807,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   const Candidate* chosen = nullptr;
   {
     std::vector<Standing> standing;
-    for (const Candidate& c : d.candidates) standing.push_back({c.criterion, c.heldout_gap_after, c.earns});
-    const Decision decision = decide(d.candidates, standing, o, margin, d.baseline_heldout.gap, d.verdict.noise_floor);
+    for (const Candidate& c : d.candidates) standing.push_back(standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, held_m));
+    const Decision decision = decide(d.candidates, standing, held_m, o, d.baseline_heldout.gap, d.verdict.noise_floor);
     if (decision.index >= 0) chosen = &d.candidates[static_cast<std::size_t>(decision.index)];
     d.verdict.unexplained = decision.unexplained;
   }

@@ -42,6 +42,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -56,14 +57,6 @@ namespace tribo::gap {
 struct DiagnosisOptions {
   int starts = 3;                      // fits per candidate: from the best grid points (else the defaults, then random points)
   int max_iterations = 12;             // Levenberg-Marquardt iterations per start
-  double min_relative_shrink = 0.2;    // an effect must cut the held-out gap by this fraction
-  // and by this much: the gap a correct model leaves at 1 % sensor noise (0.002-0.003 in the
-  // selftest's controls) — a smaller cut is not told apart from noise.
-  double min_gap_reduction = 0.0025;
-  // and by this many noise floors. 0 by default: on the selftest's 2-s records the four blocks
-  // hold one or two cycles each and overstate the floor (0.5 floors blocked the rig generator's
-  // hydrodynamic-lift case, a 0.0049 → 0.0012 cut); the fixed margin above stays the rule.
-  double floor_margin = 0.0;
   // A held-out gap above this many noise floors is a real disagreement: if no earning candidate
   // halves its excess over the floor, the verdict is "unexplained". The floor holds noise only;
   // a model right in every mechanism but told rig constants a few per cent off (the independent
@@ -110,7 +103,9 @@ struct Candidate {
   std::map<std::string, double> params;  // "effect.parameter" → fitted value (plus refitted baseline)
   int extra_parameters = 0;
   double train_gap = 0.0, heldout_gap_before = 0.0, heldout_gap_after = 0.0;
-  double criterion = 0.0;
+  // Held-out evidence over the calibrated baseline (verdict.h): the log-likelihood gain in nats
+  // and its standard error; the candidate earns its parameters when it is decisive.
+  double evidence_nats = 0.0, evidence_se_nats = 0.0;
   bool earns = false;
   std::map<std::string, double> heldout_after_by_observable;
   rig::FrictionModel model;
@@ -132,6 +127,19 @@ struct Verdict {
   std::string conclusion;            // one sentence a tribologist can act on
 };
 
+// The calibration stage (step 1): how close the baseline's own parameters bring it to the
+// training items, against what the data's noise leaves there. A baseline that stays several floors
+// above its noise cannot be the whole story whatever a candidate then does; a control's sits
+// near one floor.
+struct CalibrationSummary {
+  int starts = 0;                  // each searched, then refined
+  double train_gap = 0.0;          // the calibrated baseline's gap on the training items
+  double train_noise_floor = 0.0;  // the noise floor of the training items (0: the data cannot tell)
+  double train_floors() const {    // train_gap / train_noise_floor (NaN without a floor)
+    return train_noise_floor > 0.0 ? train_gap / train_noise_floor : std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
 struct Diagnosis {
   std::vector<Item> items;
   std::vector<bool> heldout;          // per item
@@ -141,6 +149,7 @@ struct Diagnosis {
   std::map<std::string, double> calibrated_params;  // "baseline.mu_s", "rig.stiffness_N_per_m", ...
   std::map<std::string, double> rig_relative_uncertainty;  // the bundle's, for the rig keys refined within it
   FitTermination calibration_fit;
+  CalibrationSummary calibration;
   GapBreakdown baseline, baseline_heldout;
   std::vector<double> baseline_residuals, measured, baseline_simulated, best_simulated;
   std::vector<Localization> localization;

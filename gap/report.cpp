@@ -90,6 +90,10 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"]["calibrated"] = d.calibrated_params;
   j["baseline"]["rig_relative_uncertainty"] = d.rig_relative_uncertainty;  // refined within ± u of the bundle's value
   j["baseline"]["fit"] = fit_json(d.calibration_fit);
+  j["baseline"]["calibration"] = {{"starts", d.calibration.starts},
+                                  {"train_gap", d.calibration.train_gap},
+                                  {"train_noise_floor", d.calibration.train_noise_floor},
+                                  {"train_gap_in_floors", finite_or_null(d.calibration.train_floors())}};
   j["heldout_is_in_sample"] = !d.has_heldout;
   j["integration_relative_tolerance"] = d.integration_tolerance;
   j["localization"] = json::array();
@@ -105,7 +109,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                                {"heldout_gap_before", c.heldout_gap_before},
                                {"heldout_gap_after", c.heldout_gap_after},
                                {"heldout_after_by_observable", c.heldout_after_by_observable},
-                               {"criterion", c.criterion},
+                               {"heldout_evidence_nats", c.evidence_nats}, {"heldout_evidence_se_nats", c.evidence_se_nats},
                                {"earns_parameters", c.earns},
                                {"fit", fit_json(c.fit)}});
   }

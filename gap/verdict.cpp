@@ -70,46 +70,94 @@ double weighted_sse(const std::vector<double>& r, const std::vector<double>& w, 
   return s;
 }
 
-double criterion(double sse_after, double sse_before, double n, int extra_parameters) {
-  return n * std::log(std::max(sse_after, 1e-300) / std::max(sse_before, 1e-300)) + extra_parameters * std::log(std::max(n, 2.0));
+std::vector<double> item_noise(const std::vector<Item>& items, const std::vector<double>& noise_r) {
+  std::map<std::string, std::pair<double, int>> pooled;
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (noise_r[i] > 0.0) pooled[items[i].observable].first += noise_r[i] * noise_r[i], ++pooled[items[i].observable].second;
+  std::vector<double> s(items.size(), 0.0);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (noise_r[i] > 0.0) {
+      s[i] = noise_r[i];
+    } else if (const auto p = pooled.find(items[i].observable); p != pooled.end()) {
+      s[i] = std::sqrt(p->second.first / p->second.second);
+    }
+  }
+  return s;
 }
 
-double gap_margin(const DiagnosisOptions& o, double floor) { return std::max(o.min_gap_reduction, o.floor_margin * floor); }
-
-bool earns(double c, double after, double before, const DiagnosisOptions& o, double margin) {
-  return c < 0.0 && after <= (1.0 - o.min_relative_shrink) * before && before - after >= margin;
+std::vector<double> predictive_sd(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                                  const std::vector<bool>& train) {
+  std::map<std::string, std::pair<double, int>> in_train, in_all;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const double excess = r[i] * r[i] - s[i] * s[i];
+    auto& a = in_all[items[i].observable];
+    a.first += excess, ++a.second;
+    if (train[i]) {
+      auto& t = in_train[items[i].observable];
+      t.first += excess, ++t.second;
+    }
+  }
+  std::vector<double> sd(items.size(), 0.0);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    const auto t = in_train.find(items[i].observable);
+    const auto& acc = t != in_train.end() ? t->second : in_all.at(items[i].observable);
+    const double tau2 = std::max(0.0, acc.first / acc.second);
+    sd[i] = std::sqrt(s[i] * s[i] + tau2);
+  }
+  return sd;
 }
 
-// A candidate with more parameters is preferred to a simpler earning one only when it beats it by
-// the margins an effect must beat the baseline by (held-out gap ≥ 20 % and ≥ min_gap_reduction
-// lower) and by a criterion difference of 2, below which a BIC difference is "not worth more than
-// a bare mention" (Kass & Raftery 1995, J. Am. Stat. Assoc. 90, 773). So a nested effect — thermal
-// thinning with U_T far above the slip speeds is viscous friction — does not win on fitting noise.
-constexpr double kIndifferentCriterion = 2.0;
+std::vector<double> log_density(const std::vector<double>& r, const std::vector<double>& sd) {
+  constexpr double kLog2Pi = 1.8378770664093453;
+  std::vector<double> out(r.size(), 0.0);
+  for (std::size_t i = 0; i < r.size(); ++i)
+    if (sd[i] > 0.0) out[i] = -0.5 * (kLog2Pi + 2.0 * std::log(sd[i]) + (r[i] / sd[i]) * (r[i] / sd[i]));
+  return out;
+}
 
-int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin) {
+Evidence evidence(const std::vector<double>& lpd_a, const std::vector<double>& lpd_b, const Multiplicity& m) {
+  double n = 0.0, sum = 0.0, sum2 = 0.0;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (!(m[i] > 0.0)) continue;
+    const double d = lpd_a[i] - lpd_b[i];
+    n += m[i], sum += m[i] * d, sum2 += m[i] * d * d;
+  }
+  if (!(n > 0.0)) return {};
+  const double mean = sum / n, var = n > 1.0 ? std::max(0.0, (sum2 - n * mean * mean) / (n - 1.0)) : 0.0;
+  return {sum, std::sqrt(n * var)};
+}
+
+Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, const Multiplicity& m) {
+  Standing st;
+  st.lpd = log_density(r, predictive_sd(items, r, s, train));
+  st.heldout_gap = gap(items, r, m);
+  const Evidence e = evidence(st.lpd, baseline_lpd, m);
+  st.gain = e.gain;
+  st.earns = e.decisive();
+  return st;
+}
+
+int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m) {
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < cs.size(); ++i)
     if (st[i].earns) order.push_back(i);
   if (order.empty()) return -1;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (cs[a].extra_parameters != cs[b].extra_parameters) return cs[a].extra_parameters < cs[b].extra_parameters;
-    return st[a].criterion < st[b].criterion;
+    return st[a].gain > st[b].gain;
   });
   std::size_t chosen = order.front();
   for (std::size_t i : order) {
     if (cs[i].extra_parameters <= cs[chosen].extra_parameters) continue;
-    const Standing &c = st[i], &s = st[chosen];
-    if (c.criterion < s.criterion - kIndifferentCriterion && c.heldout_gap <= (1.0 - o.min_relative_shrink) * s.heldout_gap &&
-        s.heldout_gap - c.heldout_gap >= margin)
-      chosen = i;
+    if (evidence(st[i].lpd, st[chosen].lpd, m).decisive()) chosen = i;
   }
   return static_cast<int>(chosen);
 }
 
-Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin,
+Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m, const DiagnosisOptions& o,
                 double gap_before, double floor) {
-  const int k = verdict_index(cs, st, o, margin);
+  const int k = verdict_index(cs, st, m);
   if (!(floor > 0.0)) return {k, false};
   const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
   const auto real = [&](double g) { return g > o.unexplained_floors * floor; };
@@ -156,6 +204,9 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
   int agree = 0;
   double s1 = 0.0, s2 = 0.0;
   std::vector<double> shift(n, 0.0);
+  const std::vector<double> s = item_noise(items, noise_r);
+  std::vector<bool> train(n);
+  for (std::size_t i = 0; i < n; ++i) train[i] = !heldout[i];
   const auto shifted = [&](const std::vector<double>& r) {
     std::vector<double> out = r;
     for (std::size_t i = 0; i < n; ++i) out[i] += shift[i];
@@ -165,11 +216,9 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
     std::map<int, int> times;
     for (std::size_t k = 0; k < units.size(); ++k) ++times[units[pick(rng)]];
     for (std::size_t i = 0; i < n; ++i) shift[i] = heldout[i] && noise_r[i] > 0.0 ? noise_r[i] * z(rng) : 0.0;
-    std::vector<bool> mask(n, false);
     Multiplicity m(n, 0.0);
-    double drawn = 0.0;
     for (std::size_t i = 0; i < n; ++i)
-      if (heldout[i] && times.count(items[i].unit)) mask[i] = true, m[i] = times[items[i].unit], drawn += m[i];
+      if (heldout[i] && times.count(items[i].unit)) m[i] = times[items[i].unit];
     const Refit* refit = refits.empty() ? nullptr : &refits[static_cast<std::size_t>(b) % refits.size()];
     const auto fitted = [&](int k) -> const std::vector<double>& {
       if (k < 0) return refit ? refit->baseline : baseline_residuals;
@@ -178,17 +227,13 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
         if (const auto it = refit->candidates.find(c); it != refit->candidates.end()) return it->second;
       return candidates[c].residuals;
     };
-    const std::vector<double> w = weights(items, mask), before = shifted(fitted(-1));
-    const double sse_before = weighted_sse(before, w, m), gap_before = gap(items, before, m);
-    const double floor = gap(items, noise_r, m), margin = gap_margin(o, floor);
+    const std::vector<double> before = shifted(fitted(-1));
+    const double gap_before = gap(items, before, m), floor = gap(items, noise_r, m);
+    const std::vector<double> baseline_lpd = log_density(before, predictive_sd(items, before, s, train));
     std::vector<Standing> standing;
-    for (std::size_t c = 0; c < candidates.size(); ++c) {
-      const std::vector<double> r = shifted(fitted(static_cast<int>(c)));
-      const double crit = criterion(weighted_sse(r, w, m), sse_before, drawn, candidates[c].extra_parameters);
-      const double after = gap(items, r, m);
-      standing.push_back({crit, after, earns(crit, after, gap_before, o, margin)});
-    }
-    const Decision k = decide(candidates, standing, o, margin, gap_before, floor);
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, m));
+    const Decision k = decide(candidates, standing, m, o, gap_before, floor);
     const std::string winner =
         k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(candidates[static_cast<std::size_t>(k.index)].effects);
     agree += winner == verdict;

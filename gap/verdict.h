@@ -1,9 +1,10 @@
 // The diagnosis' stages after the fits (diagnosis.h, steps 3–4), with explicit inputs and outputs:
-// the one gap function and the one criterion function that every stage uses, where the baseline
+// the one gap function and the one likelihood that every stage uses, where the baseline
 // misses (localisation), the verdict rule, and the verdict's bootstrap confidence. They need no
 // simulation, so their unit tests run in milliseconds (tests/gap/verdict_test.cpp).
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -30,25 +31,55 @@ std::vector<double> weights(const std::vector<Item>& items, const std::vector<bo
 // S = Σ m_i w_i² r_i².
 double weighted_sse(const std::vector<double>& r, const std::vector<double>& w, const Multiplicity& m);
 
-// The criterion (BIC form, diagnosis.h step 3): C = n ln(S_after / S_before) + p ln(max(n, 2)).
-double criterion(double sse_after, double sse_before, double n, int extra_parameters);
+// The likelihood the candidates are compared by (diagnosis.h step 3). Item i's residual is
+// Gaussian with variance σ_i² = s_i² + τ_o²(model):
+//   s_i   the item's measurement standard error in gap units (Item::noise / scale), its own
+//         estimate or, where the data give none, the RMS of its observable's estimates (0 when
+//         the observable has none) — `item_noise`;
+//   τ_o²  what the model leaves beyond that noise on the training items of the item's
+//         observable, max(0, mean_train (r_i² − s_i²)) — the model's own claim of its error,
+//         made before it sees the held-out items (all items of o when o has no training item);
+// and the held-out log predictive density is Σ_held m_i ln N(r_i; 0, σ_i²). A model that fits
+// train by following its noise claims a small τ and pays for it where it predicts the held-out
+// items no better; noise-free observables weigh more than noisy ones.
+std::vector<double> item_noise(const std::vector<Item>& items, const std::vector<double>& noise_r);
+// σ_i of every item for a model with residuals `r` (its τ_o from the items in `train`).
+std::vector<double> predictive_sd(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                                  const std::vector<bool>& train);
+// ln N(r_i; 0, σ_i²) per item (0 where σ_i = 0: an item nothing can score).
+std::vector<double> log_density(const std::vector<double>& r, const std::vector<double>& sd);
 
-// An effect must cut the held-out gap by this much: the fixed minimum or floor_margin floors.
-double gap_margin(const DiagnosisOptions& o, double floor);
-
-// A candidate's standing on one set of held-out items (the data's, or a resample's).
-struct Standing {
-  double criterion, heldout_gap;
-  bool earns;
+// The held-out evidence of model a over model b: gain = Σ m_i (lpd_a,i − lpd_b,i) in nats, and
+// its standard error √(n var_m(d_i)), n = Σ m_i (Vehtari, Gelman & Gabry 2017, Stat. Comput. 27,
+// 1413, for the elpd difference of cross-validation).
+struct Evidence {
+  double gain = 0.0, se = 0.0;
+  // Decisive: a gain above 3 nats — a likelihood ratio of 20, "strong" on Kass & Raftery's scale
+  // (1995, J. Am. Stat. Assoc. 90, 773) — and above two of its standard errors.
+  static constexpr double kStrong = 3.0;
+  bool decisive() const { return gain > std::max(kStrong, 2.0 * se); }
 };
-// Whether a candidate with held-out gap `after` and criterion `c` earns its parameters against a
-// baseline gap `before`: C < 0, and the gap cut by min_relative_shrink and by `margin`.
-bool earns(double c, double after, double before, const DiagnosisOptions& o, double margin);
+Evidence evidence(const std::vector<double>& lpd_a, const std::vector<double>& lpd_b, const Multiplicity& m);
 
-// The verdict's index among `cs` (standings `st`), or −1 when none earns its parameters: the
-// simplest earning candidate, unless one with more parameters beats it by the same margins and by
-// more than 2 in the criterion.
-int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin);
+// A candidate's standing on one set of held-out items (the data's, or a resample's): its
+// pointwise log density, held-out gap, and whether it earns its parameters — its evidence over
+// the baseline is decisive.
+struct Standing {
+  std::vector<double> lpd;
+  double heldout_gap = 0.0;
+  bool earns = false;
+  double gain = 0.0;  // evidence over the baseline, nats
+};
+
+// A model's standing from its residuals `r` on every item (its σ from the items in `train`)
+// against the baseline's pointwise log density, on the held-out multiplicity `m`.
+Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, const Multiplicity& m);
+
+// The verdict's index among `cs` (standings `st`, held-out multiplicity `m`), or −1 when none
+// earns its parameters: the simplest earning candidate (the most evidence among equals), unless
+// one with more parameters has decisive evidence over it.
+int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m);
 
 // The verdict rule with the open world: `index` ≥ 0 names a candidate; else `unexplained` when
 // the held-out gap lies above unexplained_floors noise floors and no earning candidate halves its
@@ -57,7 +88,7 @@ struct Decision {
   int index = -1;
   bool unexplained = false;
 };
-Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const DiagnosisOptions& o, double margin,
+Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m, const DiagnosisOptions& o,
                 double gap_before, double floor);
 
 // Share of the summed squared residuals by (observable, phase + speed class), largest first.
