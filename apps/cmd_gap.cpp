@@ -34,6 +34,7 @@ struct SelftestArgs {
   std::uint64_t seed = 1;
   bool quick = false;
   std::string generator = "both";  // rig, independent or both
+  std::string set = "development";  // or validation (gap::SelftestSet)
 };
 
 gap::DiagnosisOptions fitting_options(bool quick, std::uint64_t seed) {
@@ -286,7 +287,8 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
 void run_selftest(const SelftestArgs& args) {
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
-  std::vector<gap::SelftestCase> cases = gap::selftest_cases(args.quick, args.seed);
+  const gap::SelftestSet set = args.set == "validation" ? gap::SelftestSet::validation : gap::SelftestSet::development;
+  std::vector<gap::SelftestCase> cases = gap::selftest_cases(args.quick, args.seed, set);
   if (args.generator != "both")
     std::erase_if(cases, [&](const gap::SelftestCase& c) { return c.generator != args.generator; });
   const std::vector<gap::SelftestRow> finished = finished_rows(dir / "cases.jsonl", args.quick);
@@ -297,7 +299,7 @@ void run_selftest(const SelftestArgs& args) {
   std::ofstream journal(dir / "cases.jsonl", std::ios::app);
   Progress progress(args.quick ? "gap selftest (quick)" : "gap selftest", static_cast<int>(cases.size()) - resumed);
   const gap::SelftestResult r = gap::run_selftest(
-      cases, gap::SyntheticOptions{}, fitting_options(args.quick, args.seed),
+      cases, gap::synthetic_options(set), fitting_options(args.quick, args.seed),
       [&](const gap::SelftestRow& row) {
         journal << row_json(row, args.quick).dump() << "\n" << std::flush;
         progress.step(row.c.true_effect + " -> " + row.verdict);
@@ -336,6 +338,7 @@ void run_selftest(const SelftestArgs& args) {
   nlohmann::json j;
   j["provenance"] = provenance;
   j["quick"] = args.quick;
+  j["set"] = args.set;
   j["seed"] = args.seed;
   j["identified_fraction"] = r.identified_fraction;
   j["controls_none_fraction"] = r.controls_none_fraction;
@@ -407,6 +410,11 @@ void add_gap_command(CLI::App& app) {
   selftest->add_option("--out", selftest_args->out, "Output directory (an interrupted run resumes from OUT/cases.jsonl)")->capture_default_str();
   selftest->add_option("--seed", selftest_args->seed, "Seed of the synthetic cases")->capture_default_str();
   selftest->add_flag("--quick", selftest_args->quick, "The reduced CI set (one seed: four effects and two controls from the rig's simulator, one effect and one control from the independent generator)");
+  selftest->add_option("--set", selftest_args->set,
+                       "development (the seeds, speeds and strengths the diagnosis was tuned on) or validation (drawn afresh: other "
+                       "seeds, speeds and effect strengths; one case per effect and generator, two controls each)")
+      ->check(CLI::IsMember({"development", "validation"}))
+      ->capture_default_str();
   selftest->add_option("--generator", selftest_args->generator, "Cases of one generator only: rig (the rig's simulator), independent (gap/independent/) or both")
       ->check(CLI::IsMember({"rig", "independent", "both"}))
       ->capture_default_str();

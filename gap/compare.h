@@ -15,7 +15,7 @@
 //                      re-attachment jump that ends the slip)
 //   rise_time_s        time from a minimum to the next maximum (the stick time of stick-slip)
 //   period_s           mean time between maxima
-//   peak_to_peak_m     range of the slider displacement x
+//   peak_to_peak_m     range of the slider displacement x between its 5th and 95th percentiles in time
 //   mean_mu            time-averaged μ
 //   mu_s_vs_load_rate  μs at the load rate φ̇ of static_friction.csv: the mean breakaway of stick-slip
 //                      at v = φ̇ W / k after the start-up (a row is a stick event, DESIGN §7)

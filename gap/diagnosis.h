@@ -14,30 +14,34 @@
 // train, odd units are held out.
 //
 // Procedure.
-//  1. Calibrate the model's own free parameters on train (μs, μk, rig keys the model lacks, and
-//     the rig constants the bundle states with a relative uncertainty, within it).
+//  1. Calibration, a stage of its own: the model's own free parameters (μs, μk, rig keys the model
+//     lacks, and the rig constants the bundle states with a relative uncertainty, within it)
+//     fitted on train from four starts (the model's values, levels read off the data, and that
+//     reading with μs − μk 20 % smaller and larger), each searched and then refined with central
+//     differences; what it leaves on train is reported against the training items' noise floor
+//     (CalibrationSummary) before any candidate is tried.
 //  2. For each catalogue effect not in the model: add it, fit its parameters together with the
 //     baseline ones on train (Ceres, bounded, forward numeric differences over simulate(), several
 //     starts), evaluate on held-out.
-//  3. Criterion on held-out:  C = n_h ln(S_after / S_before) + p ln(n_h), S the sum of squared
-//     weighted residuals, n_h the number of held-out items, p the effect's fitted parameters (BIC
-//     form). A candidate earns its parameters when C < 0 and it cuts the held-out gap by at least
-//     `min_relative_shrink` and by at least `min_gap_reduction`. If the best single closes less than `pair_threshold` of the gap, the
+//  3. Likelihood on held-out (verdict.h): every item's residual is Gaussian with the data's own
+//     noise for it plus the error the model claims on its observable's training items; a
+//     candidate earns its parameters when its held-out log predictive density beats the
+//     calibrated baseline's decisively — by more than 3 nats (a likelihood ratio of 20) and two
+//     standard errors of the difference. If the best single closes less than `pair_threshold` of the gap, the
 //     two best singles are fitted together.
 //     A nested pair is judged with each at its best: when thermal thinning (which is viscous
 //     friction as U_T → ∞) fits train better, viscous friction is refined again from its projection.
-//  4. Verdict: the simplest earning candidate, unless one with more parameters beats it by the
-//     same margins and by more than 2 in C (Kass & Raftery's "bare mention" BIC difference);
-//     else "none". Confidence: share of bootstrap resamples of the held-out units that give the
-//     same verdict, with the baseline and the leading candidates refitted on redrawn training data.
+//  4. Verdict: the simplest earning candidate, unless one with more parameters has decisive
+//     evidence over it; else "none". Confidence: share of bootstrap resamples of the held-out
+//     units that give the same verdict, with the baseline and the leading candidates refitted on
+//     redrawn training data.
 //
 // Open world. The data's own noise (Item::noise, compare.h) gives the *noise floor*: the gap of
 // the item standard errors, floor = mean_o sqrt(mean_{i in o} (noise_i / s_o)²) over held-out —
 // what a model right in every mechanism would still leave. A gap above
 // `unexplained_floors` floors that no earning candidate halves (its excess over the floor,
 // sqrt(gap² − floor²)) is reported as "unexplained" with the remaining gap in floors and where it
-// lies — rather than naming the least bad catalogue effect. (Margins may scale with the floor too,
-// `floor_margin`; off by default, see there.)
+// lies — rather than naming the least bad catalogue effect.
 #pragma once
 
 #include <cstdint>

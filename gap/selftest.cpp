@@ -25,36 +25,37 @@ double uniform(std::mt19937_64& rng, double a, double b) { return std::uniform_r
 // Random physical parameters, strong enough to matter on the thesis rig at the synthetic speeds.
 void switch_on(rig::FrictionModel& m, const std::string& effect, std::mt19937_64& rng, const rig::RigParameters& rig,
                const SyntheticOptions& o) {
+  const double f = o.strength_upper > o.strength_lower ? uniform(rng, o.strength_lower, o.strength_upper) : o.strength_lower;
   if (effect == "rate_dependent_static") {
     contact::JunctionLocus shape;
-    const double mu_s_max = uniform(rng, 0.45, 0.6);
+    const double mu_s_max = m.baseline.mu_s + f * (uniform(rng, 0.45, 0.6) - m.baseline.mu_s);
     shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, shape.alpha);
     const double v_mid = o.speeds_m_per_s[o.speeds_m_per_s.size() / 2];
     const double phi_mid = rig.stiffness_N_per_m * v_mid / rig.normal_load_N;
-    const double mu_mid = m.baseline.mu_s + uniform(rng, 0.0, 0.05);
+    const double mu_mid = m.baseline.mu_s + f * uniform(rng, 0.0, 0.05);
     m.set(effect, "mu_s_max", mu_s_max);
     m.set(effect, "location_per_s", contact::location_through_point_per_s(shape, phi_mid, mu_mid));
   } else if (effect == "strain_rate_hardening") {
-    m.set(effect, "m", uniform(rng, 0.12, 0.25));
+    m.set(effect, "m", f * uniform(rng, 0.12, 0.25));
     m.set(effect, "reference_load_rate_per_s", rig.stiffness_N_per_m * o.speeds_m_per_s.front() / rig.normal_load_N);
   } else if (effect == "slip_transient") {
-    m.set(effect, "amplitude", uniform(rng, 0.6, 1.0));
+    m.set(effect, "amplitude", std::min(1.0, f * uniform(rng, 0.6, 1.0)));
     m.set(effect, "decay_distance_m", log_uniform(rng, 3e-4, 1.5e-3));
   } else if (effect == "viscous_friction") {
-    m.set(effect, "coefficient_N_s_per_m", uniform(rng, 20.0, 45.0));  // below the c that stabilises sliding at the top speed
+    m.set(effect, "coefficient_N_s_per_m", f * uniform(rng, 20.0, 45.0));  // below the c that stabilises sliding at the top speed
   } else if (effect == "squeeze_film") {
-    m.set(effect, "film_fraction", uniform(rng, 0.4, 0.7));
+    m.set(effect, "film_fraction", std::min(0.9, f * uniform(rng, 0.4, 0.7)));
     m.set(effect, "build_up_distance_m", log_uniform(rng, 5e-4, 3e-3));
   } else if (effect == "hydrodynamic_lift") {
-    m.set(effect, "max_fraction", uniform(rng, 0.4, 0.6));
+    m.set(effect, "max_fraction", std::min(0.9, f * uniform(rng, 0.4, 0.6)));
     m.set(effect, "half_speed_m_per_s", log_uniform(rng, 0.01, 0.03));
   } else if (effect == "thermal_thinning") {
-    m.set(effect, "traction_coefficient_N_s_per_m", uniform(rng, 250.0, 500.0));
+    m.set(effect, "traction_coefficient_N_s_per_m", f * uniform(rng, 250.0, 500.0));
     m.set(effect, "thermal_speed_m_per_s", log_uniform(rng, 0.015, 0.04));
   } else if (effect == "instrument") {
-    const double g = uniform(rng, 1.15, 1.3);
+    const double g = 1.0 + f * uniform(rng, 0.15, 0.3);
     m.set(effect, "gain", std::uniform_int_distribution<int>(0, 1)(rng) ? g : 1.0 / g);
-    m.set(effect, "lag_s", uniform(rng, 1e-3, 3e-3));
+    m.set(effect, "lag_s", f * uniform(rng, 1e-3, 3e-3));
   } else {
     throw std::invalid_argument("selftest: unknown effect '" + effect + "'");
   }
@@ -129,8 +130,32 @@ SyntheticCase make_synthetic_case(const std::string& true_effect, const std::vec
   return c;
 }
 
-std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed) {
+SyntheticOptions synthetic_options(SelftestSet set) {
+  SyntheticOptions o;
+  if (set == SelftestSet::validation) {
+    o.speeds_m_per_s = {4.5e-3, 8e-3, 1.4e-2, 2.4e-2, 3.8e-2};
+    o.test_speeds_m_per_s = {6e-3, 1.06e-2, 1.83e-2, 3.02e-2};  // between them (geometric means)
+    o.strength_lower = 0.5, o.strength_upper = 1.5;
+  }
+  return o;
+}
+
+std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed, SelftestSet set) {
   std::vector<SelftestCase> cases;
+  if (set == SelftestSet::validation) {
+    // One case per effect and generator (quick or not), drawn from seeds the development never used.
+    const std::uint64_t base = seed + 5000;
+    std::uint64_t k = 0;
+    for (const auto& e : {"rate_dependent_static", "slip_transient", "viscous_friction", "squeeze_film", "hydrodynamic_lift",
+                          "thermal_thinning", "instrument"})
+      cases.push_back({e, {}, base + k++});
+    cases.push_back({"strain_rate_hardening", {"rate_dependent_static"}, base + k++});
+    for (int c = 0; c < 2; ++c) cases.push_back({"none", {}, base + k++});
+    for (const auto& e : independent::independent_effects())
+      cases.push_back({e, {}, base + 500 + k++, kIndependentGenerator});
+    for (int c = 0; c < 2; ++c) cases.push_back({"none", {}, base + 500 + k++, kIndependentGenerator});
+    return cases;
+  }
   const std::vector<std::string> quick_effects{"slip_transient", "viscous_friction", "hydrodynamic_lift", "rate_dependent_static"};
   const std::vector<std::string> all_effects{"rate_dependent_static", "slip_transient", "viscous_friction", "squeeze_film",
                                              "hydrodynamic_lift", "thermal_thinning", "instrument"};

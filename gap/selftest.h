@@ -37,7 +37,17 @@ struct SyntheticOptions {
   // ones (their geometric means), with noise drawn afresh — data neither the fits nor the
   // verdict saw, on which the reported shrink is measured.
   std::vector<double> test_speeds_m_per_s{7.7e-3, 1.3e-2, 2.2e-2, 3.55e-2};
+  // Effect strength: the first generator's drawn effect parameters scaled away from no effect by
+  // a factor drawn from [lower, upper] per case (1, 1: the development draws).
+  double strength_lower = 1.0, strength_upper = 1.0;
 };
+
+// The development set is what the diagnosis was tuned on (seeds, speeds and strengths of
+// SyntheticOptions' defaults); the validation set is drawn afresh and only reported: other seeds
+// (a stream of their own for each generator), other driven speeds and test speeds, and effect
+// strengths scaled by 0.5–1.5 on the first generator.
+enum class SelftestSet { development, validation };
+SyntheticOptions synthetic_options(SelftestSet set);
 
 // "Measured" bundle: the truth simulated at every speed, measured through its instrument plus
 // noise; static_friction.csv with one point per run, the mean of its measured breakaways.
@@ -113,7 +123,7 @@ std::vector<ReliabilityBin> reliability_table(const std::vector<SelftestRow>& ro
 // The quick set (CI) or the full set. First generator: every effect × seeds, controls, and the
 // second-effect case. Independent generator: quick — one effect and one control; full — every
 // effect it has a form for × 2 seeds and 3 controls.
-std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed);
+std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed, SelftestSet set = SelftestSet::development);
 
 // `finished` holds rows of an earlier, interrupted run: a case found there (same true effect,
 // model effects and seed) is taken as it is rather than diagnosed again. `on_row` is called for

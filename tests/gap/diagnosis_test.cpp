@@ -293,6 +293,58 @@ TEST(Comparison, TriangleWaveFeaturesMatchTheirClosedFormsAtAnySamplePhase) {
   }
 }
 
+// peak_to_peak_m is the range between x's 5th and 95th percentiles over time: for a triangle wave
+// between 0 and 1 mm, whose x is uniform in time over the range, 0.9 mm — at either sampling phase,
+// and unmoved by a single spike (an extreme the record's noise or one cycle's scatter would make).
+TEST(Comparison, DisplacementRangeIsReadBetweenPercentilesSoOneExtremeDoesNotInflateIt) {
+  const double period = 1.0, amplitude = 1e-3;
+  auto x_at = [&](double t) {
+    const double p = t / period - std::floor(t / period);
+    return amplitude * (p < 0.5 ? 2.0 * p : 2.0 - 2.0 * p);
+  };
+  for (const double phase : {0.37e-3, 0.81e-3}) {
+    for (const bool spike : {false, true}) {
+      ExperimentBundle b;
+      gap::Run run;
+      run.run_id = "0";
+      run.v_m_per_s = 1e-2;
+      for (double t = phase; t < 5.0; t += 1e-3) {
+        run.trace.t_s.push_back(t);
+        run.trace.x_m.push_back(x_at(t) + (spike && std::abs(t - 3.2) < 5e-4 ? 5.0 * amplitude : 0.0));
+        run.trace.mu.push_back(0.2 + 100.0 * x_at(t));
+      }
+      b.runs.push_back(run);
+      const Comparison c(b, rig::RigParameters{});
+      const auto it = std::find_if(c.items().begin(), c.items().end(), [](const Item& i) { return i.observable == "peak_to_peak_m"; });
+      ASSERT_NE(it, c.items().end());
+      SCOPED_TRACE("phase " + std::to_string(phase) + (spike ? ", with a spike" : ""));
+      EXPECT_NEAR(it->measured, 0.9 * amplitude, 2e-3 * amplitude);  // the 1-ms grid's resolution of the percentiles
+    }
+  }
+}
+
+// Static-friction rows repeated at one load rate are repeats of one breakaway: each row's standard
+// error is their scatter, pooled over the rates that repeat — rows 0.30, 0.32 and 0.40, 0.44, 0.42:
+// squares about the means 0.0002 and 0.0008 over 1 + 2 degrees of freedom, σ = √(0.001/3). One
+// simulation serves each rate.
+TEST(Comparison, StaticRowsRepeatedAtOneLoadRateCarryTheirPooledScatter) {
+  ExperimentBundle b;
+  b.static_points = {{0.5, 0.30}, {2.0, 0.40}, {0.5, 0.32}, {2.0, 0.44}, {2.0, 0.42}};
+  const Comparison c(b, rig::RigParameters{});
+  ASSERT_EQ(c.items().size(), 5u);
+  for (const Item& it : c.items()) EXPECT_NEAR(it.noise, std::sqrt(0.001 / 3.0), 1e-12) << it.where;
+  std::set<int> plans;
+  for (const Item& it : c.items()) plans.insert(it.plan);
+  EXPECT_EQ(plans.size(), 2u);
+  const std::vector<double> sim = c.predict(rig::RigParameters{}, rig::coulomb(0.35, 0.25), 1);
+  EXPECT_NEAR(sim[0], 0.35, 1e-3);  // Coulomb: every breakaway at μs
+  EXPECT_EQ(sim[0], sim[1]);
+  // A single row per rate tells no scatter.
+  ExperimentBundle single;
+  single.static_points = {{0.5, 0.30}, {2.0, 0.40}};
+  for (const Item& it : Comparison(single, rig::RigParameters{}).items()) EXPECT_EQ(it.noise, 0.0);
+}
+
 // A made-up velocity-step record: 60 µm of load-point travel at 3 µm/s, then 10 µm/s for 50 s,
 // sampled at 100 Hz with the drive record; μ = 0.6 + excess(load-point travel since the step).
 ExperimentBundle velocity_step_bundle(const std::function<double(double)>& excess) {
