@@ -68,7 +68,8 @@ Model load_model(const std::string& path) {
     rig_table->finish();
   }
   std::optional<ConfigTable> friction = root.table("friction");
-  m.friction = read_friction_model(friction ? &*friction : nullptr);
+  // A homogenised law (law.json) is read at the model's normal load.
+  m.friction = read_friction_model(friction ? &*friction : nullptr, m.rig.normal_load_N);
   if (friction) friction->finish();
   root.accept("drive");
   root.accept("run");

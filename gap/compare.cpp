@@ -609,27 +609,40 @@ void read_sampling_policy(const std::vector<double>& t, RunPlan& plan) {
 }
 
 // A simulated run read as the record was sampled (RunPlan::slip_spacing_s): a sample every
-// stick spacing while the slider sticks, every slip spacing while it slips, the first slip sample
-// one slip spacing after the breakaway. A sparse record never holds the breakaway or the
-// re-attachment themselves — its peak is the last stick sample before the breakaway, its trough
-// the first one after the slip, up to a stick spacing away — and the simulation, read densely,
-// would: at 7 mm/s on a 20-ms stick spacing that is 0.015 in μ at every peak and trough.
+// stick spacing while the slider sticks, from the re-attachment on, and every slip spacing while
+// it slips, the first one slip spacing after the breakaway. A sparse record never holds the
+// breakaway or the re-attachment themselves — its peak is the last stick sample before the
+// breakaway, its trough the first one a stick spacing after the slip — and the simulation, read
+// densely, would: at 7 mm/s on a 20-ms stick spacing that is 0.015 in μ at every peak and trough.
+// Where the breakaway falls between two stick samples changes from cycle to cycle in a record
+// (its stick times scatter); a deterministic simulation's would not, and would hold one phase at
+// every cycle. So the last stick reading of cycle n lies a fraction frac(n φ) of the stick
+// spacing before the breakaway (φ the golden ratio: phases spread evenly over the cycles).
 Signal sampled_as_recorded(const Signal& s, const std::vector<bool>& slipping, const RunPlan& plan) {
+  constexpr double kGolden = 0.6180339887498949;
   Signal out;
   std::size_t i = 0;
+  long cycle = 0;
+  double forced = kNaN;  // the next instant when it is fixed already (the first slip sample)
   for (double t = s.t.front(); t <= s.t.back();) {
     while (i + 1 < s.t.size() && s.t[i + 1] <= t) ++i;
     out.t.push_back(t);
     const bool last = i + 1 == s.t.size();
     out.mu.push_back(last ? s.mu.back() : interp(s.t, s.mu, t));
     if (!s.x.empty()) out.x.push_back(last ? s.x.back() : interp(s.t, s.x, t));
-    double next = t + (slipping[i] ? plan.slip_spacing_s : plan.stick_spacing_s);
-    if (!slipping[i])
+    double next = slipping[i] ? t + plan.slip_spacing_s : t + plan.stick_spacing_s;
+    if (std::isfinite(forced)) {
+      next = forced, forced = kNaN;
+    } else if (!slipping[i]) {
       for (std::size_t j = i + 1; j < s.t.size() && s.t[j] < next; ++j)
         if (slipping[j]) {
+          ++cycle;
+          const double reading = s.t[j] - plan.stick_spacing_s * (cycle * kGolden - std::floor(cycle * kGolden));
           next = s.t[j] + plan.slip_spacing_s;
+          if (reading > t) forced = next, next = reading;
           break;
         }
+    }
     t = next;
   }
   return out;

@@ -233,6 +233,16 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   for (std::size_t i = 0; i < train_mask.size(); ++i)
     if (train_mask[i]) train.push_back(static_cast<int>(i));
   const std::vector<double> w = weights(c.items(), train_mask);
+  if (space.empty()) {  // nothing to fit: the start as it is
+    FitResult as_is{start, 0.0, {"nothing to fit", 0, 0, 0.0}};
+    std::vector<double> r(c.items().size(), 1.0);
+    try {
+      r = c.residuals(c.predict(start.rig, start.model, o.seed));
+    } catch (const std::invalid_argument&) {
+    }
+    for (int i : train) as_is.cost += 0.5 * w[static_cast<std::size_t>(i)] * w[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(i)];
+    return as_is;
+  }
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> uniform(1.0, 2.0);
   FitResult best{start, std::numeric_limits<double>::infinity(), {}};
@@ -338,10 +348,13 @@ std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const 
                                          const std::map<std::string, double>& relative_uncertainty) {
   std::vector<FitParameter> space;
   FitParameter p;
-  p.target = FitParameter::Target::mu_s;
-  p.lower = 0.01, p.upper = 1.5;
-  space.push_back(p);
-  if (!model.baseline.kinetic) {
+  // A homogenised base (law.json) computes its friction from the surfaces: it has no μs, μk to fit.
+  if (!model.baseline.homogenised) {
+    p.target = FitParameter::Target::mu_s;
+    p.lower = 0.01, p.upper = 1.5;
+    space.push_back(p);
+  }
+  if (!model.baseline.homogenised && !model.baseline.kinetic) {
     p.target = FitParameter::Target::mu_k_ratio;
     p.lower = 0.05, p.upper = 1.0;
     space.push_back(p);
@@ -586,8 +599,10 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // below the truth, the period of every run 10 % short, and the rest blamed on a mechanism).
   // Starts: the model's values, the levels read off the data, and that reading with the excess
   // μs − μk 20 % smaller and larger (the amplitude and period of stick-slip scale with it).
-  std::vector<Setup> starts{Setup{model_rig, model}, guess};
-  if (!model.baseline.kinetic)
+  const bool fits_friction = !model.baseline.homogenised;
+  std::vector<Setup> starts{Setup{model_rig, model}};
+  if (fits_friction) starts.push_back(guess);
+  if (fits_friction && !model.baseline.kinetic)
     for (double f : {0.8, 1.2}) {
       Setup s = guess;
       const double mu_k = s.model.baseline.mu_k, excess = s.model.baseline.mu_s - mu_k;
