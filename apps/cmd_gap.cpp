@@ -116,7 +116,7 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   md << "\nFit: " << d.calibration_fit.termination << " after " << d.calibration_fit.iterations << " of "
      << d.calibration_fit.max_iterations << " iterations (Ceres), " << fmt(d.calibration_fit.wall_s, "%.0f") << " s. Predictions integrated at relative tolerance "
      << fmt(d.integration_tolerance, "%.1e") << " (1e-3 of the items' median relative noise).\n";
-  md << "\nCalibration: " << d.calibration.starts << " starts, each searched and refined; the baseline leaves "
+  md << "\nCalibration: " << d.calibration.starts << " starts searched, the best refined; the baseline leaves "
      << fmt(d.calibration.train_gap, "%.4g") << " on the training items, " << fmt(d.calibration.train_floors(), "%.3g")
      << " times their noise floor (" << fmt(d.calibration.train_noise_floor, "%.3g") << ").\n";
   md << "\nGap (all items) " << fmt(d.baseline.gap, "%.4g") << ", held-out " << fmt(d.baseline_heldout.gap, "%.4g") << ".\n\n";

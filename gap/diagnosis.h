@@ -17,14 +17,15 @@
 //  1. Calibration, a stage of its own: the model's own free parameters (μs, μk, rig keys the model
 //     lacks, and the rig constants the bundle states with a relative uncertainty, within it)
 //     fitted on train from four starts (the model's values, levels read off the data, and that
-//     reading with μs − μk 20 % smaller and larger), each searched and then refined with central
-//     differences; what it leaves on train is reported against the training items' noise floor
+//     reading with μs − μk 20 % smaller and larger), each searched, the best then refined with
+//     central differences; what it leaves on train is reported against the training items' noise floor
 //     (CalibrationSummary) before any candidate is tried.
 //  2. For each catalogue effect not in the model: add it, fit its parameters together with the
 //     baseline ones on train (Ceres, bounded, forward numeric differences over simulate(), several
 //     starts), evaluate on held-out.
-//  3. Likelihood on held-out (verdict.h): every item's residual is Gaussian with the data's own
-//     noise for it plus the error the model claims on its observable's training items; a
+//  3. Likelihood on held-out (verdict.h): every item's residual has the scale of the data's own
+//     noise for it plus the error the model claims on its observable's training items (Student's
+//     t, its degrees of freedom the number of those training items); a
 //     candidate earns its parameters when its held-out log predictive density beats the
 //     calibrated baseline's decisively — by more than 3 nats (a likelihood ratio of 20) and two
 //     standard errors of the difference. If the best single closes less than `pair_threshold` of the gap, the
@@ -136,7 +137,7 @@ struct Verdict {
 // above its noise cannot be the whole story whatever a candidate then does; a control's sits
 // near one floor.
 struct CalibrationSummary {
-  int starts = 0;                  // each searched, then refined
+  int starts = 0;                  // each searched; the best refined
   double train_gap = 0.0;          // the calibrated baseline's gap on the training items
   double train_noise_floor = 0.0;  // the noise floor of the training items (0: the data cannot tell)
   double train_floors() const {    // train_gap / train_noise_floor (NaN without a floor)

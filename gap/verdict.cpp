@@ -85,8 +85,8 @@ std::vector<double> item_noise(const std::vector<Item>& items, const std::vector
   return s;
 }
 
-std::vector<double> predictive_sd(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                                  const std::vector<bool>& train) {
+Predictive predictive(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                      const std::vector<bool>& train) {
   std::map<std::string, std::pair<double, int>> in_train, in_all;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const double excess = r[i] * r[i] - s[i] * s[i];
@@ -97,21 +97,25 @@ std::vector<double> predictive_sd(const std::vector<Item>& items, const std::vec
       t.first += excess, ++t.second;
     }
   }
-  std::vector<double> sd(items.size(), 0.0);
+  Predictive p;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const auto t = in_train.find(items[i].observable);
     const auto& acc = t != in_train.end() ? t->second : in_all.at(items[i].observable);
     const double tau2 = std::max(0.0, acc.first / acc.second);
-    sd[i] = std::sqrt(s[i] * s[i] + tau2);
+    p.sd.push_back(std::max(std::sqrt(s[i] * s[i] + tau2), Predictive::kResolution));
+    p.dof.push_back(acc.second);
   }
-  return sd;
+  return p;
 }
 
-std::vector<double> log_density(const std::vector<double>& r, const std::vector<double>& sd) {
-  constexpr double kLog2Pi = 1.8378770664093453;
+std::vector<double> log_density(const std::vector<double>& r, const Predictive& p) {
+  constexpr double kLogPi = 1.1447298858494002;
   std::vector<double> out(r.size(), 0.0);
-  for (std::size_t i = 0; i < r.size(); ++i)
-    if (sd[i] > 0.0) out[i] = -0.5 * (kLog2Pi + 2.0 * std::log(sd[i]) + (r[i] / sd[i]) * (r[i] / sd[i]));
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    const double nu = p.dof[i], z = r[i] / p.sd[i];
+    out[i] = std::lgamma(0.5 * (nu + 1.0)) - std::lgamma(0.5 * nu) - 0.5 * (std::log(nu) + kLogPi) - std::log(p.sd[i]) -
+             0.5 * (nu + 1.0) * std::log1p(z * z / nu);
+  }
   return out;
 }
 
@@ -130,7 +134,7 @@ Evidence evidence(const std::vector<double>& lpd_a, const std::vector<double>& l
 Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
                      const std::vector<bool>& train, const std::vector<double>& baseline_lpd, const Multiplicity& m) {
   Standing st;
-  st.lpd = log_density(r, predictive_sd(items, r, s, train));
+  st.lpd = log_density(r, predictive(items, r, s, train));
   st.heldout_gap = gap(items, r, m);
   const Evidence e = evidence(st.lpd, baseline_lpd, m);
   st.gain = e.gain;
@@ -229,7 +233,7 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
     };
     const std::vector<double> before = shifted(fitted(-1));
     const double gap_before = gap(items, before, m), floor = gap(items, noise_r, m);
-    const std::vector<double> baseline_lpd = log_density(before, predictive_sd(items, before, s, train));
+    const std::vector<double> baseline_lpd = log_density(before, predictive(items, before, s, train));
     std::vector<Standing> standing;
     for (std::size_t c = 0; c < candidates.size(); ++c)
       standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, m));

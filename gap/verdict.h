@@ -31,23 +31,32 @@ std::vector<double> weights(const std::vector<Item>& items, const std::vector<bo
 // S = Σ m_i w_i² r_i².
 double weighted_sse(const std::vector<double>& r, const std::vector<double>& w, const Multiplicity& m);
 
-// The likelihood the candidates are compared by (diagnosis.h step 3). Item i's residual is
-// Gaussian with variance σ_i² = s_i² + τ_o²(model):
+// The likelihood the candidates are compared by (diagnosis.h step 3). Item i's residual has the
+// scale σ_i² = s_i² + τ_o²(model):
 //   s_i   the item's measurement standard error in gap units (Item::noise / scale), its own
 //         estimate or, where the data give none, the RMS of its observable's estimates (0 when
 //         the observable has none) — `item_noise`;
 //   τ_o²  what the model leaves beyond that noise on the training items of the item's
 //         observable, max(0, mean_train (r_i² − s_i²)) — the model's own claim of its error,
 //         made before it sees the held-out items (all items of o when o has no training item);
-// and the held-out log predictive density is Σ_held m_i ln N(r_i; 0, σ_i²). A model that fits
-// train by following its noise claims a small τ and pays for it where it predicts the held-out
-// items no better; noise-free observables weigh more than noisy ones.
+// and, since τ_o is estimated from the n_o training items of its observable, the predictive
+// density is Student's t with ν = n_o degrees of freedom about 0 with that scale (the posterior
+// predictive of a Gaussian of unknown variance): a scale claimed from two items that happened to
+// fit does not turn a small held-out miss into thousands of nats. σ is at least kResolution,
+// 0.1 % of the observable's typical size — finer than the simulation resolves (its integration
+// error is kept 1e-3 below the data's noise). The held-out log predictive density Σ_held m_i
+// ln t_ν(r_i; σ_i) rewards a model for predicting held-out items within what it claimed and
+// charges one that fitted its training noise; noise-free observables weigh more than noisy ones.
 std::vector<double> item_noise(const std::vector<Item>& items, const std::vector<double>& noise_r);
-// σ_i of every item for a model with residuals `r` (its τ_o from the items in `train`).
-std::vector<double> predictive_sd(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                                  const std::vector<bool>& train);
-// ln N(r_i; 0, σ_i²) per item (0 where σ_i = 0: an item nothing can score).
-std::vector<double> log_density(const std::vector<double>& r, const std::vector<double>& sd);
+struct Predictive {
+  static constexpr double kResolution = 1e-3;
+  std::vector<double> sd, dof;  // σ_i and ν_i of every item
+};
+// The predictive of a model with residuals `r` (its τ_o and ν from the items in `train`).
+Predictive predictive(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                      const std::vector<bool>& train);
+// ln t_ν(r_i; 0, σ_i) per item.
+std::vector<double> log_density(const std::vector<double>& r, const Predictive& p);
 
 // The held-out evidence of model a over model b: gain = Σ m_i (lpd_a,i − lpd_b,i) in nats, and
 // its standard error √(n var_m(d_i)), n = Σ m_i (Vehtari, Gelman & Gabry 2017, Stat. Comput. 27,

@@ -67,8 +67,9 @@ TEST(Verdict, WeightsGiveEveryObservableTheSameShare) {
 
 // The likelihood (verdict.h) by hand. Observable mu_peak: noise 0.1 on three items, none on the
 // fourth, which takes their RMS; train residuals 0.3 and 0.1 claim τ² = mean(r² − s²) = 0.04, so
-// σ² = 0.01 + 0.04 on every mu_peak item. period_s has no training item and no noise: its τ² is
-// its own items' mean r² (in-sample), 0.25.
+// σ² = 0.01 + 0.04 on every mu_peak item, with ν = 2 (two training items): t₂'s density is
+// (1 + z²/2)^(−3/2) / (2√2 σ). period_s has no training item and no noise: its τ² is its own one
+// item's r² (in-sample), σ = 0.5, ν = 1 — Cauchy, 1 / (π σ (1 + z²)).
 TEST(Verdict, LikelihoodScoresEachItemByItsNoisePlusTheErrorTheModelClaimsOnTrain) {
   const std::vector<Item> items{item("mu_peak", 0), item("mu_peak", 1), item("mu_peak", 2), item("mu_peak", 3), item("period_s", 4)};
   const std::vector<double> s = item_noise(items, {0.1, 0.1, 0.1, 0.0, 0.0});
@@ -76,18 +77,29 @@ TEST(Verdict, LikelihoodScoresEachItemByItsNoisePlusTheErrorTheModelClaimsOnTrai
   EXPECT_EQ(s[4], 0.0);
   const std::vector<double> r{0.3, 0.1, 0.2, -0.2, 0.5};
   const std::vector<bool> train{true, true, false, false, false};
-  const std::vector<double> sd = predictive_sd(items, r, s, train);
-  EXPECT_NEAR(sd[2], std::sqrt(0.05), 1e-15);
-  EXPECT_NEAR(sd[3], std::sqrt(0.05), 1e-15);
-  EXPECT_NEAR(sd[4], 0.5, 1e-15);
-  const std::vector<double> lpd = log_density(r, sd);
-  EXPECT_NEAR(lpd[2], -0.5 * (std::log(2.0 * M_PI) + std::log(0.05) + 0.04 / 0.05), 1e-14);
+  const Predictive p = predictive(items, r, s, train);
+  EXPECT_NEAR(p.sd[2], std::sqrt(0.05), 1e-15);
+  EXPECT_NEAR(p.sd[3], std::sqrt(0.05), 1e-15);
+  EXPECT_EQ(p.dof[2], 2.0);
+  EXPECT_NEAR(p.sd[4], 0.5, 1e-15);
+  EXPECT_EQ(p.dof[4], 1.0);
+  const std::vector<double> lpd = log_density(r, p);
+  const double z2 = 0.04 / 0.05;
+  EXPECT_NEAR(lpd[2], -std::log(2.0 * std::sqrt(2.0) * std::sqrt(0.05)) - 1.5 * std::log(1.0 + z2 / 2.0), 1e-13);
+  EXPECT_NEAR(lpd[4], -std::log(M_PI * 0.5 * 2.0), 1e-13);
+  // Many degrees of freedom: the Gaussian.
+  const Predictive wide{{0.2}, {1e8}};
+  EXPECT_NEAR(log_density({0.3}, wide)[0], -0.5 * (std::log(2.0 * M_PI * 0.04) + 0.09 / 0.04), 1e-6);
   // A model that claims more error than it makes pays the log of its width; one that claims
-  // less pays the square of its miss: at r = 0.2 the density is highest for σ = 0.2.
-  const double at_own = log_density({0.2}, {0.2})[0];
-  EXPECT_GT(at_own, log_density({0.2}, {0.1})[0]);
-  EXPECT_GT(at_own, log_density({0.2}, {0.4})[0]);
-  EXPECT_EQ(log_density({0.2}, {0.0})[0], 0.0);  // nothing to score it by
+  // less pays for its miss: at r = 0.2 the density is highest for σ = 0.2, whatever ν.
+  for (double nu : {1.0, 3.0, 30.0}) {
+    const double at_own = log_density({0.2}, Predictive{{0.2}, {nu}})[0];
+    EXPECT_GT(at_own, log_density({0.2}, Predictive{{0.19}, {nu}})[0]);
+    EXPECT_GT(at_own, log_density({0.2}, Predictive{{0.21}, {nu}})[0]);
+  }
+  // A perfect training fit of a noise-free observable claims σ = 0: it is held at the
+  // resolution, 1e-3 of the observable's size.
+  EXPECT_EQ(predictive(items, {0.0, 0.0, 0.3, 0.3, 0.0}, std::vector<double>(5, 0.0), train).sd[2], Predictive::kResolution);
 }
 
 // Evidence: Σ m_i d_i and √(n var d_i); decisive above max(3 nats, 2 se).
@@ -165,10 +177,10 @@ TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
   local[0] = local[1] = 0.0;  // unit 0 only
   const std::vector<Candidate> other{candidate("local", 1, local)};
   const Confidence weak = bootstrap_confidence(items, held, noise, baseline, other, 0, "local", o);
-  // Nothing is trained, so each model's σ² is its own mean r² per observable and the quadratic
-  // terms cancel: with unit 0 drawn k times of eight the evidence is 8 ln(8 / (8 − k)) nats —
-  // 1.1 (k = 1), 2.3 (k = 2), 3.8 (k = 3, se 1.6): decisive from k = 3, P = 0.067 for a
-  // binomial(8, 1/8); 400 resamples estimate it to ± 0.0125.
+  // Nothing is trained, so each model's σ² is its own mean r² per observable (ν = 8) and, in the
+  // Gaussian limit, the quadratic terms cancel: with unit 0 drawn k times of eight the evidence
+  // is about 8 ln(8 / (8 − k)) nats — 1.1 (k = 1), 2.3 (k = 2), 3.8 (k = 3, se 1.6): decisive from
+  // k = 3, P = 0.067 for a binomial(8, 1/8); 400 resamples estimate it to ± 0.0125.
   EXPECT_GT(weak.agreement, 0.02);
   EXPECT_LT(weak.agreement, 0.15);
   EXPECT_GT(weak.heldout_gap_after_std, 0.0);
@@ -180,10 +192,11 @@ TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
 // that cuts every residual from 0.2 to 0.15 wins every resample when the data carry no noise
 // (16 ln(0.2/0.15) = 4.6 nats, se 0). With a standard error of 0.1 on each of the 16 items the
 // same shift δ_i moves the baseline's and the candidate's residual; nothing is trained, so each
-// σ² is the model's own mean r² and the evidence is 8 ln((0.04 + 0.4 δ̄ + q) / (0.0225 + 0.3 δ̄ + q))
-// (q = mean δ², 0.01 on average; δ̄ ± 0.025): above 3 nats only while q ≲ 0.016 at δ̄ = 0, which
-// χ²₁₆ gives 94 % of the time — less with the units' redraw and the 2-se rule (measured 0.845
-// with this seed). Seeded: the same inputs, the same confidence.
+// σ² is the model's own mean r² and the evidence is, in the Gaussian limit,
+// 8 ln((0.04 + 0.4 δ̄ + q) / (0.0225 + 0.3 δ̄ + q)) (q = mean δ², 0.01 on average; δ̄ ± 0.025):
+// above 3 nats only while q ≲ 0.016 at δ̄ = 0, which χ²₁₆ gives 94 % of the time — less with the
+// units' redraw and the 2-se rule (measured 0.895 with this seed and Student's t, ν = 8).
+// Seeded: the same inputs, the same confidence.
 TEST(Verdict, BootstrapMeasuresTheHeldOutItemsAgainWithinTheirNoise) {
   const std::vector<Item> items = eight_held_out_units();
   const std::vector<bool> held(items.size(), true);
@@ -203,9 +216,10 @@ TEST(Verdict, BootstrapMeasuresTheHeldOutItemsAgainWithinTheirNoise) {
   EXPECT_EQ(bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, 0, "cut", o).agreement, noisy.agreement);
 
   // One held-out block: without its noise nothing varies — not estimable. With it, two items
-  // cannot carry strong evidence: σ² from the 14 trained items is 0.04 and 0.0225, and each
-  // held-out item gains at most ½ ln(0.04/0.0225) + ½ (0.2 + δ)²/0.04 − ½ (0.15 + δ)²/0.0225
-  // ≤ 0.35 nats whatever δ — far below 3, so every resample says "none".
+  // cannot carry strong evidence: σ² from the 14 trained items is 0.04 and 0.0225, and in the
+  // Gaussian limit each held-out item gains at most ½ ln(0.04/0.0225) + ½ (0.2 + δ)²/0.04 −
+  // ½ (0.15 + δ)²/0.0225 ≤ 0.35 nats whatever δ (t₇'s heavier tails change that little) — far
+  // below 3, so every resample says "none".
   std::vector<bool> one_block(n, false);
   one_block[0] = one_block[1] = true;
   EXPECT_TRUE(std::isnan(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.0), baseline, one, 0, "cut", o).agreement));
