@@ -14,6 +14,7 @@
 #include "gap/diagnosis.h"
 #include "gap/report.h"
 #include "gap/selftest.h"
+#include "rig/homogenised_law.h"
 
 namespace tribo::gap {
 namespace {
@@ -222,6 +223,26 @@ TEST(Diagnosis, StaticPointsOnlyCalibrateMuSAndAnswerNone) {
   EXPECT_NEAR(d.calibrated.baseline.mu_s, 0.3, 0.003);
   EXPECT_TRUE(d.verdict.effects.empty()) << verdict_name(d.verdict.effects);
   EXPECT_LT(d.baseline.gap, 0.02);
+}
+
+// A homogenised base (law.json: friction from the surfaces, here a minimal linear table) has no
+// μs, μk to calibrate: the diagnosis takes it as it is ("nothing to fit"), and a bundle its own
+// law made — static points only — is explained to its noise: none.
+TEST(Diagnosis, AHomogenisedBaseIsTakenAsItIsAndExplainsItsOwnData) {
+  const rig::RigParameters rig;
+  rig::FrictionModel law;
+  law.baseline.homogenised = rig::load_homogenised_base(std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/gap/data/law-linear.json", rig.normal_load_N);
+  ExperimentBundle b = synthesize_bundle(rig, law, small(), 5);
+  b.runs.clear();
+  DiagnosisOptions o;
+  o.max_iterations = 6;
+  o.bootstrap_samples = 20;
+  o.candidates = {"viscous_friction"};
+  const Diagnosis d = diagnose(b, rig, law, o);
+  EXPECT_EQ(d.calibration_fit.termination, "nothing to fit");
+  EXPECT_TRUE(d.calibrated_params.empty());
+  EXPECT_EQ(verdict_name(d.verdict), "none");
+  EXPECT_LT(d.baseline.gap, 0.02);  // the static points' 1 % noise, averaged
 }
 
 // Traces only (no static points), viscous friction withheld: the diagnosis names it and the
