@@ -633,9 +633,9 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     d.rig = f.setup.rig;
     d.calibrated_params = values(base_space, f.setup);
     d.calibration_fit = f.termination;
-    d.calibration.train_gap = breakdown(d.items, comparison.residuals(comparison.predict(d.rig, d.calibrated, o.seed)), train).gap;
     d.baseline_simulated = comparison.predict(d.rig, d.calibrated, o.seed);
     d.baseline_residuals = comparison.residuals(d.baseline_simulated);
+    d.calibration.train_gap = breakdown(d.items, d.baseline_residuals, train).gap;
     d.baseline = breakdown(d.items, d.baseline_residuals, all);
     d.baseline_heldout = breakdown(d.items, d.baseline_residuals, d.heldout);
     d.best_simulated = d.baseline_simulated;
@@ -649,8 +649,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   auto judge = [&](Candidate& c) {
     c.heldout_gap_before = d.baseline_heldout.gap;
     const Standing st = standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, held_m);
-    const Evidence e = evidence(st.lpd, baseline_lpd, held_m);
-    c.evidence_nats = e.gain, c.evidence_se_nats = e.se;
+    c.evidence_nats = st.evidence.gain, c.evidence_se_nats = st.evidence.se;
     c.earns = st.earns;
   };
 

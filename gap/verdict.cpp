@@ -136,9 +136,8 @@ Standing standing_of(const std::vector<Item>& items, const std::vector<double>& 
   Standing st;
   st.lpd = log_density(r, predictive(items, r, s, train));
   st.heldout_gap = gap(items, r, m);
-  const Evidence e = evidence(st.lpd, baseline_lpd, m);
-  st.gain = e.gain;
-  st.earns = e.decisive();
+  st.evidence = evidence(st.lpd, baseline_lpd, m);
+  st.earns = st.evidence.decisive();
   return st;
 }
 
@@ -149,7 +148,7 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
   if (order.empty()) return -1;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     if (cs[a].extra_parameters != cs[b].extra_parameters) return cs[a].extra_parameters < cs[b].extra_parameters;
-    return st[a].gain > st[b].gain;
+    return st[a].evidence.gain > st[b].evidence.gain;
   });
   std::size_t chosen = order.front();
   for (std::size_t i : order) {

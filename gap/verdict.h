@@ -77,7 +77,7 @@ struct Standing {
   std::vector<double> lpd;
   double heldout_gap = 0.0;
   bool earns = false;
-  double gain = 0.0;  // evidence over the baseline, nats
+  Evidence evidence;  // over the baseline
 };
 
 // A model's standing from its residuals `r` on every item (its σ from the items in `train`)

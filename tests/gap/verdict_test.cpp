@@ -120,7 +120,7 @@ TEST(Verdict, RuleNamesTheSimplestEarnerAndOwnsUpToWhatItCannotExplain) {
   const DiagnosisOptions o;
   const std::vector<Candidate> cs{candidate("a", 1, {}), candidate("b", 2, {})};
   const Multiplicity m{1.0, 1.0, 1.0, 1.0};
-  const auto st = [](double lpd, double gap, bool earns) { return Standing{std::vector<double>(4, lpd), gap, earns, 4.0 * lpd}; };
+  const auto st = [](double lpd, double gap, bool earns) { return Standing{std::vector<double>(4, lpd), gap, earns, {4.0 * lpd, 0.0}}; };
   // b beats a by 2 nats: not decisive, a stays.
   EXPECT_EQ(verdict_index(cs, {st(2.0, 0.05, true), st(2.5, 0.01, true)}, m), 0);
   // by 4 nats: b.
