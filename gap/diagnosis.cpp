@@ -648,7 +648,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
          numerics::fmt(d.calibration.train_floors(), "%.3g") + " noise floors");
   auto judge = [&](Candidate& c) {
     c.heldout_gap_before = d.baseline_heldout.gap;
-    const Standing st = standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, held_m);
+    const Standing st = standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, d.baseline_heldout.gap, held_m);
     c.evidence_nats = st.evidence.gain, c.evidence_se_nats = st.evidence.se;
     c.earns = st.earns;
   };
@@ -824,7 +824,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   const Candidate* chosen = nullptr;
   {
     std::vector<Standing> standing;
-    for (const Candidate& c : d.candidates) standing.push_back(standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, held_m));
+    for (const Candidate& c : d.candidates)
+      standing.push_back(standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, d.baseline_heldout.gap, held_m));
     const Decision decision = decide(d.candidates, standing, held_m, o, d.baseline_heldout.gap, d.verdict.noise_floor);
     if (decision.index >= 0) chosen = &d.candidates[static_cast<std::size_t>(decision.index)];
     d.verdict.unexplained = decision.unexplained;

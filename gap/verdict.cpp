@@ -131,13 +131,17 @@ Evidence evidence(const std::vector<double>& lpd_a, const std::vector<double>& l
   return {sum, std::sqrt(n * var)};
 }
 
+bool decisive(const Evidence& e, double heldout_gap_a, double heldout_gap_b) {
+  return e.gain > Evidence::kStrong && (e.gain > 2.0 * e.se || heldout_gap_a <= 0.5 * heldout_gap_b);
+}
+
 Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, const Multiplicity& m) {
+                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m) {
   Standing st;
   st.lpd = log_density(r, predictive(items, r, s, train));
   st.heldout_gap = gap(items, r, m);
   st.evidence = evidence(st.lpd, baseline_lpd, m);
-  st.earns = st.evidence.decisive();
+  st.earns = decisive(st.evidence, st.heldout_gap, baseline_gap);
   return st;
 }
 
@@ -153,7 +157,7 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
   std::size_t chosen = order.front();
   for (std::size_t i : order) {
     if (cs[i].extra_parameters <= cs[chosen].extra_parameters) continue;
-    if (evidence(st[i].lpd, st[chosen].lpd, m).decisive()) chosen = i;
+    if (decisive(evidence(st[i].lpd, st[chosen].lpd, m), st[i].heldout_gap, st[chosen].heldout_gap)) chosen = i;
   }
   return static_cast<int>(chosen);
 }
@@ -235,7 +239,7 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
     const std::vector<double> baseline_lpd = log_density(before, predictive(items, before, s, train));
     std::vector<Standing> standing;
     for (std::size_t c = 0; c < candidates.size(); ++c)
-      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, m));
+      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, gap_before, m));
     const Decision k = decide(candidates, standing, m, o, gap_before, floor);
     const std::string winner =
         k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(candidates[static_cast<std::size_t>(k.index)].effects);

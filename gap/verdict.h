@@ -63,12 +63,15 @@ std::vector<double> log_density(const std::vector<double>& r, const Predictive& 
 // 1413, for the elpd difference of cross-validation).
 struct Evidence {
   double gain = 0.0, se = 0.0;
-  // Decisive: a gain above 3 nats — a likelihood ratio of 20, "strong" on Kass & Raftery's scale
-  // (1995, J. Am. Stat. Assoc. 90, 773) — and above two of its standard errors.
+  // A likelihood ratio of 20: "strong" on Kass & Raftery's scale (1995, J. Am. Stat. Assoc. 90, 773).
   static constexpr double kStrong = 3.0;
-  bool decisive() const { return gain > std::max(kStrong, 2.0 * se); }
 };
 Evidence evidence(const std::vector<double>& lpd_a, const std::vector<double>& lpd_b, const Multiplicity& m);
+// Whether model a's evidence over model b is decisive: above 3 nats, and either above two of its
+// standard errors or, where it rests on a few items (a large se — a velocity step's transient and
+// the steady window after it), with a's held-out gap at most half of b's: a cut the noise of those
+// few items cannot make (the same halving that tells an explained gap from an unexplained one).
+bool decisive(const Evidence& e, double heldout_gap_a, double heldout_gap_b);
 
 // A candidate's standing on one set of held-out items (the data's, or a resample's): its
 // pointwise log density, held-out gap, and whether it earns its parameters — its evidence over
@@ -81,9 +84,9 @@ struct Standing {
 };
 
 // A model's standing from its residuals `r` on every item (its σ from the items in `train`)
-// against the baseline's pointwise log density, on the held-out multiplicity `m`.
+// against the baseline's pointwise log density and held-out gap, on the held-out multiplicity `m`.
 Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, const Multiplicity& m);
+                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m);
 
 // The verdict's index among `cs` (standings `st`, held-out multiplicity `m`), or −1 when none
 // earns its parameters: the simplest earning candidate (the most evidence among equals), unless

@@ -102,15 +102,16 @@ TEST(Verdict, LikelihoodScoresEachItemByItsNoisePlusTheErrorTheModelClaimsOnTrai
   EXPECT_EQ(predictive(items, {0.0, 0.0, 0.3, 0.3, 0.0}, std::vector<double>(5, 0.0), train).sd[2], Predictive::kResolution);
 }
 
-// Evidence: Σ m_i d_i and √(n var d_i); decisive above max(3 nats, 2 se).
+// Evidence: Σ m_i d_i and √(n var d_i); decisive above 3 nats and either 2 se or a halved gap.
 TEST(Verdict, EvidenceIsTheSummedGainWithItsStandardErrorAndMustBeStrong) {
   const Evidence e = evidence({1.0, 2.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 2.0, 0.0});
   EXPECT_NEAR(e.gain, 5.0, 1e-15);
   // d = 1, 2, 2 (the second drawn twice): mean 5/3, var (4/9 + 1/9 + 1/9)/2 = 1/3, se = √(3 · 1/3) = 1.
   EXPECT_NEAR(e.se, 1.0, 1e-15);
-  EXPECT_TRUE(e.decisive());
-  EXPECT_FALSE((Evidence{2.9, 0.0}).decisive());  // a likelihood ratio of 18: not strong
-  EXPECT_FALSE((Evidence{5.0, 3.0}).decisive());  // within two standard errors
+  EXPECT_TRUE(decisive(e, 0.09, 0.1));
+  EXPECT_FALSE(decisive({2.9, 0.0}, 0.01, 0.1));  // a likelihood ratio of 18: not strong, whatever the cut
+  EXPECT_FALSE(decisive({5.0, 3.0}, 0.06, 0.1));  // within two standard errors, and the gap not halved
+  EXPECT_TRUE(decisive({5.0, 3.0}, 0.05, 0.1));   // resting on few items, but the gap halved
   EXPECT_EQ(evidence({1.0}, {0.0}, {0.0}).gain, 0.0);
 }
 
