@@ -363,7 +363,8 @@ TEST(Comparison, StaticRowsRepeatedAtOneLoadRateCarryTheirPooledScatter) {
   // A single row per rate tells no scatter.
   ExperimentBundle single;
   single.static_points = {{0.5, 0.30}, {2.0, 0.40}};
-  for (const Item& it : Comparison(single, rig::RigParameters{}).items()) EXPECT_EQ(it.noise, 0.0);
+  const Comparison one_row_each(single, rig::RigParameters{});
+  for (const Item& it : one_row_each.items()) EXPECT_EQ(it.noise, 0.0);
 }
 
 // A made-up velocity-step record: 60 µm of load-point travel at 3 µm/s, then 10 µm/s for 50 s,
