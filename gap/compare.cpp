@@ -52,6 +52,12 @@ double interp(const std::vector<double>& t, const std::vector<double>& y, double
   return y[i - 1] + w * (y[i] - y[i - 1]);
 }
 
+// The same, with the last sample's value at and past the record's end (a simulation read at
+// instants that run to its last one).
+double interp_to_end(const std::vector<double>& t, const std::vector<double>& y, double at) {
+  return at >= t.back() ? y.back() : interp(t, y, at);
+}
+
 // A record smoothed over a fixed time: S(t) is the time average of the linear interpolant of the
 // samples over [t − h, t + h] (clipped to the record). A running mean over a fixed number of
 // samples would span a different time wherever the samples are not uniform — a simulated record
@@ -210,7 +216,7 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
     // which a deterministic simulation does not have (a foreign Coulomb control with 2 % scatter:
     // its range 4 % above the truth's amplitude).
     std::vector<double> xs;
-    for (double t : tw) xs.push_back(t >= s.t.back() ? s.x.back() : interp(s.t, s.x, t));
+    for (double t : tw) xs.push_back(interp_to_end(s.t, s.x, t));
     std::sort(xs.begin(), xs.end());
     const auto at = [&](double q) { return xs[static_cast<std::size_t>(q * static_cast<double>(xs.size() - 1))]; };
     f["peak_to_peak_m"] = at(0.95) - at(0.05);
@@ -627,9 +633,8 @@ Signal sampled_as_recorded(const Signal& s, const std::vector<bool>& slipping, c
   for (double t = s.t.front(); t <= s.t.back();) {
     while (i + 1 < s.t.size() && s.t[i + 1] <= t) ++i;
     out.t.push_back(t);
-    const bool last = i + 1 == s.t.size();
-    out.mu.push_back(last ? s.mu.back() : interp(s.t, s.mu, t));
-    if (!s.x.empty()) out.x.push_back(last ? s.x.back() : interp(s.t, s.x, t));
+    out.mu.push_back(interp_to_end(s.t, s.mu, t));
+    if (!s.x.empty()) out.x.push_back(interp_to_end(s.t, s.x, t));
     double next = slipping[i] ? t + plan.slip_spacing_s : t + plan.stick_spacing_s;
     if (std::isfinite(forced)) {
       next = forced, forced = kNaN;
@@ -705,11 +710,10 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           // Sampled where the measurement was: a bin near the step holds one or two measured
           // samples, and the simulated bin must average the same instants, not the whole bin.
           Signal at;
-          for (double t : plan.sample_times_s) {
-            const bool last = t >= s.t.back();  // the run ends at the last measured instant
+          for (double t : plan.sample_times_s) {  // the run ends at the last measured instant
             at.t.push_back(t);
-            at.mu.push_back(last ? s.mu.back() : interp(s.t, s.mu, t));
-            at.x_drive.push_back(last ? s.x_drive.back() : interp(s.t, s.x_drive, t));
+            at.mu.push_back(interp_to_end(s.t, s.mu, t));
+            at.x_drive.push_back(interp_to_end(s.t, s.x_drive, t));
           }
           f = analyse_drive_history(at, plan, nullptr);
         } else {

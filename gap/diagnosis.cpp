@@ -233,14 +233,13 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   for (std::size_t i = 0; i < train_mask.size(); ++i)
     if (train_mask[i]) train.push_back(static_cast<int>(i));
   const std::vector<double> w = weights(c.items(), train_mask);
-  if (space.empty()) {  // nothing to fit: the start as it is
+  if (space.empty()) {  // nothing to fit: the start as it is, its cost as Ceres would count it
     FitResult as_is{start, 0.0, {"nothing to fit", 0, 0, 0.0}};
-    std::vector<double> r(c.items().size(), 1.0);
-    try {
-      r = c.residuals(c.predict(start.rig, start.model, o.seed));
-    } catch (const std::invalid_argument&) {
-    }
-    for (int i : train) as_is.cost += 0.5 * w[static_cast<std::size_t>(i)] * w[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(i)];
+    const Cost cost{&c, &space, &start, train, w, o.seed, train_mask, {}};
+    std::vector<double> r(train.size());
+    const double* none = nullptr;
+    cost(&none, r.data());
+    for (double x : r) as_is.cost += 0.5 * x * x;
     return as_is;
   }
   std::mt19937_64 rng(seed);
