@@ -632,9 +632,14 @@ Signal sampled_as_recorded(const Signal& s, const std::vector<bool>& slipping, c
   double forced = kNaN;  // the next instant when it is fixed already (the first slip sample)
   for (double t = s.t.front(); t <= s.t.back();) {
     while (i + 1 < s.t.size() && s.t[i + 1] <= t) ++i;
+    // Linear between samples i and i + 1 (s.t[i] ≤ t < s.t[i + 1]), the last value at the end:
+    // interp_to_end() without its search, which this walk has done already.
+    const bool inside = i + 1 < s.t.size();
+    const double w = inside ? (t - s.t[i]) / (s.t[i + 1] - s.t[i]) : 0.0;
+    auto at = [&](const std::vector<double>& y) { return inside ? y[i] + w * (y[i + 1] - y[i]) : y.back(); };
     out.t.push_back(t);
-    out.mu.push_back(interp_to_end(s.t, s.mu, t));
-    if (!s.x.empty()) out.x.push_back(interp_to_end(s.t, s.x, t));
+    out.mu.push_back(at(s.mu));
+    if (!s.x.empty()) out.x.push_back(at(s.x));
     double next = slipping[i] ? t + plan.slip_spacing_s : t + plan.stick_spacing_s;
     if (std::isfinite(forced)) {
       next = forced, forced = kNaN;

@@ -565,6 +565,12 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   const std::vector<double> noise_r = comparison.relative_noise();
   d.verdict.noise_floor = breakdown(d.items, noise_r, d.heldout).gap;
   const std::vector<double> item_sd = item_noise(d.items, noise_r);
+  auto lap = [mark = std::chrono::steady_clock::now()]() mutable {  // seconds since the last lap
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - mark).count();
+    mark = now;
+    return s;
+  };
   std::mutex progress_mutex;
   auto report = [&](const std::string& what) {
     if (!o.progress) return;
@@ -623,6 +629,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     calibrated = refined;
   calibrated.termination.wall_s += searched_s;
   d.calibration.starts = static_cast<int>(starts.size());
+  d.stage_times.calibration_s = lap();
   const std::vector<bool> all(n, true);
   const Multiplicity held_m = multiplicity(d.heldout);
   std::vector<double> baseline_lpd;
@@ -758,6 +765,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   std::vector<Candidate> singles(names.size());
 #pragma omp parallel for schedule(dynamic)
   for (std::size_t k = 0; k < names.size(); ++k) singles[k] = evaluate({names[k]}, o.seed * 7919 + k);
+  d.stage_times.candidates_s = lap();
   auto better = [](const Candidate& a, const Candidate& b) {
     if (a.earns != b.earns) return a.earns;
     return a.evidence_nats > b.evidence_nats;
@@ -766,16 +774,22 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // A fair baseline: re-calibrate it from the baseline parameters the best candidates settled on,
   // so that no effect wins only because its fit also found better μs, μk than the calibration.
   bool recalibrated = false;
-  for (std::size_t k = 0; k < singles.size() && k < 3; ++k) {
-    Setup from{singles[k].rig, model};
-    from.model.baseline = singles[k].model.baseline;
-    const FitResult f = fit(comparison, base_space, from, train, calibration, o.seed, 1, base_space.size());
-    if (f.cost < calibrated_cost) set_baseline(f), recalibrated = true;
+  {
+    std::vector<FitResult> from_leader(std::min<std::size_t>(singles.size(), 3));
+#pragma omp parallel for schedule(dynamic)
+    for (std::size_t k = 0; k < from_leader.size(); ++k) {
+      Setup from{singles[k].rig, model};
+      from.model.baseline = singles[k].model.baseline;
+      from_leader[k] = fit(comparison, base_space, from, train, calibration, o.seed, 1, base_space.size());
+    }
+    for (const FitResult& f : from_leader)  // in the leaders' order, as a serial loop would take them
+      if (f.cost < calibrated_cost) set_baseline(f), recalibrated = true;
   }
   if (recalibrated) {
     for (Candidate& c : singles) judge(c);
     std::stable_sort(singles.begin(), singles.end(), better);
   }
+  d.stage_times.recalibration_s = lap();
   // Four: the hardened locus (three parameters on a Coulomb model) fits static friction well enough
   // to rank third on data with a dynamic effect, and with three slots it pushed out the effect
   // itself (independent lift seed 306: the lift's search stops at its grid start, U½ = 0.63 mm/s,
@@ -815,6 +829,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       std::stable_sort(d.candidates.begin(), d.candidates.end(), better);
     }
   }
+
+  d.stage_times.refinement_s = lap();
 
   // Localization: share of the baseline's squared residuals by observable, phase and speed class.
   d.localization = localize(d.items, d.baseline_residuals);
@@ -882,6 +898,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     d.verdict.confidence_fixed_fits = fixed.agreement;
     d.verdict.heldout_gap_after_std = c.heldout_gap_after_std;
   }
+  d.stage_times.confidence_s = lap();
 
   d.verdict.conclusion = conclusion(d, chosen);
   return d;

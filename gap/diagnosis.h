@@ -146,6 +146,15 @@ struct CalibrationSummary {
   }
 };
 
+// Wall time of each stage of diagnose(), so that a slow diagnosis says where its time went.
+struct StageTimes {
+  double calibration_s = 0.0;    // the starts' searches and the refinement of the best
+  double candidates_s = 0.0;     // every single candidate's search
+  double recalibration_s = 0.0;  // the baseline re-fitted from the leaders' baseline parameters
+  double refinement_s = 0.0;     // the leaders' and nested candidates' refinements, and the pair
+  double confidence_s = 0.0;     // the leaders' linearised refits and the bootstrap
+};
+
 struct Diagnosis {
   std::vector<Item> items;
   std::vector<bool> heldout;          // per item
@@ -156,6 +165,7 @@ struct Diagnosis {
   std::map<std::string, double> rig_relative_uncertainty;  // the bundle's, for the rig keys refined within it
   FitTermination calibration_fit;
   CalibrationSummary calibration;
+  StageTimes stage_times;
   GapBreakdown baseline, baseline_heldout;
   std::vector<double> baseline_residuals, measured, baseline_simulated, best_simulated;
   std::vector<Localization> localization;

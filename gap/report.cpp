@@ -90,6 +90,11 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"]["calibrated"] = d.calibrated_params;
   j["baseline"]["rig_relative_uncertainty"] = d.rig_relative_uncertainty;  // refined within ± u of the bundle's value
   j["baseline"]["fit"] = fit_json(d.calibration_fit);
+  j["stage_wall_s"] = {{"calibration", d.stage_times.calibration_s},
+                       {"candidates", d.stage_times.candidates_s},
+                       {"recalibration", d.stage_times.recalibration_s},
+                       {"refinement", d.stage_times.refinement_s},
+                       {"confidence", d.stage_times.confidence_s}};
   j["baseline"]["calibration"] = {{"starts", d.calibration.starts},
                                   {"train_gap", d.calibration.train_gap},
                                   {"train_noise_floor", d.calibration.train_noise_floor},
