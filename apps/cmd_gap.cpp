@@ -119,6 +119,10 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   md << "\nCalibration: " << d.calibration.starts << " starts searched, the best refined; the baseline leaves "
      << fmt(d.calibration.train_gap, "%.4g") << " on the training items, " << fmt(d.calibration.train_floors(), "%.3g")
      << " times their noise floor (" << fmt(d.calibration.train_noise_floor, "%.3g") << ").\n";
+  const gap::StageTimes& st = d.stage_times;
+  md << "\nWall time by stage: calibration " << fmt(st.calibration_s, "%.0f") << " s, candidates " << fmt(st.candidates_s, "%.0f")
+     << " s, re-calibration " << fmt(st.recalibration_s, "%.0f") << " s, refinement " << fmt(st.refinement_s, "%.0f") << " s, confidence "
+     << fmt(st.confidence_s, "%.0f") << " s.\n";
   md << "\nGap (all items) " << fmt(d.baseline.gap, "%.4g") << ", held-out " << fmt(d.baseline_heldout.gap, "%.4g") << ".\n\n";
   md << "| observable | gap |\n|---|---|\n";
   for (const auto& [k, v] : d.baseline.by_observable) md << "| " << k << " | " << fmt(v, "%.4g") << " |\n";

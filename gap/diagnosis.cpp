@@ -224,6 +224,11 @@ struct FitResult {
 // step, which on data at the noise level decides between nested candidates).
 enum class Resolution { search, refine };
 constexpr double kSearchStep = 0.01;  // the search's difference step in the coordinates u ∈ [1, 2]
+// Levenberg–Marquardt iterations of the baseline's profile fit at each grid point: it starts from
+// the previous point's fit (continuation), so two place it in the basin the full fit then descends.
+// (Three made the 5 × 5 grids three quarters of a diagnosis' time — the foreign control: 191 of
+// 250 CPU-s in the candidates; a 4 × 4 grid instead named the quick set's lift thermal thinning.)
+constexpr int kProfileIterations = 2;
 
 FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const Setup& start, const std::vector<bool>& train_mask,
               const DiagnosisOptions& o, std::uint64_t seed, int starts, std::size_t randomised_from,
@@ -287,7 +292,8 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
   const std::vector<double> initial = coordinates(space, start, resolution == Resolution::search);
   const std::size_t dims = space.size() - randomised_from, grid_dims = std::min<std::size_t>(dims, 2);
   if (grid_dims >= 1 && randomised_from > 0) {
-    const std::vector<double> levels = grid_dims == 1 ? std::vector<double>{1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9} : std::vector<double>{1.1, 1.3, 1.5, 1.7, 1.9};
+    const std::vector<double> levels = grid_dims == 1 ? std::vector<double>{1.1, 1.2, 1.3, 1.4, 1.5, 1.6, 1.7, 1.8, 1.9}
+                                                      : std::vector<double>{1.1, 1.3, 1.5, 1.7, 1.9};
     std::vector<std::size_t> idx(grid_dims, 0);
     // Along the first coordinate the baseline starts from the previous point's fit (continuation):
     // an effect that takes away much of the friction needs the baseline far from its calibration.
@@ -296,7 +302,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     while (true) {
       std::vector<double> tail(initial.begin() + static_cast<long>(randomised_from), initial.end()), lead = idx[0] == 0 ? lead0 : previous;
       for (std::size_t d = 0; d < grid_dims; ++d) tail[d] = levels[idx[d]];
-      const double cu = solve(lead, tail, 3).first;
+      const double cu = solve(lead, tail, kProfileIterations).first;
       previous = lead;
       lead.insert(lead.end(), tail.begin(), tail.end());
       grid.emplace_back(cu, lead);
@@ -307,7 +313,7 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     // A start read off the data competes with the grid points on the same terms.
     if (start_read_off_data) {
       std::vector<double> lead = lead0, tail(initial.begin() + static_cast<long>(randomised_from), initial.end());
-      const double cu = solve(lead, tail, 3).first;
+      const double cu = solve(lead, tail, kProfileIterations).first;
       lead.insert(lead.end(), tail.begin(), tail.end());
       grid.emplace_back(cu, lead);
     }

@@ -46,6 +46,14 @@ TEST(Report, NamedVerdictGivesTheEffectItsParametersAndTheShrink) {
   EXPECT_DOUBLE_EQ(j["verdict"]["confidence"].get<double>(), 0.95);
   EXPECT_EQ(j["verdict"]["conclusion"], s);
   EXPECT_EQ(j["candidates"][0]["fit"]["termination"], "not fitted");  // every candidate says how its fit ended
+  // Where the time went, stage by stage, in seconds as the diagnosis measured them.
+  d.stage_times = {12.5, 140.0, 3.0, 47.0, 0.5};
+  const nlohmann::json t = report_json(d)["stage_wall_s"];
+  EXPECT_DOUBLE_EQ(t["calibration"].get<double>(), 12.5);
+  EXPECT_DOUBLE_EQ(t["candidates"].get<double>(), 140.0);
+  EXPECT_DOUBLE_EQ(t["recalibration"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(t["refinement"].get<double>(), 47.0);
+  EXPECT_DOUBLE_EQ(t["confidence"].get<double>(), 0.5);
 
   // A confidence the data cannot give (one held-out block, no noise estimate) is said so, and null.
   d.verdict.confidence = std::nan("");
