@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "gap/diagnosis.h"
+#include "gap/diagnosis_types.h"
 
 namespace tribo::gap {
 

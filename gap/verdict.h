@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "gap/compare.h"
-#include "gap/diagnosis.h"
+#include "gap/diagnosis_types.h"
 
 namespace tribo::gap {
 

@@ -1,0 +1,138 @@
+// The diagnosis' types (diagnosis.h describes the procedure): its options, what each stage
+// produces — the gap's tables, localisation, fits, candidates, the verdict, the calibration
+// summary and the stage times — and the finished Diagnosis. The stages below the procedure
+// (verdict.h) and after it (report.h) need these and not diagnose() itself, so they include
+// this header alone and the includes run one way: types ← verdict, report ← diagnosis.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gap/compare.h"
+#include "rig/friction_model.h"
+#include "rig/parameters.h"
+
+namespace tribo::gap {
+
+struct DiagnosisOptions {
+  int starts = 3;                      // fits per candidate: from the best grid points (else the defaults, then random points)
+  int max_iterations = 12;             // Levenberg-Marquardt iterations per start
+  // A held-out gap above this many noise floors is a real disagreement: if no earning candidate
+  // halves its excess over the floor, the verdict is "unexplained". The floor holds noise only;
+  // a model right in every mechanism but told rig constants a few per cent off (the independent
+  // generator's controls: k, M, W, r off by 3-10 %) leaves about 3 floors, which must stay "none".
+  double unexplained_floors = 5.0;
+  double pair_threshold = 0.5;         // pairs are tried when the best single closes less than this
+  int bootstrap_samples = 200;
+  // Refits in the resamples: each resample also measures the training items again within their
+  // noise, and the baseline and this many leading candidates (the verdict's first) are refitted to
+  // it (linearised, gap/refit.h); the others keep their fits. 0, or data without a noise estimate
+  // on the training items: every candidate keeps its fit in every resample.
+  int refit_leaders = 2;
+  std::uint64_t seed = 1;              // random starts, bootstrap, instrument noise
+  // Rig keys the model leaves out: stiffness_N_per_m, mass_kg, damping_N_s_per_m (×/÷ 100 around the
+  // start), or damping_ratio ζ = r / (2√(kM)) in [1e-3, 0.9] (the damping when k is fitted too).
+  std::vector<std::string> calibrate_rig;
+  std::vector<std::string> candidates;     // empty: default_candidates(model, bundle kind)
+  std::function<void(const std::string&)> progress;  // called after each fit (any thread, serialised)
+  // Returns an empty string when valid, else why not.
+  std::string invalid_reason() const;
+};
+
+struct GapBreakdown {
+  double gap = 0.0;
+  std::map<std::string, double> by_observable, by_regime, by_phase, by_speed;
+};
+
+struct Localization {
+  std::string observable, where, worst_item;
+  double share = 0.0;  // of the baseline's summed squared residuals
+};
+
+// How a least-squares fit (Ceres) ended: its termination type ("CONVERGENCE", "NO_CONVERGENCE" when
+// the iteration limit stopped it, ...) and iterations, for the start that gave the result.
+struct FitTermination {
+  std::string termination = "not fitted";
+  int iterations = 0;
+  int max_iterations = 0;
+  double wall_s = 0.0;  // wall time of the fit, grid and every start included (a candidate's: search and refinement)
+};
+
+struct Candidate {
+  std::vector<std::string> effects;
+  std::map<std::string, double> params;  // "effect.parameter" → fitted value (plus refitted baseline)
+  int extra_parameters = 0;
+  double train_gap = 0.0, heldout_gap_before = 0.0, heldout_gap_after = 0.0;
+  // Held-out evidence over the calibrated baseline (verdict.h): the log-likelihood gain in nats
+  // and its standard error; the candidate earns its parameters when it is decisive.
+  double evidence_nats = 0.0, evidence_se_nats = 0.0;
+  bool earns = false;
+  std::map<std::string, double> heldout_after_by_observable;
+  rig::FrictionModel model;
+  rig::RigParameters rig;
+  std::vector<double> residuals;
+  FitTermination fit;  // the last fit that made it (search, or refinement for the leaders)
+};
+
+struct Verdict {
+  std::vector<std::string> effects;  // empty: "none" or "unexplained"
+  bool unexplained = false;          // the gap stays well above the noise floor whatever is added
+  double heldout_gap_before = 0.0, heldout_gap_after = 0.0, heldout_gap_after_std = 0.0;
+  double noise_floor = 0.0;          // held-out gap of the data's own noise (0: the data cannot tell)
+  double remaining_floors = 0.0;     // heldout_gap_after / noise_floor (NaN without a floor)
+  std::string remaining_where;       // observable and place holding most of what remains
+  double confidence = 0.0;
+  double confidence_fixed_fits = 0.0;  // the same bootstrap with every fit held where it is
+  std::vector<std::string> refitted;   // refitted in the resamples: "baseline" and the leaders
+  std::string conclusion;            // one sentence a tribologist can act on
+};
+
+// The calibration stage (step 1): how close the baseline's own parameters bring it to the
+// training items, against what the data's noise leaves there. A baseline that stays several floors
+// above its noise cannot be the whole story whatever a candidate then does; a control's sits
+// near one floor.
+struct CalibrationSummary {
+  int starts = 0;                  // each searched; the best refined
+  double train_gap = 0.0;          // the calibrated baseline's gap on the training items
+  double train_noise_floor = 0.0;  // the noise floor of the training items (0: the data cannot tell)
+  double train_floors() const {    // train_gap / train_noise_floor (NaN without a floor)
+    return train_noise_floor > 0.0 ? train_gap / train_noise_floor : std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
+// Wall time of each stage of diagnose(), so that a slow diagnosis says where its time went.
+struct StageTimes {
+  double calibration_s = 0.0;    // the starts' searches and the refinement of the best
+  double candidates_s = 0.0;     // every single candidate's search
+  double recalibration_s = 0.0;  // the baseline re-fitted from the leaders' baseline parameters
+  double refinement_s = 0.0;     // the leaders' and nested candidates' refinements, and the pair
+  double confidence_s = 0.0;     // the leaders' linearised refits and the bootstrap
+};
+
+struct Diagnosis {
+  std::vector<Item> items;
+  std::vector<bool> heldout;          // per item
+  bool has_heldout = true;            // false: one unit only, the "held-out" gap is in-sample
+  rig::FrictionModel calibrated;      // baseline after calibration
+  rig::RigParameters rig;
+  std::map<std::string, double> calibrated_params;  // "baseline.mu_s", "rig.stiffness_N_per_m", ...
+  std::map<std::string, double> rig_relative_uncertainty;  // the bundle's, for the rig keys refined within it
+  FitTermination calibration_fit;
+  CalibrationSummary calibration;
+  StageTimes stage_times;
+  GapBreakdown baseline, baseline_heldout;
+  std::vector<double> baseline_residuals, measured, baseline_simulated, best_simulated;
+  std::vector<Localization> localization;
+  std::vector<Candidate> candidates;  // best first
+  Verdict verdict;
+  double integration_tolerance = 0.0;  // CVODE's relative tolerance of the predictions (Comparison)
+};
+
+std::string verdict_name(const std::vector<std::string>& effects);  // "none", "a" or "a+b"
+std::string verdict_name(const Verdict& v);                         // the same, or "unexplained"
+
+}  // namespace tribo::gap
