@@ -1,4 +1,5 @@
 #include "gap/compare.h"
+#include "gap/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1109,22 +1110,13 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
     for (std::size_t i = 0; i < items_.size(); ++i)
       if ((*items_needed)[i]) plan_needed[static_cast<std::size_t>(items_[i].plan)] = true;
   const std::shared_ptr<const rig::FrictionLaw> law = rig::make_friction_law(model);
-  // The plans are independent simulations: in parallel (OpenMP threads when this is not already
-  // inside a parallel region — the candidate fits run side by side, and nested regions stay serial).
+  // The plans are independent simulations: in parallel (the candidate fits run side by side, and
+  // inside them this loop is serial).
   std::vector<Features> features(plans_.size());
   std::vector<std::optional<SimulatedRun>> plan_traces(plans_.size());
-  std::exception_ptr failure;
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t p = 0; p < plans_.size(); ++p) {
-    if (!plan_needed[p]) continue;
-    try {
-      features[p] = predict_plan(plans_[p], rig, model, *law, seed, tolerance_, traces ? &plan_traces[p] : nullptr);
-    } catch (...) {
-#pragma omp critical(tribo_gap_predict_failure)
-      if (!failure) failure = std::current_exception();
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
+  parallel_for(plans_.size(), [&](std::size_t p) {
+    if (plan_needed[p]) features[p] = predict_plan(plans_[p], rig, model, *law, seed, tolerance_, traces ? &plan_traces[p] : nullptr);
+  });
   for (std::size_t p = 0; p < plans_.size(); ++p)
     if (traces && plan_traces[p]) traces->push_back(std::move(*plan_traces[p]));
   for (std::size_t i = 0; i < items_.size(); ++i) {

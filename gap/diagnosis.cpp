@@ -16,6 +16,7 @@
 
 #include "contact/junction_locus.h"
 #include "gap/calibration.h"
+#include "gap/parallel.h"
 #include "gap/refit.h"
 #include "gap/report.h"
 #include "gap/verdict.h"
@@ -430,13 +431,12 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
   };
   std::vector<std::vector<double>> at(tasks.size());
   std::vector<double> step(tasks.size(), 0.0);
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t t = 0; t < tasks.size(); ++t) {
+  parallel_for(tasks.size(), [&](std::size_t t) {
     const auto [f, j] = tasks[t];
     std::vector<double> u = at_fit[f];
     if (j < u.size()) step[t] = u[j] + kSearchStep <= 2.0 ? kSearchStep : -kSearchStep, u[j] += step[t];
     at[t] = residuals_at(f, u);  // empty: that column stays 0
-  }
+  });
   // Each fit linearised; each direction whose redraw steps reach past the difference step is
   // probed two standard deviations of its step away (clipped to the box), and kept when the
   // training residuals change there as J predicts, within half (refit.h).
@@ -471,19 +471,18 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
     }
   }
   std::vector<char> linear_enough(probes.size(), 0);  // 0 also where the fit or the probe cannot be simulated
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t q = 0; q < probes.size(); ++q) {
+  parallel_for(probes.size(), [&](std::size_t q) {
     const Probe& pr = probes[q];
     const std::vector<double>& centre = at[centre_task[pr.fit]];
     std::vector<double> u = at_fit[pr.fit];
     for (std::size_t j = 0; j < u.size(); ++j) u[j] += pr.du(static_cast<Eigen::Index>(j));
     const std::vector<double> r = centre.empty() ? std::vector<double>{} : residuals_at(pr.fit, u);
-    if (r.empty()) continue;
+    if (r.empty()) return;
     const Eigen::VectorXd predicted = linear[pr.fit].predicted_change(pr.du);
     Eigen::VectorXd miss(static_cast<Eigen::Index>(n));
     for (std::size_t i = 0; i < n; ++i) miss(static_cast<Eigen::Index>(i)) = r[i] - centre[i] - predicted(static_cast<Eigen::Index>(i));
     linear_enough[q] = linear[pr.fit].train_norm(miss) <= 0.5 * linear[pr.fit].train_norm(predicted);
-  }
+  });
   for (std::size_t q = 0; q < probes.size(); ++q)
     if (!linear_enough[q]) linear[probes[q].fit].drop(probes[q].direction);
   std::mt19937_64 rng(seed ^ 0x5851f42d4c957f2dULL);
@@ -517,10 +516,29 @@ class NestedParallelism {
 
 }  // namespace
 
+namespace {
+
+// Why the model cannot take the effect (rig::validate's reason), empty when it can: a homogenised
+// law's table holds the static-friction locus, so rate_dependent_static and strain_rate_hardening
+// cannot go on it.
+std::string inadmissible_reason(const rig::FrictionModel& model, const std::string& effect) {
+  rig::FrictionModel with = model;
+  for (const std::string& e : implied_effects({effect}, model)) with.add(e);
+  try {
+    rig::validate(with);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
 std::vector<std::string> default_candidates(const rig::FrictionModel& model, const std::string& kind) {
   std::vector<std::string> names;
   for (const auto& e : rig::effect_catalogue())
-    if (!model.has(e.name) && (e.diagnosed_in.empty() || std::count(e.diagnosed_in.begin(), e.diagnosed_in.end(), kind)))
+    if (!model.has(e.name) && (e.diagnosed_in.empty() || std::count(e.diagnosed_in.begin(), e.diagnosed_in.end(), kind)) &&
+        inadmissible_reason(model, e.name).empty())
       names.push_back(e.name);
   return names;
 }
@@ -554,6 +572,9 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   const NestedParallelism nested;
   rig::validate(model_rig);
   rig::validate(model);
+  for (const std::string& e : o.candidates)  // before any work: the defaults leave such effects out
+    if (const std::string why = inadmissible_reason(model, e); !why.empty())
+      throw std::invalid_argument("gap: candidate '" + e + "' cannot be added to this model: " + why);
   const Comparison comparison(bundle, model_rig);
   Diagnosis d;
   d.items = comparison.items();
@@ -621,9 +642,9 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       starts.push_back(s);
     }
   std::vector<FitResult> from_start(starts.size());
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t k = 0; k < starts.size(); ++k)
+  parallel_for(starts.size(), [&](std::size_t k) {
     from_start[k] = fit(comparison, base_space, starts[k], train, calibration, o.seed, 1, base_space.size());
+  });
   FitResult calibrated = from_start.front();
   double searched_s = 0.0;
   for (const FitResult& f : from_start) {
@@ -769,8 +790,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   };
 
   std::vector<Candidate> singles(names.size());
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t k = 0; k < names.size(); ++k) singles[k] = evaluate({names[k]}, o.seed * 7919 + k);
+  parallel_for(names.size(), [&](std::size_t k) { singles[k] = evaluate({names[k]}, o.seed * 7919 + k); });
   d.stage_times.candidates_s = lap();
   auto better = [](const Candidate& a, const Candidate& b) {
     if (a.earns != b.earns) return a.earns;
@@ -782,12 +802,11 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   bool recalibrated = false;
   {
     std::vector<FitResult> from_leader(std::min<std::size_t>(singles.size(), 3));
-#pragma omp parallel for schedule(dynamic)
-    for (std::size_t k = 0; k < from_leader.size(); ++k) {
+    parallel_for(from_leader.size(), [&](std::size_t k) {
       Setup from{singles[k].rig, model};
       from.model.baseline = singles[k].model.baseline;
       from_leader[k] = fit(comparison, base_space, from, train, calibration, o.seed, 1, base_space.size());
-    }
+    });
     for (const FitResult& f : from_leader)  // in the leaders' order, as a serial loop would take them
       if (f.cost < calibrated_cost) set_baseline(f), recalibrated = true;
   }
@@ -802,8 +821,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // where the cost is flat; refined, it moves to 1.4 mm/s and closes the gap). On two threads the
   // fourth refinement runs beside the third.
   constexpr std::size_t kRefined = 4;
-#pragma omp parallel for schedule(dynamic)
-  for (std::size_t k = 0; k < std::min(kRefined, singles.size()); ++k) singles[k] = refine(singles[k]);
+  parallel_for(std::min(kRefined, singles.size()), [&](std::size_t k) { singles[k] = refine(singles[k]); });
   // Nested candidates (kNestings): when the general fit does better on train, the special one is
   // refined again from the general fit's projection and kept if it then fits train better, so that
   // it is judged at its own best rather than lose to its generalisation on search luck (selftest

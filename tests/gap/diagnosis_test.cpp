@@ -245,6 +245,32 @@ TEST(Diagnosis, AHomogenisedBaseIsTakenAsItIsAndExplainsItsOwnData) {
   EXPECT_LT(d.baseline.gap, 0.02);  // the static points' 1 % noise, averaged
 }
 
+// A homogenised law's table holds the static-friction locus (rig::validate refuses a locus effect
+// on it): the default candidates leave rate_dependent_static and strain_rate_hardening out, and
+// naming one is refused before any fit, with the reason. (Before: the candidate was fitted in a
+// parallel loop, its prediction threw there, and the program terminated.)
+TEST(Diagnosis, AHomogenisedBaseIsNotOfferedALocusAndRefusesOneNamed) {
+  const rig::RigParameters rig;
+  rig::FrictionModel law;
+  law.baseline.homogenised = rig::load_homogenised_base(std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/gap/data/law-linear.json", rig.normal_load_N);
+  const std::vector<std::string> names = default_candidates(law, "pin_on_disc");
+  EXPECT_EQ(std::count(names.begin(), names.end(), "rate_dependent_static"), 0);
+  EXPECT_EQ(std::count(names.begin(), names.end(), "strain_rate_hardening"), 0);
+  EXPECT_EQ(std::count(names.begin(), names.end(), "viscous_friction"), 1);
+  const std::vector<std::string> coulomb = default_candidates(rig::coulomb(0.3, 0.2), "pin_on_disc");
+  EXPECT_EQ(coulomb.size(), names.size() + 2);  // the same list with the two locus effects
+  ExperimentBundle b = synthesize_bundle(rig, law, small(), 5);
+  b.runs.clear();
+  DiagnosisOptions o;
+  o.candidates = {"viscous_friction", "rate_dependent_static"};
+  try {
+    diagnose(b, rig, law, o);
+    ADD_FAILURE() << "a locus candidate on a homogenised law was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("candidate 'rate_dependent_static' cannot be added"), std::string::npos) << e.what();
+  }
+}
+
 // Traces only (no static points), viscous friction withheld: the diagnosis names it and the
 // held-out gap shrinks by more than half. Same seed, same report (determinism).
 TEST(Diagnosis, TracesOnlyNameViscousFrictionDeterministically) {
