@@ -117,8 +117,11 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
      << d.calibration_fit.max_iterations << " iterations (Ceres), " << fmt(d.calibration_fit.wall_s, "%.0f") << " s. Predictions integrated at relative tolerance "
      << fmt(d.integration_tolerance, "%.1e") << " (1e-3 of the items' median relative noise).\n";
   md << "\nCalibration: " << d.calibration.starts << " starts searched, the best refined; the baseline leaves "
-     << fmt(d.calibration.train_gap, "%.4g") << " on the training items, " << fmt(d.calibration.train_floors(), "%.3g")
-     << " times their noise floor (" << fmt(d.calibration.train_noise_floor, "%.3g") << ").\n";
+     << fmt(d.calibration.train_gap, "%.4g") << " on the training items, ";
+  if (std::isfinite(d.calibration.train_floors()))
+    md << fmt(d.calibration.train_floors(), "%.3g") << " times their noise floor (" << fmt(d.calibration.train_noise_floor, "%.3g") << ").\n";
+  else
+    md << "against no noise floor (the training items carry no noise estimate).\n";
   const gap::StageTimes& st = d.stage_times;
   md << "\nWall time by stage: calibration " << fmt(st.calibration_s, "%.0f") << " s, candidates " << fmt(st.candidates_s, "%.0f")
      << " s, re-calibration " << fmt(st.recalibration_s, "%.0f") << " s, refinement " << fmt(st.refinement_s, "%.0f") << " s, confidence "

@@ -30,6 +30,14 @@ std::string confidence_text(double confidence) {
   return buf;
 }
 
+// The baseline as the conclusion names it: a homogenised law has no μs, μk of its own to quote.
+std::string baseline_text(const rig::FrictionModel& m) {
+  if (m.baseline.homogenised) return "the homogenised law as it is";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "the calibrated baseline (mu_s = %.3g, mu_k = %.3g)", m.baseline.mu_s, m.baseline.mu_k);
+  return buf;
+}
+
 std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
   char buf[900];
   const Localization* top = d.localization.empty() ? nullptr : &d.localization.front();
@@ -56,16 +64,16 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   top ? 100.0 * top->share : 0.0);
   } else if (d.verdict.unexplained) {
     std::snprintf(buf, sizeof buf,
-                  "Unexplained: the calibrated baseline (mu_s = %.3g, mu_k = %.3g) leaves a held-out gap of %.3g%s, and no catalogue "
+                  "Unexplained: %s leaves a held-out gap of %.3g%s, and no catalogue "
                   "effect halves its excess over the floor (closest %s at %.3g); most of it lies in %s. Look for a mechanism outside "
                   "the catalogue there (bootstrap confidence %s).",
-                  d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, floor_text, closest.c_str(), closest_gap,
+                  baseline_text(d.calibrated).c_str(), d.verdict.heldout_gap_before, floor_text, closest.c_str(), closest_gap,
                   d.verdict.remaining_where.c_str(), confidence_text(d.verdict.confidence).c_str());
   } else {
     std::snprintf(buf, sizeof buf,
-                  "No catalogue effect earns its parameters on held-out data: keep the calibrated baseline (mu_s = %.3g, mu_k = %.3g), "
+                  "No catalogue effect earns its parameters on held-out data: keep %s, "
                   "whose held-out gap is %.3g%s; the largest remaining share is %s (%s, %.0f %%), closest candidate %s at held-out gap %.3g.",
-                  d.calibrated.baseline.mu_s, d.calibrated.baseline.mu_k, d.verdict.heldout_gap_before, floor_text,
+                  baseline_text(d.calibrated).c_str(), d.verdict.heldout_gap_before, floor_text,
                   top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0, closest.c_str(),
                   closest_gap);
   }

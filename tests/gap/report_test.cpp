@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "gap/report.h"
+#include "rig/homogenised_law.h"
 
 namespace tribo::gap {
 namespace {
@@ -78,6 +80,12 @@ TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {
   EXPECT_EQ(s.rfind("No catalogue effect earns its parameters on held-out data: keep the calibrated baseline (mu_s = 0.62, mu_k = 0.41)", 0), 0u) << s;
   EXPECT_NE(s.find("closest candidate slip_transient at held-out gap 0.157"), std::string::npos) << s;
   EXPECT_EQ(verdict_name(d.verdict), "none");
+  // A homogenised base has no μs, μk of its own: the sentence names the law, not placeholders.
+  d.calibrated.baseline.homogenised =
+      rig::load_homogenised_base(std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/gap/data/law-linear.json", 93.857);
+  s = conclusion(d, nullptr);
+  EXPECT_EQ(s.rfind("No catalogue effect earns its parameters on held-out data: keep the homogenised law as it is, whose", 0), 0u) << s;
+  EXPECT_EQ(s.find("mu_s ="), std::string::npos) << s;
   EXPECT_EQ(verdict_name(std::vector<std::string>{"a", "b"}), "a+b");
 }
 
