@@ -516,10 +516,6 @@ class NestedParallelism {
   int levels_;
 };
 
-}  // namespace
-
-namespace {
-
 // Why the model cannot take the effect (rig::validate's reason), empty when it can: a homogenised
 // law's table holds the static-friction locus, so rate_dependent_static and strain_rate_hardening
 // cannot go on it.

@@ -17,6 +17,14 @@ nlohmann::json fit_json(const FitTermination& f) {
   return {{"termination", f.termination}, {"iterations", f.iterations}, {"max_iterations", f.max_iterations}, {"wall_s", f.wall_s}};
 }
 
+// The baseline as the conclusion names it: a homogenised law has no μs, μk of its own to quote.
+std::string baseline_text(const rig::FrictionModel& m) {
+  if (m.baseline.homogenised) return "the homogenised law as it is";
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "the calibrated baseline (mu_s = %.3g, mu_k = %.3g)", m.baseline.mu_s, m.baseline.mu_k);
+  return buf;
+}
+
 }  // namespace
 
 std::string verdict_name(const std::vector<std::string>& effects) { return effects.empty() ? "none" : join(effects, "+"); }
@@ -27,14 +35,6 @@ std::string confidence_text(double confidence) {
   if (!std::isfinite(confidence)) return "not estimable: one held-out block and no noise estimate";
   char buf[16];
   std::snprintf(buf, sizeof buf, "%.0f %%", 100.0 * confidence);
-  return buf;
-}
-
-// The baseline as the conclusion names it: a homogenised law has no μs, μk of its own to quote.
-std::string baseline_text(const rig::FrictionModel& m) {
-  if (m.baseline.homogenised) return "the homogenised law as it is";
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "the calibrated baseline (mu_s = %.3g, mu_k = %.3g)", m.baseline.mu_s, m.baseline.mu_k);
   return buf;
 }
 
