@@ -10,8 +10,8 @@
 namespace tribo::contact {
 namespace {
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("junction ramp: " + what);
+void require(bool ok, const char* what) {  // literal: nothing built unless it fails
+  if (!ok) throw std::invalid_argument(std::string("junction ramp: ") + what);
 }
 
 // Dimensionless problem (see header): aⁿ da/ds = √(1 + α f²) − a, f = f0 + r s, root f − a/S.

@@ -703,6 +703,8 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         if (!sim.summary.completed || sim.samples.size() < 3) break;
         Signal s;
         std::vector<bool> slipping;
+        for (auto* v : {&s.t, &s.mu, &s.x, &s.x_drive}) v->reserve(sim.samples.size());
+        slipping.reserve(sim.samples.size());
         for (std::size_t i = 0; i < sim.samples.size(); ++i) {
           if (!s.t.empty() && !(sim.samples[i].t_s > s.t.back())) continue;
           s.t.push_back(sim.samples[i].t_s);
