@@ -35,6 +35,7 @@ struct SelftestArgs {
   bool quick = false;
   std::string generator = "both";  // rig, independent or both
   std::string set = "development";  // or validation (gap::SelftestSet)
+  bool mix_builds = false;          // resume from journal rows another build diagnosed
 };
 
 gap::DiagnosisOptions fitting_options(bool quick, std::uint64_t seed) {
@@ -249,7 +250,7 @@ void run_diagnose(const DiagnoseArgs& args) {
 }
 
 nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
-  return {{"generator", row.c.generator},   {"form", row.form},
+  nlohmann::json j = {{"generator", row.c.generator},   {"form", row.form},
           {"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
@@ -257,6 +258,14 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
           {"confidence_fixed_fits", gap::finite_or_null(row.confidence_fixed_fits)},
           {"test_gap_before", gap::finite_or_null(row.test_gap_before)}, {"test_gap_after", gap::finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s}};
+  nlohmann::json candidates = nlohmann::json::array();
+  for (const gap::CandidateFigures& c : row.candidates)
+    candidates.push_back({{"effect", c.effect}, {"evidence_nats", gap::finite_or_null(c.evidence_nats)},
+                          {"evidence_se_nats", gap::finite_or_null(c.evidence_se_nats)}, {"heldout_gap", gap::finite_or_null(c.heldout_gap)},
+                          {"earns", c.earns}});
+  j["candidates"] = candidates;
+  j["git_commit"] = row.git_commit;
+  return j;
 }
 
 // Rows of an earlier run of the same set (quick or full) from OUT/cases.jsonl, one JSON object a
@@ -284,6 +293,13 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
                                 std::pair{"confidence_fixed_fits", &r.confidence_fixed_fits}})
         if (j.contains(key) && j.at(key).is_number()) *field = j.at(key).get<double>();  // absent in older journals: NaN
       r.correct = r.verdict == r.c.true_effect;
+      r.git_commit = j.value("git_commit", std::string());
+      const auto number = [](const nlohmann::json& c, const char* key) {
+        return c.contains(key) && c.at(key).is_number() ? c.at(key).get<double>() : std::nan("");
+      };
+      for (const nlohmann::json& c : j.value("candidates", nlohmann::json::array()))
+        r.candidates.push_back({c.at("effect").get<std::string>(), number(c, "evidence_nats"), number(c, "evidence_se_nats"),
+                                number(c, "heldout_gap"), c.value("earns", false)});
       rows.push_back(r);
     } catch (const nlohmann::json::exception&) {
       continue;
@@ -300,16 +316,28 @@ void run_selftest(const SelftestArgs& args) {
   if (args.generator != "both")
     std::erase_if(cases, [&](const gap::SelftestCase& c) { return c.generator != args.generator; });
   const std::vector<gap::SelftestRow> finished = finished_rows(dir / "cases.jsonl", args.quick);
+  // A resumed set is one build's unless told otherwise: rows diagnosed by another commit (or by a
+  // build that did not record it) would mix two methods in one confusion matrix.
+  const std::string commit = provenance_json(std::filesystem::path()).at("git_commit").get<std::string>();
+  for (const gap::SelftestRow& r : finished)
+    if (!args.mix_builds && r.git_commit != commit &&
+        std::any_of(cases.begin(), cases.end(), [&](const gap::SelftestCase& c) { return gap::same_case(r.c, c); }))
+        throw InputError((dir / "cases.jsonl").string() + ": the case " + r.c.true_effect + " (seed " + std::to_string(r.c.seed) +
+                         ") was diagnosed by build '" + (r.git_commit.empty() ? "unrecorded" : r.git_commit) + "', this is '" + commit +
+                         "': resume with --mix-builds to keep it, or use another --out");
   int resumed = 0;
   for (const auto& c : cases)
     resumed += std::any_of(finished.begin(), finished.end(), [&](const gap::SelftestRow& r) { return gap::same_case(r.c, c); });
   if (resumed) std::fprintf(stderr, "tribo: resuming: %d of %zu cases already in %s\n", resumed, cases.size(), (dir / "cases.jsonl").c_str());
   std::ofstream journal(dir / "cases.jsonl", std::ios::app);
+  if (!journal) throw InputError((dir / "cases.jsonl").string() + ": cannot open the journal for appending");
   Progress progress(args.quick ? "gap selftest (quick)" : "gap selftest", static_cast<int>(cases.size()) - resumed);
   const gap::SelftestResult r = gap::run_selftest(
       cases, gap::synthetic_options(set), fitting_options(args.quick, args.seed),
-      [&](const gap::SelftestRow& row) {
+      [&](gap::SelftestRow row) {
+        row.git_commit = commit;
         journal << row_json(row, args.quick).dump() << "\n" << std::flush;
+        if (!journal) throw std::runtime_error((dir / "cases.jsonl").string() + ": writing the journal failed");
         progress.step(row.c.true_effect + " -> " + row.verdict);
       },
       finished);
@@ -426,6 +454,8 @@ void add_gap_command(CLI::App& app) {
   selftest->add_option("--generator", selftest_args->generator, "Cases of one generator only: rig (the rig's simulator), independent (gap/independent/) or both")
       ->check(CLI::IsMember({"rig", "independent", "both"}))
       ->capture_default_str();
+  selftest->add_flag("--mix-builds", selftest_args->mix_builds,
+                     "Resume from journal rows that another build diagnosed (refused by default: one set, one build)");
   selftest->callback([selftest_args] { run_selftest(*selftest_args); });
 }
 

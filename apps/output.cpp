@@ -67,6 +67,12 @@ void make_output_dir(const std::filesystem::path& dir) {
   if (ec || !std::filesystem::is_directory(dir)) {
     throw InputError(dir.string() + ": cannot create output directory (" + ec.message() + ")");
   }
+  // An existing folder may still refuse files (read-only, another owner, a read-only mount): say so
+  // now rather than at the first write, after the work (a 30-min selftest lost its results so).
+  const std::filesystem::path probe = dir / (".tribo-write-probe-" + std::to_string(getpid()));
+  const bool writable = static_cast<bool>(std::ofstream(probe));
+  std::filesystem::remove(probe, ec);
+  if (!writable) throw InputError(dir.string() + ": output directory is not writable");
 }
 
 Progress::Progress(std::string label, int total)

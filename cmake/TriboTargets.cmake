@@ -27,12 +27,12 @@ function(tribo_add_library name)
   endif()
 endfunction()
 
-# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s]): one GoogleTest
+# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s] [COST c]): one GoogleTest
 # executable registered with CTest. Label `slow` marks tests the sanitizer build skips
 # (ctest -LE slow), `mpi` those that start Open MPI (sanitized without leak detection);
-# TIMEOUT overrides ctest's --timeout for a test known to run long.
+# TIMEOUT overrides ctest's --timeout for a test known to run long; COST orders them (below).
 function(tribo_add_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT;COST" "SOURCES;DEPENDS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   # gtest_discover_tests cannot pass a list through PROPERTIES: one label per target.
@@ -44,6 +44,13 @@ function(tribo_add_test name)
   set(properties LABELS ${label})
   if(ARG_TIMEOUT)
     list(APPEND properties TIMEOUT ${ARG_TIMEOUT})
+  endif()
+  # CTest -j starts tests in descending COST: on a clean clone (no timings recorded yet) the long
+  # ones must start first, or one of them runs alone at the end while the other core idles.
+  if(ARG_COST)
+    list(APPEND properties COST ${ARG_COST})
+  elseif(label STREQUAL "slow")
+    list(APPEND properties COST 100)
   endif()
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES ${properties})
 endfunction()

@@ -75,6 +75,13 @@ struct SelftestCase {
   std::string generator = kRigGenerator;
 };
 
+// One candidate as a case's diagnosis left it: how close the truth came when it was not named.
+struct CandidateFigures {
+  std::string effect;  // verdict_name of its effects
+  double evidence_nats = 0.0, evidence_se_nats = 0.0, heldout_gap = 0.0;
+  bool earns = false;
+};
+
 struct SelftestRow {
   SelftestCase c;
   std::string verdict;
@@ -86,6 +93,8 @@ struct SelftestRow {
   double test_gap_before = std::numeric_limits<double>::quiet_NaN(), test_gap_after = std::numeric_limits<double>::quiet_NaN();
   bool correct = false;
   double wall_s = 0.0;  // the diagnosis' wall time (the speed target is per bundle); 0: not recorded
+  std::vector<CandidateFigures> candidates;  // in the diagnosis' ranking; empty in journals from before
+  std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
 };
 
 // Confusion matrix and shrink over one generator's cases (or all).

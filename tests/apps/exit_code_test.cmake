@@ -51,3 +51,21 @@ execute_process(COMMAND ${TRIBO} gap diagnose --experiment ${EXAMPLES}/gap-thesi
 if(NOT status6 EQUAL 2 OR NOT err6 MATCHES "no-such-bundle" OR EXISTS ${WORK}/out_gap)
   message(FATAL_ERROR "tribo gap diagnose, missing test bundle: expected status 2 naming it and no output, got ${status6}: ${err6}")
 endif()
+
+# An output folder that exists but takes no files (/proc/self, even for root) is refused before
+# the run, naming it.
+execute_process(COMMAND ${TRIBO} rig ${EXAMPLES}/rig-coulomb.toml --out /proc/self RESULT_VARIABLE status7 ERROR_VARIABLE err7)
+if(NOT status7 EQUAL 2 OR NOT err7 MATCHES "/proc/self: output directory is not writable")
+  message(FATAL_ERROR "tribo rig --out /proc/self: expected status 2 saying it is not writable, got ${status7}: ${err7}")
+endif()
+
+# A selftest journal whose row another build diagnosed is not resumed silently: status 2 before any
+# diagnosis, naming the journal and --mix-builds; the journal is left as it was.
+file(MAKE_DIRECTORY ${WORK}/selftest)
+set(row "{\"generator\":\"rig\",\"true_effect\":\"slip_transient\",\"model_effects\":[],\"seed\":1,\"quick\":true,\"verdict\":\"slip_transient\",\"heldout_gap_before\":0.1,\"heldout_gap_after\":0.002,\"confidence\":0.9,\"correct\":true,\"wall_s\":100,\"git_commit\":\"0123456789ab\"}\n")
+file(WRITE ${WORK}/selftest/cases.jsonl "${row}")
+execute_process(COMMAND ${TRIBO} gap selftest --quick --out ${WORK}/selftest RESULT_VARIABLE status8 ERROR_VARIABLE err8)
+file(READ ${WORK}/selftest/cases.jsonl journal)
+if(NOT status8 EQUAL 2 OR NOT err8 MATCHES "cases.jsonl: the case slip_transient .*0123456789ab.*--mix-builds" OR NOT journal STREQUAL row)
+  message(FATAL_ERROR "tribo gap selftest on another build's journal: expected status 2 naming --mix-builds and the journal untouched, got ${status8}: ${err8}")
+endif()

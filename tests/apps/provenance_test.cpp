@@ -117,6 +117,19 @@ TEST_F(Provenance, ExperimentBundleWithHeaderReadsBack) {
 
 // An installed tribo takes its plotting script from <prefix>/share/tribo beside <prefix>/bin,
 // wherever the prefix is; an uninstalled one from the source tree.
+// An output folder that exists but takes no files is refused before any work, naming the folder.
+// /proc/self is such a folder even for root (who writes through permission bits, so a chmod-ed
+// temporary folder would not test this here).
+TEST(OutputDir, AnExistingFolderThatTakesNoFilesIsRefusedUpFront) {
+  ASSERT_TRUE(fs::is_directory("/proc/self"));
+  try {
+    make_output_dir("/proc/self");
+    FAIL() << "a folder that takes no files was accepted";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("/proc/self: output directory is not writable"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(Provenance, ShippedFilesAreFoundBesideAnInstalledBinary) {
   fs::create_directories(dir_ / "bin");
   fs::create_directories(dir_ / "share" / "tribo");

@@ -1,41 +1,53 @@
-// The quick withheld-effect selftest (issues 6 and 15). First generator (the rig's own simulator):
-// at least 90 % of withheld effects identified, every control answers "none", and the gap of each
-// identified effect shrinks by ≥ 50 %, on the held-out blocks and on a test block (gap/test_block.h).
-// Independent generator (gap/independent/): its control — another integrator, a measuring chain
-// with filter, drift, coloured noise and quantisation, rig constants a few per cent off — must
-// answer "none" too; its effect case is reported (docs/gap.md records how the diagnosis fares on
-// that generator).
+// The quick withheld-effect selftest (issues 6, 15 and 35), one test per case so that CTest spreads
+// the eight full diagnoses over the cores beside the other tests. First generator (the rig's own
+// simulator): every withheld effect named — the quick set's four are the ≥ 90 % of issue 6 with
+// no miss allowed — with the gap shrinking by ≥ 50 % on the held-out blocks and on a test block at
+// speeds neither the fits nor the verdict saw (gap/test_block.h); every control answers "none".
+// Independent generator (gap/independent/: another integrator, a measuring chain with filter,
+// drift, coloured noise and quantisation, rig constants a few per cent off): its control answers
+// "none" and its Kato-ageing case is read as rate_dependent_static. These are the development
+// set's cases (what the diagnosis was tuned on): the validation set's figures are in the README.
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <ostream>
+#include <string>
 
 #include "gap/selftest.h"
 
 namespace tribo::gap {
+
+// How GoogleTest shows a case (CTest lists it beside the test's name): found by argument-dependent lookup, so in SelftestCase's namespace.
+void PrintTo(const SelftestCase& c, std::ostream* os) { *os << c.generator << " generator, " << c.true_effect << ", seed " << c.seed; }
+
 namespace {
 
-TEST(Selftest, QuickSetIdentifiesWithheldEffectsAndControlsAnswerNone) {
+class QuickSelftest : public ::testing::TestWithParam<SelftestCase> {};
+
+TEST_P(QuickSelftest, NamesTheWithheldEffectOrNoneAndShrinksTheGap) {
+  const SelftestCase& sc = GetParam();
   DiagnosisOptions o;
   o.max_iterations = 8;
   o.bootstrap_samples = 100;
-  const SelftestResult r = run_selftest(selftest_cases(true, 1), SyntheticOptions{}, o, nullptr);
-  for (const auto& row : r.rows)
-    std::printf("%-12s %-24s -> %-24s %.4f -> %.4f  confidence %.2f  test block %.4f -> %.4f  %.0f s\n", row.c.generator.c_str(),
-                row.c.true_effect.c_str(), row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, row.confidence,
-                row.test_gap_before, row.test_gap_after, row.wall_s);
-  for (const auto& b : r.reliability) std::printf("confidence [%.1f, %.1f]: %d verdicts, %d right\n", b.lower, b.upper, b.verdicts, b.right);
-  ASSERT_TRUE(r.by_generator.count(kRigGenerator));
-  ASSERT_TRUE(r.by_generator.count(kIndependentGenerator));
-  const SelftestSummary& first = r.by_generator.at(kRigGenerator);
-  EXPECT_GE(first.identified_fraction, 0.9);
-  EXPECT_EQ(first.controls_none_fraction, 1.0);
-  for (const auto& [effect, shrink] : first.mean_shrink) EXPECT_GE(shrink, 0.5) << effect;
-  // The shrink holds on the test block, at speeds between the diagnosed ones that neither the
-  // fits nor the verdict saw (2026-11-26: slip 99 %, viscous 96 %, lift 68 %, rate-dependent μs 99 %).
-  EXPECT_EQ(first.mean_test_shrink.size(), first.mean_shrink.size());
-  for (const auto& [effect, shrink] : first.mean_test_shrink) EXPECT_GE(shrink, 0.5) << effect;
-  const SelftestSummary& independent = r.by_generator.at(kIndependentGenerator);
-  EXPECT_GE(independent.controls, 1);
-  EXPECT_EQ(independent.controls_none_fraction, 1.0);
+  const SelftestResult r = run_selftest({sc}, SyntheticOptions{}, o, nullptr);
+  ASSERT_EQ(r.rows.size(), 1u);
+  const SelftestRow& row = r.rows.front();
+  std::printf("%-12s %-24s -> %-24s %.4f -> %.4f  confidence %.2f  test block %.4f -> %.4f  %.0f s\n", row.c.generator.c_str(),
+              row.c.true_effect.c_str(), row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, row.confidence,
+              row.test_gap_before, row.test_gap_after, row.wall_s);
+  EXPECT_TRUE(row.correct) << sc.true_effect << " read as " << row.verdict;
+  if (sc.true_effect == "none" || sc.generator != kRigGenerator) return;
+  // Half the gap closed where the effect is named (2026-11-26: held-out 68–99 %; test block slip
+  // 99 %, viscous 96 %, lift 68 %, rate-dependent μs 99 %).
+  EXPECT_GE(1.0 - row.heldout_gap_after / row.heldout_gap_before, 0.5);
+  EXPECT_GE(1.0 - row.test_gap_after / row.test_gap_before, 0.5);
 }
+
+std::string case_name(const ::testing::TestParamInfo<SelftestCase>& info) {
+  return info.param.generator + "_" + info.param.true_effect + "_seed" + std::to_string(info.param.seed);
+}
+
+INSTANTIATE_TEST_SUITE_P(Development, QuickSelftest, ::testing::ValuesIn(selftest_cases(true, 1)), case_name);
 
 }  // namespace
 }  // namespace tribo::gap
