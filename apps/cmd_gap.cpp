@@ -390,7 +390,10 @@ void run_selftest(const SelftestArgs& args) {
   for (const auto& b : r.reliability)
     j["reliability"].push_back({{"confidence_from", b.lower}, {"confidence_to", b.upper}, {"verdicts", b.verdicts}, {"right", b.right}});
   j["cases"] = nlohmann::json::array();
-  for (const auto& row : r.rows) j["cases"].push_back(row_json(row, args.quick));
+  for (gap::SelftestRow row : r.rows) {
+    if (row.git_commit.empty()) row.git_commit = commit;  // diagnosed now (a resumed row keeps its own)
+    j["cases"].push_back(row_json(row, args.quick));
+  }
   write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");
   std::printf("%-12s %-24s %-18s %-40s %10s %10s %6s %22s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after", "conf",
               "test block before/after");
