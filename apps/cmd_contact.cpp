@@ -87,8 +87,8 @@ void run_junction(const ContactArgs& args) {
   const double f_over_w_max = std::min(run.f_over_w_max, 0.999 * f_cap / w);
 
   const nlohmann::json provenance = contact_provenance(args.config, run, config_hash(args.config));
-  AtomicFile csv(dir / "junction.csv");
-  csv.stream() << csv_provenance_header(provenance) << "f_over_w,bem_area_m2,tabor_area_m2,bem_growth,tabor_growth,bem_over_tabor_growth,"
+  CsvFile csv(dir / "junction.csv", provenance);
+  csv.stream() << "f_over_w,bem_area_m2,tabor_area_m2,bem_growth,tabor_growth,bem_over_tabor_growth,"
                   "plastic_fraction,pressure_cap_Pa,shear_stress_Pa,converged\n";
   nlohmann::json points = nlohmann::json::array();
   Progress progress("junction", run.junction_points);
@@ -116,8 +116,8 @@ void run_junction(const ContactArgs& args) {
   progress.done();
 
   // The ODE (3.1.13) at this load and hardness, against the locus, over load rates.
-  AtomicFile rate_csv(dir / "junction_rate.csv");
-  rate_csv.stream() << csv_provenance_header(provenance) << "phi_dot_per_s,mu_s_ramp,mu_s_locus,phi_dot_at_slip_per_s,slip_time_s\n";
+  CsvFile rate_csv(dir / "junction_rate.csv", provenance);
+  rate_csv.stream() << "phi_dot_per_s,mu_s_ramp,mu_s_locus,phi_dot_at_slip_per_s,slip_time_s\n";
   nlohmann::json rates = nlohmann::json::array();
   for (double e = -4.0; e <= 3.0 + 1e-9; e += 0.5) {
     const double phi_dot = std::pow(10.0, e);

@@ -42,9 +42,9 @@ struct DemoArgs {
 using SpeedRun = rig::SweepPoint;
 
 void write_sweep(const std::filesystem::path& path, const rig::RigParameters& rig, const std::vector<SpeedRun>& runs,
-                 const std::string& csv_header) {
-  AtomicFile f(path);
-  f.stream() << csv_header << "v_m_per_s,v_in_per_s,load_rate_per_s,regime,period_s,peak_to_peak_m,stick_time_s,slip_time_s,"
+                 const nlohmann::json& provenance) {
+  CsvFile f(path, provenance);
+  f.stream() << "v_m_per_s,v_in_per_s,load_rate_per_s,regime,period_s,peak_to_peak_m,stick_time_s,slip_time_s,"
                 "mu_s_mean,mean_friction_N,mean_mu,breakaways,reversals,completed\n";
   for (const SpeedRun& r : runs) {
     const auto& o = r.observables;
@@ -58,9 +58,9 @@ void write_sweep(const std::filesystem::path& path, const rig::RigParameters& ri
 }
 
 void write_static_friction(const std::filesystem::path& path, const std::vector<SpeedRun>& runs,
-                           const std::string& csv_header) {
-  AtomicFile f(path);
-  f.stream() << csv_header << "phi_dot_per_s,mu_s,v_m_per_s\n";
+                           const nlohmann::json& provenance) {
+  CsvFile f(path, provenance);
+  f.stream() << "phi_dot_per_s,mu_s,v_m_per_s\n";
   for (const SpeedRun& r : runs) {
     for (const rig::Event& e : r.result.events) {
       if (e.kind == rig::EventKind::breakaway) f.stream() << e.load_rate_per_s << ',' << e.mu << ',' << r.drive_speed_m_per_s << '\n';
@@ -72,9 +72,9 @@ void write_static_friction(const std::filesystem::path& path, const std::vector<
 // The law's static friction at rest against load rate (the junction locus, thesis (3.1.24)), for
 // the μs–φ̇ plot.
 void write_locus(const std::filesystem::path& path, const rig::FrictionLaw& law, double normal_load_N,
-                 const std::string& csv_header) {
-  AtomicFile f(path);
-  f.stream() << csv_header << "phi_dot_per_s,mu_s\n";
+                 const nlohmann::json& provenance) {
+  CsvFile f(path, provenance);
+  f.stream() << "phi_dot_per_s,mu_s\n";
   for (int i = 0; i <= 120; ++i) {
     const double phi_dot = std::pow(10.0, -5.0 + 7.0 * i / 120.0);
     f.stream() << phi_dot << ',' << static_coefficient_at_rest(law, normal_load_N, phi_dot) << '\n';
@@ -83,19 +83,18 @@ void write_locus(const std::filesystem::path& path, const rig::FrictionLaw& law,
 }
 
 void write_trace(const std::filesystem::path& path, const rig::RigParameters& rig, const SpeedRun& r,
-                 const std::string& csv_header) {
+                 const nlohmann::json& provenance) {
   const auto measured = rig::measure_friction_N(rig, rig::InstrumentModel{}, r.result.samples);
-  AtomicFile f(path);
-  f.stream() << csv_header;
+  CsvFile f(path, provenance);
   write_trace_header(f.stream());
   for (std::size_t i = 0; i < r.result.samples.size(); ++i) write_trace_row(f.stream(), r.result.samples[i], measured[i]);
   f.commit();
 }
 
 void write_comparison(const std::filesystem::path& path, const std::vector<ComparisonRow>& rows,
-                      const std::string& csv_header) {
-  AtomicFile f(path);
-  f.stream() << csv_header << "observation,source,thesis,tribo,tolerance,verdict,note\n";
+                      const nlohmann::json& provenance) {
+  CsvFile f(path, provenance);
+  f.stream() << "observation,source,thesis,tribo,tolerance,verdict,note\n";
   auto quoted = [](const std::string& v) { return '"' + v + '"'; };  // no field holds a double quote
   for (const ComparisonRow& r : rows)
     f.stream() << quoted(r.observation) << ',' << quoted(r.source) << ',' << r.thesis << ',' << r.tribo << ','
@@ -185,14 +184,14 @@ void run_demo(const DemoArgs& args) {
 
   // The homogenise config for the homogenised law (its seeds are in law/law.json), none for the
   // phenomenological model, which is compiled in.
-  const std::string csv_header = csv_provenance_header(provenance_json(run ? args.config : std::string()));
-  write_sweep(dir / "sweep.csv", rig, sweep, csv_header);
-  write_static_friction(dir / "static_friction.csv", sweep, csv_header);
-  write_locus(dir / "junction_locus.csv", *law, rig.normal_load_N, csv_header);
-  write_trace(dir / "traces" / "stick_slip_0.028in_per_s.csv", rig, figures.stick_slip, csv_header);
-  write_trace(dir / "traces" / "multi_cycle_1e-4in_per_s.csv", rig, figures.multi_cycle, csv_header);
-  write_trace(dir / "traces" / "quasi_harmonic_5.3in_per_s.csv", rig, figures.quasi_harmonic, csv_header);
-  write_comparison(dir / "thesis_comparison.csv", rows, csv_header);
+  const nlohmann::json provenance = provenance_json(run ? args.config : std::string());
+  write_sweep(dir / "sweep.csv", rig, sweep, provenance);
+  write_static_friction(dir / "static_friction.csv", sweep, provenance);
+  write_locus(dir / "junction_locus.csv", *law, rig.normal_load_N, provenance);
+  write_trace(dir / "traces" / "stick_slip_0.028in_per_s.csv", rig, figures.stick_slip, provenance);
+  write_trace(dir / "traces" / "multi_cycle_1e-4in_per_s.csv", rig, figures.multi_cycle, provenance);
+  write_trace(dir / "traces" / "quasi_harmonic_5.3in_per_s.csv", rig, figures.quasi_harmonic, provenance);
+  write_comparison(dir / "thesis_comparison.csv", rows, provenance);
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_report(dir / "report.md", rig, law_label, sweep, rows, wall);
   if (args.plots && run_plot_script("demo", args.out) != 0) {

@@ -80,9 +80,9 @@ Model load_model(const std::string& path) {
 
 void write_overlays(const std::filesystem::path& path, const gap::ExperimentBundle& bundle, const std::vector<gap::SimulatedRun>& before,
                     const std::vector<gap::SimulatedRun>& after, double W, const nlohmann::json& provenance) {
-  AtomicFile f(path);
+  CsvFile f(path, provenance);
   auto& os = f.stream();
-  os << csv_provenance_header(provenance) << "run,source,t_s,mu\n";
+  os << "run,source,t_s,mu\n";
   for (const gap::Run& r : bundle.runs) {
     const gap::Trace& t = r.trace;
     for (std::size_t i = 0; i < t.t_s.size(); ++i) {
@@ -345,14 +345,13 @@ void run_selftest(const SelftestArgs& args) {
   // No config: the cases are compiled in and drawn from the seed.
   nlohmann::json provenance = provenance_json(std::filesystem::path());
   provenance["seed"] = args.seed;
-  const std::string csv_header = csv_provenance_header(provenance);
   // One confusion matrix per generator (rows: true effect, columns: verdict).
-  auto confusion_csv = [](const std::map<std::string, std::map<std::string, int>>& confusion, const std::string& head = "") {
+  auto confusion_csv = [](const std::map<std::string, std::map<std::string, int>>& confusion) {
     std::set<std::string> verdicts;
     for (const auto& [t, row] : confusion)
       for (const auto& [v, n] : row) verdicts.insert(v);
     std::ostringstream table;
-    table << head << "true \\ verdict";
+    table << "true \\ verdict";
     for (const auto& v : verdicts) table << "," << v;
     table << "\n";
     for (const auto& [t, row] : confusion) {
@@ -362,15 +361,15 @@ void run_selftest(const SelftestArgs& args) {
     }
     return table.str();
   };
-  write_file_atomically(dir / "confusion.csv", confusion_csv(r.by_generator.count(gap::kRigGenerator) ? r.by_generator.at(gap::kRigGenerator).confusion : r.confusion, csv_header));
+  write_csv_atomically(dir / "confusion.csv", confusion_csv(r.by_generator.count(gap::kRigGenerator) ? r.by_generator.at(gap::kRigGenerator).confusion : r.confusion), provenance);
   if (r.by_generator.count(gap::kIndependentGenerator))
-    write_file_atomically(dir / "confusion_independent.csv", confusion_csv(r.by_generator.at(gap::kIndependentGenerator).confusion, csv_header));
+    write_csv_atomically(dir / "confusion_independent.csv", confusion_csv(r.by_generator.at(gap::kIndependentGenerator).confusion), provenance);
   std::ostringstream reliability;
-  reliability << csv_header << "confidence_from,confidence_to,verdicts,right,fraction_right\n";
+  reliability << "confidence_from,confidence_to,verdicts,right,fraction_right\n";
   for (const auto& b : r.reliability)
     reliability << b.lower << "," << b.upper << "," << b.verdicts << "," << b.right << ","
                 << (b.verdicts ? static_cast<double>(b.right) / b.verdicts : std::nan("")) << "\n";
-  write_file_atomically(dir / "reliability.csv", reliability.str());
+  write_csv_atomically(dir / "reliability.csv", reliability.str(), provenance);
   nlohmann::json j;
   j["provenance"] = provenance;
   j["quick"] = args.quick;

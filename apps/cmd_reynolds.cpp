@@ -93,11 +93,10 @@ void run_flow_factors(const Args& args) {
                o.realisations, static_cast<long>(o.surface.grid));
   nlohmann::json provenance = provenance_json(args.config);
   provenance["seed"] = o.first_seed;  // realisation k has seed first_seed + k
-  const std::string csv_header = csv_provenance_header(provenance);
   const auto factors = lub::flow_factors(o);
   {
-    AtomicFile f(dir / "flow_factors.csv");
-    f.stream() << csv_header << "h_over_sigma,phi_x,phi_x_se,phi_y,phi_y_se,phi_s,phi_s_se,mean_film_over_sigma,contact_fraction,"
+    CsvFile f(dir / "flow_factors.csv", provenance);
+    f.stream() << "h_over_sigma,phi_x,phi_x_se,phi_y,phi_y_se,phi_s,phi_s_se,mean_film_over_sigma,contact_fraction,"
                   "patir_cheng_phi_x,patir_cheng_phi_y,patir_cheng_phi_s,unconverged\n";
     for (const auto& r : factors)
       f.stream() << csv_number(r.h_over_sigma) << ',' << csv_number(r.phi_x.mean) << ','
@@ -115,8 +114,8 @@ void run_flow_factors(const Args& args) {
   lift_options.contact_gap_fraction = run.lift_contact_gap_fraction;
   const auto lift = lub::rugosity_lift(lift_options);
   {
-    AtomicFile f(dir / "rugosity_lift.csv");
-    f.stream() << csv_header << "h_over_sigma,mean_gap_m,mean_pressure_Pa,mean_pressure_se_Pa,pressure_per_eta_u_per_m,"
+    CsvFile f(dir / "rugosity_lift.csv", provenance);
+    f.stream() << "h_over_sigma,mean_gap_m,mean_pressure_Pa,mean_pressure_se_Pa,pressure_per_eta_u_per_m,"
                   "pressure_per_eta_u_se_per_m,full_film_mean_pressure_Pa,full_film_se_Pa,cavitated_fraction,"
                   "newton_iterations,unconverged\n";
     for (const auto& r : lift)

@@ -41,13 +41,10 @@ void run_rig(const RigRun& run, const RigArgs& args, const std::string& hash, co
 
   if (!args.summary_only) {
     const std::vector<double> measured = rig::measure_friction_N(run.rig, rig::instrument_from(run.friction, run.seed), samples);
-    const std::string csv_header = csv_provenance_header(provenance);
-    AtomicFile trace(dir / "trace.csv");
-    trace.stream() << csv_header;
+    CsvFile trace(dir / "trace.csv", provenance);
     write_trace_header(trace.stream());
     for (std::size_t i = 0; i < samples.size(); ++i) write_trace_row(trace.stream(), samples[i], measured[i]);
-    AtomicFile events_file(dir / "events.csv");
-    events_file.stream() << csv_header;
+    CsvFile events_file(dir / "events.csv", provenance);
     write_events_csv(events_file.stream(), events);
     trace.commit();
     events_file.commit();

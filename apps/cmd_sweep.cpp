@@ -90,7 +90,7 @@ std::map<int, std::string> finished_rows(const std::filesystem::path& file, cons
   bool first = true;
   for (std::size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1) {
     const std::string line = text.substr(start, nl - start);
-    if (first && line.rfind('#', 0) == 0) continue;  // "# key: value" provenance lines above the columns
+    if (first && line.rfind('#', 0) == 0) continue;  // provenance lines of a results.csv from before 2026-11-27
     if (first) {
       if (line != expected) throw InputError(file.string() + ": its columns differ from this spec's; use another --out");
       first = false;
@@ -101,7 +101,7 @@ std::map<int, std::string> finished_rows(const std::filesystem::path& file, cons
   return rows;
 }
 
-// `head`: the provenance lines and the column header.
+// `head`: the column header (the provenance is beside the file: claim_output).
 void write_rows(const std::filesystem::path& file, const std::string& head, const std::map<int, std::string>& rows) {
   std::string text = head + "\n";
   for (const auto& [id, row] : rows) text += row + "\n";
@@ -110,11 +110,11 @@ void write_rows(const std::filesystem::path& file, const std::string& head, cons
 
 // The folder holds the sweep of exactly this spec and these configs, or nothing yet. Every start is
 // logged in sweep.json's "runs" (date, ranks, jobs per rank), so a week-long study shows its history.
-// Returns results.csv's provenance lines: sweep.json's fields as its first start wrote them (version,
-// commit, command line, spec and configs with their hashes, date, threads per point), the same lines
-// whichever start finishes the sweep. Not the axes and outputs (the columns say them), the runs, or
-// the sweep process's own OpenMP threads (it runs none).
-std::string claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::size_t points, int ranks, int jobs) {
+// Writes results.csv's provenance beside it (results.csv.provenance.json): sweep.json's fields as its
+// first start wrote them (version, commit, command line, spec and configs with their hashes, date,
+// threads per point), the same whichever start finishes the sweep. Not the axes and outputs (the
+// columns say them), the runs, or the sweep process's own OpenMP threads (it runs none).
+void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::size_t points, int ranks, int jobs) {
   const std::string spec_hash = config_hash(spec.spec_file), base_hash = config_hash(spec.base_config);
   const std::string rig_hash = spec.steps.size() > 1 ? config_hash(spec.steps[1].config) : "";
   const auto file = dir / "sweep.json";
@@ -148,7 +148,7 @@ std::string claim_output(const std::filesystem::path& dir, const SweepSpec& spec
   nlohmann::json made;
   for (const auto& [key, value] : j.items())
     if (key != "axes" && key != "outputs" && key != "runs" && key != "threads") made[key] = value;
-  return csv_provenance_header(made);
+  write_csv_provenance(dir / "results.csv", made);
 }
 
 std::string last_line(std::istream& in) {
@@ -596,10 +596,10 @@ void run_serial(const Args& args) {
   const std::filesystem::path dir(args.out), results = dir / "results.csv";
   const int jobs = local_jobs(spec);
   make_output_dir(dir);
-  const std::string preamble = claim_output(dir, spec, points.size(), 1, jobs);
+  claim_output(dir, spec, points.size(), 1, jobs);
   const std::string head = header(spec);
   std::map<int, std::string> rows = finished_rows(results, head);
-  write_rows(results, preamble + head, rows);  // drops a torn line before appending
+  write_rows(results, head, rows);  // drops a torn line before appending
 
   std::vector<int> pending;
   for (int k = 0; k < static_cast<int>(points.size()); ++k)
@@ -611,7 +611,7 @@ void run_serial(const Args& args) {
     while (next < pending.size() && !pool.full()) pool.start(pending[next++]);
     for (const Finished& f : pool.reap(true)) writer.record(f);
   }
-  writer.finish(preamble + head);
+  writer.finish(head);
   std::printf("sweep: %zu points (%d failed this run) -> %s\n", points.size(), writer.failed(), results.string().c_str());
   // What the sweep itself cost (bench/README.md: the per-point overhead), start-up included.
   if (!pending.empty())
@@ -628,16 +628,16 @@ void run_mpi(const Args& args) {
   std::unique_ptr<SweepSpec> spec;
   std::vector<std::vector<double>> points;
   std::map<int, std::string> rows;
-  std::string head, preamble;
+  std::string head;
   if (mpi.rank == 0) {
     try {
       spec = std::make_unique<SweepSpec>(load_sweep_spec(args.spec));
       points = sweep_points(*spec);
       make_output_dir(dir);
-      preamble = claim_output(dir, *spec, points.size(), mpi.size, local_jobs(*spec));
+      claim_output(dir, *spec, points.size(), mpi.size, local_jobs(*spec));
       head = header(*spec);
       rows = finished_rows(results, head);
-      write_rows(results, preamble + head, rows);  // drops a torn line before appending
+      write_rows(results, head, rows);  // drops a torn line before appending
     } catch (...) {
       ok = 0;
       mpi_check(MPI_Bcast(&ok, 1, MPI_INT, 0, MPI_COMM_WORLD), "MPI_Bcast");
@@ -664,7 +664,7 @@ void run_mpi(const Args& args) {
         if (!rows.count(k)) pending.push_back(k);
       ResultsWriter writer(results, std::move(rows), static_cast<int>(points.size()));
       mpi_master(pool, writer, pending, mpi.size);
-      writer.finish(preamble + head);
+      writer.finish(head);
       std::printf("sweep: %zu points on %d MPI ranks (%d failed this run) -> %s\n", points.size(), mpi.size,
                   writer.failed(), results.string().c_str());
     } else {

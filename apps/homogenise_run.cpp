@@ -30,9 +30,9 @@ std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& 
 }
 
 void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig::SteadySliding>& points,
-                        const std::string& csv_header) {
-  AtomicFile f(path);
-  f.stream() << csv_header << "U_m_per_s,mu,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N\n";
+                        const nlohmann::json& provenance) {
+  CsvFile f(path, provenance);
+  f.stream() << "U_m_per_s,mu,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N\n";
   for (const rig::SteadySliding& s : points)
     f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << s.fluid_share << ',' << s.separation_m << ','
                << s.temperature_rise_K << ',' << s.solid_load_N << ',' << s.lift_N << ',' << s.fluid_shear_N << '\n';
@@ -40,9 +40,9 @@ void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig
 }
 
 void write_area_csv(const std::filesystem::path& path, const homogenise::PinTable& pin, double sigma,
-                    const std::string& csv_header) {
-  AtomicFile f(path);
-  f.stream() << csv_header << "separation_m,separation_over_sigma,solid_load_N,solid_load_standard_error_N,real_area_m2,"
+                    const nlohmann::json& provenance) {
+  CsvFile f(path, provenance);
+  f.stream() << "separation_m,separation_over_sigma,solid_load_N,solid_load_standard_error_N,real_area_m2,"
                 "real_area_fraction,real_area_standard_error_m2,lift_per_eta_u_m,squeeze_per_eta_m,shear_per_eta_u_m\n";
   for (std::size_t m = 0; m < pin.separation_m.size(); ++m)
     f.stream() << pin.separation_m[m] << ',' << pin.separation_m[m] / sigma << ',' << pin.solid_load_N[m] << ','
@@ -119,9 +119,9 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   law["bem_iterations"] = bem_iterations;
   law["stage_thread_s"] = {{"bem", bem_s}, {"flow_cells", flow_s}, {"lift_cells", lift_s}};
 
-  const std::string csv_header = csv_provenance_header(law["provenance"]);
-  write_area_csv(dir / "area.csv", pin, cells.sigma_m, csv_header);
-  write_stribeck_csv(dir / "stribeck.csv", stribeck, csv_header);
+  const nlohmann::json& provenance = law["provenance"];
+  write_area_csv(dir / "area.csv", pin, cells.sigma_m, provenance);
+  write_stribeck_csv(dir / "stribeck.csv", stribeck, provenance);
   write_file_atomically(dir / "law.json", law.dump(2) + "\n");
   std::printf("mu_s,max %.4g (BEM, %d realisations), dry mu %.4g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
               cells.mu_s_max.mean, cells.realisations, cells.mu_boundary.mean, stribeck.size(), o.pin.normal_load_N,

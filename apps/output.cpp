@@ -49,6 +49,31 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   f.commit();
 }
 
+std::filesystem::path csv_provenance_path(const std::filesystem::path& csv) {
+  std::filesystem::path p = csv;
+  p += ".provenance.json";
+  return p;
+}
+
+CsvFile::CsvFile(std::filesystem::path path, nlohmann::json provenance)
+    : path_(path), provenance_(std::move(provenance)), csv_(std::move(path)) {}
+
+void write_csv_provenance(const std::filesystem::path& csv, const nlohmann::json& provenance) {
+  const nlohmann::json beside = {{"csv", csv.filename().string()}, {"provenance", provenance}};
+  write_file_atomically(csv_provenance_path(csv), beside.dump(2) + "\n");
+}
+
+void CsvFile::commit() {
+  write_csv_provenance(path_, provenance_);
+  csv_.commit();
+}
+
+void write_csv_atomically(const std::filesystem::path& path, const std::string& content, const nlohmann::json& provenance) {
+  CsvFile f(path, provenance);
+  f.stream() << content;
+  f.commit();
+}
+
 std::filesystem::path shipped_file(const std::string& installed, const std::string& in_source,
                                    std::filesystem::path executable) {
   std::error_code ec;

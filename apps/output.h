@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "numerics/format.h"
 
 namespace tribo::cli {
@@ -30,6 +32,26 @@ class AtomicFile {
 };
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+
+// A CSV as the readers people reach for take it: plain, its first line the column header, so
+// numpy.genfromtxt(names=True), pandas.read_csv and csv.DictReader read it without options. How it
+// was made goes beside it, in NAME.csv.provenance.json ({"csv": NAME.csv, "provenance": {...}});
+// commit() writes that first, so a CSV is never without it. Both appear whole or not at all.
+class CsvFile {
+ public:
+  CsvFile(std::filesystem::path path, nlohmann::json provenance);
+  std::ofstream& stream() { return csv_.stream(); }
+  void commit();
+
+ private:
+  std::filesystem::path path_;
+  nlohmann::json provenance_;
+  AtomicFile csv_;
+};
+
+std::filesystem::path csv_provenance_path(const std::filesystem::path& csv);  // NAME.csv.provenance.json
+void write_csv_provenance(const std::filesystem::path& csv, const nlohmann::json& provenance);  // that file, whole
+void write_csv_atomically(const std::filesystem::path& path, const std::string& content, const nlohmann::json& provenance);
 
 // A number for reports and CSV fields: numerics/format.h.
 using numerics::fmt;

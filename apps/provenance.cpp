@@ -21,15 +21,6 @@ namespace {
 std::mutex command_line_mutex;
 std::vector<std::string> command_line;
 
-// A string that comes back unchanged when written bare after "# key: ".
-bool writes_bare(const std::string& s) {
-  if (s.empty() || std::isspace(static_cast<unsigned char>(s.front())) || std::isspace(static_cast<unsigned char>(s.back())))
-    return false;
-  for (unsigned char c : s)
-    if (c < 0x20 || c == 0x7f) return false;
-  return !nlohmann::json::accept(s);  // "123" or "null" would read back as a number or null
-}
-
 }  // namespace
 
 std::string bytes_hash(std::string_view bytes) {
@@ -73,29 +64,6 @@ nlohmann::json provenance_json(const std::filesystem::path& config, const std::s
 
 nlohmann::json provenance_json(const std::filesystem::path& config) {
   return provenance_json(config, config.empty() ? std::string() : config_hash(config));
-}
-
-std::string csv_provenance_header(const nlohmann::json& provenance) {
-  std::string out;
-  for (const auto& [key, value] : provenance.items()) {
-    const bool bare = value.is_string() && writes_bare(value.get<std::string>());
-    out += "# " + key + ": " + (bare ? value.get<std::string>() : value.dump()) + "\n";
-  }
-  return out;
-}
-
-nlohmann::json read_csv_provenance(std::istream& in) {
-  nlohmann::json j = nlohmann::json::object();
-  while (in.peek() == '#') {
-    std::string line;
-    std::getline(in, line);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto colon = line.find(": ");
-    if (line.rfind("# ", 0) != 0 || colon == std::string::npos) continue;  // a comment, not a key
-    const std::string key = line.substr(2, colon - 2), value = line.substr(colon + 2);
-    j[key] = nlohmann::json::accept(value) ? nlohmann::json::parse(value) : nlohmann::json(value);
-  }
-  return j;
 }
 
 }  // namespace tribo::cli

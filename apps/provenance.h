@@ -1,6 +1,6 @@
 // How an output was made: tribo version and commit, the command line, the config file and its
 // hash, the time and the thread count (and the seed, where the command has one) — written into
-// every JSON result as "provenance" and as "# key: value" lines at the top of every CSV, so that a
+// every JSON result as "provenance" and beside every CSV (apps/output.h CsvFile), so that a
 // number can be traced to the code and inputs that made it.
 #pragma once
 
@@ -29,16 +29,5 @@ nlohmann::json provenance_json(const std::filesystem::path& config);
 
 // Records argv for provenance_json's "command_line" (called once, from main).
 void record_command_line(int argc, const char* const* argv);
-
-// The provenance as CSV comment lines, "# key: value\n" per key in key order, to go above
-// a CSV's column header. A string is written as it is unless that would not read back as the same
-// string — a control character (a newline would end the comment), edge spaces, or text that
-// parses as JSON ("123", "null") — then as a JSON string; other values as JSON. Every reader of
-// tribo's CSVs skips leading lines that start with '#'.
-std::string csv_provenance_header(const nlohmann::json& provenance);
-
-// The provenance back from a CSV's leading "# key: value" lines (the inverse of
-// csv_provenance_header). Reads up to, not including, the first line not starting with '#'.
-nlohmann::json read_csv_provenance(std::istream& in);
 
 }  // namespace tribo::cli

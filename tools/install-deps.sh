@@ -7,7 +7,7 @@ packages=(
   libeigen3-dev libsuitesparse-dev libhypre-dev libfftw3-dev libsundials-dev libceres-dev
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-matplotlib python3-numpy python3-dev pybind11-dev
+  python3 python3-matplotlib python3-numpy python3-pandas python3-dev pybind11-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -29,7 +29,7 @@ REGIME_COLOURS = {
 
 
 def read_csv(path):
-    """Rows of a tribo CSV as dicts; the leading "# key: value" provenance lines are skipped."""
+    """Rows of a tribo CSV as dicts; leading "# key: value" lines (older CSVs' provenance) are skipped."""
     with open(path, newline="") as f:
         lines = f.readlines()
     start = 0

@@ -24,7 +24,7 @@ def _column(values):
 def read_sweep_results(path):
     """Read a sweep's results.csv (or the sweep's --out folder) into a dict of NumPy arrays.
 
-    Leading provenance lines starting with '#' are skipped.
+    Leading lines starting with '#' (the provenance of CSVs written before 2026-11-27) are skipped.
 
     One array per column, in the file's column order, one entry per point (sorted by point id as
     the finished sweep writes it): point_id as int64; axis columns (named by their dotted config
@@ -35,7 +35,7 @@ def read_sweep_results(path):
     if os.path.isdir(path):
         path = os.path.join(path, "results.csv")
     with open(path, newline="") as f:
-        # Leading "# key: value" lines are the file's provenance (README "Provenance of outputs").
+        # Older CSVs began with "# key: value" provenance lines (README "Provenance of outputs").
         reader = csv.reader(line for line in f if not line.startswith("#"))
         try:
             header = next(reader)

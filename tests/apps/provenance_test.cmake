@@ -1,7 +1,8 @@
 # Every output says how it was made: `tribo rig` writes a "provenance" block into summary.json
 # (version from project(), the build's commit, the config's absolute path and hash, date, threads,
-# seed, command line) and the same block as "# key: value" lines above the column header of
-# trace.csv and events.csv; the plotting script still reads those CSVs (it must skip the lines).
+# seed, command line) and the same block beside trace.csv and events.csv (NAME.csv.provenance.json);
+# the CSVs themselves are plain, so numpy.genfromtxt(names=True), pandas.read_csv and
+# csv.DictReader read them without options, and the plotting script draws from them.
 # Arguments: TRIBO (the binary), VERSION (PROJECT_VERSION), CONFIG (a rig config), WORK, PYTHON.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -47,28 +48,35 @@ endif()
 string(JSON argv1 GET "${p}" command_line 1)
 expect("provenance.command_line[1]" "${argv1}" rig)
 
-# The CSVs: the same block as comment lines, then the column header, then numbers.
+# The CSVs: plain, the column header first; the same block beside each.
 foreach(csv trace events)
-  file(STRINGS ${WORK}/out/${csv}.csv lines LIMIT_COUNT 12)
-  set(comments "")
-  set(header "")
-  foreach(line IN LISTS lines)
-    if(line MATCHES "^#")
-      list(APPEND comments "${line}")
-    else()
-      set(header "${line}")
-      break()
-    endif()
-  endforeach()
-  foreach(expected "# tribo_version: ${VERSION}" "# config_hash: ${hash}" "# git_commit: ${commit}" "# seed: 1"
-                   "# config: ${WORK}/rig.toml" "# date_utc: ${date}")
-    list(FIND comments "${expected}" found)
-    if(found LESS 0)
-      message(FATAL_ERROR "${csv}.csv lacks the line '${expected}': ${comments}")
-    endif()
-  endforeach()
-  if(NOT header MATCHES "^t_s,")
-    message(FATAL_ERROR "${csv}.csv: the column header should follow the comment lines, got '${header}'")
+  file(STRINGS ${WORK}/out/${csv}.csv first LIMIT_COUNT 1)
+  if(NOT first MATCHES "^t_s,")
+    message(FATAL_ERROR "${csv}.csv: the column header should be the first line, got '${first}'")
+  endif()
+  file(READ ${WORK}/out/${csv}.csv.provenance.json beside)
+  string(JSON beside_p GET "${beside}" provenance)
+  string(JSON equal EQUAL "${beside_p}" "${p}")
+  if(NOT equal)
+    message(FATAL_ERROR "${csv}.csv.provenance.json: provenance differs from summary.json's: ${beside_p}")
+  endif()
+  string(JSON named GET "${beside}" csv)
+  expect("${csv}.csv.provenance.json csv" "${named}" "${csv}.csv")
+  # The three readers people reach for, without options: every column named, as many rows as lines.
+  execute_process(COMMAND ${PYTHON} -c "
+import csv, sys, numpy, pandas
+path = sys.argv[1]
+lines = open(path).read().splitlines()
+columns, rows = lines[0].split(','), len(lines) - 1
+a = numpy.genfromtxt(path, delimiter=',', names=True, dtype=None, encoding='utf-8')
+assert list(a.dtype.names) == columns and a.size == rows, ('numpy', a.dtype.names, a.size)
+d = pandas.read_csv(path)
+assert list(d.columns) == columns and len(d) == rows, ('pandas', list(d.columns), len(d))
+r = list(csv.DictReader(open(path)))
+assert list(r[0].keys()) == columns and len(r) == rows, ('csv', list(r[0].keys()), len(r))
+" ${WORK}/out/${csv}.csv RESULT_VARIABLE read_status ERROR_VARIABLE read_err)
+  if(NOT read_status EQUAL 0)
+    message(FATAL_ERROR "${csv}.csv does not read plainly with numpy, pandas and csv: ${read_err}")
   endif()
 endforeach()
 
@@ -77,7 +85,7 @@ execute_process(COMMAND ${PYTHON} -c "import matplotlib" RESULT_VARIABLE no_matp
 if(NOT no_matplotlib)
   foreach(png phase_plane trace)
     if(NOT EXISTS ${WORK}/out/${png}.png)
-      message(FATAL_ERROR "${png}.png not drawn from the CSV with a provenance header: ${err}")
+      message(FATAL_ERROR "${png}.png not drawn from the CSV: ${err}")
     endif()
   endforeach()
 endif()

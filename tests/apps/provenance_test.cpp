@@ -1,5 +1,6 @@
-// The provenance block's CSV form reads back exactly (hostile strings included), the readers of
-// tribo's CSVs skip it, and the CLI finds its shipped files relative to an installed binary.
+// The provenance block, a CSV's provenance beside it (hostile strings read back exactly), bundle
+// CSVs with comment lines, output folders that take no files, and the CLI's shipped files found
+// relative to an installed binary.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -53,26 +54,36 @@ TEST_F(Provenance, BlockHasTheKeysAndHashesTheConfig) {
   EXPECT_TRUE(none["config_hash"].is_null());
 }
 
-TEST_F(Provenance, CsvHeaderReadsBackExactlyAndEndsBeforeTheColumns) {
+TEST_F(Provenance, CsvIsPlainAndItsProvenanceBesideItReadsBackExactly) {
   nlohmann::json p = provenance_json(fs::path());
   p["seed"] = 18446744073709551615ULL;
   p["config"] = "/a path/with \"quotes\"\nand a newline # and a hash";
   p["git_commit"] = "123456789012";  // all digits: must come back a string, not a number
-  p["experiment"] = " leading space";
   p["command_line"] = {"tribo", "rig", "x.toml"};
-  const std::string header = csv_provenance_header(p);
-  // One comment line per key: the newline inside a value was escaped.
-  EXPECT_EQ(static_cast<std::size_t>(std::count(header.begin(), header.end(), '\n')), p.size());
-  std::istringstream in(header + "t_s,x_m\n0,1\n");
-  EXPECT_EQ(read_csv_provenance(in), p);
-  std::string next;
-  std::getline(in, next);
-  EXPECT_EQ(next, "t_s,x_m");
-  EXPECT_NE(header.find("# tribo_version: " TRIBO_EXPECTED_VERSION "\n"), std::string::npos) << header;
+  const fs::path csv = dir_ / "trace.csv";
+  {
+    CsvFile f(csv, p);
+    f.stream() << "t_s,x_m\n0,1\n";
+    f.commit();
+  }
+  std::ifstream in(csv);
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, "t_s,x_m");  // the column header is the first line: readers need no options
+  ASSERT_TRUE(fs::exists(dir_ / "trace.csv.provenance.json"));
+  const nlohmann::json beside = nlohmann::json::parse(std::ifstream(dir_ / "trace.csv.provenance.json"));
+  EXPECT_EQ(beside.at("csv"), "trace.csv");
+  EXPECT_EQ(beside.at("provenance"), p);
 }
 
-// gap/bundle.cpp reads experiment CSVs: a bundle whose files carry tribo's provenance header (as
-// tribo's own CSVs do) reads back to the same data.
+// A CSV left uncommitted (the run failed) leaves neither file behind.
+TEST_F(Provenance, AnUncommittedCsvLeavesNothing) {
+  { CsvFile f(dir_ / "x.csv", provenance_json(fs::path())); f.stream() << "a\n1\n"; }
+  EXPECT_TRUE(fs::is_empty(dir_));
+}
+
+// gap/bundle.cpp reads experiment CSVs: a bundle whose files start with "# key: value" comment lines
+// (tribo's own CSVs did before 2026-11-27; a logger may write them) reads back to the same data.
 TEST_F(Provenance, ExperimentBundleWithHeaderReadsBack) {
   gap::ExperimentBundle b;
   b.name = "provenance";
@@ -88,9 +99,7 @@ TEST_F(Provenance, ExperimentBundleWithHeaderReadsBack) {
   gap::write_bundle(b, dir_);
   const gap::ExperimentBundle plain = gap::read_bundle(dir_);
 
-  nlohmann::json p = provenance_json(fs::path());
-  p["seed"] = 7;
-  const std::string header = csv_provenance_header(p);
+  const std::string header = "# tribo_version: 0.1.0\n# config: null\n# seed: 7\n";
   int prefixed = 0;
   for (const auto& e : fs::recursive_directory_iterator(dir_)) {
     if (e.path().extension() != ".csv") continue;

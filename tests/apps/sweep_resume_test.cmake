@@ -67,15 +67,23 @@ if(NOT full STREQUAL killed)
   message(FATAL_ERROR "killed-and-resumed results differ:\n${full}\n---\n${killed}")
 endif()
 
-# The finished table says how it was made, and the first start made it: its provenance lines are
-# sweep.json's, date included, though the last of five starts wrote the file.
+# The finished table says how it was made, and the first start made it: the provenance beside it
+# is sweep.json's, date included, though the last of five starts wrote the file; the table itself
+# starts with its column header.
 file(READ ${WORK}/killed/sweep.json made)
 string(JSON first_date GET "${made}" date_utc)
 string(JSON spec_hash GET "${made}" spec_hash)
-file(STRINGS ${WORK}/killed/results.csv provenance REGEX "^# ")
-if(NOT provenance MATCHES "# tribo_version: [0-9]" OR NOT provenance MATCHES "# date_utc: ${first_date}"
-   OR NOT provenance MATCHES "# spec_hash: ${spec_hash}" OR NOT provenance MATCHES "# git_commit: ")
-  message(FATAL_ERROR "results.csv provenance lines do not match sweep.json (date ${first_date}): ${provenance}")
+file(READ ${WORK}/killed/results.csv.provenance.json beside)
+string(JSON date GET "${beside}" provenance date_utc)
+string(JSON hash GET "${beside}" provenance spec_hash)
+string(JSON version GET "${beside}" provenance tribo_version)
+string(JSON commit GET "${beside}" provenance git_commit)
+if(NOT date STREQUAL first_date OR NOT hash STREQUAL spec_hash OR NOT version MATCHES "^[0-9]" OR commit STREQUAL "")
+  message(FATAL_ERROR "results.csv.provenance.json does not match sweep.json (date ${first_date}): ${beside}")
+endif()
+file(STRINGS ${WORK}/killed/results.csv first LIMIT_COUNT 1)
+if(NOT first MATCHES "^point_id,")
+  message(FATAL_ERROR "results.csv should start with its column header, got '${first}'")
 endif()
 
 file(APPEND ${WORK}/spec.toml "# changed\n")

@@ -1,7 +1,7 @@
 # Shared by the sweep tests: a results.csv as comparable rows.
 
-# The column header and rows of a results.csv, one list entry per line: the "# key: value"
-# provenance lines dropped (they carry dates), the wall_s column emptied (the field after point_id,
+# The column header and rows of a results.csv, one list entry per line: any "# key: value"
+# lines dropped (older tables began with their provenance, which carries dates), the wall_s column emptied (the field after point_id,
 # the axes, status and error; a third argument gives the number of axes, default 2) and the output
 # folder's name replaced by DIR in error messages.
 function(rows_without_wall file out)
