@@ -1,4 +1,5 @@
 #include "apps/config.h"
+#include "numerics/format.h"
 
 #include <cmath>
 #include <sstream>
@@ -63,17 +64,17 @@ double ConfigTable::checked(const std::string& key, const toml::node& n, Range r
   } else {
     fail(key, "expected a number");
   }
-  if (!std::isfinite(value)) fail(key, "must be a finite number (got " + std::to_string(value) + ")");
+  if (!std::isfinite(value)) fail(key, "must be a finite number (got " + numerics::shortest(value) + ")");
   switch (range) {
     case Range::any: break;
     case Range::positive:
-      if (!(value > 0.0)) fail(key, "must be positive (got " + std::to_string(value) + ")");
+      if (!(value > 0.0)) fail(key, "must be positive (got " + numerics::shortest(value) + ")");
       break;
     case Range::non_negative:
-      if (value < 0.0) fail(key, "must not be negative (got " + std::to_string(value) + ")");
+      if (value < 0.0) fail(key, "must not be negative (got " + numerics::shortest(value) + ")");
       break;
     case Range::unit_interval:
-      if (value < 0.0 || value > 1.0) fail(key, "must lie in [0, 1] (got " + std::to_string(value) + ")");
+      if (value < 0.0 || value > 1.0) fail(key, "must lie in [0, 1] (got " + numerics::shortest(value) + ")");
       break;
   }
   return value;

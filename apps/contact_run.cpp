@@ -15,6 +15,7 @@
 #include "contact/reference/hertz.h"
 #include "contact/surface_io.h"
 #include "contact/tangential.h"
+#include "numerics/format.h"
 
 namespace tribo::cli {
 
@@ -71,7 +72,7 @@ ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path&
       lx = *size_m;
       ly = *size_m * static_cast<double>(topo.heights_m.cols()) / static_cast<double>(topo.heights_m.rows());
     } else if (size_m && std::abs(*size_m - lx) > 1e-9 * lx) {
-      domain->fail("size_m", "does not match the x extent " + std::to_string(lx) + " m of " + file.string());
+      domain->fail("size_m", "does not match the x extent " + numerics::shortest(lx) + " m of " + file.string());
     }
     if (grid_n && *grid_n != topo.heights_m.rows()) {
       domain->fail("grid", "does not match the " + std::to_string(topo.heights_m.rows()) + " rows of " + file.string());

@@ -7,6 +7,7 @@
 #include "rig/friction_model.h"
 #include "rig/homogenised_law.h"
 #include "rig/kinetic_laws.h"
+#include "numerics/format.h"
 
 namespace tribo::cli {
 namespace {
@@ -87,7 +88,7 @@ rig::FrictionModel read_friction_model(ConfigTable* t, std::optional<double> nor
   } else if (law == "coulomb") {
     model.baseline.mu_k = t->number("mu_k", model.baseline.mu_k, Range::non_negative);
     if (model.baseline.mu_k > model.baseline.mu_s) {
-      t->fail("mu_k", "must not exceed mu_s (" + std::to_string(model.baseline.mu_s) + ")");
+      t->fail("mu_k", "must not exceed mu_s (" + numerics::shortest(model.baseline.mu_s) + ")");
     }
   } else if (law == "stribeck") {
     rig::StribeckParameters p;
@@ -111,8 +112,8 @@ rig::FrictionModel read_friction_model(ConfigTable* t, std::optional<double> nor
       for (const rig::ParameterSpec& spec : info.parameters) {
         const double value = params->number(spec.name, spec.default_value);
         if (value < spec.lower || value > spec.upper) {
-          params->fail(spec.name, "must lie in [" + std::to_string(spec.lower) + ", " + std::to_string(spec.upper) + "] " + spec.unit +
-                                      " (got " + std::to_string(value) + ")");
+          params->fail(spec.name, "must lie in [" + numerics::shortest(spec.lower) + ", " + numerics::shortest(spec.upper) + "] " + spec.unit +
+                                      " (got " + numerics::shortest(value) + ")");
         }
         model.set(name, spec.name, value);
       }

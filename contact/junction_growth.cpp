@@ -6,6 +6,7 @@
 #include <string>
 
 #include "numerics/cvode.h"
+#include "numerics/format.h"
 
 namespace tribo::contact {
 namespace {
@@ -39,7 +40,7 @@ int slip_root(sunrealtype s, N_Vector y, sunrealtype* g, void* data) {
 bool advance(numerics::Cvode& cv, double s_out, double& s) {
   const int flag = cv.advance(s_out, s);
   if (flag < 0) {
-    throw std::runtime_error("junction ramp: CVODE failed at s = " + std::to_string(s) + " with " + numerics::Cvode::describe(flag) + ": " + cv.last_message());
+    throw std::runtime_error("junction ramp: CVODE failed at s = " + numerics::shortest(s) + " with " + numerics::Cvode::describe(flag) + ": " + cv.last_message());
   }
   return flag == CV_ROOT_RETURN;
 }
@@ -116,11 +117,11 @@ JunctionRampResult integrate_junction_ramp(const JunctionRampParams& p) {
   }
   out.steps = cv.steps();
   if (!root) {
-    out.message = "no slip before F/W reached the upper asymptote mu_s,max = " + std::to_string(mu_max);
+    out.message = "no slip before F/W reached the upper asymptote mu_s,max = " + numerics::shortest(mu_max);
     return out;
   }
   finish(s, cv.state()[0]);
-  out.message = "slip at t = " + std::to_string(out.slip_time_s) + " s, mu_s = " + std::to_string(out.static_friction);
+  out.message = "slip at t = " + numerics::shortest(out.slip_time_s) + " s, mu_s = " + numerics::shortest(out.static_friction);
   return out;
 }
 

@@ -1,4 +1,5 @@
 #include "contact/junction_locus.h"
+#include "numerics/format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +54,7 @@ double upper_asymptote(const JunctionLocus& l) {
 double load_rate_at_static_friction_per_s(const JunctionLocus& l, double mu_s) {
   const double mu_max = upper_asymptote(l);
   if (!(std::isfinite(mu_s) && mu_s > 0.0 && mu_s <= mu_max))
-    throw std::invalid_argument("junction model: mu_s must lie in (0, " + std::to_string(mu_max) + "]");
+    throw std::invalid_argument("junction model: mu_s must lie in (0, " + numerics::shortest(mu_max) + "]");
   const double g = shape(l, mu_s);
   if (g <= 0.0) return 0.0;
   // φ̇^{1−m(1+n)} = L_ref φ̇_ref^{−m(1+n)} g(μ)   — (3.1.24) with (5.1.2)
@@ -96,7 +97,7 @@ double static_friction_from_load_rate(const JunctionLocus& l, double phi_dot_per
     if (hi - lo <= 4e-16 * hi) return next;
     mu = next;
   }
-  throw std::logic_error("junction model: static friction root not found for load rate " + std::to_string(phi_dot_per_s));
+  throw std::logic_error("junction model: static friction root not found for load rate " + numerics::shortest(phi_dot_per_s) + " 1/s");
 }
 
 double location_through_point_per_s(const JunctionLocus& shape_params, double phi_dot_per_s, double mu_s) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "rig/csv_table.h"
+#include "numerics/format.h"
 
 namespace tribo::gap {
 namespace {
@@ -63,7 +64,7 @@ std::optional<double> rig_key(const toml::table& rig, const std::string& key, co
   if (!v) rig::fail_at(file, static_cast<long>(n->source().begin.line), "[rig] " + key + " must be a number");
   if (!std::isfinite(*v) || *v < 0.0 || (key != "damping_N_s_per_m" && *v == 0.0))
     rig::fail_at(file, static_cast<long>(n->source().begin.line),
-         "[rig] " + key + " = " + std::to_string(*v) + (*v < 0.0 ? ": negative" : ": must be positive and finite") +
+         "[rig] " + key + " = " + numerics::shortest(*v) + (*v < 0.0 ? ": negative" : ": must be positive and finite") +
              (key == "normal_load_N" && *v < 0.0 ? " normal load" : ""));
   return v;
 }

@@ -379,7 +379,7 @@ std::vector<FitParameter> baseline_space(const rig::FrictionModel& model, const 
   for (const auto& [key, u] : relative_uncertainty) {
     if (calibrates(o, key)) continue;
     const double v = rig_value(rig, key);
-    if (!(v > 0.0 && u > 0.0 && u < 1.0)) throw std::invalid_argument("gap: rig key '" + key + "' cannot be refined around " + std::to_string(v));
+    if (!(v > 0.0 && u > 0.0 && u < 1.0)) throw std::invalid_argument("gap: rig key '" + key + "' cannot be refined around " + numerics::shortest(v));
     p.target = FitParameter::Target::rig;
     p.name = key;
     p.lower = v * (1.0 - u), p.upper = v * (1.0 + u), p.log = false;

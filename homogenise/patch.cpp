@@ -10,6 +10,7 @@
 #include "contact/halfspace.h"
 #include "contact/normal_contact.h"
 #include "lubrication/flow_factors.h"
+#include "numerics/format.h"
 
 namespace tribo::homogenise {
 namespace {
@@ -78,9 +79,9 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   for (double ratio : o.separation_ratios) r.separation_m.push_back(ratio * sigma);
   r.first_contact_separation_m = -z.minCoeff();
   if (!(r.separation_m.back() > r.first_contact_separation_m))
-    bad("the largest separation ratio " + std::to_string(o.separation_ratios.back()) +
+    bad("the largest separation ratio " + numerics::shortest(o.separation_ratios.back()) +
         " lies below the first contact of seed " + std::to_string(r.seed) + " at h/σ = " +
-        std::to_string(r.first_contact_separation_m / sigma) + "; add a larger one");
+        numerics::shortest(r.first_contact_separation_m / sigma) + "; add a larger one");
 
   using Clock = std::chrono::steady_clock;
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -104,7 +105,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
     r.bem_iterations += c.summary.iterations;
     if (!c.summary.converged) {
       ++r.unconverged;
-      r.messages += "BEM at h/σ = " + std::to_string(o.separation_ratios[m]) + ": " + c.summary.message + "; ";
+      r.messages += "BEM at h/σ = " + numerics::shortest(o.separation_ratios[m]) + ": " + c.summary.message + "; ";
       r.solid_pressure_Pa[m] = r.area_fraction[m] = kNaN;
       continue;
     }
@@ -124,7 +125,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
     r.bem_iterations += c.summary.iterations;
     if (!c.summary.converged) {
       ++r.unconverged;
-      r.messages += "BEM at the pin load with cap " + std::to_string(cap) + " Pa: " + c.summary.message + "; ";
+      r.messages += "BEM at the pin load with cap " + numerics::shortest(cap) + " Pa: " + c.summary.message + "; ";
       return kNaN;
     }
     return c.real_area_m2;
@@ -153,7 +154,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
     r.lift_per_eta_u_per_m.push_back(lift[m].mean_pressure_per_eta_u.mean);
     if (ff[m].unconverged > 0 || lift[m].unconverged > 0) {
       ++r.unconverged;
-      r.messages += "Reynolds cell at h/σ = " + std::to_string(o.separation_ratios[m]) + " did not converge; ";
+      r.messages += "Reynolds cell at h/σ = " + numerics::shortest(o.separation_ratios[m]) + " did not converge; ";
     }
   }
   return r;

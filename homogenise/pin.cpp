@@ -5,6 +5,7 @@
 #include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
 #include "rig/law_table.h"
+#include "numerics/format.h"
 
 namespace tribo::homogenise {
 namespace {
@@ -76,7 +77,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     for (const auto* s : {&wedge, &squeeze})
       if (!s->summary.converged) {
         ++pin.reynolds_unconverged;
-        pin.messages += "pin-face Reynolds at h = " + std::to_string(centre) + " m: " + s->summary.message + "; ";
+        pin.messages += "pin-face Reynolds at h = " + numerics::shortest(centre) + " m: " + s->summary.message + "; ";
       }
 
     // Face integrals over the wetted nodes, weights scaled so they sum to πR² exactly.

@@ -1,4 +1,5 @@
 #include "lubrication/viscosity.h"
+#include "numerics/format.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -19,7 +20,7 @@ Lubricant thesis_white_mineral_oil() { return Lubricant{}; }
 
 void validate(const Lubricant& l) {
   if (!(std::isfinite(l.viscosity_Pa_s) && l.viscosity_Pa_s > 0.0))
-    throw std::invalid_argument("lubricant: viscosity_Pa_s must be finite and > 0, got " + std::to_string(l.viscosity_Pa_s));
+    throw std::invalid_argument("lubricant: viscosity_Pa_s must be finite and > 0, got " + numerics::shortest(l.viscosity_Pa_s) + " Pa s");
   require(std::isfinite(l.pressure_viscosity_per_Pa) && l.pressure_viscosity_per_Pa >= 0.0,
           "lubricant: pressure_viscosity_per_Pa must be finite and >= 0");
   require(std::isfinite(l.temperature_viscosity_per_K) && l.temperature_viscosity_per_K >= 0.0,

@@ -10,4 +10,9 @@ namespace tribo::numerics {
 // that does not exist, e.g. the period of a run that never oscillates).
 std::string fmt(double v, const char* format = "%.4g");
 
+// `v` as the shortest decimal that reads back as the same double ("-2e-07", "0.1", "1e+300"; "nan",
+// "inf", "-inf"): the numbers of error and status messages, where std::to_string's fixed six
+// decimals print a height of -2e-7 m as "-0.000000".
+std::string shortest(double v);
+
 }  // namespace tribo::numerics

@@ -11,6 +11,7 @@
 #include "rig/effects/squeeze_film.h"
 #include "rig/effects/thermal_thinning.h"
 #include "rig/effects/viscous_friction.h"
+#include "numerics/format.h"
 
 namespace tribo::rig {
 namespace {
@@ -187,8 +188,8 @@ void validate(const FrictionModel& m) {
     for (std::size_t i = 0; i < values.size(); ++i) {
       const ParameterSpec& p = info.parameters[i];
       if (!std::isfinite(values[i]) || values[i] < p.lower || values[i] > p.upper) {
-        bad(name + "." + p.name + " = " + std::to_string(values[i]) + " lies outside its physical range [" +
-            std::to_string(p.lower) + ", " + std::to_string(p.upper) + "] " + p.unit);
+        bad(name + "." + p.name + " = " + numerics::shortest(values[i]) + " lies outside its physical range [" +
+            numerics::shortest(p.lower) + ", " + numerics::shortest(p.upper) + "] " + p.unit);
       }
     }
   };

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "numerics/cvode.h"
+#include "numerics/format.h"
 
 namespace tribo::rig {
 
@@ -311,7 +312,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   settle();
   while (t < t_end) {
     if (summary.events > options.max_events) {
-      summary.message = "stopped after " + std::to_string(summary.events) + " events at t = " + std::to_string(t) +
+      summary.message = "stopped after " + std::to_string(summary.events) + " events at t = " + numerics::shortest(t) +
                         " s (max_events reached: chattering between stick and slip?)";
       summary.end_time_s = t;
       return summary;
@@ -332,7 +333,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
       double t_reached = t;
       const int flag = cv.advance(t_out, t_reached);
       if (flag < 0) {
-        summary.message = "CVODE failed at t = " + std::to_string(t_reached) + " s with " + numerics::Cvode::describe(flag) +
+        summary.message = "CVODE failed at t = " + numerics::shortest(t_reached) + " s with " + numerics::Cvode::describe(flag) +
                           (m.callback_error.empty() ? "" : " (" + m.callback_error + ")") +
                           (cv.last_message().empty() ? "" : ": " + cv.last_message());
         summary.end_time_s = t;

@@ -45,6 +45,13 @@ TEST(ConfigHostile, MalformedTomlNamesSourceLineAndColumn) {
   expect_all(rig_error("[rig]\nmass_kg = = 1\n"), {kRig + ":2:", "malformed TOML"});
 }
 
+// A value is quoted as it was given, not at six fixed decimals: std::to_string printed a mass of
+// -2e-7 kg as "-0.000000" and a rate of 1e-9 as "0.000000".
+TEST(ConfigHostile, MessagesQuoteSmallValuesAsGiven) {
+  expect_all(rig_error("[rig]\nmass_kg = -2e-7\n"), {"rig.mass_kg", "(got -2e-07)"});
+  expect_all(rig_error("[friction]\nmu_s = 0.3\nmu_k = 0.30000000000000004\n"), {"mu_k", "must not exceed mu_s (0.3)"});
+}
+
 TEST(ConfigHostile, DriveTableMustBeARegularFile) {
   // file = "/dev/zero" was read line by line: one endless line, memory until killed.
   expect_all(rig_error("[drive]\nkind = \"table\"\nfile = \"/dev/zero\"\n"), {"/dev/zero", "not a regular file"});
