@@ -756,17 +756,9 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         observer.on_event = [&](const rig::Event& e) {
           if (e.kind == rig::EventKind::breakaway) breakaways.emplace_back(e.t_s, rig::breakaway_reading(instrument, e.mu));
         };
-        rig::simulate(rig, rig::Drive::constant(v), law, options, observer);
-        // None after the start-up: the later half of those there were (the run stopped at its event
-        // limit), or the last one when the slider slides steadily after it.
-        const double window_start_s = rig::analysis_start_s(0.0, plan.duration_s);
-        auto read = std::find_if(breakaways.begin(), breakaways.end(), [&](const auto& b) { return b.first >= window_start_s; });
-        if (read == breakaways.end()) read = breakaways.begin() + static_cast<long>(breakaways.size() / 2);
-        if (read != breakaways.end()) {
-          double sum = 0.0;
-          for (auto it = read; it != breakaways.end(); ++it) sum += it->second;
-          f["mu_s"] = sum / static_cast<double>(breakaways.end() - read);
-        }
+        const rig::SimulationSummary run = rig::simulate(rig, rig::Drive::constant(v), law, options, observer);
+        if (const auto mu = static_point_reading(breakaways, run, options.max_events, rig::analysis_start_s(0.0, plan.duration_s)))
+          f["mu_s"] = *mu;
         break;
       }
       case RunPlan::Kind::regime_point: {
@@ -1126,6 +1118,17 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
     if (const auto it = f.find(items_[i].key); it != f.end()) out[i] = it->second;
   }
   return out;
+}
+
+std::optional<double> static_point_reading(const std::vector<std::pair<double, double>>& breakaways, const rig::SimulationSummary& run,
+                                           long max_events, double window_start_s) {
+  if (!run.completed && run.events <= max_events) return std::nullopt;  // the simulator stops past the limit
+  auto read = std::find_if(breakaways.begin(), breakaways.end(), [&](const auto& b) { return b.first >= window_start_s; });
+  if (read == breakaways.end()) read = breakaways.begin() + static_cast<long>(breakaways.size() / 2);
+  if (read == breakaways.end()) return std::nullopt;
+  double sum = 0.0;
+  for (auto it = read; it != breakaways.end(); ++it) sum += it->second;
+  return sum / static_cast<double>(breakaways.end() - read);
 }
 
 }  // namespace tribo::gap

@@ -48,6 +48,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -173,5 +174,13 @@ class Comparison {
   StepResponse step_response_;
   double tolerance_ = kFinestTolerance;
 };
+
+// A static point's simulated reading (DESIGN §7): the mean of the breakaway readings (t_s, μ) at
+// or after `window_start_s`, or of the later half when none is that late (the run stopped at its
+// event limit first), or the last one when the slider slid steadily after it. A run that stopped
+// short of its duration for any other reason than `max_events` — the integrator failed — has no
+// reading (nullopt): what came before the failure is not a prediction.
+std::optional<double> static_point_reading(const std::vector<std::pair<double, double>>& breakaways, const rig::SimulationSummary& run,
+                                           long max_events, double window_start_s);
 
 }  // namespace tribo::gap

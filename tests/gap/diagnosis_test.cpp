@@ -117,6 +117,25 @@ TEST(Comparison, TruthWithAnInstrumentReproducesItsStaticPointsAndTraces) {
 // in-cycle points to within the sensor noise (3-s records, so that the film has settled to its
 // cycle before the measured window); the first breakaway from rest — what the comparison read
 // before — lies above them by more than 10 % of μs (14–16 % here).
+// A static point reads the in-cycle breakaways after the start-up, or the later half of them when
+// the run ended at its event limit first — but a run the integrator gave up on reads nothing: the
+// mean of the breakaways before the failure is no prediction (issue 38: it was averaged).
+TEST(Comparison, AStaticPointOfARunTheIntegratorGaveUpOnHasNoReading) {
+  const std::vector<std::pair<double, double>> breakaways{{0.5, 0.40}, {1.5, 0.30}, {2.5, 0.32}, {3.5, 0.34}};
+  rig::SimulationSummary done;
+  done.completed = true;
+  done.events = 8;
+  EXPECT_DOUBLE_EQ(*static_point_reading(breakaways, done, 40, 1.0), (0.30 + 0.32 + 0.34) / 3.0);
+  rig::SimulationSummary at_limit;  // stopped past its event limit before the window: the later half
+  at_limit.events = 41;
+  EXPECT_DOUBLE_EQ(*static_point_reading(breakaways, at_limit, 40, 10.0), (0.32 + 0.34) / 2.0);
+  rig::SimulationSummary failed;  // CVODE gave up at t = 3.6 s with 8 of 40 events
+  failed.events = 8;
+  failed.message = "CVODE failed";
+  EXPECT_FALSE(static_point_reading(breakaways, failed, 40, 1.0).has_value());
+  EXPECT_FALSE(static_point_reading({}, done, 40, 1.0).has_value());  // no breakaway: no reading
+}
+
 TEST(Comparison, StaticPointsAreInCycleBreakawaysLikeTheMeasuredOnes) {
   const rig::RigParameters rig;
   rig::FrictionModel truth = rig::coulomb(0.32, 0.2);
