@@ -249,7 +249,8 @@ void run_diagnose(const DiagnoseArgs& args) {
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
 
-nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
+// `build`: the commit of this binary, recorded for a row diagnosed now (a resumed row keeps its own).
+nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::string& build) {
   nlohmann::json j = {{"generator", row.c.generator},   {"form", row.form},
           {"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
           {"seed", row.c.seed},               {"quick", quick},
@@ -264,7 +265,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick) {
                           {"evidence_se_nats", gap::finite_or_null(c.evidence_se_nats)}, {"heldout_gap", gap::finite_or_null(c.heldout_gap)},
                           {"earns", c.earns}});
   j["candidates"] = candidates;
-  j["git_commit"] = row.git_commit;
+  j["git_commit"] = row.git_commit.empty() ? build : row.git_commit;
   return j;
 }
 
@@ -289,14 +290,15 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
       r.confidence = j.at("confidence").is_null() ? std::nan("") : j.at("confidence").get<double>();  // null: not estimable
       r.wall_s = j.value("wall_s", 0.0);  // journals before it was recorded: 0
-      for (auto [key, field] : {std::pair{"test_gap_before", &r.test_gap_before}, std::pair{"test_gap_after", &r.test_gap_after},
-                                std::pair{"confidence_fixed_fits", &r.confidence_fixed_fits}})
-        if (j.contains(key) && j.at(key).is_number()) *field = j.at(key).get<double>();  // absent in older journals: NaN
+      // A number the row may lack (older journals) or hold as null (not estimable): NaN then.
+      const auto number = [](const nlohmann::json& o, const char* key) {
+        return o.contains(key) && o.at(key).is_number() ? o.at(key).get<double>() : std::nan("");
+      };
+      r.test_gap_before = number(j, "test_gap_before");
+      r.test_gap_after = number(j, "test_gap_after");
+      r.confidence_fixed_fits = number(j, "confidence_fixed_fits");
       r.correct = r.verdict == r.c.true_effect;
       r.git_commit = j.value("git_commit", std::string());
-      const auto number = [](const nlohmann::json& c, const char* key) {
-        return c.contains(key) && c.at(key).is_number() ? c.at(key).get<double>() : std::nan("");
-      };
       for (const nlohmann::json& c : j.value("candidates", nlohmann::json::array()))
         r.candidates.push_back({c.at("effect").get<std::string>(), number(c, "evidence_nats"), number(c, "evidence_se_nats"),
                                 number(c, "heldout_gap"), c.value("earns", false)});
@@ -334,9 +336,8 @@ void run_selftest(const SelftestArgs& args) {
   Progress progress(args.quick ? "gap selftest (quick)" : "gap selftest", static_cast<int>(cases.size()) - resumed);
   const gap::SelftestResult r = gap::run_selftest(
       cases, gap::synthetic_options(set), fitting_options(args.quick, args.seed),
-      [&](gap::SelftestRow row) {
-        row.git_commit = commit;
-        journal << row_json(row, args.quick).dump() << "\n" << std::flush;
+      [&](const gap::SelftestRow& row) {
+        journal << row_json(row, args.quick, commit).dump() << "\n" << std::flush;
         if (!journal) throw std::runtime_error((dir / "cases.jsonl").string() + ": writing the journal failed");
         progress.step(row.c.true_effect + " -> " + row.verdict);
       },
@@ -389,10 +390,7 @@ void run_selftest(const SelftestArgs& args) {
   for (const auto& b : r.reliability)
     j["reliability"].push_back({{"confidence_from", b.lower}, {"confidence_to", b.upper}, {"verdicts", b.verdicts}, {"right", b.right}});
   j["cases"] = nlohmann::json::array();
-  for (gap::SelftestRow row : r.rows) {
-    if (row.git_commit.empty()) row.git_commit = commit;  // diagnosed now (a resumed row keeps its own)
-    j["cases"].push_back(row_json(row, args.quick));
-  }
+  for (const auto& row : r.rows) j["cases"].push_back(row_json(row, args.quick, commit));
   write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");
   std::printf("%-12s %-24s %-18s %-40s %10s %10s %6s %22s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after", "conf",
               "test block before/after");

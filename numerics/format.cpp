@@ -1,6 +1,7 @@
 #include "numerics/format.h"
 
 #include <cmath>
+#include <cassert>
 #include <charconv>
 #include <cstdio>
 
@@ -16,7 +17,8 @@ std::string fmt(double v, const char* format) {
 std::string shortest(double v) {
   char buf[32];
   const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc() ? std::string(buf, end) : fmt(v, "%.17g");  // 32 characters always suffice
+  assert(ec == std::errc());  // the longest shortest form of a double has 24 characters
+  return std::string(buf, end);
 }
 
 }  // namespace tribo::numerics
