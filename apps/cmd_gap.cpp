@@ -1,6 +1,7 @@
 // `tribo gap diagnose --experiment DIR --model MODEL.toml [--test DIR] --out OUT`: where a model and a measured
 // experiment bundle disagree, which catalogue effect closes the gap and by how much (gap/diagnosis.h).
 // `tribo gap selftest [--out OUT] [--quick]`: the diagnosis on synthetic bundles with a withheld effect.
+// `tribo gap generate`: one such bundle, written out (cmd_gap_generate.cpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -457,6 +458,8 @@ void add_gap_command(CLI::App& app) {
   selftest->add_flag("--mix-builds", selftest_args->mix_builds,
                      "Resume from journal rows that another build diagnosed (refused by default: one set, one build)");
   selftest->callback([selftest_args] { run_selftest(*selftest_args); });
+
+  add_gap_generate_command(*gap);
 }
 
 }  // namespace tribo::cli

@@ -677,15 +677,18 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   d.calibration.train_noise_floor = breakdown(d.items, noise_r, train).gap;
   report("baseline calibration: train gap " + numerics::fmt(d.calibration.train_gap, "%.3g") + ", " +
          numerics::fmt(d.calibration.train_floors(), "%.3g") + " noise floors");
+  // The candidates the data are searched over (decisive() in verdict.h): the singles, then a pair.
+  int comparisons = 1;
   auto judge = [&](Candidate& c) {
     c.heldout_gap_before = d.baseline_heldout.gap;
-    const Standing st = standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, d.baseline_heldout.gap, held_m);
+    const Standing st = standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, d.baseline_heldout.gap, held_m, comparisons);
     c.evidence_nats = st.evidence.gain, c.evidence_se_nats = st.evidence.se;
     c.earns = st.earns;
   };
 
   // 2. Candidates.
   const std::vector<std::string> names = o.candidates.empty() ? default_candidates(model, bundle.kind) : o.candidates;
+  comparisons = static_cast<int>(names.size());
   // The candidates' searches hold the rig where the calibration put it — the stated constants and
   // the keys calibrated over wide ranges alike: three more coordinates would triple a search's
   // cost, and a search free to move the machine wanders to rigs that are slow to integrate (a
@@ -847,6 +850,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     const double closed = best.heldout_gap_before > 0.0 ? 1.0 - best.heldout_gap_after / best.heldout_gap_before : 1.0;
     if (closed < o.pair_threshold && d.baseline_heldout.gap > 0.0) {
       // Against the singles it must have decisive evidence over the simpler one (verdict_index()).
+      comparisons = static_cast<int>(singles.size()) + 1;
+      for (Candidate& c : d.candidates) judge(c);
       d.candidates.push_back(refine(evaluate({singles[0].effects[0], singles[1].effects[0]}, o.seed * 7919 + 104729)));
       std::stable_sort(d.candidates.begin(), d.candidates.end(), better);
     }
@@ -862,7 +867,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   {
     std::vector<Standing> standing;
     for (const Candidate& c : d.candidates)
-      standing.push_back(standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, d.baseline_heldout.gap, held_m));
+      standing.push_back(standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, d.baseline_heldout.gap, held_m, comparisons));
     const Decision decision = decide(d.candidates, standing, held_m, o, d.baseline_heldout.gap, d.verdict.noise_floor);
     if (decision.index >= 0) chosen = &d.candidates[static_cast<std::size_t>(decision.index)];
     d.verdict.unexplained = decision.unexplained;

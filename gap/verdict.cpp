@@ -1,10 +1,13 @@
 #include "gap/verdict.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <map>
 #include <random>
+
+#include "numerics/normal.h"
 
 namespace tribo::gap {
 
@@ -131,17 +134,23 @@ Evidence evidence(const std::vector<double>& lpd_a, const std::vector<double>& l
   return {sum, std::sqrt(n * var)};
 }
 
-bool decisive(const Evidence& e, double heldout_gap_a, double heldout_gap_b) {
-  return e.gain > Evidence::kStrong && (e.gain > 2.0 * e.se || heldout_gap_a <= 0.5 * heldout_gap_b);
+double decisive_z(int comparisons) {
+  assert(comparisons >= 1);
+  return numerics::standard_normal_quantile(std::pow(numerics::standard_normal_cdf(2.0), 1.0 / comparisons));
+}
+
+bool decisive(const Evidence& e, double heldout_gap_a, double heldout_gap_b, int comparisons) {
+  return e.gain > Evidence::kStrong && (e.gain > decisive_z(comparisons) * e.se || heldout_gap_a <= 0.5 * heldout_gap_b);
 }
 
 Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m) {
+                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m,
+                     int comparisons) {
   Standing st;
   st.lpd = log_density(r, predictive(items, r, s, train));
   st.heldout_gap = gap(items, r, m);
   st.evidence = evidence(st.lpd, baseline_lpd, m);
-  st.earns = decisive(st.evidence, st.heldout_gap, baseline_gap);
+  st.earns = decisive(st.evidence, st.heldout_gap, baseline_gap, comparisons);
   return st;
 }
 
@@ -239,7 +248,8 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
     const std::vector<double> baseline_lpd = log_density(before, predictive(items, before, s, train));
     std::vector<Standing> standing;
     for (std::size_t c = 0; c < candidates.size(); ++c)
-      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, gap_before, m));
+      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, gap_before, m,
+                                     static_cast<int>(candidates.size())));
     const Decision k = decide(candidates, standing, m, o, gap_before, floor);
     const std::string winner =
         k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(candidates[static_cast<std::size_t>(k.index)].effects);

@@ -67,15 +67,21 @@ struct Evidence {
   static constexpr double kStrong = 3.0;
 };
 Evidence evidence(const std::vector<double>& lpd_a, const std::vector<double>& lpd_b, const Multiplicity& m);
-// Whether model a's evidence over model b is decisive: above 3 nats, and either above two of its
+// Whether model a's evidence over model b is decisive: above 3 nats, and either above z_K of its
 // standard errors or, where it rests on a few items (a large se — a velocity step's transient and
 // the steady window after it), with a's held-out gap at most half of b's: a cut the noise of those
 // few items cannot make (the same halving that tells an explained gap from an unexplained one).
-bool decisive(const Evidence& e, double heldout_gap_a, double heldout_gap_b);
+// K = `comparisons`, the number of candidates the data were searched over for a: the best of K
+// that are all wrong clears a fixed z more often the larger K is (a control's best of eight
+// candidates took 4.0 ± 1.9 nats, 2.1 se, in the validation set of 2026-11-26), so z_K keeps the
+// chance that any of them clears it by noise alone at one comparison's Φ(−2) = 2.3 % (Šidák
+// 1967, J. Am. Stat. Assoc. 62, 626): z_K = Φ⁻¹(Φ(2)^{1/K}) — 2 for one, 2.76 for eight.
+double decisive_z(int comparisons);
+bool decisive(const Evidence& e, double heldout_gap_a, double heldout_gap_b, int comparisons = 1);
 
 // A candidate's standing on one set of held-out items (the data's, or a resample's): its
 // pointwise log density, held-out gap, and whether it earns its parameters — its evidence over
-// the baseline is decisive.
+// the baseline is decisive among the `comparisons` candidates tried.
 struct Standing {
   std::vector<double> lpd;
   double heldout_gap = 0.0;
@@ -86,7 +92,8 @@ struct Standing {
 // A model's standing from its residuals `r` on every item (its σ from the items in `train`)
 // against the baseline's pointwise log density and held-out gap, on the held-out multiplicity `m`.
 Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m);
+                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m,
+                     int comparisons);
 
 // The verdict's index among `cs` (standings `st`, held-out multiplicity `m`), or −1 when none
 // earns its parameters: the simplest earning candidate (the most evidence among equals), unless

@@ -69,3 +69,11 @@ file(READ ${WORK}/selftest/cases.jsonl journal)
 if(NOT status8 EQUAL 2 OR NOT err8 MATCHES "cases.jsonl: the case slip_transient .*0123456789ab.*--mix-builds" OR NOT journal STREQUAL row)
   message(FATAL_ERROR "tribo gap selftest on another build's journal: expected status 2 naming --mix-builds and the journal untouched, got ${status8}: ${err8}")
 endif()
+
+# `tribo gap generate` with an effect the chosen generator does not write: status 2 naming the
+# option and the generator's reason, and no output folder.
+execute_process(COMMAND ${TRIBO} gap generate --kind slide_hold_slide --effect viscous_friction --out ${WORK}/out_generate
+                RESULT_VARIABLE status9 ERROR_VARIABLE err9)
+if(NOT status9 EQUAL 2 OR NOT err9 MATCHES "--effect viscous_friction .*slide_hold_slide" OR EXISTS ${WORK}/out_generate)
+  message(FATAL_ERROR "tribo gap generate, unknown effect: expected status 2 naming --effect and no output, got ${status9}: ${err9}")
+endif()

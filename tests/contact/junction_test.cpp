@@ -16,6 +16,7 @@
 #include "contact/reference/hertz.h"
 #include "contact/surface.h"
 #include "contact/tangential.h"
+#include "numerics/normal.h"
 
 namespace tribo::contact {
 namespace {
@@ -272,16 +273,6 @@ double hertz_load_N(double radius_m, double approach_m, double e_star_Pa) {
   return 4.0 / 3.0 * e_star_Pa * std::sqrt(radius_m) * std::pow(approach_m, 1.5);
 }
 
-// Φ⁻¹(u) of the standard normal by bisection on Φ(x) = ½ erfc(−x/√2), to round-off.
-double standard_normal_quantile(double u) {
-  double lo = -40.0, hi = 40.0;
-  for (int i = 0; i < 200 && hi - lo > 1e-15 * std::max(1.0, std::abs(lo)); ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (0.5 * std::erfc(-mid / std::numbers::sqrt2) < u ? lo : hi) = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 // GW (Proc. R. Soc. A 295 (1966) 300) is, by construction, the sum of independent Hertz contacts
 // over summits whose heights follow φ. N summits at the Gaussian quantiles z_i = σ_s Φ⁻¹((i + ½)/N)
 // (mean exactly 0: the mean summit plane) on the area N/η are such a surface, and their Hertz sum
@@ -295,7 +286,7 @@ TEST(GreenwoodWilliamson, GaussianIntegralsEqualTheHertzSumOverQuantileSummits) 
   const int n = 100000;
   std::vector<double> z(n);
   for (int i = 0; i < n / 2; ++i) {  // symmetric: Φ⁻¹(1 − u) = −Φ⁻¹(u)
-    z[n - 1 - i] = gw.summit_std_m * standard_normal_quantile((n - i - 0.5) / n);
+    z[n - 1 - i] = gw.summit_std_m * numerics::standard_normal_quantile((n - i - 0.5) / n);
     z[i] = -z[n - 1 - i];
   }
   const double per_area = gw.summit_density_per_m2 / n;  // the N summits cover N/η

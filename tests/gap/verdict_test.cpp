@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "gap/verdict.h"
+#include "numerics/normal.h"
 
 namespace tribo::gap {
 namespace {
@@ -113,6 +114,22 @@ TEST(Verdict, EvidenceIsTheSummedGainWithItsStandardErrorAndMustBeStrong) {
   EXPECT_FALSE(decisive({5.0, 3.0}, 0.06, 0.1));  // within two standard errors, and the gap not halved
   EXPECT_TRUE(decisive({5.0, 3.0}, 0.05, 0.1));   // resting on few items, but the gap halved
   EXPECT_EQ(evidence({1.0}, {0.0}, {0.0}).gain, 0.0);
+}
+
+// The best of K wrong candidates clears z standard errors by noise alone with probability
+// 1 − Φ(z)^K; z_K holds that at one comparison's Φ(−2) = 0.02275 (Šidák). Reference values
+// from Φ⁻¹ of (0.97725)^(1/K): K = 1 → 2, K = 8 → 2.762 (0.97725^(1/8) = 0.997128, between the
+// tabulated Φ(2.76) = 0.99711 and Φ(2.77) = 0.99720).
+TEST(Verdict, DecisiveThresholdGrowsWithTheCandidatesTriedAtAFixedFamilyFalseAlarmRate) {
+  EXPECT_NEAR(decisive_z(1), 2.0, 1e-12);
+  EXPECT_NEAR(decisive_z(8), 2.762, 1e-3);
+  for (int k : {1, 2, 8, 9, 30}) {
+    const double none_clear = std::pow(numerics::standard_normal_cdf(decisive_z(k)), k);
+    EXPECT_NEAR(1.0 - none_clear, numerics::standard_normal_cdf(-2.0), 1e-12) << k << " candidates";
+  }
+  // A control's best of eight: 4.0 ± 1.9 nats is 2.1 se — decisive alone, not as the best of eight.
+  EXPECT_TRUE(decisive({4.0, 1.9}, 0.0073, 0.0089, 1));
+  EXPECT_FALSE(decisive({4.0, 1.9}, 0.0073, 0.0089, 8));
 }
 
 // The verdict rule: the simplest earning candidate; a larger one only with decisive evidence over
