@@ -55,6 +55,7 @@ struct Model {
   rig::RigParameters rig;
   rig::FrictionModel friction;
   std::vector<std::string> missing_rig_keys;
+  std::vector<std::filesystem::path> input_files;  // read besides the config: a law table
 };
 
 Model load_model(const std::string& path) {
@@ -76,6 +77,7 @@ Model load_model(const std::string& path) {
   root.accept("drive");
   root.accept("run");
   root.finish();
+  m.input_files = root.input_files();
   return m;
 }
 
@@ -215,8 +217,12 @@ void run_diagnose(const DiagnoseArgs& args) {
     throw InputError(args.experiment + ": " + e.what());
   }
   progress.done();
-  // The model config is the config; the experiment bundle is named beside it.
-  nlohmann::json provenance = provenance_json(args.model);
+  // The model config is the config; the experiment bundle is named beside it, and its files (and
+  // the test bundle's) are among the inputs with the model's law table.
+  InputFiles inputs = model.input_files;
+  inputs.insert(inputs.end(), bundle.files.begin(), bundle.files.end());
+  if (test) inputs.insert(inputs.end(), test->files.begin(), test->files.end());
+  nlohmann::json provenance = provenance_json(args.model, inputs);
   provenance["experiment"] = std::filesystem::absolute(args.experiment).string();
   provenance["seed"] = args.seed;
   nlohmann::json j = report_json(d);
@@ -321,7 +327,7 @@ void run_selftest(const SelftestArgs& args) {
   const std::vector<gap::SelftestRow> finished = finished_rows(dir / "cases.jsonl", args.quick);
   // A resumed set is one build's unless told otherwise: rows diagnosed by another commit (or by a
   // build that did not record it) would mix two methods in one confusion matrix.
-  const std::string commit = provenance_json(std::filesystem::path()).at("git_commit").get<std::string>();
+  const std::string commit = git_commit();
   for (const gap::SelftestRow& r : finished)
     if (!args.mix_builds && r.git_commit != commit &&
         std::any_of(cases.begin(), cases.end(), [&](const gap::SelftestCase& c) { return gap::same_case(r.c, c); }))

@@ -48,7 +48,7 @@ void run_reynolds(const ReynoldsRun& run, const Args& args, const std::string& h
   const ReynoldsSolve solved = solve_reynolds_run(run);
   const lub::ReynoldsSolution& s = solved.solution;
   nlohmann::json j = solved.summary;
-  j["provenance"] = provenance_json(args.config, hash);
+  j["provenance"] = provenance_json(args.config, hash, run.input_files);
   if (run.seed) j["provenance"]["seed"] = *run.seed;
   if (!args.summary_only) {
     j["fields"] = {{"pressure_Pa", "pressure_Pa.npy"}, {"fill_fraction", "fill_fraction.npy"}, {"gap_m", "gap_m.npy"},

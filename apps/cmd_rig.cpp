@@ -32,7 +32,7 @@ void run_rig(const RigRun& run, const RigArgs& args, const std::string& hash, co
   const auto& events = result.events;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  nlohmann::json provenance = provenance_json(args.config, hash);
+  nlohmann::json provenance = provenance_json(args.config, hash, run.input_files);
   provenance["seed"] = run.seed;  // the instrument's noise
   const rig::RunObservables obs =
       rig::summarise(run.rig, samples, events, run.analysis_start_fraction * summary.end_time_s);

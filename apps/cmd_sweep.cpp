@@ -126,7 +126,9 @@ void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::
       throw InputError(dir.string() + ": holds a sweep of a different spec or base config (sweep.json); "
                        "resume only with the same files, or use another --out");
   } else {
-    j = provenance_json(spec.spec_file, spec_hash);
+    InputFiles step_configs;  // the base config and, for a chain, the rig's
+    for (const SweepStep& s : spec.steps) step_configs.push_back(s.config);
+    j = provenance_json(spec.spec_file, spec_hash, step_configs);
     j["spec_hash"] = spec_hash;
     j["base_config"] = spec.base_config.string();
     j["base_config_hash"] = base_hash;

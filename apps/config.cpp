@@ -32,7 +32,8 @@ toml::table parse_toml_text(std::string_view text, const std::string& source) {
 }
 
 ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string prefix)
-    : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)) {}
+    : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)),
+      input_files_(std::make_shared<std::vector<std::filesystem::path>>()) {}
 
 std::string ConfigTable::dotted(const std::string& key) const {
   return prefix_.empty() ? key : prefix_ + "." + key;
@@ -131,6 +132,12 @@ std::string ConfigTable::required_string(const std::string& key) {
   return string(key, "");
 }
 
+std::filesystem::path ConfigTable::input_file(const std::string& key) {
+  const std::filesystem::path path = std::filesystem::path(file_).parent_path() / required_string(key);
+  input_files_->push_back(path);
+  return path;
+}
+
 std::string ConfigTable::choice(const std::string& key, const std::string& fallback,
                                 const std::vector<std::string>& choices) {
   std::string value = string(key, fallback);
@@ -173,7 +180,9 @@ std::optional<ConfigTable> ConfigTable::table(const std::string& key) {
   if (!n) return std::nullopt;
   const toml::table* t = n->as_table();
   if (!t) fail(key, "expected a table");
-  return ConfigTable(*t, file_, dotted(key));
+  ConfigTable sub(*t, file_, dotted(key));
+  sub.input_files_ = input_files_;
+  return sub;
 }
 
 void ConfigTable::finish() const {

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -46,6 +47,11 @@ class ConfigTable {
   bool boolean(const std::string& key, bool fallback);
   std::string string(const std::string& key, const std::string& fallback);
   std::string required_string(const std::string& key);
+  // A file the config names (a required string, relative to the config's folder): the resolved
+  // path, recorded among input_files() so that provenance can hash what the run read.
+  std::filesystem::path input_file(const std::string& key);
+  // The files input_file() resolved, in this table and every table() taken from it or its root.
+  const std::vector<std::filesystem::path>& input_files() const { return *input_files_; }
   // One of `choices`; anything else is an error listing them.
   std::string choice(const std::string& key, const std::string& fallback,
                      const std::vector<std::string>& choices);
@@ -75,6 +81,7 @@ class ConfigTable {
   std::string file_;
   std::string prefix_;
   std::set<std::string> read_;
+  std::shared_ptr<std::vector<std::filesystem::path>> input_files_;  // shared with the sub-tables
 };
 
 // Runs `build` (a library constructor or validator) and turns its std::invalid_argument into an

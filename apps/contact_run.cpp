@@ -61,9 +61,7 @@ ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path&
     run.gap0_m = contact::gap_from_heights(z);
   } else {
     surface->refuse_renamed("path", "surface.file");
-    const std::string rel = surface->required_string("file");
-    const std::filesystem::path file = std::filesystem::path(rel).is_absolute() ? std::filesystem::path(rel)
-                                                                                : path.parent_path() / rel;
+    const std::filesystem::path file = surface->input_file("file");
     const double scale = surface->number("height_scale", 1.0, Range::positive);
     const contact::Topography topo = input_guard(*surface, "file", [&] { return contact::read_topography(file, scale); });
     double lx = topo.lx_m, ly = topo.ly_m;
@@ -131,6 +129,7 @@ ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path&
     root.accept("junction");
   }
   root.finish();
+  run.input_files = root.input_files();
   return run;
 }
 
@@ -139,7 +138,7 @@ void apply_thread_count(int threads) {
 }
 
 nlohmann::json contact_provenance(const std::filesystem::path& config, const ContactRun& run, const std::string& hash) {
-  nlohmann::json p = provenance_json(config, hash);
+  nlohmann::json p = provenance_json(config, hash, run.input_files);
   if (run.seed) p["seed"] = *run.seed;
   return p;
 }

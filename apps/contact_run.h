@@ -8,6 +8,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <toml++/toml.h>
@@ -36,6 +37,7 @@ struct ContactRun {
   contact::NormalContactOptions solver;
   int threads = 0;
   std::optional<std::uint64_t> seed;  // of a generated (Gaussian) surface
+  std::vector<std::filesystem::path> input_files;  // read besides the config: the topography
   // junction subcommand
   double f_over_w_max = 0.5;
   int junction_points = 11;

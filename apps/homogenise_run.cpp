@@ -16,13 +16,17 @@
 namespace tribo::cli {
 namespace {
 
-// A cached patch is reused only when it was made from the same inputs (the config's hash).
-std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& file, const std::string& hash) {
+// A cached patch is reused only when the same build made it from the same inputs: its key is the
+// config's hash and the build's commit (git_commit()), so a newer build solves the patches again
+// rather than tabulate an older build's under its own provenance.
+std::string cache_key(const std::string& config_hash) { return config_hash + "@" + git_commit(); }
+
+std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& file, const std::string& key) {
   std::ifstream in(file);
   if (!in) return std::nullopt;
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
-    if (j.at("config_hash").get<std::string>() != hash) return std::nullopt;
+    if (j.at("cache_key").get<std::string>() != key) return std::nullopt;
     return homogenise::patch_from_json(j.at("patch"));
   } catch (const std::exception&) {
     return std::nullopt;  // a torn or foreign file: solve the patch again
@@ -68,13 +72,13 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   std::vector<std::optional<homogenise::PatchResult>> cached;
   int reused = 0;
   for (int k = 0; k < o.realisations; ++k) {
-    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), hash));
+    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), cache_key(hash)));
     reused += cached.back() ? 1 : 0;
   }
   Progress progress("homogenise: realisations", o.realisations);
   for (int k = 0; k < reused; ++k) progress.step("cached");
   const auto patch_results = homogenise::solve_patches(o, cached, [&](int k, const homogenise::PatchResult& p) {
-    const nlohmann::json j{{"config_hash", hash}, {"patch", homogenise::to_json(p)}};
+    const nlohmann::json j{{"cache_key", cache_key(hash)}, {"patch", homogenise::to_json(p)}};
     write_file_atomically(patches / ("realisation-" + std::to_string(k) + ".json"), j.dump() + "\n");
     progress.step("seed " + std::to_string(p.seed));
   });

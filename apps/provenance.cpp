@@ -40,12 +40,14 @@ std::string config_hash(const std::filesystem::path& config) {
   return bytes_hash(std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()));
 }
 
+std::string git_commit() { return TRIBO_GIT_COMMIT; }
+
 void record_command_line(int argc, const char* const* argv) {
   std::lock_guard lock(command_line_mutex);
   command_line.assign(argv, argv + argc);
 }
 
-nlohmann::json provenance_json(const std::filesystem::path& config, const std::string& hash) {
+nlohmann::json provenance_json(const std::filesystem::path& config, const std::string& hash, const InputFiles& inputs) {
   const std::time_t now = std::time(nullptr);
   std::tm utc{};
   gmtime_r(&now, &utc);
@@ -55,15 +57,21 @@ nlohmann::json provenance_json(const std::filesystem::path& config, const std::s
                    {"git_commit", TRIBO_GIT_COMMIT},
                    {"config", config.empty() ? nlohmann::json(nullptr) : nlohmann::json(std::filesystem::absolute(config).string())},
                    {"config_hash", hash.empty() ? nlohmann::json(nullptr) : nlohmann::json(hash)},
+                   {"inputs", nlohmann::json::array()},
                    {"date_utc", date},
                    {"threads", omp_get_max_threads()}};
+  auto listed = [&](const std::filesystem::path& p, const std::string& h) {
+    j["inputs"].push_back({{"path", std::filesystem::absolute(p).lexically_normal().string()}, {"hash", h}});
+  };
+  if (!config.empty()) listed(config, hash);
+  for (const std::filesystem::path& p : inputs) listed(p, config_hash(p));
   std::lock_guard lock(command_line_mutex);
   if (!command_line.empty()) j["command_line"] = command_line;
   return j;
 }
 
-nlohmann::json provenance_json(const std::filesystem::path& config) {
-  return provenance_json(config, config.empty() ? std::string() : config_hash(config));
+nlohmann::json provenance_json(const std::filesystem::path& config, const InputFiles& inputs) {
+  return provenance_json(config, config.empty() ? std::string() : config_hash(config), inputs);
 }
 
 }  // namespace tribo::cli

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -18,14 +19,24 @@ std::string config_hash(const std::filesystem::path& config);
 // The same hash of bytes in memory: a config that a sweep's point runs without writing it.
 std::string bytes_hash(std::string_view bytes);
 
+// The files a run read besides its config (a topography, a law table, a drive table, a bundle's
+// files), for provenance_json's "inputs".
+using InputFiles = std::vector<std::filesystem::path>;
+
 // {"tribo_version", "git_commit", "command_line" (when recorded), "config", "config_hash",
-// "date_utc", "threads"}. `git_commit` is the commit the binary was built from, with "+dirty"
-// when tracked files had changes.
-nlohmann::json provenance_json(const std::filesystem::path& config, const std::string& hash);
+// "inputs", "date_utc", "threads"}. `git_commit` is the commit the binary was built from, with
+// "+dirty" when tracked files had changes. "inputs" lists {"path", "hash"} of the config (first,
+// when there is one) and of every file in `inputs`, the hash over the file's bytes
+// (config_hash), so that a result names the content it was computed from, not only its paths.
+nlohmann::json provenance_json(const std::filesystem::path& config, const std::string& hash, const InputFiles& inputs = {});
 
 // As above, hashing `config`; an empty path (a command without a config file) gives null config
 // and config_hash.
-nlohmann::json provenance_json(const std::filesystem::path& config);
+nlohmann::json provenance_json(const std::filesystem::path& config, const InputFiles& inputs = {});
+
+// The commit the binary was built from ("+dirty" when tracked files had changes): provenance_json's
+// "git_commit", and the key a cache or journal keeps so that one build's results are not taken for another's.
+std::string git_commit();
 
 // Records argv for provenance_json's "command_line" (called once, from main).
 void record_command_line(int argc, const char* const* argv);

@@ -86,8 +86,7 @@ ReynoldsRun load_reynolds_run(const toml::table& doc, const std::filesystem::pat
     run.reference_load_N = lub::squeeze_film_load_N(eta, radius, gap, rate);
     run.geometry.update({{"radius_m", radius}, {"gap_m", gap}, {"gap_rate_m_per_s", rate}});
   } else if (run.kind == "gap_file") {
-    const std::string file = g->required_string("file");
-    const std::filesystem::path gap_path = path.parent_path() / file;
+    const std::filesystem::path gap_path = g->input_file("file");
     const double scale = g->number("height_scale", 1.0, Range::positive);
     const double dx = g->required_number("dx_m", Range::positive);
     const double dy = g->number("dy_m", dx, Range::positive);
@@ -167,6 +166,7 @@ ReynoldsRun load_reynolds_run(const toml::table& doc, const std::filesystem::pat
   run.problem.sliding_speed_m_per_s = speed;
   run.problem.cavitation = cavitation;
   input_guard(root, "geometry", [&] { lub::validate(run.problem); return 0; });
+  run.input_files = root.input_files();
   return run;
 }
 

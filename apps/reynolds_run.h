@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
@@ -24,6 +25,7 @@ struct ReynoldsRun {
   nlohmann::json geometry;
   std::optional<double> reference_load_N;  // Appendix III for parallel discs
   std::optional<std::uint64_t> seed;       // of a rough pair's lower surface (the upper's is seed + 1)
+  std::vector<std::filesystem::path> input_files;  // read besides the config: a gap file
 };
 
 // Reads and checks `path` ([geometry] parallel_discs | gap_file | rough_pair, [lubricant], [motion],

@@ -60,7 +60,7 @@ rig::Drive read_drive(ConfigTable* t, std::optional<double> speed) {
     std::vector<double> speeds = t->number_array("speeds_m_per_s", Range::non_negative);
     if (t->has("file")) {
       if (!times.empty() || !speeds.empty()) t->fail("file", "give the drive table either inline or as a file, not both");
-      const std::filesystem::path file = std::filesystem::path(t->file()).parent_path() / t->string("file", "");
+      const std::filesystem::path file = t->input_file("file");
       input_guard(*t, "file", [&] { read_drive_table_csv(file, times, speeds); return 0; });
     }
     if (times.empty()) t->fail("times_s", "is required for kind = \"" + kind + "\" (or file = \"drive.csv\")");
@@ -79,9 +79,8 @@ rig::FrictionModel read_friction_model(ConfigTable* t, std::optional<double> nor
   if (law != "homogenised") model.baseline.mu_s = t->number("mu_s", model.baseline.mu_s, Range::non_negative);
   if (law == "homogenised") {
     // table = "law.json" (relative to the config's folder), written by `tribo homogenise`.
-    const std::string table = t->required_string("table");
+    const std::filesystem::path path = t->input_file("table");
     if (!normal_load_N) t->fail("law", "\"homogenised\" needs the rig's normal load, which this command does not provide");
-    const std::filesystem::path path = std::filesystem::path(t->file()).parent_path() / table;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(path, ec)) t->fail("table", "cannot open '" + path.string() + "' (missing or not a regular file)");
     model.baseline.homogenised = input_guard(*t, "table", [&] { return rig::load_homogenised_base(path, *normal_load_N); });
@@ -160,6 +159,7 @@ RigRun load_rig_run(const toml::table& doc, const std::filesystem::path& path) {
     t->finish();
   }
   root.finish();
+  run.input_files = root.input_files();
   return run;
 }
 

@@ -36,6 +36,7 @@ struct RigRun {
   std::uint64_t seed = 1;                // instrument noise
   rig::SimulationOptions options;
   double analysis_start_fraction = rig::kStartupFraction;  // observables use the run from this fraction of duration on
+  std::vector<std::filesystem::path> input_files;  // read besides the config: the law table, the drive table
 };
 
 // Reads and validates a whole config; throws InputError ("file: key 'a.b': reason") on bad input.

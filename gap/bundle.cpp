@@ -105,6 +105,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
 
   const fs::path toml_file = dir / "experiment.toml";
   if (present(toml_file)) {
+    b.files.push_back(toml_file);
     toml::table doc;
     try {
       doc = toml::parse_file(toml_file.string());
@@ -144,6 +145,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
 
   const fs::path static_file = dir / "static_friction.csv";
   if (present(static_file)) {
+    b.files.push_back(static_file);
     const rig::CsvTable t = rig::read_csv_table(static_file, {"phi_dot_per_s", "mu_s"}, b.warnings);
     const int cp = t.required("phi_dot_per_s"), cm = t.required("mu_s");
     for (const auto& [line, row] : t.rows) {
@@ -156,6 +158,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
 
   const fs::path runs_file = dir / "runs.csv";
   if (present(runs_file)) {
+    b.files.push_back(runs_file);
     const rig::CsvTable t = rig::read_csv_table(runs_file, {"run_id", "v_m_per_s", "file"}, b.warnings);
     const int ci = t.required("run_id"), cv = t.required("v_m_per_s"), cf = t.required("file");
     std::set<std::string> ids;
@@ -176,6 +179,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
       std::error_code ec;
       if (!fs::exists(trace_file, ec)) rig::fail_at(runs_file, line, "trace file '" + r.file + "' does not exist");
       if (!fs::is_regular_file(trace_file, ec)) rig::fail_at(runs_file, line, "trace file '" + r.file + "' is not a regular file");
+      b.files.push_back(trace_file);
       r.trace = read_trace(trace_file, b.warnings);
       if (!r.trace.has_drive_history() && r.trace.xdot_m_per_s.empty() && r.trace.x_m.empty() && !(r.v_m_per_s > 0.0))
         rig::fail_at(runs_file, line, "driven speed must be positive");
@@ -185,6 +189,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
 
   const fs::path regimes_file = dir / "regimes.csv";
   if (present(regimes_file)) {
+    b.files.push_back(regimes_file);
     const rig::CsvTable t = rig::read_csv_table(regimes_file, {"v_m_per_s", "regime", "amplitude_m", "frequency_rad_per_s"}, b.warnings);
     const int cv = t.required("v_m_per_s"), cr = t.required("regime");
     const int ca = t.column("amplitude_m"), cw = t.column("frequency_rad_per_s");

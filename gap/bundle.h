@@ -67,6 +67,7 @@ struct ExperimentBundle {
   std::vector<Run> runs;
   std::vector<RegimePoint> regimes;
   std::vector<std::string> warnings;  // unknown columns and keys, one line each
+  std::vector<std::filesystem::path> files;  // every file read_bundle read, in the order it read them
 };
 
 // The [rig] constants a bundle may state an uncertainty for. The normal load is not among them:

@@ -575,6 +575,27 @@ TEST(Comparison, SlideHoldSlideFindsTheHoldsAndThePeakAfterEach) {
   EXPECT_NEAR(peaks[1], 0.01 * std::log1p(30.0), 1e-12);
 }
 
+// The split (even units train, odd held out) alternates within each observable of a drive
+// history: the first hold's peak trains and the second is held out, and so do the slides' levels
+// — numbered in the record's order, slide, hold, slide, ..., every peak was held out and no fit
+// saw a hold.
+TEST(Comparison, SlideHoldSlideSplitPutsEveryObservableOnBothSides) {
+  ExperimentBundle b;
+  b.kind = "slide_hold_slide";
+  b.runs.push_back(slide_hold_slide_run());
+  const Comparison c(b, rig::RigParameters{});
+  std::map<std::string, std::vector<bool>> held;  // per observable, in the record's order
+  std::set<int> units;
+  for (const Item& it : c.items()) {
+    held[it.observable].push_back(it.unit % 2 == 1);
+    units.insert(it.unit);
+  }
+  EXPECT_EQ(held["peak_after_hold"], (std::vector<bool>{false, true}));
+  EXPECT_EQ(held["steady_mu"], (std::vector<bool>{false, true, false}));
+  EXPECT_EQ(c.units(), static_cast<int>(units.size()));  // five: three levels, two peaks
+  EXPECT_EQ(c.units(), 5);
+}
+
 // The kind says which analysis a record gets: a drive that changes speed in a pin-on-disc bundle,
 // or a slide-hold-slide bundle with no hold, is refused, naming the run and the key to set.
 TEST(Comparison, TheKindMustMatchTheDriveRecord) {
