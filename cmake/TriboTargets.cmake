@@ -33,6 +33,11 @@ endfunction()
 # TIMEOUT overrides ctest's --timeout for a test known to run long; COST orders them (below).
 function(tribo_add_test name)
   cmake_parse_arguments(ARG "" "TIMEOUT;COST" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  # Without TRIBO_SLOW_TESTS (the sanitizer build, which runs `-LE slow` anyway) a slow test's
+  # executable is not even built.
+  if(ARG_LABELS STREQUAL "slow" AND NOT TRIBO_SLOW_TESTS)
+    return()
+  endif()
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main)
   # gtest_discover_tests cannot pass a list through PROPERTIES: one label per target.
