@@ -59,6 +59,25 @@ void write_area_csv(const std::filesystem::path& path, const homogenise::PinTabl
 
 }  // namespace
 
+StribeckCurve stribeck_curve(const std::vector<double>& speeds_m_per_s, const std::function<rig::SteadySliding(double)>& solve) {
+  StribeckCurve curve;
+  for (double u : speeds_m_per_s) {
+    rig::SteadySliding s;
+    try {
+      s = solve(u);
+    } catch (const std::out_of_range& e) {
+      curve.unconverged.push_back({{"what", "stribeck point"}, {"U_m_per_s", u}, {"reason", std::string("the curve stops here: ") + e.what()}});
+      break;
+    }
+    if (!s.converged) {
+      curve.unconverged.push_back({{"what", "stribeck point"}, {"U_m_per_s", u}, {"reason", s.message}});
+      continue;
+    }
+    curve.points.push_back(s);
+  }
+  return curve;
+}
+
 nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::path& config,
                                const std::filesystem::path& out, bool plots) {
   make_output_dir(out);
@@ -94,18 +113,11 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
 
   // The Stribeck curve the rig's law implies at the pin's load: steady sliding at each speed.
   const rig::HomogenisedBase base(rig::law_table_from_json(law, (dir / "law.json").string()), o.pin.normal_load_N);
-  std::vector<rig::SteadySliding> stribeck;
+  const StribeckCurve curve = stribeck_curve(run.speeds_m_per_s, [&](double u) { return rig::steady_sliding(base, u); });
+  const std::vector<rig::SteadySliding>& stribeck = curve.points;
   nlohmann::json sj = nlohmann::json::array();
-  for (double u : run.speeds_m_per_s) {
-    rig::SteadySliding s;
-    try {
-      s = rig::steady_sliding(base, u);
-    } catch (const std::out_of_range& e) {
-      std::fprintf(stderr, "tribo: warning: Stribeck curve stops at %.4g m/s: %s\n", u, e.what());
-      break;
-    }
-    stribeck.push_back(s);
-    sj.push_back({{"U_m_per_s", u},
+  for (const rig::SteadySliding& s : stribeck) {
+    sj.push_back({{"U_m_per_s", s.speed_m_per_s},
                   {"mu", s.mu},
                   {"fluid_share", s.fluid_share},
                   {"separation_m", s.separation_m},
@@ -113,6 +125,11 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
                   {"regime", rig::to_string(s.regime)}});
   }
   law["stribeck"] = sj;
+  // Everything left out, with why: the Stribeck points above, and the table's separations without
+  // a converged solve (issue 37's interface; empty when all converged).
+  law["unconverged"] = curve.unconverged;
+  for (const auto& h : law["table"]["dropped_separations_m"])
+    law["unconverged"].push_back({{"what", "law table separation"}, {"separation_m", h}, {"reason", "no converged solve at this separation"}});
   law["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   int bem_iterations = 0;
   double bem_s = 0, flow_s = 0, lift_s = 0;  // summed over realisations (CPU-thread seconds)
@@ -133,6 +150,9 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   if (!law["table"]["dropped_separations_m"].empty())
     std::fprintf(stderr, "tribo: warning: %zu separations left out of the law table (no converged solve there): %s\n",
                  law["table"]["dropped_separations_m"].size(), law["table"]["dropped_separations_m"].dump().c_str());
+  for (const auto& p : curve.unconverged)
+    std::fprintf(stderr, "tribo: warning: Stribeck point at %.4g m/s left out: %s\n", p["U_m_per_s"].get<double>(),
+                 p["reason"].get<std::string>().c_str());
   if (cells.unconverged > 0 || pin.reynolds_unconverged > 0)
     std::fprintf(stderr, "tribo: warning: %d cell and %d pin-face solves did not converge (left out; see law.json)\n",
                  cells.unconverged, pin.reynolds_unconverged);

@@ -4,12 +4,25 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "apps/homogenise_config.h"
+#include "rig/steady_sliding.h"
 
 namespace tribo::cli {
+
+// The Stribeck curve of a law at the pin's load: `solve` (rig::steady_sliding on the law) at each
+// speed in turn. A point that did not converge is left out of `points` and listed in
+// `unconverged` ({"what", "U_m_per_s", "reason"}), never tabulated or judged; the curve stops at the
+// first speed where the film would leave the table (listed too).
+struct StribeckCurve {
+  std::vector<rig::SteadySliding> points;
+  nlohmann::json unconverged = nlohmann::json::array();
+};
+StribeckCurve stribeck_curve(const std::vector<double>& speeds_m_per_s, const std::function<rig::SteadySliding(double)>& solve);
 
 // `run` was read from `config` (its bytes' hash keys the patch cache and goes into provenance).
 // Returns the law file's JSON as written to out/law.json.
