@@ -920,6 +920,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
           const double t_hold = plan.step_times_s[k + 1] - plan.step_times_s[k];
           add("peak_after_hold", 0, plan.label + ", after a " + numerics::fmt(t_hold, "%.3g") + " s hold", "stick_slip",
               plan.step_speeds_m_per_s[k + 1], new_unit(UnitKey::own("peak_after_hold")), f.at(peak_key), peak_key, noise);
+          items_.back().hold_s = t_hold;
         }
         if (k == 0) continue;
         const auto& edges = plan.step_bin_edges_m[k - 1];

@@ -76,6 +76,7 @@ struct Item {
   double noise = 0.0;
   int plan = 0;         // the simulation that produces it
   std::string key;      // its name in that simulation's analysis
+  double hold_s = 0.0;  // peak_after_hold: the hold before the peak (0 for every other observable)
 };
 
 // One simulation that reproduces one measurement.

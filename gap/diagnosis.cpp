@@ -770,6 +770,17 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       start.model.set("slip_transient", "decay_distance_m", step.decay_distance_m);
       read_off = true;
     }
+    // A slide-hold-slide test shows the healing directly: the re-slide peaks grow as
+    // b ln(1 + t_h V/D_c) with the hold (calibration.h). The ageing law's fit starts there, with
+    // the peaks all the healing's (μs = μk).
+    if (effects == std::vector<std::string>{"rate_and_state"}) {
+      if (const Healing h = healing_from_data(d.items, train); std::isfinite(h.b)) {
+        start.model.baseline.mu_s = start.model.baseline.mu_k;
+        start.model.set("rate_and_state", "b", std::min(h.b, 0.05));
+        start.model.set("rate_and_state", "decay_distance_m", h.decay_distance_m);
+        read_off = true;
+      }
+    }
     const std::vector<FitParameter> space = space_of(effects, false);
     const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, search_base.size(), Resolution::search, read_off);
     Candidate c = candidate_from(effects, space, r);
