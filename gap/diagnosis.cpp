@@ -881,6 +881,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       standing.push_back(standing_of(d.items, c.residuals, item_sd, train, baseline_lpd, d.baseline_heldout.gap, held_m, comparisons));
     const Decision decision = decide(d.candidates, standing, held_m, o, d.baseline_heldout.gap, d.verdict.noise_floor);
     if (decision.index >= 0) chosen = &d.candidates[static_cast<std::size_t>(decision.index)];
+    for (int k : indistinguishable(standing, decision.index, held_m))
+      d.verdict.indistinguishable.push_back(verdict_name(d.candidates[static_cast<std::size_t>(k)].effects));
     d.verdict.unexplained = decision.unexplained;
   }
   d.verdict.heldout_gap_before = d.baseline_heldout.gap;

@@ -88,6 +88,7 @@ struct Verdict {
   double confidence = 0.0;
   double confidence_fixed_fits = 0.0;  // the same bootstrap with every fit held where it is
   std::vector<std::string> refitted;   // refitted in the resamples: "baseline" and the leaders
+  std::vector<std::string> indistinguishable;  // earning candidates the held-out data do not tell from the verdict's
   std::string conclusion;            // one sentence a tribologist can act on
 };
 

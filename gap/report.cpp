@@ -62,6 +62,9 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   floor_text, 100.0 * (1.0 - d.verdict.heldout_gap_after / std::max(d.verdict.heldout_gap_before, 1e-300)),
                   confidence_text(d.verdict.confidence).c_str(), top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
                   top ? 100.0 * top->share : 0.0);
+    if (!d.verdict.indistinguishable.empty())
+      return std::string(buf) + " The held-out data do not tell it from " + join(d.verdict.indistinguishable, ", ") +
+             ": a test where they differ would decide.";
   } else if (d.verdict.unexplained) {
     std::snprintf(buf, sizeof buf,
                   "Unexplained: %s leaves a held-out gap of %.3g%s, and no catalogue "
@@ -134,6 +137,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"confidence", finite_or_null(d.verdict.confidence)},
                   {"confidence_fixed_fits", finite_or_null(d.verdict.confidence_fixed_fits)},
                   {"refitted_in_resamples", d.verdict.refitted},
+                  {"indistinguishable_from", d.verdict.indistinguishable},
                   {"noise_floor", d.verdict.noise_floor},
                   {"remaining_gap_in_floors", finite_or_null(d.verdict.remaining_floors)},
                   {"remaining_where", d.verdict.remaining_where},

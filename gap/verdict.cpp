@@ -171,6 +171,19 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
   return static_cast<int>(chosen);
 }
 
+std::vector<int> indistinguishable(const std::vector<Standing>& st, int chosen, const Multiplicity& m) {
+  std::vector<int> out;
+  if (chosen < 0) return out;
+  const Standing& v = st[static_cast<std::size_t>(chosen)];
+  for (std::size_t i = 0; i < st.size(); ++i) {
+    if (static_cast<int>(i) == chosen || !st[i].earns) continue;
+    if (!decisive(evidence(st[i].lpd, v.lpd, m), st[i].heldout_gap, v.heldout_gap) &&
+        !decisive(evidence(v.lpd, st[i].lpd, m), v.heldout_gap, st[i].heldout_gap))
+      out.push_back(static_cast<int>(i));
+  }
+  return out;
+}
+
 Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m, const DiagnosisOptions& o,
                 double gap_before, double floor) {
   const int k = verdict_index(cs, st, m);

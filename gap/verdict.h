@@ -100,6 +100,11 @@ Standing standing_of(const std::vector<Item>& items, const std::vector<double>& 
 // one with more parameters has decisive evidence over it.
 int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m);
 
+// The earning candidates the held-out data do not tell from the verdict's (index `chosen`): neither
+// has decisive evidence over the other. Named beside the verdict, so that a near-tie (two film
+// mechanisms at 38 ± 15 and 40 ± 5 nats) reads as one and a reader knows what test would decide.
+std::vector<int> indistinguishable(const std::vector<Standing>& st, int chosen, const Multiplicity& m);
+
 // The verdict rule with the open world: `index` ≥ 0 names a candidate; else `unexplained` when
 // the held-out gap lies above unexplained_floors noise floors and no earning candidate halves its
 // excess over the floor, else "none". Without a floor nothing is called unexplained.

@@ -162,6 +162,17 @@ TEST(Verdict, RuleNamesTheSimplestEarnerAndOwnsUpToWhatItCannotExplain) {
   EXPECT_FALSE(decide(cs, {st(0.0, 0.2, false), st(0.0, 0.2, false)}, m, o, 0.2, 0.0).unexplained);
 }
 
+// Beside the verdict, the earning candidates it cannot be told from: 2 nats apart on four items is
+// no decision either way; 4 nats is (b over a), so a is not named beside b; one that does not
+// earn is never named.
+TEST(Verdict, CandidatesWithoutDecisiveEvidenceEitherWayAreNamedBesideTheVerdict) {
+  const Multiplicity m{1.0, 1.0, 1.0, 1.0};
+  const auto st = [](double lpd, double gap, bool earns) { return Standing{std::vector<double>(4, lpd), gap, earns, {4.0 * lpd, 0.0}}; };
+  EXPECT_EQ(indistinguishable({st(2.0, 0.05, true), st(2.5, 0.04, true), st(2.4, 0.04, false)}, 0, m), std::vector<int>{1});
+  EXPECT_TRUE(indistinguishable({st(2.0, 0.05, true), st(3.0, 0.04, true)}, 1, m).empty());
+  EXPECT_TRUE(indistinguishable({st(2.0, 0.05, true), st(2.5, 0.04, true)}, -1, m).empty());  // "none": nothing to tie with
+}
+
 TEST(Verdict, LocalisationSharesSumToOneLargestFirstWithTheWorstItem) {
   const std::vector<Item> items{item("mu_peak", 0, "slip onset"), item("mu_peak", 1, "slip onset"), item("period_s", 2)};
   const std::vector<Localization> l = localize(items, {0.1, 0.3, 0.2});
