@@ -4,13 +4,8 @@
 # writes is then an input of a rig run, listed with its hash. Inputs: TRIBO, WORK.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-file(WRITE ${WORK}/hom.toml
-  "[surface]\nkind = \"gaussian\"\nspectrum = \"self_affine\"\nrms_height_m = 4.35e-7\nhurst = 0.8\n"
-  "rolloff_wavelength_m = 6.25e-5\ncutoff_wavelength_m = 1.5625e-5\nseed = 1\n"
-  "[domain]\nsize_m = 2.5e-4\ngrid = 32\n"
-  "[pin]\nshape = \"flat\"\nradius_m = 4.7625e-3\nnormal_load_N = 93.86\n"
-  "[speeds]\nmin_m_per_s = 1e-5\nmax_m_per_s = 0.1\ncount = 3\n"
-  "[homogenise]\nrealisations = 2\n")
+include(${CMAKE_CURRENT_LIST_DIR}/tiny_homogenise.cmake)
+write_tiny_homogenise_config(${WORK}/hom.toml 2 3)
 function(reused expected what)
   execute_process(COMMAND ${TRIBO} homogenise ${WORK}/hom.toml --out ${WORK}/out --no-plots RESULT_VARIABLE status ERROR_VARIABLE err)
   if(NOT status EQUAL 0)

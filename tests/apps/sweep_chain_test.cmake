@@ -3,13 +3,8 @@
 # steps' JSON files. Inputs: TRIBO, WORK.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-file(WRITE ${WORK}/hom.toml
-  "[surface]\nkind = \"gaussian\"\nspectrum = \"self_affine\"\nrms_height_m = 4.35e-7\nhurst = 0.8\n"
-  "rolloff_wavelength_m = 6.25e-5\ncutoff_wavelength_m = 1.5625e-5\nseed = 1\n"
-  "[domain]\nsize_m = 2.5e-4\ngrid = 32\n"
-  "[pin]\nshape = \"flat\"\nradius_m = 4.7625e-3\nnormal_load_N = 93.86\n"
-  "[speeds]\nmin_m_per_s = 1e-5\nmax_m_per_s = 0.1\ncount = 5\n"
-  "[homogenise]\nrealisations = 1\n")
+include(${CMAKE_CURRENT_LIST_DIR}/tiny_homogenise.cmake)
+write_tiny_homogenise_config(${WORK}/hom.toml 1 5)
 # The rig config's own table path is a placeholder: the chain points it at the point's law.json.
 file(WRITE ${WORK}/rig.toml "[rig]\ndrive_speed_m_per_s = 1e-2\n[friction]\nlaw = \"homogenised\"\ntable = \"nowhere/law.json\"\n[run]\nduration_s = 2.0\n")
 file(WRITE ${WORK}/spec.toml "[base]\ncommand = \"homogenise+rig\"\nconfig = \"hom.toml\"\nrig_config = \"rig.toml\"\n"

@@ -1,0 +1,11 @@
+# A homogenisation small enough for a CLI test (a 32² patch of the thesis-like self-affine surface
+# under a flat pin): write_tiny_homogenise_config(FILE REALISATIONS SPEEDS) writes its config.
+function(write_tiny_homogenise_config file realisations speeds)
+  file(WRITE ${file}
+    "[surface]\nkind = \"gaussian\"\nspectrum = \"self_affine\"\nrms_height_m = 4.35e-7\nhurst = 0.8\n"
+    "rolloff_wavelength_m = 6.25e-5\ncutoff_wavelength_m = 1.5625e-5\nseed = 1\n"
+    "[domain]\nsize_m = 2.5e-4\ngrid = 32\n"
+    "[pin]\nshape = \"flat\"\nradius_m = 4.7625e-3\nnormal_load_N = 93.86\n"
+    "[speeds]\nmin_m_per_s = 1e-5\nmax_m_per_s = 0.1\ncount = ${speeds}\n"
+    "[homogenise]\nrealisations = ${realisations}\n")
+endfunction()
