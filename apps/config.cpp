@@ -32,8 +32,11 @@ toml::table parse_toml_text(std::string_view text, const std::string& source) {
 }
 
 ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string prefix)
-    : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)),
-      input_files_(std::make_shared<std::vector<std::filesystem::path>>()) {}
+    : ConfigTable(table, std::move(file), std::move(prefix), std::make_shared<std::vector<std::filesystem::path>>()) {}
+
+ConfigTable::ConfigTable(const toml::table& table, std::string file, std::string prefix,
+                         std::shared_ptr<std::vector<std::filesystem::path>> input_files)
+    : table_(&table), file_(std::move(file)), prefix_(std::move(prefix)), input_files_(std::move(input_files)) {}
 
 std::string ConfigTable::dotted(const std::string& key) const {
   return prefix_.empty() ? key : prefix_ + "." + key;
@@ -180,9 +183,7 @@ std::optional<ConfigTable> ConfigTable::table(const std::string& key) {
   if (!n) return std::nullopt;
   const toml::table* t = n->as_table();
   if (!t) fail(key, "expected a table");
-  ConfigTable sub(*t, file_, dotted(key));
-  sub.input_files_ = input_files_;
-  return sub;
+  return ConfigTable(*t, file_, dotted(key), input_files_);
 }
 
 void ConfigTable::finish() const {

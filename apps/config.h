@@ -74,6 +74,9 @@ class ConfigTable {
   std::string dotted(const std::string& key) const;
 
  private:
+  // A sub-table (table()): it shares `input_files` with the table it was taken from.
+  ConfigTable(const toml::table& table, std::string file, std::string prefix,
+              std::shared_ptr<std::vector<std::filesystem::path>> input_files);
   const toml::node* node(const std::string& key);
   double checked(const std::string& key, const toml::node& n, Range range) const;
 

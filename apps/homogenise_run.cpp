@@ -85,19 +85,19 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   const std::filesystem::path patches = dir / "patches";
   make_output_dir(patches);
   const auto start = std::chrono::steady_clock::now();
-  const std::string hash = config_hash(config);
+  const std::string hash = config_hash(config), key = cache_key(hash);
   const homogenise::HomogeniseOptions& o = run.options;
 
   std::vector<std::optional<homogenise::PatchResult>> cached;
   int reused = 0;
   for (int k = 0; k < o.realisations; ++k) {
-    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), cache_key(hash)));
+    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), key));
     reused += cached.back() ? 1 : 0;
   }
   Progress progress("homogenise: realisations", o.realisations);
   for (int k = 0; k < reused; ++k) progress.step("cached");
   const auto patch_results = homogenise::solve_patches(o, cached, [&](int k, const homogenise::PatchResult& p) {
-    const nlohmann::json j{{"cache_key", cache_key(hash)}, {"patch", homogenise::to_json(p)}};
+    const nlohmann::json j{{"cache_key", key}, {"patch", homogenise::to_json(p)}};
     write_file_atomically(patches / ("realisation-" + std::to_string(k) + ".json"), j.dump() + "\n");
     progress.step("seed " + std::to_string(p.seed));
   });

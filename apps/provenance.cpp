@@ -54,7 +54,7 @@ nlohmann::json provenance_json(const std::filesystem::path& config, const std::s
   char date[32];
   std::strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", &utc);
   nlohmann::json j{{"tribo_version", TRIBO_VERSION},
-                   {"git_commit", TRIBO_GIT_COMMIT},
+                   {"git_commit", git_commit()},
                    {"config", config.empty() ? nlohmann::json(nullptr) : nlohmann::json(std::filesystem::absolute(config).string())},
                    {"config_hash", hash.empty() ? nlohmann::json(nullptr) : nlohmann::json(hash)},
                    {"inputs", nlohmann::json::array()},

@@ -24,6 +24,9 @@ Item item(const std::string& observable, int unit, const std::string& phase = "c
   return it;
 }
 
+// A standing on four held-out items, each with log density `lpd` (so 4 lpd nats over a baseline at 0).
+Standing st(double lpd, double gap, bool earns) { return Standing{std::vector<double>(4, lpd), gap, earns, {4.0 * lpd, 0.0}}; }
+
 Candidate candidate(const std::string& effect, int parameters, std::vector<double> residuals) {
   Candidate c;
   c.effects = {effect};
@@ -138,7 +141,6 @@ TEST(Verdict, RuleNamesTheSimplestEarnerAndOwnsUpToWhatItCannotExplain) {
   const DiagnosisOptions o;
   const std::vector<Candidate> cs{candidate("a", 1, {}), candidate("b", 2, {})};
   const Multiplicity m{1.0, 1.0, 1.0, 1.0};
-  const auto st = [](double lpd, double gap, bool earns) { return Standing{std::vector<double>(4, lpd), gap, earns, {4.0 * lpd, 0.0}}; };
   // b beats a by 2 nats: not decisive, a stays.
   EXPECT_EQ(verdict_index(cs, {st(2.0, 0.05, true), st(2.5, 0.01, true)}, m), 0);
   // by 4 nats: b.
@@ -167,7 +169,6 @@ TEST(Verdict, RuleNamesTheSimplestEarnerAndOwnsUpToWhatItCannotExplain) {
 // earn is never named.
 TEST(Verdict, CandidatesWithoutDecisiveEvidenceEitherWayAreNamedBesideTheVerdict) {
   const Multiplicity m{1.0, 1.0, 1.0, 1.0};
-  const auto st = [](double lpd, double gap, bool earns) { return Standing{std::vector<double>(4, lpd), gap, earns, {4.0 * lpd, 0.0}}; };
   EXPECT_EQ(indistinguishable({st(2.0, 0.05, true), st(2.5, 0.04, true), st(2.4, 0.04, false)}, 0, m), std::vector<int>{1});
   EXPECT_TRUE(indistinguishable({st(2.0, 0.05, true), st(3.0, 0.04, true)}, 1, m).empty());
   EXPECT_TRUE(indistinguishable({st(2.0, 0.05, true), st(2.5, 0.04, true)}, -1, m).empty());  // "none": nothing to tie with
