@@ -384,9 +384,13 @@ Features analyse_drive_history(const Signal& s, const RunPlan& plan, std::vector
   const double t_first = s.t.front();
   auto segment_end = [&](std::size_t k) { return k + 1 < segments ? t_first + plan.step_times_s[k + 1] : s.t.back(); };
   auto hold = [&](std::size_t k) { return plan.step_speeds_m_per_s[k] == 0.0; };
+  // A segment's steady window stops half a sample short of the next step: the sample at the step
+  // belongs to what the step starts (a simulated contact re-locked at a hold reads the kinetic law
+  // at U = 0 there, 7a below the level for rate_and_state — a scatter of 0.8a in one sample).
+  const double half_sample_s = s.t.size() > 1 ? 0.5 * (s.t.back() - s.t.front()) / static_cast<double>(s.t.size() - 1) : 0.0;
   std::vector<double> steady(segments, kNaN);
   for (std::size_t k = 0; k < segments; ++k) {
-    const double a = t_first + plan.step_times_s[k], b = segment_end(k);
+    const double a = t_first + plan.step_times_s[k], b = segment_end(k) - (k + 1 < segments ? half_sample_s : 0.0);
     if (hold(k)) {
       // Slide-hold-slide: the peak on re-sliding above the steady level before the hold — static
       // friction grown with the hold time (healing) — within the first half of the next slide.

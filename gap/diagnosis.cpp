@@ -233,14 +233,15 @@ constexpr double kSearchStep = 0.01;  // the search's difference step in the coo
 // from the transient to the steady scatter; a 4 × 4 grid named the quick set's lift thermal thinning.
 constexpr int kProfileIterations = 3;
 
-FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const Setup& start, const std::vector<bool>& train_mask,
+// Least squares over the items of positive weight w_i (the training items), residual w_i r_i.
+FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const Setup& start, const std::vector<double>& w,
               const DiagnosisOptions& o, std::uint64_t seed, int starts, std::size_t randomised_from,
               Resolution resolution = Resolution::search, bool start_read_off_data = false) {
   const auto started = std::chrono::steady_clock::now();
   std::vector<int> train;
-  for (std::size_t i = 0; i < train_mask.size(); ++i)
-    if (train_mask[i]) train.push_back(static_cast<int>(i));
-  const std::vector<double> w = weights(c.items(), train_mask);
+  std::vector<bool> train_mask(w.size());
+  for (std::size_t i = 0; i < w.size(); ++i)
+    if ((train_mask[i] = w[i] > 0.0)) train.push_back(static_cast<int>(i));
   if (space.empty()) {  // nothing to fit: the start as it is, its cost as Ceres would count it
     FitResult as_is{start, 0.0, {"nothing to fit", 0, 0, 0.0}};
     const Cost cost{&c, &space, &start, train, w, o.seed, train_mask, {}};
@@ -409,8 +410,10 @@ struct Fitted {
 // the residuals of every fit on every item. The redraws are a stream of their own (the held-out
 // redraws are the bootstrap's), drawn for every item so that a redraw does not depend on the split.
 std::vector<std::vector<std::vector<double>>> refitted_residuals(const Comparison& c, const std::vector<Fitted>& fits,
-                                                                 const std::vector<bool>& train, const std::vector<double>& noise_r,
+                                                                 const std::vector<double>& w_train, const std::vector<double>& noise_r,
                                                                  int samples, std::uint64_t seed) {
+  std::vector<bool> train(w_train.size());
+  for (std::size_t i = 0; i < w_train.size(); ++i) train[i] = w_train[i] > 0.0;
   const std::size_t n = train.size();
   // Each fit's coordinates where it stopped, and the task that simulates it there.
   std::vector<std::vector<double>> at_fit;
@@ -448,7 +451,6 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
     Eigen::VectorXd du;
   };
   std::vector<Probe> probes;
-  const std::vector<double> w_train = weights(c.items(), train);
   std::vector<LinearisedRefit> linear;
   for (std::size_t f = 0; f < fits.size(); ++f) {
     const std::size_t p = fits[f].space.size(), first = centre_task[f] - p;
@@ -639,21 +641,43 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       s.model.baseline.mu_s = std::clamp(mu_k + f * excess, 0.011, 1.49);
       starts.push_back(s);
     }
-  std::vector<FitResult> from_start(starts.size());
-  parallel_for(starts.size(), [&](std::size_t k) {
-    from_start[k] = fit(comparison, base_space, starts[k], train, calibration, o.seed, 1, base_space.size());
-  });
-  FitResult calibrated = from_start.front();
-  double searched_s = 0.0;
-  for (const FitResult& f : from_start) {
-    searched_s += f.termination.wall_s;
-    if (f.cost < calibrated.cost) calibrated = f;
+  auto calibrate = [&](const std::vector<double>& w) {
+    std::vector<FitResult> from_start(starts.size());
+    parallel_for(starts.size(), [&](std::size_t k) {
+      from_start[k] = fit(comparison, base_space, starts[k], w, calibration, o.seed, 1, base_space.size());
+    });
+    FitResult best = from_start.front();
+    double searched_s = 0.0;
+    for (const FitResult& f : from_start) {
+      searched_s += f.termination.wall_s;
+      if (f.cost < best.cost) best = f;
+    }
+    if (FitResult refined = fit(comparison, base_space, best.setup, w, calibration, o.seed, 1, base_space.size(), Resolution::refine);
+        refined.cost <= best.cost)
+      best = refined;
+    best.termination.wall_s += searched_s;
+    return best;
+  };
+  // First with every observable weighing the same (no model has claimed an error yet), then again
+  // weighed by the likelihood at the scale that fit leaves (likelihood_weights, verdict.h), with
+  // the first answer as one more start; every later fit uses those weights.
+  FitResult calibrated = calibrate(weights(d.items, train));
+  std::vector<double> fit_w = weights(d.items, train);
+  if (o.fit_weights == FitWeights::likelihood) {
+    fit_w = likelihood_weights(d.items, comparison.residuals(comparison.predict(calibrated.setup.rig, calibrated.setup.model, o.seed)),
+                               item_sd, train);
+    const double first_s = calibrated.termination.wall_s;
+    starts.push_back(calibrated.setup);
+    calibrated = calibrate(fit_w);
+    calibrated.termination.wall_s += first_s;
   }
-  if (FitResult refined = fit(comparison, base_space, calibrated.setup, train, calibration, o.seed, 1, base_space.size(), Resolution::refine);
-      refined.cost <= calibrated.cost)
-    calibrated = refined;
-  calibrated.termination.wall_s += searched_s;
   d.calibration.starts = static_cast<int>(starts.size());
+  {
+    std::map<std::string, std::pair<double, int>> scale;
+    for (std::size_t i = 0; i < n; ++i)
+      if (fit_w[i] > 0.0) scale[d.items[i].observable].first += 1.0 / (fit_w[i] * fit_w[i]), ++scale[d.items[i].observable].second;
+    for (const auto& [observable, acc] : scale) d.calibration.fit_scale_by_observable[observable] = std::sqrt(acc.first / acc.second);
+  }
   d.stage_times.calibration_s = lap();
   const std::vector<bool> all(n, true);
   const Multiplicity held_m = multiplicity(d.heldout);
@@ -782,7 +806,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       }
     }
     const std::vector<FitParameter> space = space_of(effects, false);
-    const FitResult r = fit(comparison, space, start, train, o, seed, o.starts, search_base.size(), Resolution::search, read_off);
+    const FitResult r = fit(comparison, space, start, fit_w, o, seed, o.starts, search_base.size(), Resolution::search, read_off);
     Candidate c = candidate_from(effects, space, r);
     report("fitted " + verdict_name(effects));
     return c;
@@ -794,7 +818,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   refining.max_iterations = std::max(20, o.max_iterations);
   auto refine = [&](const Candidate& c) {
     const std::vector<FitParameter> space = space_of(c.effects, true);
-    const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, train, refining, o.seed, 1, space.size(), Resolution::refine);
+    const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, fit_w, refining, o.seed, 1, space.size(), Resolution::refine);
     Candidate refined = candidate_from(c.effects, space, r);
     refined.fit.wall_s += c.fit.wall_s;  // the search's time too
     report("refined " + verdict_name(c.effects));
@@ -817,7 +841,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     parallel_for(from_leader.size(), [&](std::size_t k) {
       Setup from{singles[k].rig, model};
       from.model.baseline = singles[k].model.baseline;
-      from_leader[k] = fit(comparison, base_space, from, train, calibration, o.seed, 1, base_space.size());
+      from_leader[k] = fit(comparison, base_space, from, fit_w, calibration, o.seed, 1, base_space.size());
     });
     for (const FitResult& f : from_leader)  // in the leaders' order, as a serial loop would take them
       if (f.cost < calibrated_cost) set_baseline(f), recalibrated = true;
@@ -920,7 +944,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
         const Candidate& c = d.candidates[k];
         fits.push_back({space_of(c.effects, false), Setup{c.rig, c.model}, &c.residuals});
       }
-      const auto redrawn = refitted_residuals(comparison, fits, train, noise_r, o.bootstrap_samples, o.seed);
+      const auto redrawn = refitted_residuals(comparison, fits, fit_w, noise_r, o.bootstrap_samples, o.seed);
       report("linearised the leaders' refits");
       for (const auto& sample : redrawn) {
         Refit& r = refits.emplace_back();

@@ -18,9 +18,15 @@
 
 namespace tribo::gap {
 
+// How the fits weigh the training items (diagnosis.h step 1): every observable the same
+// (verdict.h weights()), or by the likelihood at the scale the first calibration leaves
+// (likelihood_weights()), as the verdict compares the candidates.
+enum class FitWeights { observable, likelihood };
+
 struct DiagnosisOptions {
   int starts = 3;                      // fits per candidate: from the best grid points (else the defaults, then random points)
   int max_iterations = 12;             // Levenberg-Marquardt iterations per start
+  FitWeights fit_weights = FitWeights::likelihood;
   // A held-out gap above this many noise floors is a real disagreement: if no earning candidate
   // halves its excess over the floor, the verdict is "unexplained". The floor holds noise only;
   // a model right in every mechanism but told rig constants a few per cent off (the independent
@@ -100,6 +106,10 @@ struct CalibrationSummary {
   int starts = 0;                  // each searched; the best refined
   double train_gap = 0.0;          // the calibrated baseline's gap on the training items
   double train_noise_floor = 0.0;  // the noise floor of the training items (0: the data cannot tell)
+  // The scale the fits weigh each observable's training items by (RMS of 1/w_i, gap units): its
+  // noise plus what the first calibration left there (FitWeights::likelihood), else 1/w_i of the
+  // equal shares.
+  std::map<std::string, double> fit_scale_by_observable;
   double train_floors() const {    // train_gap / train_noise_floor (NaN without a floor)
     return train_noise_floor > 0.0 ? train_gap / train_noise_floor : std::numeric_limits<double>::quiet_NaN();
   }

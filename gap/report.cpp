@@ -109,7 +109,8 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"]["calibration"] = {{"starts", d.calibration.starts},
                                   {"train_gap", d.calibration.train_gap},
                                   {"train_noise_floor", d.calibration.train_noise_floor},
-                                  {"train_gap_in_floors", finite_or_null(d.calibration.train_floors())}};
+                                  {"train_gap_in_floors", finite_or_null(d.calibration.train_floors())},
+                                  {"fit_scale_by_observable", d.calibration.fit_scale_by_observable}};
   j["heldout_is_in_sample"] = !d.has_heldout;
   j["integration_relative_tolerance"] = d.integration_tolerance;
   j["localization"] = json::array();

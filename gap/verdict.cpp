@@ -111,6 +111,15 @@ Predictive predictive(const std::vector<Item>& items, const std::vector<double>&
   return p;
 }
 
+std::vector<double> likelihood_weights(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                                       const std::vector<bool>& train) {
+  const Predictive p = predictive(items, r, s, train);
+  std::vector<double> w(items.size(), 0.0);
+  for (std::size_t i = 0; i < items.size(); ++i)
+    if (train[i]) w[i] = 1.0 / p.sd[i];
+  return w;
+}
+
 std::vector<double> log_density(const std::vector<double>& r, const Predictive& p) {
   constexpr double kLogPi = 1.1447298858494002;
   std::vector<double> out(r.size(), 0.0);

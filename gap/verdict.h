@@ -55,6 +55,14 @@ struct Predictive {
 // The predictive of a model with residuals `r` (its τ_o and ν from the items in `train`).
 Predictive predictive(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
                       const std::vector<bool>& train);
+// The weights the fits use once the calibration has a first answer (diagnosis.h step 1): item i
+// on train weighs 1/σ_i, σ_i the predictive scale of the model with residuals `r` (its noise s_i
+// plus the error τ_o that model leaves on its observable), 0 elsewhere. A least-squares fit with
+// them maximises the Gaussian likelihood of the training items at that scale — one reweighting
+// of iteratively reweighted least squares — so the fits and the verdict weigh items alike: a level
+// measured to 0.1 % counts for more than a transient the model misses by half.
+std::vector<double> likelihood_weights(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
+                                       const std::vector<bool>& train);
 // ln t_ν(r_i; 0, σ_i) per item.
 std::vector<double> log_density(const std::vector<double>& r, const Predictive& p);
 

@@ -106,6 +106,43 @@ TEST(Verdict, LikelihoodScoresEachItemByItsNoisePlusTheErrorTheModelClaimsOnTrai
   EXPECT_EQ(predictive(items, {0.0, 0.0, 0.3, 0.3, 0.0}, std::vector<double>(5, 0.0), train).sd[2], Predictive::kResolution);
 }
 
+// One step of iteratively reweighted least squares for a level L seen by two observables: A reads
+// 1.0 on every item to its noise 0.01; B scatters by ±0.3 about 0.8, which no level follows. With
+// every observable weighing the same L = 0.9, where A misses by 0.1 (τ_A² = 0.01 − 0.0001) and B by
+// its scatter and offset (τ_B² = 0.09 + 0.01 − 0.0001); weighted by 1/σ² the next level is the
+// inverse-variance mean of the two means, which follows the precise observable.
+TEST(Verdict, LikelihoodWeightsPutAFittedLevelWhereThePreciseObservableHasIt) {
+  std::vector<Item> items;
+  std::vector<double> measured, noise;
+  for (int k = 0; k < 4; ++k) {
+    items.push_back(item("steady_mu", k)), measured.push_back(1.0), noise.push_back(0.01);
+    items.push_back(item("mu_after_step", k)), measured.push_back(0.8 + (k % 2 ? 0.3 : -0.3)), noise.push_back(0.01);
+  }
+  const std::vector<bool> train(items.size(), true);
+  const std::vector<double> w_equal = weights(items, train);
+  auto weighted_level = [&](const std::vector<double>& w) {
+    double num = 0.0, den = 0.0;
+    for (std::size_t i = 0; i < items.size(); ++i) num += w[i] * w[i] * measured[i], den += w[i] * w[i];
+    return num / den;
+  };
+  const double first = weighted_level(w_equal);
+  EXPECT_NEAR(first, 0.9, 1e-12);
+  std::vector<double> r;
+  for (double m : measured) r.push_back(first - m);
+  const std::vector<double> w = likelihood_weights(items, r, item_noise(items, noise), train);
+  const double var_a = 0.01 - 1e-4 + 1e-4, var_b = 0.09 + 0.01 - 1e-4 + 1e-4;  // τ² + s²
+  EXPECT_NEAR(w[0], 1.0 / std::sqrt(var_a), 1e-9);
+  EXPECT_NEAR(w[1], 1.0 / std::sqrt(var_b), 1e-9);
+  EXPECT_NEAR(weighted_level(w), (1.0 / var_a + 0.8 / var_b) / (1.0 / var_a + 1.0 / var_b), 1e-12);  // 0.9818
+  EXPECT_GT(weighted_level(w), 0.98);
+  // Held-out items do not enter a fit.
+  std::vector<bool> half(items.size(), true);
+  half[2] = half[3] = false;
+  const std::vector<double> w_half = likelihood_weights(items, r, item_noise(items, noise), half);
+  EXPECT_EQ(w_half[2], 0.0);
+  EXPECT_EQ(w_half[3], 0.0);
+}
+
 // Evidence: Σ m_i d_i and √(n var d_i); decisive above 3 nats and either 2 se or a halved gap.
 TEST(Verdict, EvidenceIsTheSummedGainWithItsStandardErrorAndMustBeStrong) {
   const Evidence e = evidence({1.0, 2.0, 0.0}, {0.0, 0.0, 0.0}, {1.0, 2.0, 0.0});
