@@ -4,6 +4,8 @@ Run from the repository root after building (the module lives in the build tree)
 
     PYTHONPATH=build/python /usr/bin/python3 examples/python_study.py
 
+or with the package installed by `pip install .` (README, Python): `.venv/bin/python examples/python_study.py`.
+
 Each cell prints what a notebook would show; the optional plot needs python3-matplotlib and is
 written to out/python_study.png.
 """
