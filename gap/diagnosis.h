@@ -18,7 +18,10 @@
 //     lacks, and the rig constants the bundle states with a relative uncertainty, within it)
 //     fitted on train from four starts (the model's values, levels read off the data, and that
 //     reading with μs − μk 20 % smaller and larger), each searched, the best then refined with
-//     central differences; what it leaves on train is reported against the training items' noise floor
+//     central differences — with every observable weighing the same (as in the gap), then again with the
+//     likelihood's weights at the scale that fit leaves (DiagnosisOptions::fit_weights,
+//     likelihood_weights in verdict.h; the first answer one more start), which every later fit
+//     uses; what it leaves on train is reported against the training items' noise floor
 //     (CalibrationSummary) before any candidate is tried.
 //  2. For each catalogue effect not in the model: add it, fit its parameters together with the
 //     baseline ones on train (Ceres, bounded, forward numeric differences over simulate(), several
