@@ -402,6 +402,7 @@ struct Fitted {
   std::vector<FitParameter> space;
   Setup setup;
   const std::vector<double>* residuals;
+  std::vector<double> weights;  // its refits' least-squares weights, positive on the training items
 };
 
 // Each fit refitted to `samples` redraws of the training items within their noise (measured
@@ -410,10 +411,8 @@ struct Fitted {
 // the residuals of every fit on every item. The redraws are a stream of their own (the held-out
 // redraws are the bootstrap's), drawn for every item so that a redraw does not depend on the split.
 std::vector<std::vector<std::vector<double>>> refitted_residuals(const Comparison& c, const std::vector<Fitted>& fits,
-                                                                 const std::vector<double>& w_train, const std::vector<double>& noise_r,
+                                                                 const std::vector<bool>& train, const std::vector<double>& noise_r,
                                                                  int samples, std::uint64_t seed) {
-  std::vector<bool> train(w_train.size());
-  for (std::size_t i = 0; i < w_train.size(); ++i) train[i] = w_train[i] > 0.0;
   const std::size_t n = train.size();
   // Each fit's coordinates where it stopped, and the task that simulates it there.
   std::vector<std::vector<double>> at_fit;
@@ -463,7 +462,7 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
           J(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (at[first + j][i] - centre[i]) / step[first + j];
     std::vector<double> below, above;
     for (double x : u) below.push_back(x - 1.0), above.push_back(2.0 - x);
-    linear.emplace_back(std::move(J), *fits[f].residuals, w_train, below, above);
+    linear.emplace_back(std::move(J), *fits[f].residuals, fits[f].weights, below, above);
     const Eigen::VectorXd sd = linear[f].step_std(noise_r);
     for (Eigen::Index k = 0; k < sd.size(); ++k) {
       // Within the difference step J is the secant the fit itself follows; probing shorter steps
@@ -661,11 +660,15 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // First with every observable weighing the same (no model has claimed an error yet), then again
   // weighed by the likelihood at the scale that fit leaves (likelihood_weights, verdict.h), with
   // the first answer as one more start; every later fit uses those weights.
-  FitResult calibrated = calibrate(weights(d.items, train));
-  std::vector<double> fit_w = weights(d.items, train);
+  const std::vector<double> equal_w = weights(d.items, train);
+  // The weights a fit is refined with, from the residuals `r` it starts from (its own error claim).
+  auto own_weights = [&](const std::vector<double>& r) {
+    return o.fit_weights == FitWeights::likelihood ? likelihood_weights(d.items, r, item_sd, train) : equal_w;
+  };
+  FitResult calibrated = calibrate(equal_w);
+  std::vector<double> fit_w = equal_w;  // the baseline's
   if (o.fit_weights == FitWeights::likelihood) {
-    fit_w = likelihood_weights(d.items, comparison.residuals(comparison.predict(calibrated.setup.rig, calibrated.setup.model, o.seed)),
-                               item_sd, train);
+    fit_w = own_weights(comparison.residuals(comparison.predict(calibrated.setup.rig, calibrated.setup.model, o.seed)));
     const double first_s = calibrated.termination.wall_s;
     starts.push_back(calibrated.setup);
     calibrated = calibrate(fit_w);
@@ -806,7 +809,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       }
     }
     const std::vector<FitParameter> space = space_of(effects, false);
-    const FitResult r = fit(comparison, space, start, fit_w, o, seed, o.starts, search_base.size(), Resolution::search, read_off);
+    const FitResult r = fit(comparison, space, start, equal_w, o, seed, o.starts, search_base.size(), Resolution::search, read_off);
     Candidate c = candidate_from(effects, space, r);
     report("fitted " + verdict_name(effects));
     return c;
@@ -818,7 +821,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   refining.max_iterations = std::max(20, o.max_iterations);
   auto refine = [&](const Candidate& c) {
     const std::vector<FitParameter> space = space_of(c.effects, true);
-    const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, fit_w, refining, o.seed, 1, space.size(), Resolution::refine);
+    const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, own_weights(comparison.residuals(comparison.predict(c.rig, c.model, o.seed))),
+                            refining, o.seed, 1, space.size(), Resolution::refine);
     Candidate refined = candidate_from(c.effects, space, r);
     refined.fit.wall_s += c.fit.wall_s;  // the search's time too
     report("refined " + verdict_name(c.effects));
@@ -874,8 +878,17 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     Candidate from = *special;
     from.rig = general->rig;
     from.model.baseline = general->model.baseline;
-    for (const Carried& p : nest.carried)
-      if (p.effect) from.model.set(nest.special, p.special_parameter, general->model.get(p.effect, p.parameter));
+    const std::vector<FitParameter> special_space = effect_parameters(nest.special);
+    for (const Carried& p : nest.carried) {
+      if (!p.effect) continue;
+      // Into the special effect's fit range: the general one's parameter may lie beyond it (thermal
+      // thinning's traction coefficient of 2.5e4 N s/m on the slide-hold-slide case, where viscous
+      // friction's range ends at 1e4 N s/m, and the projection would not be a model at all).
+      double value = general->model.get(p.effect, p.parameter);
+      for (const FitParameter& q : special_space)
+        if (q.name == p.special_parameter) value = std::clamp(value, q.lower, q.upper);
+      from.model.set(nest.special, p.special_parameter, value);
+    }
     if (Candidate projected = refine(from); projected.train_gap < special->train_gap) *special = projected;
   }
   std::stable_sort(singles.begin(), singles.end(), better);
@@ -939,12 +952,12 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     for (std::size_t i = 0; i < n; ++i) train_noise = train_noise || (train[i] && noise_r[i] > 0.0);
     std::vector<Refit> refits;
     if (train_noise && o.refit_leaders > 0 && o.bootstrap_samples > 0) {
-      std::vector<Fitted> fits{{search_base, Setup{d.rig, d.calibrated}, &d.baseline_residuals}};
+      std::vector<Fitted> fits{{search_base, Setup{d.rig, d.calibrated}, &d.baseline_residuals, fit_w}};
       for (std::size_t k : leaders) {
         const Candidate& c = d.candidates[k];
-        fits.push_back({space_of(c.effects, false), Setup{c.rig, c.model}, &c.residuals});
+        fits.push_back({space_of(c.effects, false), Setup{c.rig, c.model}, &c.residuals, own_weights(c.residuals)});
       }
-      const auto redrawn = refitted_residuals(comparison, fits, fit_w, noise_r, o.bootstrap_samples, o.seed);
+      const auto redrawn = refitted_residuals(comparison, fits, train, noise_r, o.bootstrap_samples, o.seed);
       report("linearised the leaders' refits");
       for (const auto& sample : redrawn) {
         Refit& r = refits.emplace_back();

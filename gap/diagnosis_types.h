@@ -18,9 +18,10 @@
 
 namespace tribo::gap {
 
-// How the fits weigh the training items (diagnosis.h step 1): every observable the same
-// (verdict.h weights()), or by the likelihood at the scale the first calibration leaves
-// (likelihood_weights()), as the verdict compares the candidates.
+// How the calibration and the refinements weigh the training items (diagnosis.h steps 1–2): every
+// observable the same (verdict.h weights()), or by the likelihood at the scale the fit's start
+// leaves (likelihood_weights()) — the calibration's first answer for the baseline, a candidate's
+// search for its refinement —, as the verdict compares the candidates. Searches use equal shares.
 enum class FitWeights { observable, likelihood };
 
 struct DiagnosisOptions {
