@@ -661,14 +661,11 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // weighed by the likelihood at the scale that fit leaves (likelihood_weights, verdict.h), with
   // the first answer as one more start; every later fit uses those weights.
   const std::vector<double> equal_w = weights(d.items, train);
-  // The weights a fit is refined with, from the residuals `r` it starts from (its own error claim).
-  auto own_weights = [&](const std::vector<double>& r) {
-    return o.fit_weights == FitWeights::likelihood ? likelihood_weights(d.items, r, item_sd, train) : equal_w;
-  };
   FitResult calibrated = calibrate(equal_w);
   std::vector<double> fit_w = equal_w;  // the baseline's
   if (o.fit_weights == FitWeights::likelihood) {
-    fit_w = own_weights(comparison.residuals(comparison.predict(calibrated.setup.rig, calibrated.setup.model, o.seed)));
+    fit_w = likelihood_weights(d.items, comparison.residuals(comparison.predict(calibrated.setup.rig, calibrated.setup.model, o.seed)),
+                               item_sd, train);
     const double first_s = calibrated.termination.wall_s;
     starts.push_back(calibrated.setup);
     calibrated = calibrate(fit_w);
@@ -821,8 +818,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   refining.max_iterations = std::max(20, o.max_iterations);
   auto refine = [&](const Candidate& c) {
     const std::vector<FitParameter> space = space_of(c.effects, true);
-    const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, own_weights(comparison.residuals(comparison.predict(c.rig, c.model, o.seed))),
-                            refining, o.seed, 1, space.size(), Resolution::refine);
+    const FitResult r = fit(comparison, space, Setup{c.rig, c.model}, equal_w, refining, o.seed, 1, space.size(), Resolution::refine);
     Candidate refined = candidate_from(c.effects, space, r);
     refined.fit.wall_s += c.fit.wall_s;  // the search's time too
     report("refined " + verdict_name(c.effects));
@@ -955,7 +951,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       std::vector<Fitted> fits{{search_base, Setup{d.rig, d.calibrated}, &d.baseline_residuals, fit_w}};
       for (std::size_t k : leaders) {
         const Candidate& c = d.candidates[k];
-        fits.push_back({space_of(c.effects, false), Setup{c.rig, c.model}, &c.residuals, own_weights(c.residuals)});
+        fits.push_back({space_of(c.effects, false), Setup{c.rig, c.model}, &c.residuals, equal_w});
       }
       const auto redrawn = refitted_residuals(comparison, fits, train, noise_r, o.bootstrap_samples, o.seed);
       report("linearised the leaders' refits");

@@ -24,8 +24,7 @@
 //     and the baseline's bootstrap refits use too; what it leaves on train is reported against the training items' noise floor
 //     (CalibrationSummary) before any candidate is tried.
 //  2. For each catalogue effect not in the model: add it, fit its parameters together with the
-//     baseline ones on train — searched with equal observable shares, the leaders refined with the
-//     likelihood weights of their own search's residuals (Ceres, bounded, forward numeric differences over simulate(), several
+//     baseline ones on train, every observable weighing the same (Ceres, bounded, forward numeric differences over simulate(), several
 //     starts), evaluate on held-out.
 //  3. Likelihood on held-out (verdict.h): every item's residual has the scale of the data's own
 //     noise for it plus the error the model claims on its observable's training items (Student's

@@ -18,10 +18,11 @@
 
 namespace tribo::gap {
 
-// How the calibration and the refinements weigh the training items (diagnosis.h steps 1–2): every
-// observable the same (verdict.h weights()), or by the likelihood at the scale the fit's start
-// leaves (likelihood_weights()) — the calibration's first answer for the baseline, a candidate's
-// search for its refinement —, as the verdict compares the candidates. Searches use equal shares.
+// How the baseline's calibration weighs the training items (diagnosis.h step 1): every observable
+// the same (verdict.h weights()), or by the likelihood at the scale the first calibration leaves
+// (likelihood_weights()), as the verdict compares the candidates. The candidates' fits give every
+// observable the same share either way (docs/gap.md: with the baseline's weights they discounted
+// the effect's own signature; with their own they overfitted the training speeds).
 enum class FitWeights { observable, likelihood };
 
 struct DiagnosisOptions {
