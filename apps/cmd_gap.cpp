@@ -126,8 +126,8 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     md << fmt(d.calibration.train_floors(), "%.3g") << " times their noise floor (" << fmt(d.calibration.train_noise_floor, "%.3g") << ").\n";
   else
     md << "against no noise floor (the training items carry no noise estimate).\n";
-  md << "The fits weigh each observable's training items by 1/σ (σ: RMS, gap units; the items' noise plus what the first "
-        "calibration left there):";
+  md << "The calibration weighs each observable's training items by 1/σ (σ: RMS, gap units; the items' noise plus what the first "
+        "calibration left there; the candidates' fits give every observable the same share):";
   for (const auto& [observable, sigma] : d.calibration.fit_scale_by_observable) md << " " << observable << " " << fmt(sigma, "%.3g") << ";";
   md << "\n";
   const gap::StageTimes& st = d.stage_times;

@@ -659,7 +659,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   };
   // First with every observable weighing the same (no model has claimed an error yet), then again
   // weighed by the likelihood at the scale that fit leaves (likelihood_weights, verdict.h), with
-  // the first answer as one more start; every later fit uses those weights.
+  // the first answer as one more start; the re-calibration and the baseline's bootstrap refits use
+  // those weights, the candidates' fits equal shares (DiagnosisOptions::fit_weights).
   const std::vector<double> equal_w = weights(d.items, train);
   FitResult calibrated = calibrate(equal_w);
   std::vector<double> fit_w = equal_w;  // the baseline's

@@ -108,9 +108,9 @@ struct CalibrationSummary {
   int starts = 0;                  // each searched; the best refined
   double train_gap = 0.0;          // the calibrated baseline's gap on the training items
   double train_noise_floor = 0.0;  // the noise floor of the training items (0: the data cannot tell)
-  // The scale the fits weigh each observable's training items by (RMS of 1/w_i, gap units): its
-  // noise plus what the first calibration left there (FitWeights::likelihood), else 1/w_i of the
-  // equal shares.
+  // The scale the baseline's calibration weighs each observable's training items by (RMS of 1/w_i,
+  // gap units): its noise plus what the first calibration left there (FitWeights::likelihood),
+  // else 1/w_i of the equal shares.
   std::map<std::string, double> fit_scale_by_observable;
   double train_floors() const {    // train_gap / train_noise_floor (NaN without a floor)
     return train_noise_floor > 0.0 ? train_gap / train_noise_floor : std::numeric_limits<double>::quiet_NaN();
