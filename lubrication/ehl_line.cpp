@@ -1,0 +1,340 @@
+#include "lubrication/ehl_line.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "lubrication/reference/ehl_film.h"
+#include "numerics/format.h"
+
+namespace tribo::lubrication {
+namespace {
+
+using numerics::shortest;
+constexpr double kPi = std::numbers::pi;
+
+// ∫ ln|t| dt = t ln|t| − t (0 at t = 0).
+double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }
+
+// The discrete problem in Hertz units (header): unknowns P_1 … P_{N−2} and H0.
+class LineProblem {
+ public:
+  LineProblem(const EhlLineContact& c, const PiezoviscousLubricant& l, const EhlLineOptions& o)
+      : lub_(l), n_(o.nodes), dx_((o.outlet_over_half_width - o.inlet_over_half_width) / (o.nodes - 1)) {
+    b_ = reference::hertz_line_half_width_m(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
+    ph_ = reference::hertz_line_peak_pressure_Pa(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
+    radius_ = c.reduced_radius_m;
+    x_.resize(n_);
+    for (int i = 0; i < n_; ++i) x_(i) = o.inlet_over_half_width + i * dx_;
+    // Deformation of P constant on each node's cell: −(1/π) ∫_{cell j} ln|X_i − S| dS.
+    kernel_.resize(n_, n_);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) {
+        const double d = x_(i) - x_(j);
+        kernel_(i, j) = -(log_antiderivative(d + 0.5 * dx_) - log_antiderivative(d - 0.5 * dx_)) / kPi;
+      }
+  }
+
+  int nodes() const { return n_; }
+  int unknowns() const { return n_ - 1; }  // N − 2 pressures and H0
+  double dx() const { return dx_; }
+  const Eigen::VectorXd& x() const { return x_; }
+  double half_width_m() const { return b_; }
+  double hertz_pressure_Pa() const { return ph_; }
+  double film_scale_m() const { return b_ * b_ / radius_; }  // h = H b²/R
+
+  Eigen::VectorXd pressures(const Eigen::VectorXd& u) const {
+    Eigen::VectorXd p = Eigen::VectorXd::Zero(n_);
+    p.segment(1, n_ - 2) = u.head(n_ - 2);
+    return p;
+  }
+  // A nodal field linearly interpolated at X = 0.
+  double at_centre(const Eigen::VectorXd& v) const {
+    const int i = std::clamp(static_cast<int>(std::floor(-x_(0) / dx_)), 0, n_ - 2);
+    const double t = -x_(i) / dx_;
+    return (1.0 - t) * v(i) + t * v(i + 1);
+  }
+  // The film's change for a change du of the unknowns (linear: H0 + K P).
+  Eigen::VectorXd film_change(const Eigen::VectorXd& du) const {
+    return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + kernel_ * pressures(du);
+  }
+  Eigen::VectorXd film(const Eigen::VectorXd& u) const {
+    return (u(n_ - 2) + 0.5 * x_.array().square()).matrix() + kernel_ * pressures(u);
+  }
+
+  // Row scales c_i = 1/|∂R_i/∂P_i| (the Poiseuille and the deformation's wedge part of the
+  // diagonal): c_i R_i is a pressure in units of p_H whether the film is thick (Poiseuille-dominated)
+  // or thin and stiff (the Hertz zone, deformation-dominated). Frozen over a Newton step.
+  Eigen::VectorXd row_scales(const Eigen::VectorXd& u, double lambda) const {
+    const Eigen::VectorXd p = pressures(u), h = film(u);
+    Eigen::VectorXd eps(n_), rho(n_);
+    for (int i = 0; i < n_; ++i) {
+      rho(i) = density_ratio(lub_, p(i) * ph_).ratio;
+      eps(i) = rho(i) * std::pow(h(i), 3) / (viscosity_ratio(lub_, p(i) * ph_).ratio * lambda);
+    }
+    Eigen::VectorXd c(n_ - 2);
+    for (int i = 1; i <= n_ - 2; ++i)
+      c(i - 1) = 1.0 / (0.5 * (eps(i - 1) + 2.0 * eps(i) + eps(i + 1)) / (dx_ * dx_) + 1.5 * rho(i) * std::abs(kernel_(i, i)) / dx_);
+    return c;
+  }
+
+  // F(u) and, when `jacobian` is given, its (generalised) Jacobian, with the row scales c. λ as in
+  // the header.
+  Eigen::VectorXd residual(const Eigen::VectorXd& u, double lambda, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
+    const Eigen::VectorXd p = pressures(u), h = film(u);
+    Eigen::VectorXd rho(n_), drho(n_), eps(n_), dlog_eps(n_), w(n_);
+    for (int i = 0; i < n_; ++i) {
+      const ViscosityAtPressure v = viscosity_ratio(lub_, p(i) * ph_);
+      const DensityAtPressure r = density_ratio(lub_, p(i) * ph_);
+      rho(i) = r.ratio;
+      drho(i) = r.slope_per_Pa * ph_;
+      eps(i) = rho(i) * std::pow(h(i), 3) / (v.ratio * lambda);
+      dlog_eps(i) = drho(i) / rho(i) - v.log_slope_per_Pa * ph_;  // ∂ ln ε/∂P_i at fixed H
+      w(i) = rho(i) * h(i);
+    }
+    const int m = unknowns(), np = n_ - 2;
+    Eigen::VectorXd f(m);
+    if (jacobian) jacobian->setZero(m, m);
+    Eigen::RowVectorXd d_eps_p(np), d_w(np);
+    for (int i = 1; i <= n_ - 2; ++i) {
+      const double ep = 0.5 * (eps(i) + eps(i + 1)), em = 0.5 * (eps(i - 1) + eps(i));
+      const double gp = p(i + 1) - p(i), gm = p(i) - p(i - 1);
+      const double poiseuille = (ep * gp - em * gm) / (dx_ * dx_);
+      const bool second_order = i >= 2;
+      const double wedge = second_order ? (3.0 * w(i) - 4.0 * w(i - 1) + w(i - 2)) / (2.0 * dx_) : (w(i) - w(i - 1)) / dx_;
+      const int row = i - 1;
+      const double scale = c(row);
+      const double r = -scale * (poiseuille - wedge);
+      // Cavitation: P ≥ 0, −c R ≥ 0, P R = 0, as the Fischer–Burmeister function φ(P, −c R) = 0,
+      // φ(a, b) = a + b − √(a² + b²) — smooth away from a = b = 0, so that the line search's
+      // merit ‖F‖² is too (the min function's kink stalls it where nodes change side).
+      const double a = p(i), root = std::hypot(a, r);
+      f(row) = a + r - root;
+      if (!jacobian) continue;
+      const double da = root > 0.0 ? 1.0 - a / root : 1.0, db = root > 0.0 ? 1.0 - r / root : 0.0;
+      // ∂ε_k/∂P_j = ε_k (3 K_kj/H_k + δ_kj ∂ln ε_k/∂P_k); ∂(ρ̄H)_k/∂P_j = ρ̄_k K_kj + δ_kj ρ̄'_k H_k.
+      auto d_eps = [&](int k) {
+        Eigen::RowVectorXd d = (3.0 * eps(k) / h(k)) * kernel_.row(k).segment(1, np);
+        if (k >= 1 && k <= n_ - 2) d(k - 1) += eps(k) * dlog_eps(k);
+        return d;
+      };
+      auto d_mass = [&](int k) {
+        Eigen::RowVectorXd d = rho(k) * kernel_.row(k).segment(1, np);
+        if (k >= 1 && k <= n_ - 2) d(k - 1) += drho(k) * h(k);
+        return d;
+      };
+      const Eigen::RowVectorXd de_prev = d_eps(i - 1), de_here = d_eps(i), de_next = d_eps(i + 1);
+      d_eps_p = (0.5 * gp) * (de_here + de_next) - (0.5 * gm) * (de_prev + de_here);
+      if (second_order)
+        d_w = (3.0 * d_mass(i) - 4.0 * d_mass(i - 1) + d_mass(i - 2)) / (2.0 * dx_);
+      else
+        d_w = (d_mass(i) - d_mass(i - 1)) / dx_;
+      Eigen::RowVectorXd d_poiseuille = d_eps_p / (dx_ * dx_);
+      if (i + 1 <= n_ - 2) d_poiseuille(i) += ep / (dx_ * dx_);
+      d_poiseuille(i - 1) -= (ep + em) / (dx_ * dx_);
+      if (i - 1 >= 1) d_poiseuille(i - 2) += em / (dx_ * dx_);
+      jacobian->row(row).head(np) = (-scale * db) * (d_poiseuille - d_w);
+      (*jacobian)(row, row) += da;
+      // ∂/∂H0: ∂ε_k/∂H0 = 3 ε_k/H_k, ∂(ρ̄H)_k/∂H0 = ρ̄_k.
+      auto de0 = [&](int k) { return 3.0 * eps(k) / h(k); };
+      const double dpois0 = (0.5 * gp * (de0(i) + de0(i + 1)) - 0.5 * gm * (de0(i - 1) + de0(i))) / (dx_ * dx_);
+      const double dw0 = second_order ? (3.0 * rho(i) - 4.0 * rho(i - 1) + rho(i - 2)) / (2.0 * dx_) : (rho(i) - rho(i - 1)) / dx_;
+      (*jacobian)(row, np) = -scale * db * (dpois0 - dw0);
+    }
+    // Load balance: ΔX Σ P = π/2 (trapezoidal rule, P = 0 at both ends).
+    f(np) = dx_ * p.sum() - 0.5 * kPi;
+    if (jacobian) jacobian->row(np).head(np).setConstant(dx_);
+    return f;
+  }
+
+ private:
+  PiezoviscousLubricant lub_;
+  int n_;
+  double dx_, b_ = 0.0, ph_ = 0.0, radius_ = 0.0;
+  Eigen::VectorXd x_;
+  Eigen::MatrixXd kernel_;
+};
+
+struct NewtonOutcome {
+  bool converged = false;
+  int iterations = 0;
+  double residual = 0.0;
+  std::string why;
+};
+
+// Newton with a backtracking line search on ‖F‖₂ that keeps the film positive.
+NewtonOutcome newton(const LineProblem& problem, double lambda, Eigen::VectorXd& u, const EhlLineOptions& o) {
+  NewtonOutcome out;
+  Eigen::MatrixXd jac;
+  Eigen::VectorXd scales = problem.row_scales(u, lambda);
+  Eigen::VectorXd f = problem.residual(u, lambda, scales, &jac);
+  double norm = f.norm();
+  const int np = problem.nodes() - 2;
+  for (int it = 0; it < o.max_newton_iterations; ++it) {
+    const Eigen::VectorXd step = jac.partialPivLu().solve(-f);
+    if (!step.allFinite()) {
+      out.why = "the Newton system is singular";
+      break;
+    }
+    // The step may change no film by more than half of itself: a full Newton step from a start far
+    // from the solution closes the film in the contact, and from a collapsed film (ε ~ H³ → 0) the
+    // iteration crawls.
+    const Eigen::VectorXd h = problem.film(u), dh = problem.film_change(step);
+    double t = 1.0;
+    for (int i = 0; i < h.size(); ++i)
+      if (std::abs(dh(i)) > 0.5 * h(i)) t = std::min(t, 0.5 * h(i) / std::abs(dh(i)));
+    Eigen::VectorXd trial;
+    bool accepted = false;
+    for (int k = 0; k < 30; ++k, t *= 0.5) {
+      trial = u + t * step;
+      if (problem.film(trial).minCoeff() <= 0.0) continue;
+      const double trial_norm = problem.residual(trial, lambda, scales, nullptr).norm();
+      if (std::isfinite(trial_norm) && trial_norm < (1.0 - 1e-4 * t) * norm) {
+        accepted = true;
+        break;
+      }
+    }
+    ++out.iterations;
+    if (!accepted) {
+      out.why = "the line search found no decrease of the residual";
+      break;
+    }
+    const double moved = (t * step.head(np)).lpNorm<Eigen::Infinity>();
+    u = trial;
+    scales = problem.row_scales(u, lambda);
+    f = problem.residual(u, lambda, scales, &jac);
+    norm = f.norm();
+    out.residual = f.lpNorm<Eigen::Infinity>();
+    if (out.residual <= o.tolerance && moved <= 10.0 * o.tolerance * std::max(1.0, u.head(np).lpNorm<Eigen::Infinity>())) {
+      out.converged = true;
+      return out;
+    }
+  }
+  out.residual = f.lpNorm<Eigen::Infinity>();
+  if (out.why.empty()) out.why = "the iteration limit was reached";
+  return out;
+}
+
+void validate(const EhlLineContact& c, const EhlLineOptions& o) {
+  auto positive = [](double v, const char* name) {
+    if (!std::isfinite(v) || v <= 0.0)
+      throw std::invalid_argument(std::string("EHL line contact: ") + name + " must be positive and finite, got " + shortest(v));
+  };
+  positive(c.load_per_length_N_per_m, "load_per_length_N_per_m");
+  positive(c.reduced_radius_m, "reduced_radius_m");
+  positive(c.reduced_modulus_Pa, "reduced_modulus_Pa");
+  positive(c.mean_speed_m_per_s, "mean_speed_m_per_s");
+  if (!(o.inlet_over_half_width < -1.0) || !(o.outlet_over_half_width > 0.0) || !std::isfinite(o.inlet_over_half_width) ||
+      !std::isfinite(o.outlet_over_half_width))
+    throw std::invalid_argument("EHL line contact: the domain [" + shortest(o.inlet_over_half_width) + ", " +
+                                shortest(o.outlet_over_half_width) + "] (in Hertz half widths) must start before −1 and end after 0");
+  if (o.nodes < 11) throw std::invalid_argument("EHL line contact: nodes must be ≥ 11, got " + std::to_string(o.nodes));
+  if (!(o.tolerance > 0.0)) throw std::invalid_argument("EHL line contact: tolerance must be positive, got " + shortest(o.tolerance));
+}
+
+}  // namespace
+
+EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant, const EhlLineOptions& options) {
+  validate(contact, options);
+  validate(lubricant);
+  const LineProblem problem(contact, lubricant, options);
+  const double radius = contact.reduced_radius_m, b = problem.half_width_m(), ph = problem.hertz_pressure_Pa();
+  const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (b * b * b * ph);
+
+  // Start: H0 placing the central film at the larger of Martin's rigid film and Pan–Hamrock's EHL
+  // estimate, and a semi-ellipse of the load's area over the wider of the Hertz contact and the
+  // rigid film's pressure zone √(2 R h) (in a light, hydrodynamic contact the pressure spreads
+  // over many Hertz widths); Newton corrects both.
+  const reference::LineContactGroups g =
+      reference::line_contact_groups(contact.load_per_length_N_per_m, radius, contact.reduced_modulus_Pa,
+                                     contact.mean_speed_m_per_s, lubricant.viscosity_Pa_s, lubricant.pressure_viscosity_per_Pa);
+  const double h_start_m =
+      std::max(reference::martin_minimum_film_m(contact.load_per_length_N_per_m, radius, contact.mean_speed_m_per_s,
+                                                lubricant.viscosity_Pa_s),
+               g.material > 0.0 ? reference::pan_hamrock_central_film(g) * radius : 0.0);
+  const int n = problem.nodes(), np = n - 2;
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.unknowns());
+  const double spread = std::max(1.0, std::sqrt(2.0 * radius * h_start_m) / b);
+  for (int i = 1; i <= np; ++i) {
+    const double s = problem.x()(i) / spread;
+    u(i - 1) = std::sqrt(std::max(0.0, 1.0 - s * s)) / spread;
+  }
+  u(np) = 0.0;
+  const double centre_offset = problem.at_centre(problem.film(u));  // H(0) with H0 = 0
+  u(np) = h_start_m / problem.film_scale_m() - centre_offset;
+  // Keep the starting film positive everywhere.
+  const double lowest = problem.film(u).minCoeff();
+  if (lowest <= 0.0) u(np) += 0.5 * h_start_m / problem.film_scale_m() - lowest;
+
+  EhlLineResult result;
+  const Eigen::VectorXd start = u;
+  NewtonOutcome outcome = newton(problem, lambda, u, options);
+  result.iterations = outcome.iterations;
+  if (!outcome.converged) {
+    // Continuation from a thinner film: λ lowered by decades from the start until Newton converges
+    // (the smaller λ, the closer the pressure to the Hertz start), then raised back to the target,
+    // the step halved (in log λ) on every failure.
+    const double log_target = std::log(lambda);
+    double log_current = log_target, step = std::log(10.0);
+    Eigen::VectorXd anchor;
+    bool anchored = false, reached = false;
+    int steps = 0;
+    while (steps < options.max_continuation_steps && !anchored) {
+      ++steps;
+      log_current -= step;
+      anchor = start;
+      const NewtonOutcome o = newton(problem, std::exp(log_current), anchor, options);
+      result.iterations += o.iterations;
+      anchored = o.converged;
+    }
+    while (anchored && !reached && steps < options.max_continuation_steps) {
+      ++steps;
+      const double next = std::min(log_target, log_current + step);
+      Eigen::VectorXd trial = anchor;
+      const NewtonOutcome o = newton(problem, std::exp(next), trial, options);
+      result.iterations += o.iterations;
+      if (o.converged) {
+        anchor = trial;
+        log_current = next;
+        reached = next == log_target;
+        if (reached) outcome = o;
+      } else {
+        step *= 0.5;
+      }
+    }
+    result.continuation_steps = steps;
+    if (reached) {
+      u = anchor;
+    } else {
+      outcome.why += anchored ? " (continuation in λ from a thinner film stopped at λ = " + shortest(std::exp(log_current)) +
+                                    ", the target " + shortest(lambda) + ")"
+                              : " (and at every λ of the continuation)";
+    }
+  }
+
+  const Eigen::VectorXd p = problem.pressures(u), h = problem.film(u);
+  result.x_m.resize(n);
+  result.pressure_Pa.resize(n);
+  result.film_m.resize(n);
+  for (int i = 0; i < n; ++i) {
+    result.x_m[i] = problem.x()(i) * b;
+    result.pressure_Pa[i] = p(i) * ph;
+    result.film_m[i] = h(i) * problem.film_scale_m();
+  }
+  result.central_film_m = problem.at_centre(h) * problem.film_scale_m();
+  result.minimum_film_m = h.minCoeff() * problem.film_scale_m();
+  result.max_pressure_Pa = p.maxCoeff() * ph;
+  result.hertz_half_width_m = b;
+  result.hertz_pressure_Pa = ph;
+  result.load_balance_error = (problem.dx() * p.sum() - 0.5 * kPi) / (0.5 * kPi);
+  result.converged = outcome.converged;
+  result.residual = outcome.residual;
+  result.message = outcome.converged ? "converged: ‖F‖∞ = " + shortest(outcome.residual) + " after " +
+                                           std::to_string(result.iterations) + " Newton iterations"
+                                     : "not converged: " + outcome.why + "; ‖F‖∞ = " + shortest(outcome.residual);
+  return result;
+}
+
+}  // namespace tribo::lubrication

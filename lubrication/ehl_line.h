@@ -1,0 +1,80 @@
+// Elastohydrodynamic line contact: a cylinder of reduced radius R on a plane (or two cylinders),
+// load w per unit length, entrained at the mean surface speed u_m = (u1 + u2)/2, steady,
+// isothermal, smooth surfaces.
+//
+// Equations (Dowson & Higginson 1966; the dimensionless form of Venner & Lubrecht 2000, ch. 8):
+//   Reynolds   d/dx(ρ h³/(12 η) dp/dx) = u_m d(ρ h)/dx,   p ≥ 0 with p = dp/dx = 0 at the exit
+//              (Swift–Stieber cavitation: p (complementary) the Reynolds residual)
+//   film       h(x) = h0 + x²/(2R) − (4/(π E')) ∫ p(s) ln|x − s| ds
+//              (plane-strain half-space, E' = 2 / [(1−ν1²)/E1 + (1−ν2²)/E2] = 2 E*)
+//   load       ∫ p dx = w
+//   fluid      η(p), ρ(p) of piezoviscous.h.
+// Scaled by the dry Hertz contact: b = √(8 w R/(π E')), p_H = √(w E'/(2π R)), X = x/b, P = p/p_H,
+// H = h R/b², the film is H = H0 + X²/2 − (1/π) ∫ P ln|X − S| dS, the load ∫ P dX = π/2, and
+// Reynolds d/dX(ε dP/dX) = d(ρ̄H)/dX with ε = ρ̄ H³/(η̄ λ), λ = 12 η0 u_m R²/(b³ p_H).
+//
+// Discretisation: N nodes on [X_in, X_out], P = 0 at both ends; the Poiseuille term by central
+// differences with ε at the half nodes (the mean of its neighbours), the wedge term by second-order
+// upwind differences (first order at the first interior node), the deformation with P constant on
+// each node's cell (the exact integral of ln|t| over the cell). Second order in ΔX where the
+// solution is smooth — observed in the tests.
+//
+// Method: Newton's method on the coupled system (pressures and H0 together, the dense Jacobian of
+// the elastic integral included — the approach of Okamura 1982 and Hamrock & Jacobson 1984, robust
+// where the film is stiff, i.e. at high loads where relaxation schemes stall). The cavitation
+// complementarity P ≥ 0, R ≤ 0, P R = 0 is the Fischer–Burmeister equation φ(P, −c R) = 0, each
+// Reynolds row scaled by c = 1/|∂R/∂P| on its diagonal so that it reads as a pressure. Each step is
+// limited so that no film changes by more than half of itself, and a backtracking line search asks
+// for a decrease of ‖F‖₂ (pressures are not clipped at zero: φ keeps them there at convergence, and
+// clipping a step breaks the line search's descent). Where Newton does not converge
+// from the start (a semi-ellipse of the load's area, the central film of Martin or Pan–Hamrock), it
+// is continued in λ: from a thinner, more Hertzian film (λ lowered by decades) back to the target.
+// Cost: O(N²) per residual and Jacobian, O(N³) per step (N = 401: ≈ 0.05 s).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lubrication/piezoviscous.h"
+
+namespace tribo::lubrication {
+
+struct EhlLineContact {
+  double load_per_length_N_per_m = 0.0;  // w > 0
+  double reduced_radius_m = 0.0;         // R = 1/(1/R1 + 1/R2) > 0
+  double reduced_modulus_Pa = 0.0;       // E' = 2 E* > 0
+  double mean_speed_m_per_s = 0.0;       // u_m = (u1 + u2)/2 > 0 (entrainment)
+};
+
+struct EhlLineOptions {
+  double inlet_over_half_width = -4.5;  // X_in = x_in / b (the inlet must not starve the film)
+  double outlet_over_half_width = 1.5;  // X_out = x_out / b (past the cavitation front)
+  int nodes = 401;                      // N ≥ 11
+  // Converged when the scaled residual ‖F‖∞ ≤ tolerance, F = (φ(P, −c R_Reynolds) in units of p_H,
+  // load balance ΔX ΣP − π/2), and the last Newton step moved no P by more than 10·tolerance·max P.
+  double tolerance = 1e-10;
+  int max_newton_iterations = 30;  // per solve (the direct one and each continuation step)
+  int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
+};
+
+struct EhlLineResult {
+  std::vector<double> x_m, pressure_Pa, film_m;
+  double central_film_m = 0.0;   // at x = 0 (the Hertz centre)
+  double minimum_film_m = 0.0;   // smallest nodal film
+  double max_pressure_Pa = 0.0;
+  double hertz_half_width_m = 0.0, hertz_pressure_Pa = 0.0;
+  double load_balance_error = 0.0;  // (∫p dx − w)/w
+  bool converged = false;
+  int iterations = 0;             // Newton iterations, continuation steps included
+  int continuation_steps = 0;
+  double residual = 0.0;          // ‖F‖∞ at return
+  std::string message;
+};
+
+// Throws std::invalid_argument for bad input (non-positive or non-finite contact data, a domain
+// that does not contain [−1, 1), fewer than 11 nodes); never throws for non-convergence (see
+// `converged` and `message`).
+EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant,
+                             const EhlLineOptions& options = {});
+
+}  // namespace tribo::lubrication
