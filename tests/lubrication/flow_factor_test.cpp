@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 #include <cstdio>
 
 #include "lubrication/flow_factors.h"
@@ -92,12 +93,23 @@ TEST(FlowFactors, AnisotropicRoughnessFavoursFlowAlongTheLay) {
   EXPECT_LT(3.0 * fx.standard_error + 0.03 * pc_x, pc_x - 1.0);  // the band is narrower than the effect
 }
 
-// Published fits reproduce their tabulated constants (Patir & Cheng 1978 Table 1: γ = 1,
-// H = 1 → 1 − 0.9 e^{−0.56}); outside the tabulated γ or fitted range they answer NaN.
-TEST(FlowFactors, PatirChengFitTable) {
-  EXPECT_NEAR(patir_cheng_phi_x(1.0, 1.0), 1.0 - 0.9 * std::exp(-0.56), 1e-15);
-  EXPECT_NEAR(patir_cheng_phi_y(2.0, 1.0 / 3.0), 1.0 + 0.225 * std::pow(2.0, -1.5), 1e-15);
-  EXPECT_NEAR(patir_cheng_shear_factor(6.0, 1.0), 1.126 * std::exp(-1.5), 1e-15);
+// The published fits checked by what they must satisfy rather than by retyping their constants
+// (Patir & Cheng 1978 Table 1, 1979 Table 1 — the code's table): the shear-flow factor's two
+// branches were fitted to join at H = 5 — a₁ 5^α₁ e^{−5α₂ + 25α₃} = A₂ e^{−1.25} — to 0.08 % in every
+// row of the published table (a mistyped constant of the six breaks it by more); the pressure-flow
+// factor rises with γ (transverse lay, γ < 1, obstructs the flow, longitudinal lay, γ > 1, channels
+// it; a swapped row or constant breaks the order) and tends to 1 in thick films; φ_y(γ) = φ_x(1/γ);
+// outside the tabulated γ or the fitted range the fits answer NaN.
+TEST(FlowFactors, PatirChengFitsJoinTheirBranchesAndOrderByLay) {
+  const std::vector<double> gammas{1.0 / 9, 1.0 / 6, 1.0 / 3, 1.0, 3.0, 6.0, 9.0};
+  for (double g : gammas) {
+    EXPECT_NEAR(patir_cheng_shear_factor(5.0 + 1e-12, g) / patir_cheng_shear_factor(5.0, g), 1.0, 1e-3) << "γ = " << g;
+    EXPECT_NEAR(patir_cheng_phi_x(100.0, g), 1.0, 1e-2) << "γ = " << g;
+    EXPECT_DOUBLE_EQ(patir_cheng_phi_y(2.0, g), patir_cheng_phi_x(2.0, 1.0 / g));
+  }
+  for (double h : {0.5, 1.0, 2.0, 3.0, 6.0})
+    for (std::size_t k = 1; k < gammas.size(); ++k)
+      EXPECT_GT(patir_cheng_phi_x(h, gammas[k]), patir_cheng_phi_x(h, gammas[k - 1])) << "H = " << h << ", γ = " << gammas[k];
   EXPECT_TRUE(std::isnan(patir_cheng_phi_x(2.0, 2.0)));
   EXPECT_TRUE(std::isnan(patir_cheng_phi_x(0.2, 1.0)));
 }
