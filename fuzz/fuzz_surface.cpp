@@ -1,5 +1,6 @@
 // libFuzzer harness for every surface reader (contact/surface_io.h): the first byte picks the
-// format (0 .npy, 1 ASCII matrix, 2 x-y-z), the rest is the file. The readers' documented error is
+// format (0 .npy, 1 ASCII matrix, 2 x-y-z, 3 ASCII with an instrument header — Gwyddion's or an
+// interferometer's, 4 Dektak profile CSV), the rest is the file. The readers' documented error is
 // std::invalid_argument; anything else escaping (std::out_of_range, std::bad_alloc, …), a
 // sanitizer report, or a result that breaks the documented contract is a finding.
 #include <cmath>
@@ -14,7 +15,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
-  const int format = data[0] % 3;
+  const int format = data[0] % 5;
   std::istringstream in(std::string(reinterpret_cast<const char*>(data) + 1, size - 1));
   try {
     if (format == 0) {
@@ -23,9 +24,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else if (format == 1) {
       const Eigen::ArrayXXd h = tribo::contact::read_ascii_matrix(in, "fuzz.txt");
       TRIBO_FUZZ_CHECK(h.size() > 0 && h.allFinite());
-    } else {
+    } else if (format == 2) {
       const tribo::contact::Topography t = tribo::contact::read_xyz(in, "fuzz.xyz");
       TRIBO_FUZZ_CHECK(t.heights_m.rows() >= 2 && t.heights_m.cols() >= 2 && t.heights_m.allFinite());
+      TRIBO_FUZZ_CHECK(std::isfinite(t.lx_m) && t.lx_m > 0.0 && std::isfinite(t.ly_m) && t.ly_m > 0.0);
+    } else if (format == 3) {
+      const tribo::contact::Topography t = tribo::contact::read_ascii_topography(in, "fuzz.txt");
+      TRIBO_FUZZ_CHECK(t.heights_m.size() > 0 && t.heights_m.allFinite());
+      TRIBO_FUZZ_CHECK(std::isfinite(t.lx_m) && t.lx_m > 0.0 && std::isfinite(t.ly_m) && t.ly_m > 0.0);
+    } else {
+      const tribo::contact::Topography t = tribo::contact::read_dektak_csv(in, "fuzz.csv");
+      TRIBO_FUZZ_CHECK(t.heights_m.rows() >= 1 && t.heights_m.cols() == 1 && t.heights_m.allFinite());
       TRIBO_FUZZ_CHECK(std::isfinite(t.lx_m) && t.lx_m > 0.0 && std::isfinite(t.ly_m) && t.ly_m > 0.0);
     }
   } catch (const std::invalid_argument& e) {
