@@ -12,19 +12,12 @@
 #include "lubrication/ehl_line.h"
 #include "observed_order.h"
 #include "lubrication/reference/ehl_film.h"
+#include "steel_roller_pair.h"
 
 namespace tribo::lubrication {
 namespace {
 
-// A steel roller pair (E' = 2.26e11 Pa, R = 10 mm) in a mineral oil of 0.04 Pa·s with α = 2.2e-8 1/Pa
-// (G = αE' ≈ 4970, the usual steel/mineral-oil value), entrained at 1 m/s.
-constexpr double kRadius_m = 0.01, kModulus_Pa = 2.26e11, kSpeed_m_per_s = 1.0;
-PiezoviscousLubricant mineral_oil() {
-  PiezoviscousLubricant l;
-  l.viscosity_Pa_s = 0.04;
-  l.pressure_viscosity_per_Pa = 2.2e-8;
-  return l;
-}
+using namespace steel_rollers;
 
 // Rigid cylinder, isoviscous, incompressible film: the solver's film for the load w against
 // Martin's closed form for the same (finite) inlet, h = C(ξ_in) η u R / w, at three grids.

@@ -7,24 +7,15 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "lubrication/ehl_line.h"
-#include "observed_order.h"
 #include "lubrication/reference/ehl_film.h"
+#include "steel_roller_pair.h"
 
 namespace tribo::lubrication {
 namespace {
 
-// A steel roller pair (E' = 2.26e11 Pa, R = 10 mm) in a mineral oil of 0.04 Pa·s with α = 2.2e-8 1/Pa
-// (G = αE' ≈ 4970, the usual steel/mineral-oil value), entrained at 1 m/s.
-constexpr double kRadius_m = 0.01, kModulus_Pa = 2.26e11, kSpeed_m_per_s = 1.0;
-PiezoviscousLubricant mineral_oil() {
-  PiezoviscousLubricant l;
-  l.viscosity_Pa_s = 0.04;
-  l.pressure_viscosity_per_Pa = 2.2e-8;
-  return l;
-}
+using namespace steel_rollers;
 
 // At a high load (W = w/(E'R) = 1.3e-3, p_H ≈ 2.1 GPa) the film is thin against the deflection and
 // the pressure is the dry contact's: Hertz's semi-ellipse inside the contact to 3 % of p_H (the
