@@ -64,36 +64,41 @@ class LineProblem {
     return (u(n_ - 2) + 0.5 * x_.array().square()).matrix() + kernel_ * pressures(u);
   }
 
+  // Pressures, film and the lubricant's state at every node, computed once per iterate and read by
+  // the row scales and the residual alike.
+  struct Nodal {
+    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w;
+  };
+  Nodal nodal(const Eigen::VectorXd& u, double lambda) const {
+    Nodal s{pressures(u), film(u), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_),
+            Eigen::VectorXd(n_)};
+    for (int i = 0; i < n_; ++i) {
+      const ViscosityAtPressure v = viscosity_ratio(lub_, s.p(i) * ph_);
+      const DensityAtPressure r = density_ratio(lub_, s.p(i) * ph_);
+      s.rho(i) = r.ratio;
+      s.drho(i) = r.slope_per_Pa * ph_;
+      s.eps(i) = s.rho(i) * std::pow(s.h(i), 3) / (v.ratio * lambda);
+      s.dlog_eps(i) = s.drho(i) / s.rho(i) - v.log_slope_per_Pa * ph_;  // ∂ ln ε/∂P_i at fixed H
+      s.w(i) = s.rho(i) * s.h(i);
+    }
+    return s;
+  }
+
   // Row scales c_i = 1/|∂R_i/∂P_i| (the Poiseuille and the deformation's wedge part of the
   // diagonal): c_i R_i is a pressure in units of p_H whether the film is thick (Poiseuille-dominated)
   // or thin and stiff (the Hertz zone, deformation-dominated). Frozen over a Newton step.
-  Eigen::VectorXd row_scales(const Eigen::VectorXd& u, double lambda) const {
-    const Eigen::VectorXd p = pressures(u), h = film(u);
-    Eigen::VectorXd eps(n_), rho(n_);
-    for (int i = 0; i < n_; ++i) {
-      rho(i) = density_ratio(lub_, p(i) * ph_).ratio;
-      eps(i) = rho(i) * std::pow(h(i), 3) / (viscosity_ratio(lub_, p(i) * ph_).ratio * lambda);
-    }
+  Eigen::VectorXd row_scales(const Nodal& s) const {
     Eigen::VectorXd c(n_ - 2);
     for (int i = 1; i <= n_ - 2; ++i)
-      c(i - 1) = 1.0 / (0.5 * (eps(i - 1) + 2.0 * eps(i) + eps(i + 1)) / (dx_ * dx_) + 1.5 * rho(i) * std::abs(kernel_(i, i)) / dx_);
+      c(i - 1) = 1.0 / (0.5 * (s.eps(i - 1) + 2.0 * s.eps(i) + s.eps(i + 1)) / (dx_ * dx_) +
+                        1.5 * s.rho(i) * std::abs(kernel_(i, i)) / dx_);
     return c;
   }
 
-  // F(u) and, when `jacobian` is given, its (generalised) Jacobian, with the row scales c. λ as in
-  // the header.
-  Eigen::VectorXd residual(const Eigen::VectorXd& u, double lambda, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
-    const Eigen::VectorXd p = pressures(u), h = film(u);
-    Eigen::VectorXd rho(n_), drho(n_), eps(n_), dlog_eps(n_), w(n_);
-    for (int i = 0; i < n_; ++i) {
-      const ViscosityAtPressure v = viscosity_ratio(lub_, p(i) * ph_);
-      const DensityAtPressure r = density_ratio(lub_, p(i) * ph_);
-      rho(i) = r.ratio;
-      drho(i) = r.slope_per_Pa * ph_;
-      eps(i) = rho(i) * std::pow(h(i), 3) / (v.ratio * lambda);
-      dlog_eps(i) = drho(i) / rho(i) - v.log_slope_per_Pa * ph_;  // ∂ ln ε/∂P_i at fixed H
-      w(i) = rho(i) * h(i);
-    }
+  // F at the nodal state s and, when `jacobian` is given, its (generalised) Jacobian, with the row
+  // scales c. λ as in the header.
+  Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
+    const Eigen::VectorXd &p = s.p, &h = s.h, &rho = s.rho, &drho = s.drho, &eps = s.eps, &dlog_eps = s.dlog_eps, &w = s.w;
     const int m = unknowns(), np = n_ - 2;
     Eigen::VectorXd f(m);
     if (jacobian) jacobian->setZero(m, m);
@@ -168,8 +173,9 @@ struct NewtonOutcome {
 NewtonOutcome newton(const LineProblem& problem, double lambda, Eigen::VectorXd& u, const EhlLineOptions& o) {
   NewtonOutcome out;
   Eigen::MatrixXd jac;
-  Eigen::VectorXd scales = problem.row_scales(u, lambda);
-  Eigen::VectorXd f = problem.residual(u, lambda, scales, &jac);
+  auto state = problem.nodal(u, lambda);
+  Eigen::VectorXd scales = problem.row_scales(state);
+  Eigen::VectorXd f = problem.residual(state, scales, &jac);
   double norm = f.norm();
   const int np = problem.nodes() - 2;
   for (int it = 0; it < o.max_newton_iterations; ++it) {
@@ -181,16 +187,18 @@ NewtonOutcome newton(const LineProblem& problem, double lambda, Eigen::VectorXd&
     // The step may change no film by more than half of itself: a full Newton step from a start far
     // from the solution closes the film in the contact, and from a collapsed film (ε ~ H³ → 0) the
     // iteration crawls.
-    const Eigen::VectorXd h = problem.film(u), dh = problem.film_change(step);
+    const Eigen::VectorXd dh = problem.film_change(step);
     double t = 1.0;
-    for (int i = 0; i < h.size(); ++i)
-      if (std::abs(dh(i)) > 0.5 * h(i)) t = std::min(t, 0.5 * h(i) / std::abs(dh(i)));
+    for (int i = 0; i < dh.size(); ++i)
+      if (std::abs(dh(i)) > 0.5 * state.h(i)) t = std::min(t, 0.5 * state.h(i) / std::abs(dh(i)));
     Eigen::VectorXd trial;
+    auto trial_state = state;
     bool accepted = false;
     for (int k = 0; k < 30; ++k, t *= 0.5) {
       trial = u + t * step;
-      if (problem.film(trial).minCoeff() <= 0.0) continue;
-      const double trial_norm = problem.residual(trial, lambda, scales, nullptr).norm();
+      trial_state = problem.nodal(trial, lambda);
+      if (trial_state.h.minCoeff() <= 0.0) continue;
+      const double trial_norm = problem.residual(trial_state, scales, nullptr).norm();
       if (std::isfinite(trial_norm) && trial_norm < (1.0 - 1e-4 * t) * norm) {
         accepted = true;
         break;
@@ -203,8 +211,9 @@ NewtonOutcome newton(const LineProblem& problem, double lambda, Eigen::VectorXd&
     }
     const double moved = (t * step.head(np)).lpNorm<Eigen::Infinity>();
     u = trial;
-    scales = problem.row_scales(u, lambda);
-    f = problem.residual(u, lambda, scales, &jac);
+    state = std::move(trial_state);
+    scales = problem.row_scales(state);
+    f = problem.residual(state, scales, &jac);
     norm = f.norm();
     out.residual = f.lpNorm<Eigen::Infinity>();
     if (out.residual <= o.tolerance && moved <= 10.0 * o.tolerance * std::max(1.0, u.head(np).lpNorm<Eigen::Infinity>())) {
