@@ -94,7 +94,10 @@ CappedSphereContact capped_sphere_contact(double load_N, double radius_m, double
       // on the other side — the discrete edge lies inside it. Either is the answer to within that
       // ring (the clipped pressures of this one are returned).
       if (changed && !seen.insert(state).second) changed = false;
-      if (!changed) return Loaded{p.cwiseMax(0.0).cwiseMin(cap_Pa), ring_area.dot(p.cwiseMax(0.0).cwiseMin(cap_Pa))};
+      if (!changed) {
+        const Eigen::VectorXd clipped = p.cwiseMax(0.0).cwiseMin(cap_Pa);
+        return Loaded{clipped, ring_area.dot(clipped)};
+      }
     }
     throw std::runtime_error("capped_sphere_contact: the active-set iteration did not settle");
   };
