@@ -16,6 +16,10 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
   const int format = data[0] % 5;
+  // A topography's stated size: finite and positive both ways.
+  auto check_extent = [](const tribo::contact::Topography& t) {
+    TRIBO_FUZZ_CHECK(std::isfinite(t.lx_m) && t.lx_m > 0.0 && std::isfinite(t.ly_m) && t.ly_m > 0.0);
+  };
   std::istringstream in(std::string(reinterpret_cast<const char*>(data) + 1, size - 1));
   try {
     if (format == 0) {
@@ -27,15 +31,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else if (format == 2) {
       const tribo::contact::Topography t = tribo::contact::read_xyz(in, "fuzz.xyz");
       TRIBO_FUZZ_CHECK(t.heights_m.rows() >= 2 && t.heights_m.cols() >= 2 && t.heights_m.allFinite());
-      TRIBO_FUZZ_CHECK(std::isfinite(t.lx_m) && t.lx_m > 0.0 && std::isfinite(t.ly_m) && t.ly_m > 0.0);
+      check_extent(t);
     } else if (format == 3) {
       const tribo::contact::Topography t = tribo::contact::read_ascii_topography(in, "fuzz.txt");
       TRIBO_FUZZ_CHECK(t.heights_m.size() > 0 && t.heights_m.allFinite());
-      TRIBO_FUZZ_CHECK(std::isfinite(t.lx_m) && t.lx_m > 0.0 && std::isfinite(t.ly_m) && t.ly_m > 0.0);
+      check_extent(t);
     } else {
       const tribo::contact::Topography t = tribo::contact::read_dektak_csv(in, "fuzz.csv");
       TRIBO_FUZZ_CHECK(t.heights_m.rows() >= 1 && t.heights_m.cols() == 1 && t.heights_m.allFinite());
-      TRIBO_FUZZ_CHECK(std::isfinite(t.lx_m) && t.lx_m > 0.0 && std::isfinite(t.ly_m) && t.ly_m > 0.0);
+      check_extent(t);
     }
   } catch (const std::invalid_argument& e) {
     // Every message names the file it is about.
