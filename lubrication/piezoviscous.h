@@ -12,13 +12,17 @@
 // +35 % as p → ∞.
 #pragma once
 
+#include "lubrication/viscosity.h"
+
 namespace tribo::lubrication {
 
 enum class PressureViscosityLaw { barus, roelands };
 
 struct PiezoviscousLubricant {
-  double viscosity_Pa_s = 0.021;            // η0 at ambient pressure (thesis white oil, viscosity.h)
-  double pressure_viscosity_per_Pa = 2e-8;  // α (Barus) or the initial slope of Roelands
+  // η0 at ambient pressure and α (Barus) or the initial slope of Roelands: the thesis white oil's
+  // (viscosity.h), where their sources are given.
+  double viscosity_Pa_s = Lubricant{}.viscosity_Pa_s;
+  double pressure_viscosity_per_Pa = Lubricant{}.pressure_viscosity_per_Pa;
   PressureViscosityLaw law = PressureViscosityLaw::roelands;
   bool compressible = true;                 // Dowson–Higginson density; false: ρ = ρ0
 };
