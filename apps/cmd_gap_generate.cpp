@@ -1,11 +1,14 @@
-// `tribo gap generate --generator G --kind K --effect E --seed N --out DIR`: one synthetic
-// experiment bundle with a known truth, as the selftest diagnoses it — so a user can run
-// `tribo gap diagnose` on a case whose answer is known, and see what the diagnosis does with it.
+// `tribo gap generate --generator G --kind K --effect E --seed N [--set S] --out DIR`: one
+// synthetic experiment bundle with a known truth, as the selftest diagnoses it — so a user can run
+// `tribo gap diagnose` on a case whose answer is known, and see what the diagnosis does with it
+// (a selftest case of set S with this seed is the same case: `cases.jsonl` gives the seed).
 //   DIR/bundle/      the experiment bundle (gap/bundle.h; experiment.toml, runs.csv, traces/)
+//   DIR/test/        pin-on-disc: the test block (the same truth at the set's test speeds, noise
+//                    drawn afresh), for `tribo gap diagnose --test`
 //   DIR/model.toml   the model the diagnosis starts from: the rig as told, a Coulomb baseline
 //                    miscalibrated as the selftest's is, and no effect
-//   DIR/truth.json   the withheld effect, the form it was written in, generator, kind, seed,
-//                    provenance
+//   DIR/truth.json   the withheld effect (rig generator: with its parameters), the form it was
+//                    written in, generator, kind, set, seed, provenance
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -24,29 +27,32 @@ namespace tribo::cli {
 namespace {
 
 struct GenerateArgs {
-  std::string generator = "independent", kind = "pin_on_disc", effect = "none", out = "out/gap-case";
+  std::string generator = "independent", kind = "pin_on_disc", effect = "none", set = "development", out = "out/gap-case";
   std::uint64_t seed = 1;
 };
 
 struct GeneratedCase {
-  gap::ExperimentBundle bundle;
+  gap::ExperimentBundle bundle, test;  // test: empty for the drive-history kinds
   rig::RigParameters rig;  // as the model is told it
   double mu_s = 0.0, mu_k = 0.0;
   std::string form;
+  std::map<std::string, double> truth_parameters;
 };
 
 GeneratedCase generate(const GenerateArgs& a) {
   GeneratedCase g;
-  if (a.generator == "rig") {
-    if (a.kind != "pin_on_disc") throw InputError("--kind " + a.kind + ": the rig's simulator writes pin_on_disc bundles only");
-    gap::SyntheticCase c = gap::make_synthetic_case(a.effect, {}, a.seed, gap::SyntheticOptions{});
-    g.bundle = std::move(c.bundle);
+  if (a.kind == "pin_on_disc") {
+    const gap::SyntheticOptions options =
+        gap::synthetic_options(a.set == "validation" ? gap::SelftestSet::validation : gap::SelftestSet::development);
+    gap::CaseBundles c = gap::make_case_bundles({a.effect, {}, a.seed, a.generator}, options);
+    g.bundle = std::move(c.bundle), g.test = std::move(c.test);
     g.mu_s = c.model.baseline.mu_s, g.mu_k = c.model.baseline.mu_k;
-    g.form = "catalogue";
+    g.form = c.form;
+    g.truth_parameters = c.truth_parameters;
   } else {
+    if (a.generator == "rig") throw InputError("--kind " + a.kind + ": the rig's simulator writes pin_on_disc bundles only");
     gap::independent::IndependentCase c = a.kind == "slide_hold_slide" ? gap::independent::make_slide_hold_slide_case(a.effect, a.seed)
-                                          : a.kind == "velocity_step"  ? gap::independent::make_velocity_step_case(a.effect, a.seed)
-                                                                       : gap::independent::make_independent_case(a.effect, a.seed);
+                                                                       : gap::independent::make_velocity_step_case(a.effect, a.seed);
     g.bundle = std::move(c.bundle);
     g.mu_s = c.model_mu_s, g.mu_k = c.model_mu_k;
     g.form = c.form;
@@ -83,14 +89,18 @@ void run_generate(const GenerateArgs& a) {
   make_output_dir(a.out);
   const std::filesystem::path dir(a.out);
   gap::write_bundle(g.bundle, dir / "bundle");
+  if (!g.test.runs.empty()) gap::write_bundle(g.test, dir / "test");
   write_file_atomically(dir / "model.toml", model_toml(g, a));
   nlohmann::json truth{{"true_effect", a.effect}, {"form", g.form},           {"generator", a.generator},
-                       {"kind", a.kind},          {"seed", a.seed},           {"provenance", provenance_json(std::filesystem::path())}};
+                       {"kind", a.kind},          {"seed", a.seed},           {"set", a.set},
+                       {"provenance", provenance_json(std::filesystem::path())}};
+  if (!g.truth_parameters.empty()) truth["parameters"] = g.truth_parameters;
   write_file_atomically(dir / "truth.json", truth.dump(2) + "\n");
-  std::printf("%s case, %s (%s), seed %llu -> %s/{bundle/,model.toml,truth.json}\n", a.generator.c_str(), a.effect.c_str(),
-              a.kind.c_str(), static_cast<unsigned long long>(a.seed), a.out.c_str());
-  std::printf("diagnose it: tribo gap diagnose --experiment %s/bundle --model %s/model.toml --out %s/diagnosis\n", a.out.c_str(),
-              a.out.c_str(), a.out.c_str());
+  const bool test = !g.test.runs.empty();
+  std::printf("%s case, %s (%s, %s set), seed %llu -> %s/{bundle/,%smodel.toml,truth.json}\n", a.generator.c_str(), a.effect.c_str(),
+              a.kind.c_str(), a.set.c_str(), static_cast<unsigned long long>(a.seed), a.out.c_str(), test ? "test/," : "");
+  std::printf("diagnose it: tribo gap diagnose --experiment %s/bundle --model %s/model.toml%s%s --out %s/diagnosis\n", a.out.c_str(),
+              a.out.c_str(), test ? " --test " : "", test ? (a.out + "/test").c_str() : "", a.out.c_str());
 }
 
 }  // namespace
@@ -106,6 +116,9 @@ void add_gap_generate_command(CLI::App& gap) {
       ->capture_default_str();
   cmd->add_option("--effect", args->effect, "The withheld effect (a catalogue name the generator writes), or none for a control")->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of the case's parameters and noise")->capture_default_str();
+  cmd->add_option("--set", args->set, "pin_on_disc: the selftest set whose speeds, test speeds and effect strengths the case is drawn with (development or validation; the case of `tribo gap selftest --set S` with this seed)")
+      ->check(CLI::IsMember({"development", "validation"}))
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->callback([args] { run_generate(*args); });
 }

@@ -27,6 +27,7 @@ constexpr int kStepBins = 24;
 constexpr int kBinsPerBlock = 3;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
 constexpr int kNoiseBlocks = 4;        // repeats a run's window is cut into for its items' noise
+constexpr double kSimulatedCycles = 4.0;  // cycles a simulated constant-speed window holds at least (RunPlan::simulated_extra_s)
 constexpr long kStaticPointEvents = 40;  // a static point's run stops after this many events (20 stick-slip cycles or more)
 constexpr double kStaticPointCycles_s = 10.0;  // and simulates at most this long after loading the contact
 // Shortest drive segment, in samples: its steady level is the mean of its last 30 % in four
@@ -195,10 +196,12 @@ Extremum locate_extremum(const SmoothedSignal& S, double ta, double tb, bool max
 
 // Friction maxima and minima of a constant-speed run, with hysteresis at 30 % / 70 % of the range,
 // on μ smoothed and read every `spacing_s` (the measured record's median spacing, on both sides).
-// `slip_step_s` ≤ 0 asks for the measured Δ (returned through it).
-Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_step_s, std::string* regime) {
+// `slip_step_s` ≤ 0 asks for the measured Δ (returned through it). The window starts at
+// `window_start_s`, by default after the start-up part of what `s` holds.
+Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_step_s, std::string* regime,
+                                double window_start_s = kNaN) {
   Features f;
-  const double t0 = rig::analysis_start_s(s.t.front(), s.t.back());
+  const double t0 = std::isfinite(window_start_s) ? window_start_s : rig::analysis_start_s(s.t.front(), s.t.back());
   std::vector<std::size_t> idx;
   for (std::size_t i = 0; i < s.t.size(); ++i)
     if (s.t[i] >= t0) idx.push_back(i);
@@ -211,18 +214,20 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
   const auto [lo_it, hi_it] = std::minmax_element(muw.begin(), muw.end());
   const double lo_v = *lo_it, hi_v = *hi_it;
   f["mean_mu"] = mean(muw);
-  if (!s.x.empty()) {
-    // Between the 5th and 95th percentiles of x over time (read on the uniform grid, so that a
-    // record sampled densely in slip does not weigh slip more): the extremes themselves grow with
-    // the record's noise and, over many cycles, with the breakaway's scatter from cycle to cycle,
-    // which a deterministic simulation does not have (a foreign Coulomb control with 2 % scatter:
-    // its range 4 % above the truth's amplitude).
+  // Between the 5th and 95th percentiles of x over time in [from, to] (read on the uniform grid,
+  // so that a record sampled densely in slip does not weigh slip more): the extremes themselves
+  // grow with the record's noise and, over many cycles, with the breakaway's scatter from cycle to
+  // cycle, which a deterministic simulation does not have (a foreign Coulomb control with 2 %
+  // scatter: its range 4 % above the truth's amplitude).
+  const auto x_range = [&](double from, double to) {
     std::vector<double> xs;
-    for (double t : tw) xs.push_back(interp_to_end(s.t, s.x, t));
+    for (double t : tw)
+      if (t >= from && t <= to) xs.push_back(interp_to_end(s.t, s.x, t));
     std::sort(xs.begin(), xs.end());
     const auto at = [&](double q) { return xs[static_cast<std::size_t>(q * static_cast<double>(xs.size() - 1))]; };
-    f["peak_to_peak_m"] = at(0.95) - at(0.05);
-  }
+    return xs.empty() ? kNaN : at(0.95) - at(0.05);
+  };
+  if (!s.x.empty()) f["peak_to_peak_m"] = x_range(tw.front(), tw.back());
   const double range = hi_v - lo_v;
   if (!(range > 0.05 * std::abs(f["mean_mu"]))) {
     if (regime) *regime = "steady_sliding";
@@ -267,8 +272,12 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
   for (const Extremum& e : peak) mp.push_back(e.value);
   for (const Extremum& e : trough) mt.push_back(e.value);
   for (std::size_t i = 1; i < peak.size(); ++i) period.push_back(peak[i].t - peak[i - 1].t);
-  // Over whole cycles, so the mean does not depend on where in a cycle the record ends.
-  if (peak.size() >= 2 && peak.back().t > peak.front().t) f["mean_mu"] = time_average(tw, muw, peak.front().t, peak.back().t);
+  // Over whole cycles, so that neither depends on where in a cycle the window ends (a simulated
+  // window holds more cycles than a slow measured one, RunPlan::simulated_extra_s).
+  if (peak.size() >= 2 && peak.back().t > peak.front().t) {
+    f["mean_mu"] = time_average(tw, muw, peak.front().t, peak.back().t);
+    if (!s.x.empty()) f["peak_to_peak_m"] = x_range(peak.front().t, peak.back().t);
+  }
   for (std::size_t i = 0; i < peaks.size(); ++i) {
     const auto next = std::upper_bound(troughs.begin(), troughs.end(), peaks[i]);
     const std::size_t n = static_cast<std::size_t>(next - troughs.begin());
@@ -592,6 +601,17 @@ Simulated simulate_history(const rig::RigParameters& rig, const RunPlan& plan, c
   return run_simulation(rig, rig::Drive::steps(plan.step_times_s, plan.step_speeds_m_per_s), law, model, seed, options);
 }
 
+// How much longer than the measured record a constant-speed run is simulated (RunPlan): enough
+// for kSimulatedCycles of the measured cycle (its period, else rise plus fall time) in the
+// analysed window; 0 for a record without one, or with that many already.
+double simulated_extra_s(const Features& measured, double slip_step_s, double duration_s) {
+  const auto value = [&](const char* key) { return measured.count(key) ? measured.at(key) : kNaN; };
+  double cycle_s = value("period_s");
+  if (!std::isfinite(cycle_s)) cycle_s = value("rise_time_s") + slip_step_s * (kSlipDropPoints + 1);
+  if (!(cycle_s > 0.0)) return 0.0;
+  return std::max(0.0, kSimulatedCycles * cycle_s - (1.0 - rig::kStartupFraction) * duration_s);
+}
+
 double median_spacing(const std::vector<double>& t) {
   std::vector<double> d;
   for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
@@ -690,8 +710,8 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
       case RunPlan::Kind::constant_speed:
       case RunPlan::Kind::drive_history: {
         const bool history = plan.kind == RunPlan::Kind::drive_history;
-        options.duration_s = plan.duration_s;
-        options.max_events = Comparison::event_budget(rig, plan.duration_s);
+        options.duration_s = plan.duration_s + plan.simulated_extra_s;
+        options.max_events = Comparison::event_budget(rig, options.duration_s);
         options.samples_per_period = kSamplesPerPeriod;
         // A drive history is read at the measured instants: the simulation outputs there (and τ
         // earlier, where a lagging instrument reads the acceleration), not on a grid of its natural
@@ -731,7 +751,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           f = analyse_drive_history(at, plan, nullptr);
         } else {
           double step = plan.slip_step_s;
-          f = analyse_constant_speed(s, plan.sample_spacing_s, step, nullptr);
+          f = analyse_constant_speed(s, plan.sample_spacing_s, step, nullptr, rig::analysis_start_s(0.0, plan.duration_s));
         }
         if (trace) {
           std::vector<double> F;
@@ -955,6 +975,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
         regime = rig::classify_regime(
             rig, rig::recorded_regime_evidence(rig, s.t, s.x, run.v_m_per_s, rig::analysis_start_s(s.t.front(), s.t.back())));
       plan.slip_step_s = step;
+      plan.simulated_extra_s = simulated_extra_s(f, step, plan.duration_s);
       const Features noise = block_noise(s, plan.sample_spacing_s, step);
       plans_.push_back(plan);
       const std::string where = "v = " + numerics::fmt(run.v_m_per_s, "%.3g") + " m/s";

@@ -92,6 +92,13 @@ struct RunPlan {
   // simulation is read the same way (compare.cpp, sampled_as_recorded).
   double stick_spacing_s = 0.0, slip_spacing_s = 0.0;
   double slip_step_s = 0.0;                               // Δ of slip_drop (from the measured run)
+  // A constant-speed run is simulated this much past the measured record, its window starting
+  // where the measured one does, so that it holds at least four of the measured cycles: a feature
+  // the measured window shows in one or two cycles (a slow run's period) would otherwise be there
+  // or not in the simulation as its cycles' phase moves past the window's end — a cliff in the
+  // fit's cost, where the item has no prediction (validation seed 14010: the instrument's search
+  // lost its way at the slowest run's period). A limit cycle reads the same in a longer window.
+  double simulated_extra_s = 0.0;
   std::vector<std::vector<double>> step_bin_edges_m;      // per step: displacement bin edges
   std::vector<double> sample_times_s;                     // drive history: measured times − first
   // Drive history as one run with the law's state carried across steps (slide-hold-slide: the

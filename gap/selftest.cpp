@@ -186,13 +186,10 @@ bool same_case(const SelftestCase& a, const SelftestCase& b) {
   return a.true_effect == b.true_effect && a.model_effects == b.model_effects && a.seed == b.seed && a.generator == b.generator;
 }
 
-namespace {
-
-SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis) {
-  SyntheticCase c;
-  ExperimentBundle test;  // the same truth at the test speeds, its noise drawn with another seed
+CaseBundles make_case_bundles(const SelftestCase& sc, const SyntheticOptions& synthetic) {
+  // The test block's noise is seeded apart from the bundle's.
+  CaseBundles c;
   const std::uint64_t test_seed = sc.seed + 1'000'003;
-  std::string form;
   if (sc.generator == kIndependentGenerator) {
     if (!sc.model_effects.empty()) throw std::invalid_argument("selftest: the independent generator takes no model effects");
     independent::GeneratorOptions go;
@@ -201,21 +198,33 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
     go.noise_fraction = synthetic.noise_fraction;
     independent::IndependentCase ic = independent::make_independent_case(sc.true_effect, sc.seed, go);
     go.speeds_m_per_s = synthetic.test_speeds_m_per_s;
-    test = independent::record_bundle(ic.truth, ic.actual, ic.told, ic.friction_chain, ic.displacement_chain, ic.velocity_chain, go,
-                                      test_seed);
-    c.true_effect = sc.true_effect;
+    if (!go.speeds_m_per_s.empty())
+      c.test = independent::record_bundle(ic.truth, ic.actual, ic.told, ic.friction_chain, ic.displacement_chain, ic.velocity_chain, go,
+                                          test_seed);
     c.model = rig::coulomb(ic.model_mu_s, ic.model_mu_k);
     c.bundle = std::move(ic.bundle);
-    form = ic.form;
+    c.form = ic.form;
   } else if (sc.generator == kRigGenerator) {
-    c = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
+    SyntheticCase s = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
     SyntheticOptions at_test = synthetic;
     at_test.speeds_m_per_s = synthetic.test_speeds_m_per_s;
-    test = synthesize_bundle(rig::RigParameters{}, c.truth, at_test, test_seed);
-    form = "catalogue";
+    if (!at_test.speeds_m_per_s.empty()) c.test = synthesize_bundle(rig::RigParameters{}, s.truth, at_test, test_seed);
+    if (sc.true_effect != "none")
+      for (const rig::ParameterSpec& p : rig::effect_info(sc.true_effect).parameters)
+        c.truth_parameters[sc.true_effect + "." + p.name] = s.truth.get(sc.true_effect, p.name);
+    c.model = std::move(s.model);
+    c.bundle = std::move(s.bundle);
+    c.form = "catalogue";
   } else {
     throw std::invalid_argument("selftest: unknown generator '" + sc.generator + "'");
   }
+  return c;
+}
+
+namespace {
+
+SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis) {
+  const CaseBundles c = make_case_bundles(sc, synthetic);
   diagnosis.seed = sc.seed;
   const rig::RigParameters rig = apply_bundle_rig(c.bundle, rig::RigParameters{});
   const auto start = std::chrono::steady_clock::now();
@@ -223,7 +232,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   SelftestRow row;
   row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   row.c = sc;
-  row.form = form;
+  row.form = c.form;
   row.verdict = verdict_name(d.verdict);
   row.heldout_gap_before = d.verdict.heldout_gap_before;
   row.heldout_gap_after = d.verdict.heldout_gap_after;
@@ -233,7 +242,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   for (const Candidate& k : d.candidates)
     row.candidates.push_back({verdict_name(k.effects), k.evidence_nats, k.evidence_se_nats, k.heldout_gap_after, k.earns});
   if (!synthetic.test_speeds_m_per_s.empty()) {
-    const TestBlockGap t = test_block_gap(test, apply_bundle_rig(test, rig::RigParameters{}), d, sc.seed);
+    const TestBlockGap t = test_block_gap(c.test, apply_bundle_rig(c.test, rig::RigParameters{}), d, sc.seed);
     row.test_gap_before = t.gap_before;
     row.test_gap_after = t.gap_after;
   }

@@ -143,4 +143,15 @@ SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const Synthe
 
 bool same_case(const SelftestCase& a, const SelftestCase& b);
 
+// A case as the selftest diagnoses it: the bundle, the test block (the same truth at the test
+// speeds, its noise drawn with another seed; empty without test speeds), the model the diagnosis starts from (the baseline
+// miscalibrated, the withheld effect left out) and the form the effect was written in.
+struct CaseBundles {
+  ExperimentBundle bundle, test;
+  rig::FrictionModel model;
+  std::string form;
+  std::map<std::string, double> truth_parameters;  // rig generator: "effect.parameter" of the withheld effect
+};
+CaseBundles make_case_bundles(const SelftestCase& c, const SyntheticOptions& synthetic);
+
 }  // namespace tribo::gap
