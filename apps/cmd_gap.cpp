@@ -276,6 +276,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
                           {"evidence_se_nats", gap::finite_or_null(c.evidence_se_nats)}, {"heldout_gap", gap::finite_or_null(c.heldout_gap)},
                           {"earns", c.earns}});
   j["candidates"] = candidates;
+  j["indistinguishable_from"] = row.indistinguishable_from;
   j["git_commit"] = row.git_commit.empty() ? build : row.git_commit;
   return j;
 }
@@ -310,6 +311,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.confidence_fixed_fits = number(j, "confidence_fixed_fits");
       r.correct = r.verdict == r.c.true_effect;
       r.git_commit = j.value("git_commit", std::string());
+      r.indistinguishable_from = j.value("indistinguishable_from", std::vector<std::string>{});
       for (const nlohmann::json& c : j.value("candidates", nlohmann::json::array()))
         r.candidates.push_back({c.at("effect").get<std::string>(), number(c, "evidence_nats"), number(c, "evidence_se_nats"),
                                 number(c, "heldout_gap"), c.value("earns", false)});

@@ -16,6 +16,7 @@ void add_rig_command(CLI::App& app);
 void add_demo_command(CLI::App& app);
 void add_contact_command(CLI::App& app);
 void add_reynolds_command(CLI::App& app);
+void add_ehl_command(CLI::App& app);
 void add_gap_command(CLI::App& app);
 void add_gap_generate_command(CLI::App& gap);  // `tribo gap generate` (cmd_gap_generate.cpp)
 void add_homogenise_command(CLI::App& app);

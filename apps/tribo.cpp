@@ -32,6 +32,7 @@ int tribo::cli::run_command_line(int argc, char** argv) {
   tribo::cli::add_rig_command(app);
   tribo::cli::add_contact_command(app);
   tribo::cli::add_reynolds_command(app);
+  tribo::cli::add_ehl_command(app);
   tribo::cli::add_homogenise_command(app);
   tribo::cli::add_sweep_command(app);
   tribo::cli::add_gap_command(app);

@@ -639,10 +639,12 @@ Topography read_topography(const std::filesystem::path& path, double height_scal
   return t;
 }
 
-void write_npy(std::ostream& out, const Eigen::ArrayXXd& field) {
+namespace {
+
+// A float64 .npy's magic, version, header length and header for `shape` ("(3, 4)", "(7,)").
+void write_npy_header(std::ostream& out, const std::string& shape) {
   static_assert(std::endian::native == std::endian::little, "write_npy writes little-endian float64");
-  std::string header = "{'descr': '<f8', 'fortran_order': True, 'shape': (" + std::to_string(field.rows()) + ", " +
-                       std::to_string(field.cols()) + "), }";
+  std::string header = "{'descr': '<f8', 'fortran_order': True, 'shape': " + shape + ", }";
   // Magic (6) + version (2) + length (2) + header + '\n' must be a multiple of 64 bytes.
   while ((10 + header.size() + 1) % 64 != 0) header += ' ';
   header += '\n';
@@ -651,8 +653,19 @@ void write_npy(std::ostream& out, const Eigen::ArrayXXd& field) {
   const char len_bytes[2] = {static_cast<char>(len & 0xff), static_cast<char>(len >> 8)};
   out.write(len_bytes, 2);
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
+}
+
+}  // namespace
+
+void write_npy(std::ostream& out, const Eigen::ArrayXXd& field) {
+  write_npy_header(out, "(" + std::to_string(field.rows()) + ", " + std::to_string(field.cols()) + ")");
   // Column-major storage is exactly numpy's Fortran order for shape (rows, cols).
   out.write(reinterpret_cast<const char*>(field.data()), static_cast<std::streamsize>(sizeof(double) * field.size()));
+}
+
+void write_npy(std::ostream& out, const std::vector<double>& profile) {
+  write_npy_header(out, "(" + std::to_string(profile.size()) + ",)");
+  out.write(reinterpret_cast<const char*>(profile.data()), static_cast<std::streamsize>(sizeof(double) * profile.size()));
 }
 
 void write_npy(const std::filesystem::path& path, const Eigen::ArrayXXd& field) {

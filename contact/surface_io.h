@@ -68,5 +68,7 @@ inline constexpr std::size_t kMaxSurfaceLineBytes = std::size_t{1} << 26;
 void write_npy(const std::filesystem::path& path, const Eigen::ArrayXXd& field);
 // The same bytes into a stream (for atomic writers that own the file).
 void write_npy(std::ostream& out, const Eigen::ArrayXXd& field);
+// A profile (a 1-D field along x) as a float64 .npy of shape (n,).
+void write_npy(std::ostream& out, const std::vector<double>& profile);
 
 }  // namespace tribo::contact

@@ -239,6 +239,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.confidence = d.verdict.confidence;
   row.confidence_fixed_fits = d.verdict.confidence_fixed_fits;
   row.correct = row.verdict == sc.true_effect;
+  row.indistinguishable_from = d.verdict.indistinguishable;
   for (const Candidate& k : d.candidates)
     row.candidates.push_back({verdict_name(k.effects), k.evidence_nats, k.evidence_se_nats, k.heldout_gap_after, k.earns});
   if (!synthetic.test_speeds_m_per_s.empty()) {

@@ -6,6 +6,7 @@
     tribo_plots.py rig DIR    phase_plane.png, trace.png from a `tribo rig` run
     tribo_plots.py gap DIR    gap_by_observable.png, items.png, overlay.png from `tribo gap diagnose`
     tribo_plots.py homogenise DIR   stribeck.png, area.png from `tribo homogenise`
+    tribo_plots.py ehl DIR    ehl.png from `tribo ehl`: pressure and film along the contact
     tribo_plots.py sweep DIR  DIR/plots/<column>.png from `tribo sweep`: each output column against
                               the axes (a line for one varying axis, a heat map for two)
 """
@@ -490,8 +491,45 @@ def plot_sweep(d):
     print("\n".join(written))
 
 
+def plot_ehl(d):
+    """Pressure (GPa) and film (um) along the contact, x over the Hertz half-width, with the dry Hertz
+    pressure and the published central-film fits for comparison."""
+    import numpy as np
+
+    with open(os.path.join(d, "ehl.json")) as f:
+        s = json.load(f)
+    b, p_h = s["hertz_half_width_m"], s["hertz_pressure_Pa"]
+    x = np.load(os.path.join(d, "x_m.npy")) / b
+    p = np.load(os.path.join(d, "pressure_Pa.npy"))
+    h = np.load(os.path.join(d, "film_m.npy"))
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    ax.plot(x, p / 1e9, color="tab:red", label="pressure")
+    inside = np.abs(x) <= 1
+    ax.plot(x[inside], p_h * np.sqrt(1 - x[inside] ** 2) / 1e9, "--", color="tab:red", lw=0.8, label="dry Hertz")
+    ax.set_xlabel("x / b (Hertz half-width %.3g um)" % (b * 1e6))
+    ax.set_ylabel("pressure (GPa)", color="tab:red")
+    film = ax.twinx()
+    film.plot(x, h * 1e6, color="tab:blue", label="film")
+    for key, style in (("pan_hamrock_central_film_m", ":"), ("dowson_toyoda_central_film_m", "-.")):
+        film.axhline(s["fits"][key] * 1e6, color="tab:blue", ls=style, lw=0.8, label=key.replace("_central_film_m", " h_c"))
+    film.set_ylabel("film (um)", color="tab:blue")
+    film.set_ylim(0, 4 * s["central_film_m"] * 1e6)
+    mu = s.get("friction_coefficient")
+    ax.set_title("EHL line contact: h_c %.3g um, h_min %.3g um, p_max %.3g GPa%s" % (
+        s["central_film_m"] * 1e6, s["minimum_film_m"] * 1e6, s["max_pressure_Pa"] / 1e9,
+        "" if mu is None else ", mu %.3g" % mu), fontsize=9)
+    lines = ax.get_legend_handles_labels()[0] + film.get_legend_handles_labels()[0]
+    ax.legend(lines, [ln.get_label() for ln in lines], fontsize=8, loc="upper left")
+    fig.tight_layout()
+    path = os.path.join(d, "ehl.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print(path)
+
+
 def main(argv):
-    modes = {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap, "homogenise": plot_homogenise, "sweep": plot_sweep}
+    modes = {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap, "homogenise": plot_homogenise, "sweep": plot_sweep,
+             "ehl": plot_ehl}
     if len(argv) != 3 or argv[1] not in modes:
         sys.stderr.write(__doc__)
         return 2

@@ -26,3 +26,32 @@ assert header == ['t_s', 'x_m', 'friction_N', 'x_drive_m', 'v_drive_m_per_s'], h
 if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo gap generate: the case does not read back as written: ${why}")
 endif()
+
+# A validation-set case of the rig's simulator, as `tribo gap selftest --set validation` diagnoses
+# it: the set's five speeds (README, "The validation set"), its test block at the four speeds
+# between them, and the withheld effect's parameters in truth.json.
+file(REMOVE_RECURSE ${WORK}-validation)
+execute_process(COMMAND ${TRIBO} gap generate --generator rig --effect instrument --seed 14010 --set validation --out ${WORK}-validation
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "tribo gap generate --set validation failed (${status}): ${err}")
+endif()
+if(NOT out MATCHES "--test ${WORK}-validation/test")
+  message(FATAL_ERROR "tribo gap generate: the diagnose line does not pass the test block: ${out}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "
+import csv, json, sys
+d = sys.argv[1]
+speeds = lambda b: [float(r['v_m_per_s']) for r in csv.DictReader(open(d + '/' + b + '/runs.csv'))]
+assert speeds('bundle') == [4.5e-3, 8e-3, 1.4e-2, 2.4e-2, 3.8e-2], speeds('bundle')
+assert speeds('test') == [6e-3, 1.06e-2, 1.83e-2, 3.02e-2], speeds('test')
+truth = json.load(open(d + '/truth.json'))
+assert truth['set'] == 'validation' and truth['generator'] == 'rig', truth
+p = truth['parameters']
+g = p['instrument.gain']
+assert 1.075 - 1e-12 <= max(g, 1 / g) <= 1.45 + 1e-12, p  # 1 + (0.15 ... 0.3) x strength 0.5 ... 1.5, or its inverse
+assert 0.5e-3 <= p['instrument.lag_s'] <= 4.5e-3, p
+" ${WORK}-validation RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo gap generate --set validation: ${why}")
+endif()

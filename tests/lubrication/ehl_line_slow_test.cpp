@@ -1,15 +1,18 @@
 // The EHL line contact's film (lubrication/ehl_line.h) against closed forms and published
 // solutions: the rigid isoviscous cylinder (Martin's load in closed form, with the observed order
 // of the scheme) and the film thickness of the published fits for a steel roller in mineral oil
-// (Roelands viscosity, Dowson–Higginson density). 5 s in Release; label slow.
+// (Roelands viscosity, Dowson–Higginson density), and the Eyring traction of that film. 5 s in
+// Release; label slow.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "lubrication/ehl_line.h"
+#include "lubrication/ehl_traction.h"
 #include "observed_order.h"
 #include "lubrication/reference/ehl_film.h"
 #include "steel_roller_pair.h"
@@ -74,6 +77,21 @@ TEST(EhlLine, CentralFilmGrowsWithSpeedAsTheFitsExponent) {
   const EhlLineResult fast = solve_ehl_line({w, kRadius_m, kModulus_Pa, 2.0 * kSpeed_m_per_s}, mineral_oil());
   ASSERT_TRUE(slow.converged && fast.converged) << slow.message << " / " << fast.message;
   EXPECT_NEAR(std::log(fast.central_film_m / slow.central_film_m) / std::log(2.0), 0.69, 0.05);
+}
+
+// The steel rollers at w = 3e5 N/m (p_H ≈ 1.04 GPa) with 5 % slide-to-roll ratio: with τ0 = 5 MPa
+// the traction coefficient is a few hundredths, as EHL traction rigs measure for mineral oils
+// (typically 0.02–0.08 at these pressures); the Newtonian film, whose viscosity
+// rises by exp(αp) in the contact, gives one above 1 — the reason traction needs the Eyring limit.
+TEST(EhlTraction, EyringTractionOfTheSteelRollersIsAFewHundredthsWhereNewtonianExceedsOne) {
+  const double w = 3e5;
+  const EhlLineResult film = solve_ehl_line({w, kRadius_m, kModulus_Pa, kSpeed_m_per_s}, mineral_oil());
+  ASSERT_TRUE(film.converged) << film.message;
+  const double du = 0.05 * kSpeed_m_per_s;
+  const double mu = ehl_line_traction(film, mineral_oil(), du, 5e6, w).friction_coefficient;
+  EXPECT_GT(mu, 0.02);
+  EXPECT_LT(mu, 0.08);
+  EXPECT_GT(ehl_line_traction(film, mineral_oil(), du, std::numeric_limits<double>::infinity(), w).friction_coefficient, 1.0);
 }
 
 }  // namespace

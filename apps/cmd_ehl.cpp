@@ -1,0 +1,73 @@
+// `tribo ehl CONFIG.toml --out DIR`: one elastohydrodynamic contact (a line contact so far),
+// writing DIR/ehl.json (films, pressures, traction, convergence, the published fits at the same
+// dimensionless groups, provenance), the profiles x_m.npy, pressure_Pa.npy and film_m.npy, and with
+// --plot ehl.png. Every key is read and checked before anything is written (docs/lubrication.md).
+// The reader and the solve are apps/ehl_run.h; this file parses argv and writes the files.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/commands.h"
+#include "apps/config.h"
+#include "apps/ehl_run.h"
+#include "apps/output.h"
+#include "apps/provenance.h"
+#include "apps/rig_output.h"
+#include "contact/surface_io.h"
+
+namespace tribo::cli {
+namespace {
+
+struct Args {
+  std::string config;
+  std::string out = "out/ehl";
+  bool plot = false;
+};
+
+void write_profile(const std::filesystem::path& path, const std::vector<double>& profile) {
+  AtomicFile f(path);
+  contact::write_npy(f.stream(), profile);
+  f.commit();
+}
+
+void run_ehl(const Args& args) {
+  if (args.config.empty()) throw InputError("ehl: a CONFIG.toml is required (see tribo ehl --help)");
+  const EhlRun run = load_ehl_run(args.config);
+  make_output_dir(args.out);
+  const std::filesystem::path dir(args.out);
+  const EhlSolve solved = solve_ehl_run(run);
+  nlohmann::json j = solved.summary;
+  j["provenance"] = provenance_json(args.config);
+  j["fields"] = {{"x_m", "x_m.npy"},
+                 {"pressure_Pa", "pressure_Pa.npy"},
+                 {"film_m", "film_m.npy"},
+                 {"layout", "float64 arrays of shape (nodes,): the value at node i, x_m[i] from the contact centre in the rolling direction"}};
+  write_profile(dir / "x_m.npy", solved.film.x_m);
+  write_profile(dir / "pressure_Pa.npy", solved.film.pressure_Pa);
+  write_profile(dir / "film_m.npy", solved.film.film_m);
+  write_file_atomically(dir / "ehl.json", j.dump(2) + "\n");
+  const auto& f = solved.film;
+  std::printf("line contact: central film %s m, minimum %s m, max pressure %s Pa, friction coefficient %s, %d iterations -> %s\n",
+              fmt(f.central_film_m, "%.4g").c_str(), fmt(f.minimum_film_m, "%.4g").c_str(), fmt(f.max_pressure_Pa, "%.4g").c_str(),
+              f.converged ? fmt(solved.traction.friction_coefficient, "%.4g").c_str() : "-", f.iterations, args.out.c_str());
+  if (!f.converged) throw std::runtime_error("EHL solve did not converge (residual " + fmt(f.residual, "%.3g") + "): " + f.message);
+  if (args.plot && run_plot_script("ehl", args.out) != 0)
+    std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
+}
+
+}  // namespace
+
+void add_ehl_command(CLI::App& app) {
+  auto args = std::make_shared<Args>();
+  CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line contact: film, pressure and traction (TOML config)");
+  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], [solver])")->required();
+  cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy)")->capture_default_str();
+  cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
+  cmd->callback([args] { run_ehl(*args); });
+}
+
+}  // namespace tribo::cli

@@ -1,0 +1,124 @@
+// The reader and the solve of `tribo ehl` (see ehl_run.h).
+#include "apps/ehl_run.h"
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "apps/config.h"
+#include "lubrication/reference/ehl_film.h"
+
+namespace tribo::cli {
+
+namespace lub = tribo::lubrication;
+
+EhlRun load_ehl_run(const std::filesystem::path& path) { return load_ehl_run(parse_toml_file(path), path); }
+
+EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
+  ConfigTable root(doc, path.string(), "");
+  EhlRun run;
+  auto c = root.table("contact");
+  if (!c) root.fail("contact", "the [contact] table is required");
+  const std::string geometry = c->choice("geometry", "line", {"line", "point"});
+  if (geometry == "point") c->fail("geometry", "point contacts are not solved yet (issue 36); \"line\" is");
+  run.contact.load_per_length_N_per_m = c->required_number("load_per_length_N_per_m", Range::positive);
+  run.contact.reduced_radius_m = c->required_number("reduced_radius_m", Range::positive);
+  run.contact.reduced_modulus_Pa = c->required_number("reduced_modulus_Pa", Range::positive);
+  run.contact.mean_speed_m_per_s = c->required_number("mean_speed_m_per_s", Range::positive);
+  run.sliding_speed_m_per_s = c->number("sliding_speed_m_per_s", 0.0);
+  c->finish();
+  if (auto l = root.table("lubricant")) {
+    run.lubricant.viscosity_Pa_s = l->number("viscosity_Pa_s", run.lubricant.viscosity_Pa_s, Range::positive);
+    run.lubricant.pressure_viscosity_per_Pa =
+        l->number("pressure_viscosity_per_Pa", run.lubricant.pressure_viscosity_per_Pa, Range::non_negative);
+    run.lubricant.law = l->choice("pressure_viscosity_law", "roelands", {"roelands", "barus"}) == "barus"
+                            ? lub::PressureViscosityLaw::barus
+                            : lub::PressureViscosityLaw::roelands;
+    run.lubricant.compressible = l->boolean("compressible", run.lubricant.compressible);
+    // No default for τ0: it is the lubricant's, measured on a traction rig. shear = "newtonian"
+    // takes the film as Newtonian instead (τ0 → ∞).
+    if (l->choice("shear", "eyring", {"eyring", "newtonian"}) == "newtonian") {
+      run.eyring_stress_Pa = std::numeric_limits<double>::infinity();
+    } else {
+      run.eyring_stress_Pa = l->required_number("eyring_stress_Pa", Range::positive);
+    }
+    l->finish();
+  } else {
+    root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
+  }
+  if (auto s = root.table("solver")) {
+    run.options.nodes = static_cast<int>(s->integer("nodes", run.options.nodes, 11, 20001));
+    run.options.inlet_over_half_width = s->number("inlet_over_half_width", run.options.inlet_over_half_width);
+    run.options.outlet_over_half_width = s->number("outlet_over_half_width", run.options.outlet_over_half_width);
+    run.options.tolerance = s->number("tolerance", run.options.tolerance, Range::positive);
+    run.options.max_newton_iterations =
+        static_cast<int>(s->integer("max_newton_iterations", run.options.max_newton_iterations, 1, 100000));
+    run.options.max_continuation_steps =
+        static_cast<int>(s->integer("max_continuation_steps", run.options.max_continuation_steps, 0, 1000));
+    s->finish();
+  }
+  root.finish();
+  input_guard(root, "lubricant", [&] {
+    lub::validate(run.lubricant);
+    return 0;
+  });
+  if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
+  if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
+  return run;
+}
+
+EhlSolve solve_ehl_run(const EhlRun& run) {
+  EhlSolve out;
+  const auto start = std::chrono::steady_clock::now();
+  out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
+  const lub::EhlLineResult& f = out.film;
+  nlohmann::json& j = out.summary;
+  j["geometry"] = "line";
+  j["converged"] = f.converged;
+  j["iterations"] = f.iterations;
+  j["continuation_steps"] = f.continuation_steps;
+  j["residual"] = f.residual;
+  j["message"] = f.message;
+  j["central_film_m"] = f.central_film_m;
+  j["minimum_film_m"] = f.minimum_film_m;
+  j["max_pressure_Pa"] = f.max_pressure_Pa;
+  j["hertz_half_width_m"] = f.hertz_half_width_m;
+  j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
+  j["load_balance_error"] = f.load_balance_error;
+  if (f.converged) {
+    out.traction = lub::ehl_line_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa,
+                                          run.contact.load_per_length_N_per_m);
+    j["friction_coefficient"] = out.traction.friction_coefficient;
+    j["traction_N_per_m"] = out.traction.force_per_length_N_per_m;
+    j["max_shear_stress_Pa"] = out.traction.max_shear_stress_Pa;
+  } else {  // no traction from a film that is not a solution
+    j["friction_coefficient"] = nullptr;
+    j["traction_N_per_m"] = nullptr;
+    j["max_shear_stress_Pa"] = nullptr;
+  }
+  const lub::EhlLineContact& c = run.contact;
+  const auto g = lub::reference::line_contact_groups(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa,
+                                                     c.mean_speed_m_per_s, run.lubricant.viscosity_Pa_s,
+                                                     run.lubricant.pressure_viscosity_per_Pa);
+  j["dimensionless"] = {{"W", g.load}, {"U", g.speed}, {"G", g.material}};
+  // The published fits at the same groups, for comparison (lubrication/reference/ehl_film.h).
+  j["fits"] = {{"dowson_higginson_minimum_film_m", lub::reference::dowson_higginson_minimum_film(g) * c.reduced_radius_m},
+               {"pan_hamrock_minimum_film_m", lub::reference::pan_hamrock_minimum_film(g) * c.reduced_radius_m},
+               {"pan_hamrock_central_film_m", lub::reference::pan_hamrock_central_film(g) * c.reduced_radius_m},
+               {"dowson_toyoda_central_film_m", lub::reference::dowson_toyoda_central_film(g) * c.reduced_radius_m}};
+  j["inputs"] = {{"load_per_length_N_per_m", c.load_per_length_N_per_m},
+                 {"reduced_radius_m", c.reduced_radius_m},
+                 {"reduced_modulus_Pa", c.reduced_modulus_Pa},
+                 {"mean_speed_m_per_s", c.mean_speed_m_per_s},
+                 {"sliding_speed_m_per_s", run.sliding_speed_m_per_s},
+                 {"viscosity_Pa_s", run.lubricant.viscosity_Pa_s},
+                 {"pressure_viscosity_per_Pa", run.lubricant.pressure_viscosity_per_Pa},
+                 {"pressure_viscosity_law", run.lubricant.law == lub::PressureViscosityLaw::barus ? "barus" : "roelands"},
+                 {"compressible", run.lubricant.compressible},
+                 {"eyring_stress_Pa", std::isinf(run.eyring_stress_Pa) ? nlohmann::json("newtonian") : nlohmann::json(run.eyring_stress_Pa)},
+                 {"nodes", run.options.nodes}};
+  j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace tribo::cli

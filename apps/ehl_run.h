@@ -1,0 +1,41 @@
+// `tribo ehl CONFIG.toml` without the files: the config reader and the solve (film and traction),
+// shared by the CLI (apps/cmd_ehl.cpp writes ehl.json and the profiles) and any other front end.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+#include <toml++/toml.h>
+
+#include "lubrication/ehl_line.h"
+#include "lubrication/ehl_traction.h"
+#include "lubrication/piezoviscous.h"
+
+namespace tribo::cli {
+
+// Everything a `tribo ehl` run needs, read and validated before any file is written.
+struct EhlRun {
+  lubrication::EhlLineContact contact;
+  double sliding_speed_m_per_s = 0.0;  // u1 − u2 (the traction's; the film depends on u_m only)
+  lubrication::PiezoviscousLubricant lubricant;
+  double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film
+  lubrication::EhlLineOptions options;
+};
+
+// Reads and checks `path`: [contact] (geometry = "line", load, radius, modulus, speeds),
+// [lubricant] (η0, α, law, compressible, eyring_stress_Pa) and [solver] (docs/lubrication.md).
+// Bad input is an InputError naming file, key and reason.
+EhlRun load_ehl_run(const std::filesystem::path& path);
+EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path);
+
+struct EhlSolve {
+  lubrication::EhlLineResult film;
+  lubrication::EhlTraction traction;
+  nlohmann::json summary;  // ehl.json without "provenance" and "fields"
+};
+
+// The solve `tribo ehl` performs. Non-convergence is summary["converged"] = false, not an exception.
+EhlSolve solve_ehl_run(const EhlRun& run);
+
+}  // namespace tribo::cli
