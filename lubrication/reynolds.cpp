@@ -289,7 +289,7 @@ void validate(const ReynoldsProblem& pr) {
   check_field(pr.pressure_flow_factor_y, "pressure_flow_factor_y", false);
   check_field(pr.couette_film_m, "couette_film_m", true);
   if (!std::isfinite(pr.viscosity_Pa_s) || pr.viscosity_Pa_s <= 0.0)
-    bad("viscosity_Pa_s must be finite and > 0 (got " + std::to_string(pr.viscosity_Pa_s) + ")");
+    bad("viscosity_Pa_s must be finite and > 0 (got " + numerics::shortest(pr.viscosity_Pa_s) + " Pa s)");
   if (!std::isfinite(pr.pressure_viscosity_per_Pa) || pr.pressure_viscosity_per_Pa < 0.0)
     bad("pressure_viscosity_per_Pa must be finite and >= 0");
   if (!std::isfinite(pr.sliding_speed_m_per_s)) bad("sliding_speed_m_per_s must be finite");
@@ -738,7 +738,7 @@ struct ReynoldsSolver::Impl {
         sum.residual = f.cwiseAbs().maxCoeff();
         if (sum.residual <= options.newton_tolerance) {
           sum.converged = true;
-          sum.message = "converged: scaled residual " + std::to_string(sum.residual);
+          sum.message = "converged: scaled residual " + numerics::shortest(sum.residual);
           break;
         }
         residual(pr, t, z, mass_scale, p_scale, f, &mass_rows, &ncp_rows);
@@ -875,7 +875,7 @@ struct ReynoldsSolver::Impl {
         sum.residual = f.cwiseAbs().maxCoeff();
         if (sum.residual <= options.newton_tolerance) {
           sum.converged = true;
-          sum.message = "converged: scaled residual " + std::to_string(sum.residual);
+          sum.message = "converged: scaled residual " + numerics::shortest(sum.residual);
         }
       }
       if (!sum.converged && coarse) {

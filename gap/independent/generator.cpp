@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <random>
 #include <stdexcept>
@@ -192,7 +193,11 @@ ExperimentBundle record_bundle(const IndependentLaw& truth, const RigConstants& 
     io.step_s = o.step_s;
     io.duration_s = o.duration_s;
     const RawRecord raw = integrate(actual, truth, v, io);
-    if (!raw.completed) throw std::runtime_error("independent generator: run at " + std::to_string(v) + " m/s did not complete: " + raw.message);
+    if (!raw.completed) {
+      char speed[32];
+      std::snprintf(speed, sizeof speed, "%g", v);
+      throw std::runtime_error(std::string("independent generator: run at ") + speed + " m/s did not complete: " + raw.message);
+    }
     Run run;
     run.run_id = std::to_string(k);
     run.v_m_per_s = v;

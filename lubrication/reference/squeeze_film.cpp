@@ -5,13 +5,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "numerics/format.h"
+
 namespace tribo::lubrication {
 namespace {
 
 void require_positive(const char* name, double value) {
   if (!std::isfinite(value) || value <= 0.0)
     throw std::invalid_argument(std::string("squeeze film: ") + name + " must be finite and > 0, got " +
-                                std::to_string(value));
+                                numerics::shortest(value));
 }
 
 void require_finite(const char* name, double value) {
