@@ -25,7 +25,7 @@ namespace {
 struct Args {
   std::string config;
   std::string out = "out/ehl";
-  bool plot = false;
+  bool plot = false, summary_only = false;
 };
 
 void write_profile(const std::filesystem::path& path, const std::vector<double>& profile) {
@@ -42,13 +42,15 @@ void run_ehl(const Args& args) {
   const EhlSolve solved = solve_ehl_run(run);
   nlohmann::json j = solved.summary;
   j["provenance"] = provenance_json(args.config);
-  j["fields"] = {{"x_m", "x_m.npy"},
-                 {"pressure_Pa", "pressure_Pa.npy"},
-                 {"film_m", "film_m.npy"},
-                 {"layout", "float64 arrays of shape (nodes,): the value at node i, x_m[i] from the contact centre in the rolling direction"}};
-  write_profile(dir / "x_m.npy", solved.film.x_m);
-  write_profile(dir / "pressure_Pa.npy", solved.film.pressure_Pa);
-  write_profile(dir / "film_m.npy", solved.film.film_m);
+  if (!args.summary_only) {
+    j["fields"] = {{"x_m", "x_m.npy"},
+                   {"pressure_Pa", "pressure_Pa.npy"},
+                   {"film_m", "film_m.npy"},
+                   {"layout", "float64 arrays of shape (nodes,): the value at node i, x_m[i] from the contact centre in the rolling direction"}};
+    write_profile(dir / "x_m.npy", solved.film.x_m);
+    write_profile(dir / "pressure_Pa.npy", solved.film.pressure_Pa);
+    write_profile(dir / "film_m.npy", solved.film.film_m);
+  }
   write_file_atomically(dir / "ehl.json", j.dump(2) + "\n");
   const auto& f = solved.film;
   std::printf("line contact: central film %s m, minimum %s m, max pressure %s Pa, friction coefficient %s, %d iterations -> %s\n",
@@ -66,7 +68,8 @@ void add_ehl_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line contact: film, pressure and traction (TOML config)");
   cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], [solver])")->required();
   cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy)")->capture_default_str();
-  cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
+  CLI::Option* plot = cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
+  add_summary_only_flag(cmd, args->summary_only, "ehl.json")->excludes(plot);
   cmd->callback([args] { run_ehl(*args); });
 }
 

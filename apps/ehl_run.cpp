@@ -7,6 +7,7 @@
 
 #include "apps/config.h"
 #include "lubrication/reference/ehl_film.h"
+#include "lubrication/viscosity.h"
 
 namespace tribo::cli {
 
@@ -42,6 +43,11 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     } else {
       run.eyring_stress_Pa = l->required_number("eyring_stress_Pa", Range::positive);
     }
+    // The film's shear heating (ehl_traction.h): on when the oil's conductivity is given; γ defaults
+    // to viscosity.h's light mineral oil.
+    run.heating.thermal_conductivity_W_per_m_K = l->number("thermal_conductivity_W_per_m_K", 0.0, Range::non_negative);
+    run.heating.temperature_viscosity_per_K =
+        l->number("temperature_viscosity_per_K", lub::Lubricant{}.temperature_viscosity_per_K, Range::non_negative);
     l->finish();
   } else {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
@@ -87,14 +93,13 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
   j["load_balance_error"] = f.load_balance_error;
   if (f.converged) {
     out.traction = lub::ehl_line_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa,
-                                          run.contact.load_per_length_N_per_m);
+                                          run.contact.load_per_length_N_per_m, run.heating);
     j["friction_coefficient"] = out.traction.friction_coefficient;
     j["traction_N_per_m"] = out.traction.force_per_length_N_per_m;
     j["max_shear_stress_Pa"] = out.traction.max_shear_stress_Pa;
+    j["max_film_temperature_rise_K"] = out.traction.max_film_temperature_rise_K;
   } else {  // no traction from a film that is not a solution
-    j["friction_coefficient"] = nullptr;
-    j["traction_N_per_m"] = nullptr;
-    j["max_shear_stress_Pa"] = nullptr;
+    for (const char* key : {"friction_coefficient", "traction_N_per_m", "max_shear_stress_Pa", "max_film_temperature_rise_K"}) j[key] = nullptr;
   }
   const lub::EhlLineContact& c = run.contact;
   const auto g = lub::reference::line_contact_groups(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa,
@@ -116,6 +121,8 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                  {"pressure_viscosity_law", run.lubricant.law == lub::PressureViscosityLaw::barus ? "barus" : "roelands"},
                  {"compressible", run.lubricant.compressible},
                  {"eyring_stress_Pa", std::isinf(run.eyring_stress_Pa) ? nlohmann::json("newtonian") : nlohmann::json(run.eyring_stress_Pa)},
+                 {"thermal_conductivity_W_per_m_K", run.heating.thermal_conductivity_W_per_m_K},
+                 {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K},
                  {"nodes", run.options.nodes}};
   j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -20,11 +20,13 @@ struct EhlRun {
   double sliding_speed_m_per_s = 0.0;  // u1 − u2 (the traction's; the film depends on u_m only)
   lubrication::PiezoviscousLubricant lubricant;
   double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film
+  lubrication::FilmHeating heating;    // off unless [lubricant] thermal_conductivity_W_per_m_K is given
   lubrication::EhlLineOptions options;
 };
 
 // Reads and checks `path`: [contact] (geometry = "line", load, radius, modulus, speeds),
-// [lubricant] (η0, α, law, compressible, eyring_stress_Pa) and [solver] (docs/lubrication.md).
+// [lubricant] (η0, α, law, compressible, eyring_stress_Pa, the film's heating) and [solver]
+// (docs/lubrication.md).
 // Bad input is an InputError naming file, key and reason.
 EhlRun load_ehl_run(const std::filesystem::path& path);
 EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path);

@@ -121,7 +121,7 @@ SweepSpec load_sweep_spec(const std::filesystem::path& path) {
   spec.spec_file = std::filesystem::absolute(path);
   auto base = root.table("base");
   if (!base) root.fail("base", "table [base] is required (command and config)");
-  spec.command = base->choice("command", "rig", {"rig", "contact", "reynolds", "homogenise", "homogenise+rig"});
+  spec.command = base->choice("command", "rig", {"rig", "contact", "reynolds", "ehl", "homogenise", "homogenise+rig"});
   const auto step_config = [&](const std::string& key) {
     const auto file = (spec.spec_file.parent_path() / base->required_string(key)).lexically_normal();
     std::error_code ec;

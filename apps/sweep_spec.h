@@ -2,7 +2,7 @@
 // outputs to tabulate (issue 17). Everything here is pure (no processes): the CLI in cmd_sweep.cpp
 // runs the points.
 //
-//   [base]    command = "rig" | "contact" | "reynolds" | "homogenise";  config = "FILE.toml"
+//   [base]    command = "rig" | "contact" | "reynolds" | "ehl" | "homogenise";  config = "FILE.toml"
 //             (relative to the spec's folder)
 //             or the chain command = "homogenise+rig": config = the homogenise config, rig_config =
 //             the rig config, whose [friction] is pointed at the point's own law.json

@@ -9,8 +9,38 @@
 
 namespace tribo::lubrication {
 
+namespace {
+
+// The shear stress at one node: τ = τ0 asinh(η e^{−γΔT(τ)} Δu/(τ0 h)) with ΔT = |τ Δu| h/(12 k),
+// for Δu ≥ 0 (the caller carries the sign). Isothermal when k = 0 or γ = 0.
+double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, const FilmHeating& heat, double* rise_K) {
+  const bool newtonian = std::isinf(tau0);
+  const auto stress_at = [&](double temperature_rise_K) {
+    const double newtonian_stress = viscosity_Pa_s * std::exp(-heat.temperature_viscosity_per_K * temperature_rise_K) * du / h;
+    return newtonian ? newtonian_stress : tau0 * std::asinh(newtonian_stress / tau0);
+  };
+  const auto rise_at = [&](double tau) { return tau * du * h / (12.0 * heat.thermal_conductivity_W_per_m_K); };
+  const double isothermal = stress_at(0.0);
+  if (!(heat.thermal_conductivity_W_per_m_K > 0.0) || heat.temperature_viscosity_per_K == 0.0 || isothermal == 0.0) {
+    *rise_K = 0.0;
+    return isothermal;
+  }
+  // g(τ) = τ − stress_at(ΔT(τ)) rises from −isothermal at 0 to ≥ 0 at `isothermal`: bisection to
+  // the last bit (each step halves the bracket; 200 steps are far more than 53 bits need).
+  double lo = 0.0, hi = isothermal;
+  for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (mid - stress_at(rise_at(mid)) < 0.0 ? lo : hi) = mid;
+  }
+  const double tau = 0.5 * (lo + hi);
+  *rise_K = rise_at(tau);
+  return tau;
+}
+
+}  // namespace
+
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
-                              double eyring_stress_Pa, double load_per_length_N_per_m) {
+                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating) {
   validate(lubricant);
   if (!std::isfinite(sliding_speed_m_per_s))
     throw std::invalid_argument("EHL traction: the sliding speed must be finite, got " + numerics::shortest(sliding_speed_m_per_s) + " m/s");
@@ -19,20 +49,27 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
                                 numerics::shortest(eyring_stress_Pa) + " Pa");
   if (!(load_per_length_N_per_m > 0.0) || !std::isfinite(load_per_length_N_per_m))
     throw std::invalid_argument("EHL traction: the load per length must be positive, got " + numerics::shortest(load_per_length_N_per_m) + " N/m");
+  if (!(heating.thermal_conductivity_W_per_m_K >= 0.0) || !std::isfinite(heating.thermal_conductivity_W_per_m_K) ||
+      !(heating.temperature_viscosity_per_K >= 0.0) || !std::isfinite(heating.temperature_viscosity_per_K))
+    throw std::invalid_argument("EHL traction: the film's thermal conductivity and temperature-viscosity coefficient must be finite and >= 0, got " +
+                                numerics::shortest(heating.thermal_conductivity_W_per_m_K) + " W/(m K) and " +
+                                numerics::shortest(heating.temperature_viscosity_per_K) + " 1/K");
   const std::size_t n = film.x_m.size();
   if (n < 2 || film.pressure_Pa.size() != n || film.film_m.size() != n)
     throw std::invalid_argument("EHL traction: the film needs at least two nodes with x, pressure and film thickness each");
-  const bool newtonian = std::isinf(eyring_stress_Pa);
   EhlTraction out;
   std::vector<double> tau(n, 0.0);
+  const double du = std::abs(sliding_speed_m_per_s), sign = sliding_speed_m_per_s < 0.0 ? -1.0 : 1.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!(film.pressure_Pa[i] > 0.0)) continue;  // cavitated (or at the domain's ends)
     const double h = film.film_m[i];
     if (!(h > 0.0))
       throw std::invalid_argument("EHL traction: non-positive film " + numerics::shortest(h) + " m at x = " + numerics::shortest(film.x_m[i]) + " m");
-    const double newtonian_stress = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, film.pressure_Pa[i]).ratio * sliding_speed_m_per_s / h;
-    tau[i] = newtonian ? newtonian_stress : eyring_stress_Pa * std::asinh(newtonian_stress / eyring_stress_Pa);
+    const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, film.pressure_Pa[i]).ratio;
+    double rise_K = 0.0;
+    tau[i] = sign * shear_stress_Pa(eta, du, h, eyring_stress_Pa, heating, &rise_K);
     out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau[i]));
+    out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
   }
   for (std::size_t i = 1; i < n; ++i) out.force_per_length_N_per_m += 0.5 * (tau[i] + tau[i - 1]) * (film.x_m[i] - film.x_m[i - 1]);
   out.friction_coefficient = out.force_per_length_N_per_m / load_per_length_N_per_m;

@@ -7,10 +7,18 @@
 // τ0 the Eyring stress (a few MPa for mineral oils; Johnson & Tevaarwerk, Evans & Johnson 1986).
 // Above a few τ0 the stress grows only with ln Δu: the flat, slowly falling traction curves of
 // EHL rigs, where the Newtonian film would give a friction coefficient far above one.
+// Heat (optional, FilmHeating): the shear dissipates τΔu/h per unit volume, conducted to both
+// surfaces, which stay at the bulk temperature; across a Couette film the temperature is then
+// parabolic, T − T_wall = (τΔu/(2kh)) z(h − z), its mean over the film ΔT = τΔu h/(12k). The
+// viscosity is taken at that mean, η(p) exp(−γ ΔT) (viscosity.h's exponential temperature law), and
+// τ solves τ = τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)) at each node — one root, as the right side falls
+// with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls: μ(Δu)
+// rises, peaks and falls, the shape of measured EHL traction curves. The surfaces' own flash
+// temperature (Jaeger, viscosity.h) is left out: it would heat the film from outside as well.
 // Left out: the Poiseuille shear (h/2) dp/dx, equal and opposite on the two surfaces, so it adds
 // no net traction to their sum and is small on each beside the Couette term in the loaded zone;
 // the cavitated outlet (p = 0 at the nodes past the film's rupture, where the gap holds striations
-// of unknown extent); and heat — the film is isothermal, as in the solve.
+// of unknown extent); and heat in the film solve itself (the pressure and film are isothermal).
 // Traction force per unit length F = ∫ τ dx (trapezoidal rule over the solve's nodes), friction
 // coefficient μ = F / w.
 #pragma once
@@ -20,16 +28,24 @@
 
 namespace tribo::lubrication {
 
+// The film's shear heating: off when thermal_conductivity_W_per_m_K is 0 (isothermal).
+struct FilmHeating {
+  double thermal_conductivity_W_per_m_K = 0.0;  // k of the lubricant (mineral oils ≈ 0.13)
+  double temperature_viscosity_per_K = 0.0;     // γ in η ∝ exp(−γ ΔT) (viscosity.h: 0.03 for light mineral oils)
+};
+
 struct EhlTraction {
   double force_per_length_N_per_m = 0.0;
   double friction_coefficient = 0.0;
   double max_shear_stress_Pa = 0.0;
+  double max_film_temperature_rise_K = 0.0;  // the largest mean film temperature rise ΔT (0 isothermal)
 };
 
 // Throws std::invalid_argument for a sliding speed that is not finite, an Eyring stress that is
-// not positive (+∞ is the Newtonian film), a non-positive load, or a film with fewer than two
-// nodes or a non-positive film thickness where the pressure is positive.
+// not positive (+∞ is the Newtonian film), a non-positive load, negative or non-finite heating
+// constants, or a film with fewer than two nodes or a non-positive film thickness where the
+// pressure is positive.
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
-                              double eyring_stress_Pa, double load_per_length_N_per_m);
+                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating = {});
 
 }  // namespace tribo::lubrication

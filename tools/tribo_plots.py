@@ -386,8 +386,9 @@ def _file_name(column):
 def plot_sweep(d):
     """One PNG per output column of a sweep against its axes. Axes with a single value are constants
     (shown in the title); one varying axis gives a line (log x when it spans two decades or more), two
-    on a full grid give a heat map with the values written in, more give lines against the first
-    varying axis, one per combination of the others. Text columns (the rig's regime) are coloured by
+    on a full grid of more than three values each give a heat map with the values written in;
+    otherwise lines against the varying axis with the most values, one per combination of the others
+    (a curve per value of a short axis reads better than a heat map of two or three rows). Text columns (the rig's regime) are coloured by
     category; failed points are blank."""
     import json
 
@@ -419,7 +420,7 @@ def plot_sweep(d):
         title = col + ("\n" + "\n".join(textwrap.wrap(constants, 80)) if constants else "")
         if not varying:
             ax.text(0.5, 0.5, "\n".join("%s" % v for v in values), ha="center", va="center")
-        elif len(varying) == 2 and meta.get("combine", "product") == "product":
+        elif len(varying) == 2 and meta.get("combine", "product") == "product" and min(len(set(a["values"])) for a in varying) > 3:
             xa, ya = varying[0]["key"], varying[1]["key"]
             xs = sorted(set(float(r[xa]) for r in rows))
             ys = sorted(set(float(r[ya]) for r in rows))
@@ -460,8 +461,9 @@ def plot_sweep(d):
             ax.set_xlabel(xa)
             ax.set_ylabel(ya)
         else:
-            xa = varying[0]["key"]
-            others = [a["key"] for a in varying[1:]]
+            longest = max(varying, key=lambda a: len(set(a["values"])))
+            xa = longest["key"]
+            others = [a["key"] for a in varying if a is not longest]
             groups = {}
             for r in ok:
                 groups.setdefault(tuple(r[o] for o in others), []).append(r)

@@ -24,6 +24,7 @@ assert abs(s['hertz_pressure_Pa'] / p_hertz - 1) < 1e-12, s['hertz_pressure_Pa']
 assert abs(s['max_pressure_Pa'] / p_hertz - 1) < 0.05, (s['max_pressure_Pa'], p_hertz)
 assert 0 < s['minimum_film_m'] < s['central_film_m'] < 1e-6, s
 assert 0 < s['friction_coefficient'] < 0.2, s['friction_coefficient']
+assert s['max_film_temperature_rise_K'] == 0, s  # no conductivity given: an isothermal film
 x, p, h = (np.load(d + '/' + s['fields'][k]) for k in ('x_m', 'pressure_Pa', 'film_m'))
 assert x.shape == p.shape == h.shape == (s['inputs']['nodes'],), (x.shape, p.shape, h.shape)
 assert abs(np.trapz(p, x) / 3e6 - 1) < 1e-9, np.trapz(p, x)  # the load balance, from the written profile

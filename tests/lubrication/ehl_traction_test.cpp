@@ -1,6 +1,6 @@
 // EHL traction (lubrication/ehl_traction.h) on films whose integrals are known in closed form: the
-// Newtonian Couette shear of a parabolic gap, and the Eyring stress's logarithmic growth with the
-// sliding speed. The traction of a solved roller pair is in ehl_line_slow_test.cpp.
+// Newtonian Couette shear of a parabolic gap, the Eyring stress's logarithmic growth with the
+// sliding speed, and a heated film's Lambert-W stress and traction peak. The traction of a solved roller pair is in ehl_line_slow_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -60,12 +60,42 @@ TEST(EhlTraction, EyringStressGrowsWithTheLogarithmOfTheSlidingSpeed) {
   EXPECT_DOUBLE_EQ(ehl_line_traction(film, l, -0.1, tau0, w).force_per_length_N_per_m, -f1);
 }
 
+// Heating, Newtonian, on a uniform film h at uniform viscosity η: the film's mean temperature rise
+// ΔT = τΔu h/(12k) lowers η by e^{−γΔT}, so τ e^{γτΔu h/(12k)} = ηΔu/h, whose root is Lambert's W:
+// τ = 12k W(s)/(γΔu h), s = γηΔu²/(12k), ΔT = W(s)/γ. At s = 1, W is the omega constant
+// Ω = 0.5671432904097838. The bisection stops at 1e-15 of τ.
+TEST(EhlTraction, HeatedNewtonianFilmFollowsLambertW) {
+  const double h = 1e-6, eta = 0.04, gamma = 0.03, k = 0.13, omega = 0.5671432904097838;
+  const double du = std::sqrt(12.0 * k / (gamma * eta));  // s = 1
+  const EhlTraction t = ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5, {k, gamma});
+  EXPECT_NEAR(t.max_shear_stress_Pa, 12.0 * k * omega / (gamma * du * h), 1e-12 * t.max_shear_stress_Pa);
+  EXPECT_NEAR(t.max_film_temperature_rise_K, omega / gamma, 1e-12 * omega / gamma);
+  // Without heating, the isothermal stress η Δu / h.
+  EXPECT_DOUBLE_EQ(ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5).max_shear_stress_Pa, eta * du / h);
+}
+
+// The same film's traction rises with Δu, peaks and falls: τ ∝ W(s)/√s is largest where W = 1,
+// s = e, i.e. at Δu* = √(12 k e/(γη)), with τ* = √(12 k η/(γ e)) / h — the shape of a measured
+// traction curve, which an isothermal film (rising without bound) cannot have.
+TEST(EhlTraction, HeatedFilmTractionPeaksWhereLambertWIsOne) {
+  const double h = 1e-6, eta = 0.04, gamma = 0.03, k = 0.13;
+  const EhlLineResult film = parabolic_film(h, 1e30, 1e-4, 1e6, 11);
+  const auto tau = [&](double du) { return ehl_line_traction(film, isoviscous(eta), du, kInf, 1e5, {k, gamma}).max_shear_stress_Pa; };
+  const double du_peak = std::sqrt(12.0 * k * std::exp(1.0) / (gamma * eta));
+  EXPECT_NEAR(tau(du_peak), std::sqrt(12.0 * k * eta / (gamma * std::exp(1.0))) / h, 1e-12 * tau(du_peak));
+  EXPECT_GT(tau(du_peak), tau(0.98 * du_peak));
+  EXPECT_GT(tau(du_peak), tau(1.02 * du_peak));
+  EXPECT_LT(tau(10.0 * du_peak), 0.5 * tau(du_peak));
+}
+
 TEST(EhlTraction, BadInputIsRejected) {
   const EhlLineResult film = parabolic_film(2e-7, 0.01, 1e-4, 1e6, 11);
   const PiezoviscousLubricant l = isoviscous(0.04);
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 0.0, 1e5), std::invalid_argument);
   EXPECT_THROW(ehl_line_traction(film, l, std::nan(""), 5e6, 1e5), std::invalid_argument);
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, -1.0), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {-0.13, 0.03}), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {0.13, std::nan("")}), std::invalid_argument);
   EhlLineResult collapsed = film;
   collapsed.film_m[5] = 0.0;
   EXPECT_THROW(ehl_line_traction(collapsed, l, 0.1, 5e6, 1e5), std::invalid_argument);
