@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(surface bundle rig_config homogenise_config sweep_spec)
+[ ${#targets[@]} -gt 0 ] || targets=(surface bundle rig_config homogenise_config sweep_spec law_table drive_table ehl_config)
 
 command -v clang++ >/dev/null || { echo "fuzz.sh: needs clang++ (Debian: apt-get install clang)" >&2; exit 2; }
 export CCACHE_BASEDIR=$PWD
