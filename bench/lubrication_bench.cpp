@@ -20,6 +20,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "lubrication/ehl_line.h"
 #include "lubrication/flow_factors.h"
 #include "lubrication/reynolds.h"
 
@@ -147,6 +148,27 @@ void BM_FlowFactors(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(lub::flow_factors(o));
 }
 BENCHMARK(BM_FlowFactors)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// EHL line contact (lubrication/ehl_line.h): the steel rollers of tests/lubrication (R = 10 mm,
+// E' = 2.26e11 Pa, mineral oil η0 = 0.04 Pa·s, α = 2.2e-8 1/Pa, u_m = 1 m/s, Roelands and
+// Dowson–Higginson) at w = 3e5 N/m (W = 1.3e-4, p_H ≈ 1.04 GPa) and 3e6 N/m (W = 1.3e-3,
+// p_H ≈ 3.3 GPa), on N nodes; counters: Newton iterations and continuation steps. Each Newton step
+// factorises the dense (N + 1)² Jacobian: O(N³).
+void BM_EhlLine(benchmark::State& state) {
+  const double w = static_cast<double>(state.range(1));
+  lub::PiezoviscousLubricant oil;
+  oil.viscosity_Pa_s = 0.04;
+  oil.pressure_viscosity_per_Pa = 2.2e-8;
+  lub::EhlLineOptions o;
+  o.nodes = static_cast<int>(state.range(0));
+  lub::EhlLineResult r;
+  for (auto _ : state) r = lub::solve_ehl_line({w, 0.01, 2.26e11, 1.0}, oil, o);
+  if (!r.converged) state.SkipWithError(r.message.c_str());
+  state.counters["newton_iterations"] = r.iterations;
+  state.counters["continuation_steps"] = r.continuation_steps;
+}
+BENCHMARK(BM_EhlLine)->Args({201, 300000})->Args({401, 300000})->Args({401, 3000000})->Args({801, 3000000})
+    ->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace
 

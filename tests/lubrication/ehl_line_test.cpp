@@ -17,7 +17,7 @@ namespace {
 
 using namespace steel_rollers;
 
-// At a high load (W = w/(E'R) = 1.3e-3, p_H ≈ 2.1 GPa) the film is thin against the deflection and
+// At a high load (W = w/(E'R) = 1.3e-3, p_H ≈ 3.3 GPa) the film is thin against the deflection and
 // the pressure is the dry contact's: Hertz's semi-ellipse inside the contact to 3 % of p_H (the
 // film's pressure departs from it only at the inlet and at the outlet spike).
 TEST(EhlLine, HighLoadPressureIsHertzian) {
