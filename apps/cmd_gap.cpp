@@ -6,8 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <limits>
-#include <map>
 #include <optional>
 #include <sstream>
 
@@ -95,17 +93,9 @@ void write_overlays(const std::filesystem::path& path, const gap::ExperimentBund
       if (std::isfinite(mu)) os << "run " << r.run_id << ",measured," << t.t_s[i] - t.t_s.front() << "," << mu << "\n";
     }
   }
-  // A slow run is simulated past its record (gap::RunPlan::simulated_extra_s): the overlay shows the
-  // simulation over the record's span only.
-  std::map<std::string, double> recorded_s;
-  for (const gap::Run& r : bundle.runs)
-    if (!r.trace.t_s.empty()) recorded_s["run " + r.run_id] = r.trace.t_s.back() - r.trace.t_s.front();
   for (const auto& [runs, source] : {std::pair{&before, "baseline"}, std::pair{&after, "with effect"}})
-    for (const gap::SimulatedRun& r : *runs) {
-      const auto span = recorded_s.find(r.label);
-      const double end_s = span == recorded_s.end() ? std::numeric_limits<double>::infinity() : span->second;
-      for (std::size_t i = 0; i < r.t_s.size() && r.t_s[i] <= end_s; ++i) os << r.label << "," << source << "," << r.t_s[i] << "," << r.mu[i] << "\n";
-    }
+    for (const gap::SimulatedRun& r : *runs)
+      for (std::size_t i = 0; i < r.t_s.size(); ++i) os << r.label << "," << source << "," << r.t_s[i] << "," << r.mu[i] << "\n";
   f.commit();
 }
 

@@ -753,10 +753,14 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           double step = plan.slip_step_s;
           f = analyse_constant_speed(s, plan.sample_spacing_s, step, nullptr, rig::analysis_start_s(0.0, plan.duration_s));
         }
-        if (trace) {
-          std::vector<double> F;
-          for (double m : s.mu) F.push_back(m * W);
-          *trace = SimulatedRun{plan.label, s.t, F, s.mu};
+        if (trace) {  // over the record's span (a slow run is simulated past it, RunPlan::simulated_extra_s)
+          SimulatedRun run{plan.label, {}, {}, {}};
+          for (std::size_t i = 0; i < s.t.size() && s.t[i] <= plan.duration_s; ++i) {
+            run.t_s.push_back(s.t[i]);
+            run.friction_N.push_back(s.mu[i] * W);
+            run.mu.push_back(s.mu[i]);
+          }
+          *trace = std::move(run);
         }
         break;
       }

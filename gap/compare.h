@@ -109,7 +109,7 @@ struct RunPlan {
 
 struct SimulatedRun {
   std::string label;
-  std::vector<double> t_s, friction_N, mu;  // as measured by the instrument model
+  std::vector<double> t_s, friction_N, mu;  // as measured by the instrument model, over the record's span
 };
 
 // Friction after a velocity step up, read off μ − μ_before (3-sample running mean) against the

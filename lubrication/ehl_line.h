@@ -72,7 +72,7 @@ struct EhlLineResult {
 };
 
 // Throws std::invalid_argument for bad input (non-positive or non-finite contact data, a domain
-// that does not contain [−1, 1), fewer than 11 nodes); never throws for non-convergence (see
+// that does not start before X = −1 and end after X = 0, fewer than 11 nodes); never throws for non-convergence (see
 // `converged` and `message`).
 EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant,
                              const EhlLineOptions& options = {});
