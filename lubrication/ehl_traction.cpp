@@ -12,7 +12,8 @@ namespace tribo::lubrication {
 namespace {
 
 // The shear stress at one node: τ = τ0 asinh(η e^{−γΔT(τ)} Δu/(τ0 h)) with ΔT = |τ Δu| h/(12 k),
-// for Δu ≥ 0 (the caller carries the sign). Isothermal when k = 0 or γ = 0.
+// for Δu ≥ 0 (the caller carries the sign). No heating when k = 0; the isothermal stress (with its
+// temperature rise) when γ = 0.
 double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, const FilmHeating& heat, double* rise_K) {
   const bool newtonian = std::isinf(tau0);
   const auto stress_at = [&](double temperature_rise_K) {
@@ -21,8 +22,12 @@ double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, 
   };
   const auto rise_at = [&](double tau) { return tau * du * h / (12.0 * heat.thermal_conductivity_W_per_m_K); };
   const double isothermal = stress_at(0.0);
-  if (!(heat.thermal_conductivity_W_per_m_K > 0.0) || heat.temperature_viscosity_per_K == 0.0 || isothermal == 0.0) {
+  if (!(heat.thermal_conductivity_W_per_m_K > 0.0)) {  // no heating modelled
     *rise_K = 0.0;
+    return isothermal;
+  }
+  if (heat.temperature_viscosity_per_K == 0.0 || isothermal == 0.0) {  // the film heats, its viscosity does not follow
+    *rise_K = rise_at(isothermal);
     return isothermal;
   }
   // g(τ) = τ − stress_at(ΔT(τ)) rises from −isothermal at 0 to ≥ 0 at `isothermal`: bisection to

@@ -70,6 +70,11 @@ TEST(EhlTraction, HeatedNewtonianFilmFollowsLambertW) {
   const EhlTraction t = ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5, {k, gamma});
   EXPECT_NEAR(t.max_shear_stress_Pa, 12.0 * k * omega / (gamma * du * h), 1e-12 * t.max_shear_stress_Pa);
   EXPECT_NEAR(t.max_film_temperature_rise_K, omega / gamma, 1e-12 * omega / gamma);
+  // A viscosity that does not follow the temperature (γ = 0): the isothermal stress, and the film
+  // still as warm as that stress makes it, ΔT = τΔu h/(12k).
+  const EhlTraction flat = ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5, {k, 0.0});
+  EXPECT_DOUBLE_EQ(flat.max_shear_stress_Pa, eta * du / h);
+  EXPECT_NEAR(flat.max_film_temperature_rise_K, eta * du * du / (12.0 * k), 1e-12 * eta * du * du / (12.0 * k));
   // Without heating, the isothermal stress η Δu / h.
   EXPECT_DOUBLE_EQ(ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5).max_shear_stress_Pa, eta * du / h);
 }
