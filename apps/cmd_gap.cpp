@@ -266,7 +266,8 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
           {"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
-          {"heldout_gap_after", row.heldout_gap_after}, {"confidence", gap::finite_or_null(row.confidence)},
+          {"heldout_gap_after", row.heldout_gap_after}, {"noise_floor", gap::finite_or_null(row.noise_floor)},
+          {"confidence", gap::finite_or_null(row.confidence)},
           {"confidence_fixed_fits", gap::finite_or_null(row.confidence_fixed_fits)},
           {"test_gap_before", gap::finite_or_null(row.test_gap_before)}, {"test_gap_after", gap::finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s}};
@@ -309,6 +310,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.test_gap_before = number(j, "test_gap_before");
       r.test_gap_after = number(j, "test_gap_after");
       r.confidence_fixed_fits = number(j, "confidence_fixed_fits");
+      r.noise_floor = number(j, "noise_floor");
       r.correct = r.verdict == r.c.true_effect;
       r.git_commit = j.value("git_commit", std::string());
       r.indistinguishable_from = j.value("indistinguishable_from", std::vector<std::string>{});
@@ -397,6 +399,8 @@ void run_selftest(const SelftestArgs& args) {
   for (const auto& [g, sum] : r.by_generator)
     j["by_generator"][g] = {{"identified_fraction", sum.identified_fraction}, {"controls_none_fraction", sum.controls_none_fraction},
                             {"effect_cases", sum.effect_cases}, {"controls", sum.controls},
+                            {"visible_effect_cases", sum.visible_effect_cases},
+                            {"visible_identified_fraction", gap::finite_or_null(sum.visible_identified_fraction)},
                             {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
                             {"confusion", sum.confusion}};
   j["reliability"] = nlohmann::json::array();
@@ -405,19 +409,23 @@ void run_selftest(const SelftestArgs& args) {
   j["cases"] = nlohmann::json::array();
   for (const auto& row : r.rows) j["cases"].push_back(row_json(row, args.quick, commit));
   write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");
-  std::printf("%-12s %-24s %-18s %-40s %10s %10s %6s %22s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after", "conf",
-              "test block before/after");
+  std::printf("%-12s %-24s %-18s %-40s %10s %10s %7s %6s %22s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after",
+              "floors", "conf", "test block before/after");
   for (const auto& row : r.rows) {
     std::string has;
     for (const auto& e : row.c.model_effects) has += (has.empty() ? "" : "+") + e;
-    std::printf("%-12s %-24s %-18s %-40s %10.4f %10.4f %5.0f%% %10.4f/%-11.4f%s\n", row.c.generator.c_str(), row.c.true_effect.c_str(),
-                has.empty() ? "-" : has.c_str(), row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, 100.0 * row.confidence,
+    std::printf("%-12s %-24s %-18s %-40s %10.4f %10.4f %7.1f %5.0f%% %10.4f/%-11.4f%s\n", row.c.generator.c_str(), row.c.true_effect.c_str(),
+                has.empty() ? "-" : has.c_str(), row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, row.signal_floors(),
+                100.0 * row.confidence,
                 row.test_gap_before, row.test_gap_after, row.correct ? "" : "  <- wrong");
   }
   for (const auto& [g, sum] : r.by_generator) {
     std::printf("\ngenerator %s: confusion matrix (rows: true effect, columns: verdict)\n%s", g.c_str(), confusion_csv(sum.confusion).c_str());
     std::printf("identified %.0f %% of %d withheld effects; controls answering none %.0f %% of %d\n", 100.0 * sum.identified_fraction, sum.effect_cases,
                 100.0 * sum.controls_none_fraction, sum.controls);
+    if (sum.visible_effect_cases)
+      std::printf("  of the %d effects visible in their data (baseline held-out gap >= %g noise floors): identified %.0f %%\n",
+                  sum.visible_effect_cases, gap::kVisibleSignalFloors, 100.0 * sum.visible_identified_fraction);
     for (const auto& [e, s] : sum.mean_shrink) {
       std::printf("  mean gap shrink, %s: held-out %.0f %%", e.c_str(), 100.0 * s);
       if (const auto t = sum.mean_test_shrink.find(e); t != sum.mean_test_shrink.end()) std::printf(", test block %.0f %%", 100.0 * t->second);

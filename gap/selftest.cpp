@@ -236,6 +236,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.verdict = verdict_name(d.verdict);
   row.heldout_gap_before = d.verdict.heldout_gap_before;
   row.heldout_gap_after = d.verdict.heldout_gap_after;
+  row.noise_floor = d.verdict.noise_floor;
   row.confidence = d.verdict.confidence;
   row.confidence_fixed_fits = d.verdict.confidence_fixed_fits;
   row.correct = row.verdict == sc.true_effect;
@@ -254,7 +255,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
 
 SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
   SelftestSummary out;
-  int effect_right = 0, controls_none = 0;
+  int effect_right = 0, controls_none = 0, visible_right = 0;
   std::map<std::string, std::pair<double, int>> shrink, test_shrink;
   for (const SelftestRow& row : rows) {
     ++out.confusion[row.c.true_effect][row.verdict];
@@ -262,6 +263,7 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
       ++out.controls, controls_none += row.correct;
     } else {
       ++out.effect_cases, effect_right += row.correct;
+      if (row.signal_floors() >= kVisibleSignalFloors) ++out.visible_effect_cases, visible_right += row.correct;
       // Journals from before the test block carry NaN there: such a row counts for the held-out shrink only.
       auto add = [&](std::map<std::string, std::pair<double, int>>& to, double before, double after) {
         if (!row.correct || !(before > 0.0) || !std::isfinite(after)) return;
@@ -274,6 +276,7 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
   }
   out.identified_fraction = out.effect_cases ? static_cast<double>(effect_right) / out.effect_cases : 1.0;
   out.controls_none_fraction = out.controls ? static_cast<double>(controls_none) / out.controls : 1.0;
+  if (out.visible_effect_cases) out.visible_identified_fraction = static_cast<double>(visible_right) / out.visible_effect_cases;
   for (const auto& [e, sh] : shrink) out.mean_shrink[e] = sh.first / sh.second;
   for (const auto& [e, sh] : test_shrink) out.mean_test_shrink[e] = sh.first / sh.second;
   return out;

@@ -87,6 +87,10 @@ struct SelftestRow {
   std::string verdict;
   std::string form;  // independent generator: the form the mechanism was written in
   double heldout_gap_before = 0.0, heldout_gap_after = 0.0, confidence = 0.0;
+  // The held-out gap the data's own noise leaves (Verdict::noise_floor); NaN in journals from before.
+  double noise_floor = std::numeric_limits<double>::quiet_NaN();
+  // The effect's signal: the calibrated baseline's held-out gap in noise floors (NaN without a floor).
+  double signal_floors() const { return noise_floor > 0.0 ? heldout_gap_before / noise_floor : std::numeric_limits<double>::quiet_NaN(); }
   // The bootstrap with every fit held (Verdict::confidence_fixed_fits); NaN in journals from before.
   double confidence_fixed_fits = std::numeric_limits<double>::quiet_NaN();
   // On the test block (SyntheticOptions::test_speeds_m_per_s); NaN in journals from before it.
@@ -98,11 +102,22 @@ struct SelftestRow {
   std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
 };
 
+// An effect is visible in its data when the calibrated baseline misses the held-out items by more
+// than this many noise floors (SelftestRow::signal_floors): a control's baseline sits at about one
+// floor, so below two the data hold little an effect could be told by, whatever the method. Cases
+// are split by it so that a score is read against the power the data give (a power analysis, not a
+// filter: every case stays in identified_fraction).
+inline constexpr double kVisibleSignalFloors = 2.0;
+
 // Confusion matrix and shrink over one generator's cases (or all).
 struct SelftestSummary {
   std::map<std::string, std::map<std::string, int>> confusion;  // true → verdict → count
   int effect_cases = 0, controls = 0;
   double identified_fraction = 0.0;   // effect cases with the right verdict
+  // Effect cases with signal_floors() ≥ kVisibleSignalFloors, and the share of them named (NaN
+  // when none is visible or the rows carry no floor).
+  int visible_effect_cases = 0;
+  double visible_identified_fraction = std::numeric_limits<double>::quiet_NaN();
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink;  // per true effect, of correctly identified cases: 1 − after/before
   std::map<std::string, double> mean_test_shrink;  // the same on the test block (cases that have one)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "gap/selftest.h"
 
@@ -34,6 +35,26 @@ TEST(SelftestSummary, ConfusionShrinkAndFractionsPerRowSet) {
   EXPECT_EQ(s.confusion.at("viscous_friction").at("none"), 1);
   EXPECT_NEAR(s.mean_shrink.at("slip_transient"), 0.6, 1e-12);  // 1 − 0.04/0.1
   EXPECT_FALSE(s.mean_shrink.count("viscous_friction"));       // shrink only of right verdicts
+}
+
+// A power analysis beside the score: effects whose calibrated baseline misses the held-out data
+// by at least two noise floors are "visible"; the share named among them is reported apart.
+TEST(SelftestSummary, EffectsAreSplitByTheSignalTheirDataHold) {
+  std::vector<SelftestRow> rows{row("slip_transient", "slip_transient", 0.9, kRigGenerator, 0.06, 0.01),  // 3 floors, named
+                                row("squeeze_film", "none", 0.6, kRigGenerator, 0.03, 0.03),                // 1.5 floors, missed
+                                row("viscous_friction", "instrument", 0.6, kRigGenerator, 0.04, 0.02),       // 2 floors exactly, missed
+                                row("none", "none", 1.0, kRigGenerator, 0.02, 0.02),                        // a control: not counted
+                                row("instrument", "instrument", 0.9, kRigGenerator, 0.5, 0.01)};            // no floor (old journal)
+  for (std::size_t i = 0; i + 1 < rows.size(); ++i) rows[i].noise_floor = 0.02;
+  EXPECT_NEAR(rows[0].signal_floors(), 3.0, 1e-12);
+  EXPECT_TRUE(std::isnan(rows[4].signal_floors()));
+  const SelftestSummary s = summarise(rows);
+  EXPECT_EQ(s.effect_cases, 4);
+  EXPECT_DOUBLE_EQ(s.identified_fraction, 0.5);
+  EXPECT_EQ(s.visible_effect_cases, 2);  // 3 and 2 floors; 1.5 floors and the unknown one are not
+  EXPECT_DOUBLE_EQ(s.visible_identified_fraction, 0.5);
+  rows.erase(rows.begin(), rows.begin() + 3);
+  EXPECT_TRUE(std::isnan(summarise(rows).visible_identified_fraction));  // none visible: not a score of 0
 }
 
 TEST(SelftestSummary, ReliabilityBinsCoverZeroToOneInclusive) {
