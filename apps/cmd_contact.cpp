@@ -22,7 +22,6 @@
 #include "contact/junction_locus.h"
 #include "contact/normal_contact.h"
 #include "contact/surface.h"
-#include "contact/surface_io.h"
 #include "contact/tangential.h"
 
 namespace tribo::cli {
@@ -36,12 +35,6 @@ struct ContactArgs {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayXXd& field) {
-  AtomicFile f(path);
-  contact::write_npy(f.stream(), field);
-  f.commit();
 }
 
 // One solve of a loaded config (`hash`: the config's, for the provenance): contact.json to `sink`,

@@ -17,24 +17,17 @@
 #include "apps/output.h"
 #include "apps/provenance.h"
 #include "apps/rig_output.h"
-#include "contact/surface_io.h"
 
 namespace tribo::cli {
 namespace {
 
-struct Args {
+struct EhlArgs {
   std::string config;
   std::string out = "out/ehl";
   bool plot = false, summary_only = false;
 };
 
-void write_profile(const std::filesystem::path& path, const std::vector<double>& profile) {
-  AtomicFile f(path);
-  contact::write_npy(f.stream(), profile);
-  f.commit();
-}
-
-void run_ehl(const Args& args) {
+void run_ehl(const EhlArgs& args) {
   if (args.config.empty()) throw InputError("ehl: a CONFIG.toml is required (see tribo ehl --help)");
   const EhlRun run = load_ehl_run(args.config);
   make_output_dir(args.out);
@@ -47,9 +40,9 @@ void run_ehl(const Args& args) {
                    {"pressure_Pa", "pressure_Pa.npy"},
                    {"film_m", "film_m.npy"},
                    {"layout", "float64 arrays of shape (nodes,): the value at node i, x_m[i] from the contact centre in the rolling direction"}};
-    write_profile(dir / "x_m.npy", solved.film.x_m);
-    write_profile(dir / "pressure_Pa.npy", solved.film.pressure_Pa);
-    write_profile(dir / "film_m.npy", solved.film.film_m);
+    write_npy_atomically(dir / "x_m.npy", solved.film.x_m);
+    write_npy_atomically(dir / "pressure_Pa.npy", solved.film.pressure_Pa);
+    write_npy_atomically(dir / "film_m.npy", solved.film.film_m);
   }
   write_file_atomically(dir / "ehl.json", j.dump(2) + "\n");
   const auto& f = solved.film;
@@ -64,7 +57,7 @@ void run_ehl(const Args& args) {
 }  // namespace
 
 void add_ehl_command(CLI::App& app) {
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<EhlArgs>();
   CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line contact: film, pressure and traction (TOML config)");
   cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], [solver])")->required();
   cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy)")->capture_default_str();

@@ -15,13 +15,13 @@
 namespace tribo::cli {
 namespace {
 
-struct Args {
+struct HomogeniseArgs {
   std::string config;
   std::string out = "out/homogenise";
   bool plots = true;
 };
 
-void run_homogenise(const Args& args) {
+void run_homogenise(const HomogeniseArgs& args) {
   if (args.config.empty()) throw InputError("homogenise: a CONFIG.toml is required (see tribo homogenise --help)");
   const HomogeniseRun run = load_homogenise_run(args.config);  // everything checked before anything is written
   homogenise_into(run, args.config, args.out, args.plots);
@@ -30,7 +30,7 @@ void run_homogenise(const Args& args) {
 }  // namespace
 
 void add_homogenise_command(CLI::App& app) {
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<HomogeniseArgs>();
   CLI::App* cmd = app.add_subcommand(
       "homogenise", "friction-law tables (law.json) from BEM contact and Reynolds solves on a rough surface pair");
   cmd->add_option("config", args->config, "CONFIG.toml: [surface] [domain] [material] [junction] [lubricant] [pin] [speeds] [homogenise]")

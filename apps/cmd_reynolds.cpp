@@ -20,7 +20,6 @@
 #include "apps/provenance.h"
 #include "apps/reynolds_run.h"
 #include "contact/surface.h"
-#include "contact/surface_io.h"
 #include "lubrication/flow_factors.h"
 #include "lubrication/reynolds.h"
 
@@ -29,13 +28,7 @@ namespace {
 
 namespace lub = tribo::lubrication;
 
-void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayXXd& a) {
-  AtomicFile f(path);
-  contact::write_npy(f.stream(), a);
-  f.commit();
-}
-
-struct Args {
+struct ReynoldsArgs {
   std::string config;
   std::string out = "out/reynolds";
   bool summary_only = false;
@@ -43,7 +36,7 @@ struct Args {
 
 // One solve of a loaded config (`hash`: the config's, for the provenance): reynolds.json to
 // `sink`, and unless args.summary_only the .npy fields into args.out, which exists.
-void run_reynolds(const ReynoldsRun& run, const Args& args, const std::string& hash, const JsonSink& sink) {
+void run_reynolds(const ReynoldsRun& run, const ReynoldsArgs& args, const std::string& hash, const JsonSink& sink) {
   const std::filesystem::path dir(args.out);
   const ReynoldsSolve solved = solve_reynolds_run(run);
   const lub::ReynoldsSolution& s = solved.solution;
@@ -64,7 +57,7 @@ void run_reynolds(const ReynoldsRun& run, const Args& args, const std::string& h
   if (!s.summary.converged) throw std::runtime_error("reynolds solve did not converge: " + s.summary.message);
 }
 
-void run_reynolds(const Args& args) {
+void run_reynolds(const ReynoldsArgs& args) {
   if (args.config.empty()) throw InputError("reynolds: a CONFIG.toml is required (see tribo reynolds --help)");
   const ReynoldsRun run = load_reynolds_run(args.config);
   make_output_dir(args.out);
@@ -79,7 +72,7 @@ std::string csv_number(double v) {
   return s.str();
 }
 
-void run_flow_factors(const Args& args) {
+void run_flow_factors(const ReynoldsArgs& args) {
   if (args.config.empty()) throw InputError("reynolds flow-factors: a CONFIG.toml is required");
   const FlowFactorRun run = load_flow_factor_run(args.config);
   make_output_dir(args.out);
@@ -153,7 +146,7 @@ void run_flow_factors(const Args& args) {
 
 void run_reynolds_summary(const toml::table& config, const std::filesystem::path& path, const std::string& hash,
                           const std::string& out, const JsonSink& sink) {
-  Args args;
+  ReynoldsArgs args;
   args.config = path.string();
   args.out = out;
   args.summary_only = true;
@@ -161,8 +154,8 @@ void run_reynolds_summary(const toml::table& config, const std::filesystem::path
 }
 
 void add_reynolds_command(CLI::App& app) {
-  auto args = std::make_shared<Args>();
-  auto ff_args = std::make_shared<Args>();
+  auto args = std::make_shared<ReynoldsArgs>();
+  auto ff_args = std::make_shared<ReynoldsArgs>();
   ff_args->out = "out/flow-factors";
   CLI::App* cmd = app.add_subcommand("reynolds", "Solve the Reynolds equation for a lubricant film (TOML config)");
   cmd->add_option("config", args->config, "TOML config ([geometry], [lubricant], [motion], [grid], [solver])");

@@ -51,7 +51,7 @@ extern char** environ;
 namespace tribo::cli {
 namespace {
 
-struct Args {
+struct SweepArgs {
   std::string spec;
   std::string out = "out/sweep";
   bool mpi = false;
@@ -509,7 +509,7 @@ constexpr int kTagRequest = 1;  // worker → 0: a slot is free (payload: int 0)
 constexpr int kTagAssign = 2;   // 0 → worker: a point id, or -1 for "no more"
 constexpr int kTagRow = 3;      // worker → 0: a finished row, first char 'o' (ok) or 'f' (failed)
 
-bool mpi_requested(const Args& args) {
+bool mpi_requested(const SweepArgs& args) {
   const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
   return args.mpi || (size && std::atoi(size) > 1);
 }
@@ -592,7 +592,7 @@ double own_cpu_ms() {
 
 // ---- the sweep ----------------------------------------------------------------------------------
 
-void run_serial(const Args& args) {
+void run_serial(const SweepArgs& args) {
   const SweepSpec spec = load_sweep_spec(args.spec);
   const auto points = sweep_points(spec);
   const std::filesystem::path dir(args.out), results = dir / "results.csv";
@@ -621,7 +621,7 @@ void run_serial(const Args& args) {
                 own_cpu_ms() / static_cast<double>(pending.size()));
 }
 
-void run_mpi(const Args& args) {
+void run_mpi(const SweepArgs& args) {
   MpiSession mpi;
   const std::filesystem::path dir(args.out), results = dir / "results.csv";
   // Rank 0 checks the spec and claims DIR first; the others learn whether to go on, so a bad spec
@@ -683,7 +683,7 @@ void run_mpi(const Args& args) {
 
 // --dry-run: the spec checked, every point's configs built (a bad value shows now, not a week in),
 // the points listed; nothing written.
-void dry_run(const Args& args) {
+void dry_run(const SweepArgs& args) {
   const SweepSpec spec = load_sweep_spec(args.spec);
   const auto points = sweep_points(spec);
   std::string steps;
@@ -709,7 +709,7 @@ void dry_run(const Args& args) {
 }  // namespace
 
 void add_sweep_command(CLI::App& app) {
-  auto args = std::make_shared<Args>();
+  auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand("sweep", "parameter study: one tribo command (or the homogenise+rig chain) over "
                                               "axes of config keys, resumable, serial or under mpirun");
   cmd->add_option("spec", args->spec, "SPEC.toml: [base] command, config, rig_config; [[axis]] key, values or "

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "apps/config.h"
+#include "contact/surface_io.h"
 
 namespace tribo::cli {
 
@@ -46,6 +47,18 @@ std::string exact(double v) {
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
   AtomicFile f(path);
   f.stream() << content;
+  f.commit();
+}
+
+void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayXXd& field) {
+  AtomicFile f(path);
+  contact::write_npy(f.stream(), field);
+  f.commit();
+}
+
+void write_npy_atomically(const std::filesystem::path& path, const std::vector<double>& profile) {
+  AtomicFile f(path);
+  contact::write_npy(f.stream(), profile);
   f.commit();
 }
 

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include "numerics/format.h"
@@ -32,6 +34,9 @@ class AtomicFile {
 };
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content);
+// A field (nx, ny) or a profile as float64 .npy (contact/surface_io.h's layout), whole or not at all.
+void write_npy_atomically(const std::filesystem::path& path, const Eigen::ArrayXXd& field);
+void write_npy_atomically(const std::filesystem::path& path, const std::vector<double>& profile);
 
 // A CSV as the readers people reach for take it: plain, its first line the column header, so
 // numpy.genfromtxt(names=True), pandas.read_csv and csv.DictReader read it without options. How it

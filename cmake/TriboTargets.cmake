@@ -64,6 +64,12 @@ function(tribo_add_test name)
     set(label unit)
   endif()
   set(properties LABELS ${label})
+  # Open MPI 4.1 singletons started at the same moment race for one session directory and one of
+  # them aborts in MPI_Init ("File exists", orte/util/session_dir.c; seen with ctest -j2): the
+  # tests that start it take turns, beside the others.
+  if(label STREQUAL "mpi")
+    list(APPEND properties RESOURCE_LOCK open_mpi_session)
+  endif()
   if(ARG_TIMEOUT)
     list(APPEND properties TIMEOUT ${ARG_TIMEOUT})
   endif()

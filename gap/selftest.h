@@ -103,8 +103,9 @@ struct SelftestRow {
 };
 
 // An effect is visible in its data when the calibrated baseline misses the held-out items by more
-// than this many noise floors (SelftestRow::signal_floors): a control's baseline sits at about one
-// floor, so below two the data hold little an effect could be told by, whatever the method. Cases
+// than this many noise floors (SelftestRow::signal_floors): a control's calibrated baseline sits at
+// or below about one floor (the floor is the gap the data's noise alone leaves), so below two the data hold little an effect
+// could be told by, whatever the method. Cases
 // are split by it so that a score is read against the power the data give (a power analysis, not a
 // filter: every case stays in identified_fraction).
 inline constexpr double kVisibleSignalFloors = 2.0;

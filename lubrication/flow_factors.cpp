@@ -14,7 +14,7 @@
 namespace tribo::lubrication {
 namespace {
 
-[[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("homogenisation: " + what); }
+[[noreturn]] void bad_cell_input(const std::string& what) { throw std::invalid_argument("homogenisation: " + what); }
 
 // Reynolds cell over one period of the surface (periodic_film_cell) on the film
 // max(h + z, floor). `transposed` swaps the surface axes (flow along the surface's y).
@@ -133,18 +133,18 @@ double patir_cheng_shear_factor(double h, double gamma) {
 
 void validate(const HomogenisationOptions& o) {
   contact::validate(o.surface);
-  if (!(o.surface.rms_height_m > 0)) bad("surface.rms_height_m (σ) must be > 0");
-  if (o.surface.grid < 8) bad("surface.grid must be >= 8");
-  if (o.gap_ratios.empty()) bad("gap_ratios must not be empty");
+  if (!(o.surface.rms_height_m > 0)) bad_cell_input("surface.rms_height_m (σ) must be > 0");
+  if (o.surface.grid < 8) bad_cell_input("surface.grid must be >= 8");
+  if (o.gap_ratios.empty()) bad_cell_input("gap_ratios must not be empty");
   for (double h : o.gap_ratios)
-    if (!(std::isfinite(h) && h > 0)) bad("gap_ratios must be finite and > 0");
-  if (o.realisations < 1) bad("realisations must be >= 1");
-  if (!(std::isfinite(o.viscosity_Pa_s) && o.viscosity_Pa_s > 0)) bad("viscosity_Pa_s must be finite and > 0");
+    if (!(std::isfinite(h) && h > 0)) bad_cell_input("gap_ratios must be finite and > 0");
+  if (o.realisations < 1) bad_cell_input("realisations must be >= 1");
+  if (!(std::isfinite(o.viscosity_Pa_s) && o.viscosity_Pa_s > 0)) bad_cell_input("viscosity_Pa_s must be finite and > 0");
   if (!(std::isfinite(o.sliding_speed_m_per_s) && o.sliding_speed_m_per_s != 0))
-    bad("sliding_speed_m_per_s must be finite and non-zero");
-  if (!(std::isfinite(o.pressure_drop_Pa) && o.pressure_drop_Pa > 0)) bad("pressure_drop_Pa must be finite and > 0");
-  if (!(o.contact_gap_fraction > 0 && o.contact_gap_fraction <= 0.5)) bad("contact_gap_fraction must be in (0, 0.5]");
-  if (o.threads < 0) bad("threads must be >= 0");
+    bad_cell_input("sliding_speed_m_per_s must be finite and non-zero");
+  if (!(std::isfinite(o.pressure_drop_Pa) && o.pressure_drop_Pa > 0)) bad_cell_input("pressure_drop_Pa must be finite and > 0");
+  if (!(o.contact_gap_fraction > 0 && o.contact_gap_fraction <= 0.5)) bad_cell_input("contact_gap_fraction must be in (0, 0.5]");
+  if (o.threads < 0) bad_cell_input("threads must be >= 0");
 }
 
 namespace {

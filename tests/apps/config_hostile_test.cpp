@@ -10,6 +10,7 @@
 #include "apps/homogenise_config.h"
 #include "apps/rig_config.h"
 #include "apps/sweep_spec.h"
+#include "tests/apps/expect_message.h"
 
 #include <filesystem>
 #include <fstream>
@@ -37,9 +38,7 @@ std::string homogenise_error(const std::string& text) {
   return error_of(text, kHomogenise, [](const toml::table& d, const std::string& p) { return load_homogenise_run(d, p); });
 }
 
-void expect_all(const std::string& message, std::initializer_list<std::string> fragments) {
-  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
-}
+using fixture::expect_all;
 
 TEST(ConfigHostile, MalformedTomlNamesSourceLineAndColumn) {
   expect_all(rig_error("[rig]\nmass_kg = = 1\n"), {kRig + ":2:", "malformed TOML"});

@@ -15,6 +15,7 @@
 #include "apps/reynolds_run.h"
 #include "apps/rig_config.h"
 #include "contact/surface.h"
+#include "tests/apps/expect_message.h"
 
 namespace tribo::cli {
 namespace {
@@ -40,10 +41,7 @@ std::string error_of(Load load) {
   return "";
 }
 
-void expect_all(const std::string& message, std::initializer_list<std::string> fragments) {
-  EXPECT_FALSE(message.empty()) << "accepted";
-  for (const auto& f : fragments) EXPECT_NE(message.find(f), std::string::npos) << "'" << f << "' not in: " << message;
-}
+using fixture::expect_all;
 
 const std::string kSphere = "[surface]\nkind = \"sphere\"\nradius_m = 0.01\n[domain]\nsize_m = 1e-3\ngrid = 32\n"
                             "[material]\ne_star_Pa = 1.137e11\nhardness_Pa = 1.18e9\n";

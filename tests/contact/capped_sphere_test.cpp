@@ -10,11 +10,12 @@
 #include "contact/reference/capped_sphere.h"
 #include "contact/reference/hertz.h"
 #include "contact/tangential.h"
+#include "tests/contact/fixture.h"
 
 namespace tribo::contact {
 namespace {
 
-constexpr double kEStar = 1e11;
+using fixture::kEStar;
 
 // Elastic-plastic sphere: only the plastic core feels the lowered cap, so the area grows less than
 // Tabor's factor √(1 + α (F/W)²) — the difference `tribo contact junction` reports. Reference: the

@@ -11,13 +11,14 @@
 #include "contact/halfspace.h"
 #include "contact/normal_contact.h"
 #include "contact/surface.h"
+#include "tests/contact/fixture.h"
 
 namespace tribo::contact {
 namespace {
 
-constexpr double kEStar = 1e11;
+using fixture::kEStar;
 
-GaussianSurfaceParams rough(Eigen::Index n, std::uint64_t seed) {
+GaussianSurfaceParams bench_family(Eigen::Index n, std::uint64_t seed) {
   GaussianSurfaceParams p;
   p.grid = n;
   p.size_m = 1e-3;
@@ -27,10 +28,10 @@ GaussianSurfaceParams rough(Eigen::Index n, std::uint64_t seed) {
   p.seed = seed;
   return p;
 }
-Eigen::ArrayXXd rough_gap(Eigen::Index n, std::uint64_t seed) { return gap_from_heights(gaussian_surface(rough(n, seed))); }
+Eigen::ArrayXXd rough_gap(Eigen::Index n, std::uint64_t seed) { return gap_from_heights(gaussian_surface(bench_family(n, seed))); }
 // About 10 % real contact (A ≈ κ W / (E* h'), κ ≈ 2.2), as in bench/contact_bench.cpp.
 double ten_percent_load(Eigen::Index n, std::uint64_t seed) {
-  const double slope = surface_statistics(gaussian_surface(rough(n, seed)), 1e-3, 1e-3).rms_slope;
+  const double slope = surface_statistics(gaussian_surface(bench_family(n, seed)), 1e-3, 1e-3).rms_slope;
   return 0.045 * slope * kEStar * 1e-6;
 }
 

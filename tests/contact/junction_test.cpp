@@ -17,11 +17,12 @@
 #include "contact/surface.h"
 #include "contact/tangential.h"
 #include "numerics/normal.h"
+#include "tests/contact/fixture.h"
 
 namespace tribo::contact {
 namespace {
 
-constexpr double kEStar = 1e11;
+using fixture::kEStar;
 
 struct RoughCase {
   Grid grid = Grid::patch(96, 96, 1e-3, 1e-3);

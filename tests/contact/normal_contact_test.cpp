@@ -12,11 +12,12 @@
 #include "contact/reference/hertz.h"
 #include "contact/reference/westergaard.h"
 #include "contact/surface.h"
+#include "tests/contact/fixture.h"
 
 namespace tribo::contact {
 namespace {
 
-constexpr double kEStar = 1e11;
+using fixture::kEStar;
 
 // Hertz on a coarse non-periodic grid (a ≈ 32 cells), odd and even (an odd grid puts the sphere's
 // apex on a cell centre, an even one on a corner): the contact radius from the counted area carries

@@ -16,13 +16,12 @@
 #include "lubrication/reference/squeeze_film.h"
 #include "lubrication/reynolds.h"
 #include "tests/lubrication/observed_order.h"
+#include "tests/lubrication/fixture.h"
 
 namespace tribo::lubrication {
 namespace {
 
-constexpr double kEta = 0.021;         // thesis oil, Pa s
-constexpr double kRadius = 4.7625e-3;  // 3/16 in slider radius
-constexpr double kGap = 1e-6, kRate = -1e-6;
+using fixture::kEta, fixture::kRadius, fixture::kGap, fixture::kRate;
 
 // A wavy, inclined gap sliding at U with ambient edges: it has diverging zones, so with
 // Cavitation::mass_conserving the film ruptures and reforms (the Newton path is exercised).

@@ -20,6 +20,7 @@
 #include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
 #include "tests/lubrication/observed_order.h"
+#include "tests/lubrication/fixture.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -29,7 +30,7 @@ constexpr double kCorrelation = 20e-6;        // ℓ of the Gaussian ACF (m)
 constexpr int kPointsPerCorrelation = 4;      // the same spacing in the cells and the pads
 constexpr double kFloorFraction = 1e-3;       // film floor at contact, × σ (as flow_factors)
 constexpr double kFloor = 1.5 * kFloorFraction * kSigma;  // a node at or below this touches
-constexpr double kEta = 0.021;
+using fixture::kEta;
 constexpr int kSeeds = 6;                     // pads per size, seeds 101…; the cells use 1…12
 const std::vector<int> kPadCorrelations = {16, 32, 64};
 

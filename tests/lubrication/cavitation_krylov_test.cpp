@@ -26,27 +26,15 @@
 #include "lubrication/cavitation_krylov.h"
 #include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
+#include "tests/lubrication/fixture.h"
 
 namespace tribo::lubrication {
 namespace {
 
-// The benchmark film (bench/lubrication_bench.cpp): h = h₀(1 + 0.4 cos(2πx/λ) cos(2πy/λ)), λ = L/4,
-// sliding at `speed`, periodic in y, ambient at x = 0 and L; (n + 1) × n nodes. Every dimple has
-// a diverging half, so a quarter of the film cavitates.
-ReynoldsProblem textured(int n, double speed = 1.0) {
-  ReynoldsProblem pr;
-  const double length = 1e-3, wavelength = length / 4;
-  pr.grid = contact::Grid{n + 1, n, length / n, length / n};
-  pr.gap_m = pr.grid.field();
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i <= n; ++i)
-      pr.gap_m(i, j) = 1e-6 * (1.0 + 0.4 * std::cos(2 * std::numbers::pi * i * pr.grid.dx_m / wavelength) *
-                                         std::cos(2 * std::numbers::pi * j * pr.grid.dy_m / wavelength));
-  pr.viscosity_Pa_s = 0.021;
-  pr.sliding_speed_m_per_s = speed;
-  pr.boundary_y = BoundaryY::periodic;
-  pr.cavitation = Cavitation::mass_conserving;
-  return pr;
+// The benchmark film (fixture::textured_film) with mass-conserving cavitation: a quarter of it
+// cavitates.
+ReynoldsProblem cavitating_textured(int n, double speed = 1.0) {
+  return fixture::textured_film(n, speed, Cavitation::mass_conserving);
 }
 
 ReynoldsOptions block_options(bool inexact = true, bool sequencing = true) {
@@ -92,15 +80,15 @@ void expect_same_answer(const ReynoldsProblem& pr, const ReynoldsOptions& option
 // Odd and even grids, every step to 1e-10 and with inexact Newton.
 TEST(CavitationBlockPreconditioner, ReproducesDirectAnswer) {
   for (int n : {64, 97}) {
-    expect_same_answer(textured(n), block_options(false), "exact steps ");
-    expect_same_answer(textured(n), block_options(true), "inexact     ");
+    expect_same_answer(cavitating_textured(n), block_options(false), "exact steps ");
+    expect_same_answer(cavitating_textured(n), block_options(true), "inexact     ");
   }
 }
 
 // Grid sequencing: 129 × 128 nodes start from the 65 × 64 solution; same answer as UMFPACK from
 // the full-film start, in fewer fine Newton steps than without sequencing.
 TEST(CavitationBlockPreconditioner, GridSequencingReproducesDirectAnswer) {
-  const ReynoldsProblem pr = textured(128);
+  const ReynoldsProblem pr = cavitating_textured(128);
   expect_same_answer(pr, block_options(), "sequenced   ");
   const ReynoldsSolution with = solve_reynolds(pr, block_options());
   const ReynoldsSolution without = solve_reynolds(pr, block_options(true, false));
@@ -126,7 +114,7 @@ SweptAndUnswept solve_with_and_without_sweeps(const ReynoldsProblem& pr) {
 }
 
 TEST(CavitationBlockPreconditioner, CoarseStartSweepsSaveNewtonStepsNotAccuracy) {
-  const auto [swept, unswept] = solve_with_and_without_sweeps(textured(128));
+  const auto [swept, unswept] = solve_with_and_without_sweeps(cavitating_textured(128));
   ASSERT_TRUE(swept.summary.converged) << swept.summary.message;
   ASSERT_TRUE(unswept.summary.converged) << unswept.summary.message;
   std::printf("  fine Newton steps: %d with %d sweeps, %d without\n", swept.summary.iterations,
@@ -172,7 +160,7 @@ TEST(CavitationBlockPreconditioner, CoarseStartSweepsOnRoughFilmsKeepTheAnswer) 
 // grid is solved first (its answer would start the Newton iteration) and, as it does not cavitate
 // either, the fine full-film solve is the answer — the same as with cavitation switched off.
 TEST(CavitationBlockPreconditioner, FilmThatDoesNotCavitateKeepsItsLinearSolve) {
-  ReynoldsProblem pr = textured(128);
+  ReynoldsProblem pr = cavitating_textured(128);
   for (Eigen::Index j = 0; j < pr.grid.ny; ++j)  // a converging wedge, 2 µm to 1 µm
     for (Eigen::Index i = 0; i < pr.grid.nx; ++i)
       pr.gap_m(i, j) = 2e-6 - 1e-6 * static_cast<double>(i) / static_cast<double>(pr.grid.nx - 1);
@@ -187,7 +175,7 @@ TEST(CavitationBlockPreconditioner, FilmThatDoesNotCavitateKeepsItsLinearSolve) 
 
 // Sliding towards −x: the transport block is upper-triangular in the unknowns' order (backward sweep).
 TEST(CavitationBlockPreconditioner, ReproducesDirectAnswerSlidingBackwards) {
-  expect_same_answer(textured(64, -1.0), block_options(), "U < 0       ");
+  expect_same_answer(cavitating_textured(64, -1.0), block_options(), "U < 0       ");
 }
 
 // Fischer–Burmeister mixes diffusion into the cavitated columns: the transport block is then not
@@ -195,7 +183,7 @@ TEST(CavitationBlockPreconditioner, ReproducesDirectAnswerSlidingBackwards) {
 TEST(CavitationBlockPreconditioner, FischerBurmeisterUsesFactorisedTransportBlock) {
   ReynoldsOptions o = block_options();
   o.complementarity = Complementarity::fischer_burmeister;
-  const ReynoldsProblem pr = textured(48);
+  const ReynoldsProblem pr = cavitating_textured(48);
   ReynoldsOptions d = direct_options();
   d.complementarity = Complementarity::fischer_burmeister;
   const ReynoldsSolution direct = solve_reynolds(pr, d);
@@ -216,7 +204,7 @@ TEST(CavitationBlockPreconditioner, FewKrylovIterationsPerNewtonStep) {
   double per_step_of[2] = {0, 0};
   for (int g = 0; g < 2; ++g) {
     // Without grid sequencing, so that every Krylov iteration belongs to a counted Newton step.
-    const ReynoldsSolution s = solve_reynolds(textured(grids[g]), block_options(false, false));
+    const ReynoldsSolution s = solve_reynolds(cavitating_textured(grids[g]), block_options(false, false));
     ASSERT_TRUE(s.summary.converged) << s.summary.message;
     EXPECT_EQ(s.summary.message.find("fell back"), std::string::npos) << s.summary.message;
     const double per_step = static_cast<double>(s.summary.linear_iterations) / s.summary.iterations;

@@ -11,11 +11,12 @@
 #include <vector>
 
 #include "lubrication/reynolds.h"
+#include "tests/lubrication/fixture.h"
 
 namespace tribo::lubrication {
 namespace {
 
-constexpr double kEta = 0.021;
+using fixture::kEta;
 
 // Four-step bearing, infinitely wide (periodic y, ny = 3), U > 0, p = 0 at both ends:
 //   A [0, a): h_A (wide inlet)      B [a, b): h_B < h_A (Rayleigh step: pressure builds)

@@ -10,11 +10,12 @@
 
 #include "lubrication/reference/squeeze_film.h"
 #include "lubrication/viscosity.h"
+#include "tests/lubrication/fixture.h"
 
 namespace tribo::lubrication {
 namespace {
 
-constexpr double kEta = 0.021, kRadius = 4.7625e-3, kGap = 1e-6, kRate = -1e-6;
+using fixture::kEta, fixture::kRadius, fixture::kGap, fixture::kRate;
 
 // (3.2.2) is the integral of the Appendix III pressure; Simpson's rule on 2000 intervals of a
 // cubic integrand (p·2πρ) is exact to rounding, so 1e-12 relative.

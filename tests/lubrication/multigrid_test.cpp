@@ -23,11 +23,12 @@
 
 #include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
+#include "tests/lubrication/fixture.h"
 
 namespace tribo::lubrication {
 namespace {
 
-constexpr double kEta = 0.021;  // thesis oil, Pa s
+using fixture::kEta;
 
 // The bound on ‖p_mg − p‖₂/‖p‖₂ described at the top.
 double relative_error_bound(const ReynoldsProblem& pr, double tolerance, double theta_min) {
@@ -88,23 +89,9 @@ double expect_agreement(const ReynoldsProblem& pr, double tolerance, double thet
   return diff;
 }
 
-// The benchmark film: h = h₀(1 + 0.4 cos(2πx/λ) cos(2πy/λ)), λ = L/4, sliding at 1 m/s, periodic
-// in y, ambient at x = 0 and L; (n + 1) × n nodes. Half of every dimple diverges (sub-ambient
-// pressure without cavitation).
+// The benchmark film (fixture::textured_film), sliding at 1 m/s.
 ReynoldsProblem textured(int n, Cavitation cavitation = Cavitation::none, BoundaryY boundary_y = BoundaryY::periodic) {
-  ReynoldsProblem pr;
-  const double length = 1e-3, wavelength = length / 4;
-  pr.grid = contact::Grid{n + 1, n, length / n, length / n};
-  pr.gap_m = pr.grid.field();
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i <= n; ++i)
-      pr.gap_m(i, j) = 1e-6 * (1.0 + 0.4 * std::cos(2 * std::numbers::pi * i * pr.grid.dx_m / wavelength) *
-                                         std::cos(2 * std::numbers::pi * j * pr.grid.dy_m / wavelength));
-  pr.viscosity_Pa_s = kEta;
-  pr.sliding_speed_m_per_s = 1.0;
-  pr.boundary_y = boundary_y;
-  pr.cavitation = cavitation;
-  return pr;
+  return fixture::textured_film(n, 1.0, cavitation, boundary_y);
 }
 
 // Inclined pad of reynolds_test (Hamrock et al. §8.4), h = h₀(1 + K(1 − x/L)), K = 1.5: a 1-D
