@@ -46,10 +46,18 @@ void run_ehl(const EhlArgs& args) {
   }
   write_file_atomically(dir / "ehl.json", j.dump(2) + "\n");
   const auto& f = solved.film;
-  std::printf("line contact: central film %s m, minimum %s m, max pressure %s Pa, friction coefficient %s, %d iterations -> %s\n",
-              fmt(f.central_film_m, "%.4g").c_str(), fmt(f.minimum_film_m, "%.4g").c_str(), fmt(f.max_pressure_Pa, "%.4g").c_str(),
-              f.converged ? fmt(solved.traction.friction_coefficient, "%.4g").c_str() : "-", f.iterations, args.out.c_str());
-  if (!f.converged) throw std::runtime_error("EHL solve did not converge (residual " + fmt(f.residual, "%.3g") + "): " + f.message);
+  const std::string mu = solved.converged ? fmt(j["friction_coefficient"].get<double>(), "%.4g") : "-";
+  if (solved.mixed)
+    std::printf("line contact, mixed: film share %s of the load, film parameter %s, central film %s m, friction coefficient %s, %d film solves -> %s\n",
+                fmt(solved.mixed->film_share, "%.4g").c_str(), fmt(solved.mixed->film_parameter, "%.3g").c_str(),
+                fmt(f.central_film_m, "%.4g").c_str(), mu.c_str(), solved.mixed->film_solves, args.out.c_str());
+  else
+    std::printf("line contact: central film %s m, minimum %s m, max pressure %s Pa, friction coefficient %s, %d iterations -> %s\n",
+                fmt(f.central_film_m, "%.4g").c_str(), fmt(f.minimum_film_m, "%.4g").c_str(), fmt(f.max_pressure_Pa, "%.4g").c_str(),
+                mu.c_str(), f.iterations, args.out.c_str());
+  if (!solved.converged)
+    throw std::runtime_error(solved.mixed ? "mixed-lubrication solve did not converge: " + solved.mixed->message
+                                          : "EHL solve did not converge (residual " + fmt(f.residual, "%.3g") + "): " + f.message);
   if (args.plot && run_plot_script("ehl", args.out) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
@@ -59,7 +67,7 @@ void run_ehl(const EhlArgs& args) {
 void add_ehl_command(CLI::App& app) {
   auto args = std::make_shared<EhlArgs>();
   CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line contact: film, pressure and traction (TOML config)");
-  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], [solver])")->required();
+  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime, [solver])")->required();
   cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy)")->capture_default_str();
   CLI::Option* plot = cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
   add_summary_only_flag(cmd, args->summary_only, "ehl.json")->excludes(plot);

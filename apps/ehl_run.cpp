@@ -26,7 +26,13 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   run.contact.reduced_radius_m = c->required_number("reduced_radius_m", Range::positive);
   run.contact.reduced_modulus_Pa = c->required_number("reduced_modulus_Pa", Range::positive);
   run.contact.mean_speed_m_per_s = c->required_number("mean_speed_m_per_s", Range::positive);
-  run.sliding_speed_m_per_s = c->number("sliding_speed_m_per_s", 0.0);
+  // The sliding speed absolute, or as a share of the entrainment (a Stribeck sweep over u_m keeps it).
+  if (c->has("slide_to_roll_ratio")) {
+    if (c->has("sliding_speed_m_per_s")) c->fail("slide_to_roll_ratio", "give sliding_speed_m_per_s or slide_to_roll_ratio, not both");
+    run.sliding_speed_m_per_s = c->number("slide_to_roll_ratio", 0.0) * run.contact.mean_speed_m_per_s;
+  } else {
+    run.sliding_speed_m_per_s = c->number("sliding_speed_m_per_s", 0.0);
+  }
   c->finish();
   if (auto l = root.table("lubricant")) {
     run.lubricant.viscosity_Pa_s = l->number("viscosity_Pa_s", run.lubricant.viscosity_Pa_s, Range::positive);
@@ -52,6 +58,17 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   } else {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
   }
+  if (auto r = root.table("roughness")) {
+    EhlRun::Roughness rough;
+    rough.summits.summit_density_per_m2 = r->required_number("summit_density_per_m2", Range::positive);
+    rough.summits.summit_radius_m = r->required_number("summit_radius_m", Range::positive);
+    rough.summits.summit_std_m = r->required_number("summit_std_m", Range::positive);
+    rough.summits.e_star_Pa = 0.5 * run.contact.reduced_modulus_Pa;
+    rough.summit_height_m = r->required_number("summit_height_m", Range::non_negative);
+    rough.boundary_friction_coefficient = r->required_number("boundary_friction_coefficient", Range::non_negative);
+    r->finish();
+    run.roughness = rough;
+  }
   if (auto s = root.table("solver")) {
     run.options.nodes = static_cast<int>(s->integer("nodes", run.options.nodes, 11, 20001));
     run.options.inlet_over_half_width = s->number("inlet_over_half_width", run.options.inlet_over_half_width);
@@ -76,22 +93,59 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
 EhlSolve solve_ehl_run(const EhlRun& run) {
   EhlSolve out;
   const auto start = std::chrono::steady_clock::now();
-  out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
-  const lub::EhlLineResult& f = out.film;
   nlohmann::json& j = out.summary;
+  if (run.roughness) {
+    lub::MixedLineContact mc;
+    mc.film = run.contact;
+    mc.asperities = run.roughness->summits;
+    mc.summit_height_m = run.roughness->summit_height_m;
+    mc.boundary_friction_coefficient = run.roughness->boundary_friction_coefficient;
+    mc.sliding_speed_m_per_s = run.sliding_speed_m_per_s;
+    mc.eyring_stress_Pa = run.eyring_stress_Pa;
+    mc.heating = run.heating;
+    lub::MixedLineOptions mo;
+    mo.film = run.options;
+    const lub::MixedLineResult& m = out.mixed.emplace(lub::solve_mixed_line(mc, run.lubricant, mo));
+    out.film = m.film;
+    out.traction = m.traction;
+    out.converged = m.converged;
+    j["regime"] = "mixed (load sharing, lubrication/mixed_line.h): the film fields are the film's share of the load";
+    j["mixed"] = {{"converged", m.converged},
+                  {"film_solves", m.film_solves},
+                  {"load_balance_residual", m.residual},
+                  {"message", m.message},
+                  {"film_share", m.film_share},
+                  {"film_load_per_length_N_per_m", m.film_load_per_length_N_per_m},
+                  {"asperity_load_per_length_N_per_m", m.asperity_load_per_length_N_per_m},
+                  {"separation_m", m.separation_m},
+                  {"film_parameter", m.film_parameter},
+                  {"asperity_area_fraction", m.asperity_area_fraction},
+                  {"boundary_friction_N_per_m", m.boundary_friction_N_per_m},
+                  {"film_friction_N_per_m", m.film_friction_N_per_m}};
+  } else {
+    out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
+    out.converged = out.film.converged;
+    j["regime"] = "full film (smooth surfaces)";
+  }
+  const lub::EhlLineResult& f = out.film;
   j["geometry"] = "line";
-  j["converged"] = f.converged;
+  j["converged"] = out.converged;
   j["iterations"] = f.iterations;
   j["continuation_steps"] = f.continuation_steps;
   j["residual"] = f.residual;
-  j["message"] = f.message;
+  j["message"] = out.mixed ? out.mixed->message : f.message;
   j["central_film_m"] = f.central_film_m;
   j["minimum_film_m"] = f.minimum_film_m;
   j["max_pressure_Pa"] = f.max_pressure_Pa;
   j["hertz_half_width_m"] = f.hertz_half_width_m;
   j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
   j["load_balance_error"] = f.load_balance_error;
-  if (f.converged) {
+  if (out.mixed && out.converged) {
+    j["friction_coefficient"] = out.mixed->friction_coefficient;  // boundary and film friction over the whole load
+    j["traction_N_per_m"] = out.traction.force_per_length_N_per_m;
+    j["max_shear_stress_Pa"] = out.traction.max_shear_stress_Pa;
+    j["max_film_temperature_rise_K"] = out.traction.max_film_temperature_rise_K;
+  } else if (!out.mixed && f.converged) {
     out.traction = lub::ehl_line_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa,
                                           run.contact.load_per_length_N_per_m, run.heating);
     j["friction_coefficient"] = out.traction.friction_coefficient;
@@ -124,6 +178,14 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                  {"thermal_conductivity_W_per_m_K", run.heating.thermal_conductivity_W_per_m_K},
                  {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K},
                  {"nodes", run.options.nodes}};
+  if (run.roughness) {
+    const auto& r = *run.roughness;
+    j["inputs"]["roughness"] = {{"summit_density_per_m2", r.summits.summit_density_per_m2},
+                                {"summit_radius_m", r.summits.summit_radius_m},
+                                {"summit_std_m", r.summits.summit_std_m},
+                                {"summit_height_m", r.summit_height_m},
+                                {"boundary_friction_coefficient", r.boundary_friction_coefficient}};
+  }
   j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

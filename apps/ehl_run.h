@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,7 @@
 
 #include "lubrication/ehl_line.h"
 #include "lubrication/ehl_traction.h"
+#include "lubrication/mixed_line.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::cli {
@@ -22,18 +24,29 @@ struct EhlRun {
   double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film
   lubrication::FilmHeating heating;    // off unless [lubricant] thermal_conductivity_W_per_m_K is given
   lubrication::EhlLineOptions options;
+  // With [roughness]: the rough contact's mixed regime by load sharing (mixed_line.h) — the summits,
+  // their offset y_s and the boundary friction; the film and traction are then the film's share.
+  struct Roughness {
+    contact::GreenwoodWilliamson summits;  // e_star_Pa = E'/2
+    double summit_height_m = 0.0;
+    double boundary_friction_coefficient = 0.0;
+  };
+  std::optional<Roughness> roughness;
 };
 
-// Reads and checks `path`: [contact] (geometry = "line", load, radius, modulus, speeds),
-// [lubricant] (η0, α, law, compressible, eyring_stress_Pa, the film's heating) and [solver]
-// (docs/lubrication.md).
+// Reads and checks `path`: [contact] (geometry = "line", load, radius, modulus, entrainment, and the
+// sliding speed or the slide-to-roll ratio), [lubricant] (η0, α, law, compressible,
+// eyring_stress_Pa, the film's heating), optionally [roughness] (summit density, radius, standard
+// deviation and mean height, boundary friction coefficient) and [solver] (docs/lubrication.md).
 // Bad input is an InputError naming file, key and reason.
 EhlRun load_ehl_run(const std::filesystem::path& path);
 EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path);
 
 struct EhlSolve {
-  lubrication::EhlLineResult film;
-  lubrication::EhlTraction traction;
+  lubrication::EhlLineResult film;    // with roughness: the film's share of the load
+  lubrication::EhlTraction traction;  // the film's traction
+  std::optional<lubrication::MixedLineResult> mixed;  // with roughness
+  bool converged = false;
   nlohmann::json summary;  // ehl.json without "provenance" and "fields"
 };
 

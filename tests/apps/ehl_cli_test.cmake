@@ -46,3 +46,41 @@ execute_process(COMMAND ${TRIBO} ehl ${WORK}/point.toml --out ${WORK}/out_point 
 if(NOT status EQUAL 2 OR NOT err MATCHES "contact.geometry" OR EXISTS ${WORK}/out_point)
   message(FATAL_ERROR "tribo ehl, point contact: expected status 2 naming contact.geometry and no output, got ${status}: ${err}")
 endif()
+
+# With [roughness]: the mixed regime by load sharing. ehl.json splits the load between film and
+# summits and its friction coefficient is the boundary friction on the summits' share plus the
+# film's traction, over the whole load; the sliding speed may be given as a slide-to-roll ratio.
+set(rough_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 1e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 0.3\nslide_to_roll_ratio = 0.05\n")
+set(rough_rest "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n[roughness]\nsummit_density_per_m2 = 4e10\nsummit_radius_m = 1e-5\nsummit_std_m = 1e-7\nsummit_height_m = 1e-7\nboundary_friction_coefficient = 0.1\n[solver]\nnodes = 151\n")
+file(WRITE ${WORK}/rough.toml "${rough_contact}${rough_rest}")
+execute_process(COMMAND ${TRIBO} ehl ${WORK}/rough.toml --out ${WORK}/out_rough --summary-only RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, rough contact, failed (${status}): ${out} ${err}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+m = s['mixed']
+assert s['converged'] and m['converged'] and m['load_balance_residual'] <= 1e-6, m['message']
+assert 0.2 < m['film_share'] < 0.95, m['film_share']  # mixed at 0.3 m/s (tests/lubrication/mixed_line_test.cpp)
+assert abs(m['film_load_per_length_N_per_m'] + m['asperity_load_per_length_N_per_m'] - 1e5) <= 1e-6 * 1e5, m
+assert abs(m['boundary_friction_N_per_m'] - 0.1 * m['asperity_load_per_length_N_per_m']) <= 1e-9 * m['boundary_friction_N_per_m'], m
+mu = (m['boundary_friction_N_per_m'] + m['film_friction_N_per_m']) / 1e5
+assert abs(s['friction_coefficient'] - mu) <= 1e-12, (s['friction_coefficient'], mu)
+assert s['inputs']['sliding_speed_m_per_s'] == 0.05 * 0.3, s['inputs']
+assert s['inputs']['roughness']['summit_height_m'] == 1e-7, s['inputs']
+" ${WORK}/out_rough RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, rough contact: ehl.json is not as documented: ${why}")
+endif()
+file(WRITE ${WORK}/both_sliding.toml "${rough_contact}sliding_speed_m_per_s = 0.01\n${rough_rest}")
+execute_process(COMMAND ${TRIBO} ehl ${WORK}/both_sliding.toml --out ${WORK}/out_both RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 2 OR NOT err MATCHES "contact.slide_to_roll_ratio" OR EXISTS ${WORK}/out_both)
+  message(FATAL_ERROR "tribo ehl with both sliding keys: expected status 2 naming contact.slide_to_roll_ratio and no output, got ${status}: ${err}")
+endif()
+string(REPLACE "summit_height_m = 1e-7\n" "" no_height "${rough_rest}")
+file(WRITE ${WORK}/no_height.toml "${rough_contact}${no_height}")
+execute_process(COMMAND ${TRIBO} ehl ${WORK}/no_height.toml --out ${WORK}/out_no_height RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 2 OR NOT err MATCHES "roughness.summit_height_m" OR EXISTS ${WORK}/out_no_height)
+  message(FATAL_ERROR "tribo ehl without roughness.summit_height_m: expected status 2 naming it and no output, got ${status}: ${err}")
+endif()

@@ -16,8 +16,9 @@ namespace {
 // boundary friction 0.1 (within 2 %), falls to a minimum and rises again in full film, where the
 // Eyring traction grows with the shear rate — the Stribeck curve's shape. The film carries 99 % of
 // the load once the film parameter Λ = h_c/σ_s passes 3, and less than that below Λ = 2: the
-// textbook criterion for full-film lubrication (Λ ≳ 3; Hamrock, Schmid & Jacobson, Fundamentals
-// of Fluid Film Lubrication, 2nd ed., 2004, §1.4) comes out of the load sharing, not put in.
+// textbook criterion for full-film lubrication (Λ ≳ 3, Hamrock, Schmid & Jacobson, Fundamentals
+// of Fluid Film Lubrication, there with the composite rms roughness for σ_s) comes out of the
+// load sharing, not put in.
 TEST(MixedLine, StribeckCurveRunsFromBoundaryThroughMixedIntoFullFilm) {
   const std::vector<double> speeds{3e-3, 3e-2, 0.3, 1.0, 3.0};
   std::vector<MixedLineResult> r;
