@@ -11,6 +11,7 @@
 
 #include "apps/commands.h"
 #include "apps/config.h"
+#include "apps/gap_model.h"
 #include "apps/output.h"
 #include "apps/provenance.h"
 #include "apps/rig_config.h"
@@ -47,38 +48,6 @@ gap::DiagnosisOptions fitting_options(bool quick, std::uint64_t seed) {
     o.bootstrap_samples = 100;
   }
   return o;
-}
-
-// The model: [rig] and [friction] of a `tribo rig` config ([drive] and [run] are not used: the
-// drive comes from the data). Rig keys the model leaves out are returned for calibration.
-struct Model {
-  rig::RigParameters rig;
-  rig::FrictionModel friction;
-  std::vector<std::string> missing_rig_keys;
-  std::vector<std::filesystem::path> input_files;  // read besides the config: a law table
-};
-
-Model load_model(const std::string& path) {
-  const toml::table doc = parse_toml_file(path);
-  ConfigTable root(doc, path, "");
-  Model m;
-  std::optional<ConfigTable> rig_table = root.table("rig");
-  for (const char* key : {"stiffness_N_per_m", "damping_N_s_per_m", "mass_kg"})
-    if (!rig_table || !rig_table->has(key)) m.missing_rig_keys.push_back(key);
-  if (rig_table) {
-    m.rig = read_rig_parameters(*rig_table);
-    rig_table->accept("drive_speed_m_per_s");
-    rig_table->finish();
-  }
-  std::optional<ConfigTable> friction = root.table("friction");
-  // A homogenised law (law.json) is read at the model's normal load.
-  m.friction = read_friction_model(friction ? &*friction : nullptr, m.rig.normal_load_N);
-  if (friction) friction->finish();
-  root.accept("drive");
-  root.accept("run");
-  root.finish();
-  m.input_files = root.input_files();
-  return m;
 }
 
 void write_overlays(const std::filesystem::path& path, const gap::ExperimentBundle& bundle, const std::vector<gap::SimulatedRun>& before,
@@ -195,7 +164,7 @@ void run_diagnose(const DiagnoseArgs& args) {
     if (test->kind != bundle.kind)
       throw InputError(args.test + "/experiment.toml: [rig] kind '" + test->kind + "' is not the diagnosed bundle's '" + bundle.kind + "'");
   }
-  const Model model = load_model(args.model);
+  const GapModel model = load_gap_model(args.model);
   gap::DiagnosisOptions o = fitting_options(args.quick, args.seed);
   for (const std::string& key : model.missing_rig_keys) {
     const bool in_bundle = key == "stiffness_N_per_m" ? bundle.stiffness_N_per_m.has_value()
