@@ -125,6 +125,9 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
   } else {
     out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
     out.converged = out.film.converged;
+    if (out.converged)  // no traction from a film that is not a solution
+      out.traction = lub::ehl_line_traction(out.film, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa,
+                                            run.contact.load_per_length_N_per_m, run.heating);
     j["regime"] = "full film (smooth surfaces)";
   }
   const lub::EhlLineResult& f = out.film;
@@ -140,19 +143,13 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
   j["hertz_half_width_m"] = f.hertz_half_width_m;
   j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
   j["load_balance_error"] = f.load_balance_error;
-  if (out.mixed && out.converged) {
-    j["friction_coefficient"] = out.mixed->friction_coefficient;  // boundary and film friction over the whole load
+  if (out.converged) {
+    // With roughness, the whole contact's: boundary friction on the summits' share plus the film's traction.
+    j["friction_coefficient"] = out.mixed ? out.mixed->friction_coefficient : out.traction.friction_coefficient;
     j["traction_N_per_m"] = out.traction.force_per_length_N_per_m;
     j["max_shear_stress_Pa"] = out.traction.max_shear_stress_Pa;
     j["max_film_temperature_rise_K"] = out.traction.max_film_temperature_rise_K;
-  } else if (!out.mixed && f.converged) {
-    out.traction = lub::ehl_line_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa,
-                                          run.contact.load_per_length_N_per_m, run.heating);
-    j["friction_coefficient"] = out.traction.friction_coefficient;
-    j["traction_N_per_m"] = out.traction.force_per_length_N_per_m;
-    j["max_shear_stress_Pa"] = out.traction.max_shear_stress_Pa;
-    j["max_film_temperature_rise_K"] = out.traction.max_film_temperature_rise_K;
-  } else {  // no traction from a film that is not a solution
+  } else {
     for (const char* key : {"friction_coefficient", "traction_N_per_m", "max_shear_stress_Pa", "max_film_temperature_rise_K"}) j[key] = nullptr;
   }
   const lub::EhlLineContact& c = run.contact;

@@ -104,10 +104,10 @@ struct SelftestRow {
 
 // An effect is visible in its data when the calibrated baseline misses the held-out items by more
 // than this many noise floors (SelftestRow::signal_floors): a control's calibrated baseline sits at
-// or below about one floor (the floor is the gap the data's noise alone leaves), so below two the data hold little an effect
-// could be told by, whatever the method. Cases
-// are split by it so that a score is read against the power the data give (a power analysis, not a
-// filter: every case stays in identified_fraction).
+// or below about one floor (the floor is the gap the data's noise alone leaves), so below two the
+// data hold little an effect could be told by, whatever the method. Cases are split by it so that
+// a score is read against the power the data give (a power analysis, not a filter: every case
+// stays in identified_fraction).
 inline constexpr double kVisibleSignalFloors = 2.0;
 
 // Confusion matrix and shrink over one generator's cases (or all).

@@ -1,10 +1,10 @@
 #include "lubrication/mixed_line.h"
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 #include <utility>
 
+#include "lubrication/reference/ehl_film.h"
 #include "numerics/format.h"
 
 namespace tribo::lubrication {
@@ -12,10 +12,12 @@ namespace {
 
 [[noreturn]] void bad_mixed_input(const std::string& what) { throw std::invalid_argument("mixed line contact: " + what); }
 
-// The film solved at share s = e^{ln_share} and the load balance g(s)/w it leaves.
+// The film solved at share s = e^{ln_share}, the summits at its separation, and the load balance
+// g(s)/w they leave.
 struct Trial {
   double ln_share = 0.0, balance = 0.0, asperity_load_N_per_m = 0.0;
   EhlLineResult film;
+  contact::GwState summits;
 };
 
 }  // namespace
@@ -37,18 +39,18 @@ MixedLineResult solve_mixed_line(const MixedLineContact& c, const PiezoviscousLu
     bad_mixed_input("options: tolerance > 0, 0 < min_share < 1 and max_film_solves >= 2 are required");
 
   const double w = f.load_per_length_N_per_m;
-  const double half_width_m = std::sqrt(8.0 * w * f.reduced_radius_m / (std::numbers::pi * f.reduced_modulus_Pa));
+  const double half_width_m = reference::hertz_line_half_width_m(w, f.reduced_radius_m, f.reduced_modulus_Pa);
   MixedLineResult out;
   const auto at = [&](double ln_share) {
     const double s = std::exp(ln_share);
     EhlLineContact scaled = f;
     scaled.load_per_length_N_per_m = s * w;
     scaled.reduced_modulus_Pa = s * f.reduced_modulus_Pa;
-    Trial t{ln_share, 0.0, 0.0, solve_ehl_line(scaled, lubricant, o.film)};
+    Trial t{ln_share, 0.0, 0.0, solve_ehl_line(scaled, lubricant, o.film), {}};
     ++out.film_solves;
     if (t.film.converged) {
-      t.asperity_load_N_per_m =
-          2.0 * half_width_m * contact::gw_at_separation(c.asperities, t.film.central_film_m - c.summit_height_m).pressure_Pa;
+      t.summits = contact::gw_at_separation(c.asperities, t.film.central_film_m - c.summit_height_m);
+      t.asperity_load_N_per_m = 2.0 * half_width_m * t.summits.pressure_Pa;
       t.balance = (s * w + t.asperity_load_N_per_m - w) / w;
     }
     return t;
@@ -113,9 +115,9 @@ MixedLineResult solve_mixed_line(const MixedLineContact& c, const PiezoviscousLu
   out.film_load_per_length_N_per_m = s * w;
   out.asperity_load_per_length_N_per_m = found.asperity_load_N_per_m;
   out.central_film_m = found.film.central_film_m;
-  out.separation_m = found.film.central_film_m - c.summit_height_m;
+  out.separation_m = found.summits.separation_m;
   out.film_parameter = found.film.central_film_m / c.asperities.summit_std_m;
-  out.asperity_area_fraction = contact::gw_at_separation(c.asperities, out.separation_m).area_fraction;
+  out.asperity_area_fraction = found.summits.area_fraction;
   out.film = std::move(found.film);
   out.traction = ehl_line_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, s * w, c.heating);
   out.boundary_friction_N_per_m = c.boundary_friction_coefficient * out.asperity_load_per_length_N_per_m;

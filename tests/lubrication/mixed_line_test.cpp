@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include "lubrication/mixed_line.h"
+#include "lubrication/reference/ehl_film.h"
 #include "tests/lubrication/steel_roller_pair.h"
 
 namespace tribo::lubrication {
@@ -65,7 +65,7 @@ TEST(MixedLine, TheShareFoundBalancesTheLoadWithGreenwoodWilliamson) {
   scaled.reduced_modulus_Pa *= r.film_share;
   const EhlLineResult film = solve_ehl_line(scaled, steel_rollers::mineral_oil(), o.film);
   EXPECT_DOUBLE_EQ(film.central_film_m, r.central_film_m);
-  const double b = std::sqrt(8.0 * 1e5 * steel_rollers::kRadius_m / (std::numbers::pi * steel_rollers::kModulus_Pa));
+  const double b = reference::hertz_line_half_width_m(1e5, steel_rollers::kRadius_m, steel_rollers::kModulus_Pa);
   const double asperities = 2.0 * b * contact::gw_at_separation(c.asperities, film.central_film_m - c.summit_height_m).pressure_Pa;
   EXPECT_NEAR(r.film_share * 1e5 + asperities, 1e5, o.tolerance * 1e5);
   EXPECT_NEAR(r.friction_coefficient, (0.1 * asperities + r.traction.force_per_length_N_per_m) / 1e5, 1e-12);
