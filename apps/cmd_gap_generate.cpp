@@ -7,7 +7,8 @@
 //                    drawn afresh), for `tribo gap diagnose --test`
 //   DIR/model.toml   the model the diagnosis starts from: the rig as told, a Coulomb baseline
 //                    miscalibrated as the selftest's is, and no effect
-//   DIR/truth.json   the withheld effect (rig generator: with its parameters), the form it was
+//   DIR/truth.json   the withheld effect with its parameters (the rig generator's in catalogue
+//                    names; the independent one's in its own forms, with its rig and chain), the form it was
 //                    written in, generator, kind, set, seed, provenance
 #include <fstream>
 #include <memory>
@@ -56,6 +57,7 @@ GeneratedCase generate(const GenerateArgs& a) {
     g.bundle = std::move(c.bundle);
     g.mu_s = c.model_mu_s, g.mu_k = c.model_mu_k;
     g.form = c.form;
+    g.truth_parameters = gap::independent::truth_parameters(c);
   }
   g.rig = gap::apply_bundle_rig(g.bundle, rig::RigParameters{});
   return g;

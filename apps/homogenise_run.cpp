@@ -46,12 +46,14 @@ void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig
 void write_area_csv(const std::filesystem::path& path, const homogenise::PinTable& pin, double sigma,
                     const nlohmann::json& provenance) {
   CsvFile f(path, provenance);
-  f.stream() << "separation_m,separation_over_sigma,solid_load_N,solid_load_standard_error_N,real_area_m2,"
-                "real_area_fraction,real_area_standard_error_m2,lift_per_eta_u_m,squeeze_per_eta_m,shear_per_eta_u_m\n";
+  f.stream() << "separation_m,separation_over_sigma,solid_load_N,solid_load_standard_error_N,solid_load_discretisation_error_N,"
+                "real_area_m2,real_area_fraction,real_area_standard_error_m2,real_area_discretisation_error_m2,lift_per_eta_u_m,"
+                "squeeze_per_eta_m,shear_per_eta_u_m\n";
   for (std::size_t m = 0; m < pin.separation_m.size(); ++m)
     f.stream() << pin.separation_m[m] << ',' << pin.separation_m[m] / sigma << ',' << pin.solid_load_N[m] << ','
-               << pin.solid_load_standard_error_N[m] << ',' << pin.real_area_m2[m] << ','
-               << pin.real_area_m2[m] / pin.nominal_area_m2 << ',' << pin.real_area_standard_error_m2[m] << ','
+               << pin.solid_load_standard_error_N[m] << ',' << pin.solid_load_discretisation_error_N[m] << ','
+               << pin.real_area_m2[m] << ',' << pin.real_area_m2[m] / pin.nominal_area_m2 << ','
+               << pin.real_area_standard_error_m2[m] << ',' << pin.real_area_discretisation_error_m2[m] << ','
                << pin.wedge_lift_per_eta_u_m[m] + pin.rugosity_lift_per_eta_u_m[m] << ',' << pin.squeeze_per_eta_m[m]
                << ',' << pin.shear_per_eta_u_m[m] << '\n';
   f.commit();
@@ -144,8 +146,9 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   write_area_csv(dir / "area.csv", pin, cells.sigma_m, provenance);
   write_stribeck_csv(dir / "stribeck.csv", stribeck, provenance);
   write_file_atomically(dir / "law.json", law.dump(2) + "\n");
-  std::printf("mu_s,max %.4g (BEM, %d realisations), dry mu %.4g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
-              cells.mu_s_max.mean, cells.realisations, cells.mu_boundary.mean, stribeck.size(), o.pin.normal_load_N,
+  std::printf("mu_s,max %.4g ± %.2g (BEM on %d², %d realisations; ± the discretisation error), dry mu %.4g ± %.2g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
+              cells.mu_s_max.mean, cells.mu_s_max_discretisation_error, cells.contact_grid, cells.realisations, cells.mu_boundary.mean,
+              cells.mu_boundary_discretisation_error, stribeck.size(), o.pin.normal_load_N,
               law["wall_s"].get<double>(), out.string().c_str());
   if (!law["table"]["dropped_separations_m"].empty())
     std::fprintf(stderr, "tribo: warning: %zu separations left out of the law table (no converged solve there): %s\n",
@@ -153,6 +156,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   for (const auto& p : curve.unconverged)
     std::fprintf(stderr, "tribo: warning: Stribeck point at %.4g m/s left out: %s\n", p["U_m_per_s"].get<double>(),
                  p["reason"].get<std::string>().c_str());
+  for (const auto& w : law["warnings"]) std::fprintf(stderr, "tribo: warning: %s\n", w.get<std::string>().c_str());
   if (cells.unconverged > 0 || pin.reynolds_unconverged > 0)
     std::fprintf(stderr, "tribo: warning: %d cell and %d pin-face solves did not converge (left out; see law.json)\n",
                  cells.unconverged, pin.reynolds_unconverged);

@@ -124,6 +124,34 @@ Eigen::ArrayXXd gaussian_surface(const GaussianSurfaceParams& p) {
   return h;
 }
 
+Eigen::ArrayXXd fourier_refine(const Eigen::ArrayXXd& h, int factor) {
+  if (factor < 1) throw std::invalid_argument("fourier_refine: factor must be >= 1, got " + std::to_string(factor));
+  if (h.size() == 0) throw std::invalid_argument("fourier_refine: empty height field");
+  if (factor == 1) return h;
+  const Eigen::Index nx = h.rows(), ny = h.cols(), mx = factor * nx, my = factor * ny;
+  RealFft2d coarse(nx, ny, /*threads=*/1), fine(mx, my, /*threads=*/1);
+  coarse.forward(h.data());
+  std::complex<double>* c = coarse.spectrum();
+  std::complex<double>* f = fine.spectrum();
+  std::fill(f, f + fine.spectrum_size(), std::complex<double>(0.0, 0.0));
+  // Unnormalised transforms: h = (1/(nx ny)) Σ C e^{iq·x}, so the fine coefficients are C scaled
+  // by (mx my)/(nx ny) = factor², halved on each Nyquist line of an even axis.
+  const double scale = static_cast<double>(factor) * static_cast<double>(factor);
+  for (Eigen::Index j = 0; j < ny; ++j) {
+    const Eigen::Index ky = signed_frequency(j, ny);
+    const bool y_nyquist = 2 * ky == ny;
+    for (Eigen::Index k = 0; k < coarse.nx_half(); ++k) {
+      const double w = scale * (2 * k == nx ? 0.5 : 1.0) * (y_nyquist ? 0.5 : 1.0);
+      const std::complex<double> v = w * c[j * coarse.nx_half() + k];
+      f[(ky >= 0 ? ky : my + ky) * fine.nx_half() + k] += v;
+      if (y_nyquist) f[(my - ky) * fine.nx_half() + k] += v;  // the −q_N half of the cosine
+    }
+  }
+  Eigen::ArrayXXd out(mx, my);
+  fine.inverse(out.data());
+  return out / static_cast<double>(mx * my);
+}
+
 SurfaceStatistics surface_statistics(const Eigen::ArrayXXd& h, double lx_m, double ly_m) {
   if (h.size() == 0) throw std::invalid_argument("surface statistics: empty height field");
   if (!(lx_m > 0.0 && ly_m > 0.0 && std::isfinite(lx_m) && std::isfinite(ly_m))) {

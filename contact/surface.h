@@ -77,6 +77,16 @@ struct RadialPsd {
 RadialPsd radial_psd(const Eigen::ArrayXXd& heights_m, double lx_m, double ly_m);
 
 // Height distribution as a probability density over `bins` equal bins spanning [min, max].
+// The same periodic surface on a grid `factor` times finer in each direction: its trigonometric
+// (band-limited) interpolant, whose Fourier coefficients are the coarse ones and zero above the
+// coarse Nyquist wavenumber; a Nyquist bin of an even grid (a pure cosine there) is split evenly
+// between ±q_N. The refined field equals the coarse one at the coarse nodes (every factor-th node),
+// and its spectrum, Rq and mean are the coarse ones: it is the same continuous surface sampled
+// more finely, so a solve on it measures the discretisation error of the coarse solve, not a new
+// realisation. Works on odd and even, rectangular grids; factor 1 returns a copy. Throws
+// std::invalid_argument for factor < 1 or an empty field.
+Eigen::ArrayXXd fourier_refine(const Eigen::ArrayXXd& heights_m, int factor);
+
 struct HeightHistogram {
   std::vector<double> bin_centre_m;
   std::vector<double> density_per_m;

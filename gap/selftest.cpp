@@ -202,6 +202,7 @@ CaseBundles make_case_bundles(const SelftestCase& sc, const SyntheticOptions& sy
       c.test = independent::record_bundle(ic.truth, ic.actual, ic.told, ic.friction_chain, ic.displacement_chain, ic.velocity_chain, go,
                                           test_seed);
     c.model = rig::coulomb(ic.model_mu_s, ic.model_mu_k);
+    c.truth_parameters = independent::truth_parameters(ic);
     c.bundle = std::move(ic.bundle);
     c.form = ic.form;
   } else if (sc.generator == kRigGenerator) {

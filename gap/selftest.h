@@ -167,7 +167,8 @@ struct CaseBundles {
   ExperimentBundle bundle, test;
   rig::FrictionModel model;
   std::string form;
-  std::map<std::string, double> truth_parameters;  // rig generator: "effect.parameter" of the withheld effect
+  std::map<std::string, double> truth_parameters;  // rig generator: "effect.parameter" of the withheld effect;
+                                                    // independent: its own forms (independent::truth_parameters)
 };
 CaseBundles make_case_bundles(const SelftestCase& c, const SyntheticOptions& synthetic);
 

@@ -2,10 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+
+#include "homogenise/solid_contact.h"
 
 namespace tribo::homogenise {
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Mean ± standard error of the finite values (NaN marks an unconverged solve).
 Estimate finite_estimate(const std::vector<double>& values) {
@@ -26,17 +31,21 @@ std::vector<Estimate> column(const std::vector<PatchResult>& patches, std::vecto
   return out;
 }
 
-// Removes the nodes where any column's mean is NaN (no realisation converged there), keeping
-// their separations in dropped_separation_m.
+// Removes the nodes where any tabulated column's mean is NaN (no realisation converged there),
+// keeping their separations in dropped_separation_m; the coarse solid columns (for the
+// discretisation error alone: NaN there leaves the error unknown, not the node) follow.
 void drop_unresolved_nodes(CellTable& t) {
-  std::vector<std::vector<Estimate>*> columns = {&t.solid_pressure_Pa, &t.area_fraction, &t.phi_x, &t.phi_y,
-                                                 &t.phi_s, &t.film_over_sigma, &t.phi_f, &t.couette_shear_factor,
-                                                 &t.phi_fp, &t.contact_fraction, &t.lift_per_eta_u_per_m};
+  const std::vector<std::vector<Estimate>*> tabulated = {&t.solid_pressure_Pa, &t.area_fraction, &t.phi_x, &t.phi_y,
+                                                         &t.phi_s, &t.film_over_sigma, &t.phi_f, &t.couette_shear_factor,
+                                                         &t.phi_fp, &t.contact_fraction, &t.lift_per_eta_u_per_m};
+  std::vector<std::vector<Estimate>*> columns = tabulated;
+  columns.push_back(&t.solid_pressure_coarse_Pa);
+  columns.push_back(&t.area_fraction_coarse);
   std::vector<double> kept_separation;
   std::vector<std::vector<Estimate>> kept(columns.size());
   for (std::size_t m = 0; m < t.separation_m.size(); ++m) {
     bool finite = true;
-    for (const auto* c : columns) finite = finite && std::isfinite((*c)[m].mean);
+    for (const auto* c : tabulated) finite = finite && std::isfinite((*c)[m].mean);
     if (!finite) {
       t.dropped_separation_m.push_back(t.separation_m[m]);
       continue;
@@ -52,6 +61,15 @@ void drop_unresolved_nodes(CellTable& t) {
 
 }  // namespace
 
+std::vector<double> discretisation_error(const std::vector<Estimate>& fine, const std::vector<Estimate>& coarse) {
+  if (coarse.size() != fine.size())
+    throw std::invalid_argument("homogenise: a coarse column has " + std::to_string(coarse.size()) + " nodes, its fine one " +
+                                std::to_string(fine.size()));
+  std::vector<double> e;
+  for (std::size_t m = 0; m < fine.size(); ++m) e.push_back(error_from_refinement(coarse[m].mean, fine[m].mean));
+  return e;
+}
+
 CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& patches) {
   if (patches.empty()) throw std::invalid_argument("homogenise: no realisation to average");
   const std::vector<double>& nodes = patches.front().separation_m;
@@ -65,6 +83,8 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
   t.realisations = static_cast<int>(patches.size());
   t.solid_pressure_Pa = column(patches, &PatchResult::solid_pressure_Pa);
   t.area_fraction = column(patches, &PatchResult::area_fraction);
+  t.solid_pressure_coarse_Pa = column(patches, &PatchResult::solid_pressure_coarse_Pa);
+  t.area_fraction_coarse = column(patches, &PatchResult::area_fraction_coarse);
   t.phi_x = column(patches, &PatchResult::phi_x);
   t.phi_y = column(patches, &PatchResult::phi_y);
   t.phi_s = column(patches, &PatchResult::phi_s);
@@ -74,15 +94,29 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
   t.phi_fp = column(patches, &PatchResult::phi_fp);
   t.contact_fraction = column(patches, &PatchResult::contact_fraction);
   t.lift_per_eta_u_per_m = column(patches, &PatchResult::lift_per_eta_u_per_m);
-  std::vector<double> mus, mub;
+  std::vector<double> mus, mub, mus_coarse, mub_coarse;
   for (const PatchResult& p : patches) {
+    if (p.contact_grid != patches.front().contact_grid)
+      throw std::invalid_argument("homogenise: realisation seed " + std::to_string(p.seed) + " was solved on another contact grid (a stale cache?)");
     mus.push_back(p.mu_s_max);
     mub.push_back(p.mu_boundary);
+    mus_coarse.push_back(std::isfinite(p.mu_s_max) ? p.mu_s_max_coarse : kNaN);
+    mub_coarse.push_back(std::isfinite(p.mu_boundary) ? p.mu_boundary_coarse : kNaN);
     t.first_contact_separation_m = std::max(t.first_contact_separation_m, p.first_contact_separation_m);
     t.unconverged += p.unconverged;
   }
   t.mu_s_max = finite_estimate(mus);
   t.mu_boundary = finite_estimate(mub);
+  // Over the realisations solved on both grids, so the change is not a change of ensemble.
+  const auto change = [](const std::vector<double>& fine, const std::vector<double>& coarse) {
+    std::vector<double> f, c;
+    for (std::size_t k = 0; k < fine.size(); ++k)
+      if (std::isfinite(fine[k]) && std::isfinite(coarse[k])) f.push_back(fine[k]), c.push_back(coarse[k]);
+    return f.empty() ? kNaN : error_from_refinement(lubrication::estimate(c).mean, lubrication::estimate(f).mean);
+  };
+  t.mu_s_max_discretisation_error = change(mus, mus_coarse);
+  t.mu_boundary_discretisation_error = change(mub, mub_coarse);
+  t.contact_grid = patches.front().contact_grid;
   drop_unresolved_nodes(t);
   return t;
 }

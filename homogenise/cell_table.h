@@ -14,10 +14,15 @@ using lubrication::Estimate;
 struct CellTable {
   double sigma_m = 0;
   std::vector<double> separation_m;
-  std::vector<Estimate> solid_pressure_Pa, area_fraction;
+  std::vector<Estimate> solid_pressure_Pa, area_fraction;              // on the contact grid
+  std::vector<Estimate> solid_pressure_coarse_Pa, area_fraction_coarse;  // on half of it
   std::vector<Estimate> phi_x, phi_y, phi_s, film_over_sigma, phi_f, couette_shear_factor, phi_fp, contact_fraction;
   std::vector<Estimate> lift_per_eta_u_per_m;
   Estimate mu_s_max, mu_boundary;
+  // Discretisation error of the two means (error_from_refinement of the realisations' mean on half
+  // the contact grid against their mean on it), and that grid's nodes a side.
+  double mu_s_max_discretisation_error = 0, mu_boundary_discretisation_error = 0;
+  int contact_grid = 0;
   double first_contact_separation_m = 0;  // the largest over the realisations
   int realisations = 0;
   int unconverged = 0;                    // solves left out (NaN) over all realisations
@@ -25,6 +30,10 @@ struct CellTable {
   // scale and the rig interpolate over finite nodes only).
   std::vector<double> dropped_separation_m;
 };
+
+// A column's discretisation error node by node: error_from_refinement of its mean on half the
+// contact grid against its mean on it.
+std::vector<double> discretisation_error(const std::vector<Estimate>& fine, const std::vector<Estimate>& coarse);
 
 // Throws std::invalid_argument when the patches do not share their nodes or none is given, or when
 // fewer than two nodes keep a finite value in every column.

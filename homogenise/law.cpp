@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "contact/junction_locus.h"
+#include "numerics/format.h"
 
 namespace tribo::homogenise {
 
@@ -63,6 +64,21 @@ JunctionSummary junction(const HomogeniseOptions& o, const CellTable& cells) {
   return j;
 }
 
+std::vector<std::string> resolution_warnings(const HomogeniseOptions& o, const CellTable& cells) {
+  std::vector<std::string> out;
+  const auto check = [&](const char* name, const Estimate& value, double error) {
+    const double relative = error / std::abs(value.mean);
+    if (!(relative <= o.target_relative_error))
+      out.push_back(std::string(name) + " = " + numerics::fmt(value.mean) + " carries a discretisation error of " +
+                    numerics::fmt(error, "%.2g") + " (" + numerics::fmt(100.0 * relative, "%.2g") + " %, target " +
+                    numerics::shortest(100.0 * o.target_relative_error) + " %) on the " + std::to_string(cells.contact_grid) +
+                    "² contact grid; raise [homogenise] min_contact_grid");
+  };
+  check("mu_s_max", cells.mu_s_max, cells.mu_s_max_discretisation_error);
+  check("mu_boundary", cells.mu_boundary, cells.mu_boundary_discretisation_error);
+  return out;
+}
+
 namespace {
 
 nlohmann::json means(const std::vector<Estimate>& c) {
@@ -80,6 +96,10 @@ nlohmann::json errors(const std::vector<Estimate>& c) {
 
 nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, const PinTable& pin) {
   const JunctionSummary jn = junction(o, cells);
+  // One realisation has no scatter to measure: its standard error is unknown (null), not 0.
+  const auto standard_error = [&](const Estimate& e) {
+    return cells.realisations > 1 ? nlohmann::json(e.standard_error) : nlohmann::json(nullptr);
+  };
   std::vector<double> lift(pin.separation_m.size());
   for (std::size_t m = 0; m < lift.size(); ++m)
     lift[m] = std::max(pin.wedge_lift_per_eta_u_m[m], 0.0) + pin.rugosity_lift_per_eta_u_m[m];
@@ -108,14 +128,20 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                    {"interface_shear_strength_Pa", jn.interface_shear_strength_Pa},
                    {"hardness_Pa", o.hardness_Pa},
                    {"mu_s_max", jn.mu_s_max},
-                   {"mu_s_max_standard_error", cells.mu_s_max.standard_error},
+                   {"mu_s_max_standard_error", standard_error(cells.mu_s_max)},
+                   {"mu_s_max_discretisation_error", cells.mu_s_max_discretisation_error},
                    {"mu_boundary", jn.mu_boundary},
-                   {"mu_boundary_standard_error", cells.mu_boundary.standard_error}};
+                   {"mu_boundary_standard_error", standard_error(cells.mu_boundary)},
+                   {"mu_boundary_discretisation_error", cells.mu_boundary_discretisation_error},
+                   {"contact_grid", cells.contact_grid}};
+  j["warnings"] = resolution_warnings(o, cells);
   j["table"] = {{"separation_m", pin.separation_m},
                 {"solid_load_N", pin.solid_load_N},
                 {"solid_load_standard_error_N", pin.solid_load_standard_error_N},
+                {"solid_load_discretisation_error_N", pin.solid_load_discretisation_error_N},
                 {"real_area_m2", pin.real_area_m2},
                 {"real_area_standard_error_m2", pin.real_area_standard_error_m2},
+                {"real_area_discretisation_error_m2", pin.real_area_discretisation_error_m2},
                 {"lift_per_eta_u_m", lift},
                 {"wedge_lift_per_eta_u_m", pin.wedge_lift_per_eta_u_m},
                 {"rugosity_lift_per_eta_u_m", pin.rugosity_lift_per_eta_u_m},
@@ -129,8 +155,11 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                 {"separation_m", cells.separation_m},
                 {"solid_pressure_Pa", means(cells.solid_pressure_Pa)},
                 {"solid_pressure_standard_error_Pa", errors(cells.solid_pressure_Pa)},
+                {"solid_pressure_discretisation_error_Pa", discretisation_error(cells.solid_pressure_Pa, cells.solid_pressure_coarse_Pa)},
                 {"area_fraction", means(cells.area_fraction)},
                 {"area_fraction_standard_error", errors(cells.area_fraction)},
+                {"area_fraction_discretisation_error", discretisation_error(cells.area_fraction, cells.area_fraction_coarse)},
+                {"contact_grid", cells.contact_grid},
                 {"phi_x", means(cells.phi_x)},
                 {"phi_y", means(cells.phi_y)},
                 {"phi_s", means(cells.phi_s)},

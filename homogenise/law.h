@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -28,6 +29,10 @@ struct JunctionSummary {
          reference_load_rate_per_s = 0, interface_shear_strength_Pa = 0, mu_s_max = 0, mu_boundary = 0;
 };
 JunctionSummary junction(const HomogeniseOptions& options, const CellTable& cells);
+
+// One line for each tabulated quantity whose discretisation error exceeds the options'
+// target_relative_error of its value (μs,max, μ_b): what, the error, the grid, and what to change.
+std::vector<std::string> resolution_warnings(const HomogeniseOptions& options, const CellTable& cells);
 
 // The law file without provenance and Stribeck section (the caller adds both): pin, lubricant,
 // thermal, junction, the pin table (columns of the rig's contract plus standard errors and the

@@ -53,11 +53,26 @@ struct HomogeniseOptions {
   double flow_contact_gap_fraction = 1e-3;   // film floor at contact in the flow-factor cells, × σ
   double lift_contact_gap_fraction = 0.1;    // film floor in the rugosity-lift cells, × σ
   double bem_tolerance = 1e-8;               // NormalContactOptions::tolerance
+  // The solid solves (homogenise/solid_contact.h: N_s and A_r at the separations, μs,max, μ_b)
+  // run on the realisation Fourier-refined to f · grid nodes a side, f the smallest power of two
+  // ≥ 2 with f · grid ≥ min_contact_grid, and once more at f/2 · grid: the change is their
+  // discretisation error. At the thesis pressure the
+  // contact spots need ≈ 2048² on a 1 mm patch (the change 1024² → 2048² is 0.8 % of μs,max and
+  // 1.6 % of μ_b; at 128² alone μ_b came out 40 % high: tests/homogenise/solid_contact_slow_test),
+  // which examples/thesis-steel.toml asks for; the default is a cheaper start whose warning says
+  // when it is not enough.
+  int min_contact_grid = 512;
+  // tribo homogenise warns (and law.json lists) where a discretisation error exceeds this
+  // fraction of its value.
+  double target_relative_error = 0.01;
   int pin_grid = 65;                         // nodes across the pin face (average Reynolds)
   int threads = 0;                           // realisations in parallel; 0 = all OpenMP threads
 };
 
 // Throws std::invalid_argument naming the first bad field.
 void validate(const HomogeniseOptions& options);
+
+// The refinement factor f of the static-friction solves (f · surface.grid nodes a side).
+int contact_refinement(const HomogeniseOptions& options);
 
 }  // namespace tribo::homogenise

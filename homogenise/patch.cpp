@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "contact/halfspace.h"
-#include "contact/normal_contact.h"
+#include "contact/surface.h"
+#include "homogenise/solid_contact.h"
 #include "lubrication/flow_factors.h"
 #include "numerics/format.h"
 
@@ -16,8 +16,6 @@ namespace tribo::homogenise {
 namespace {
 
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("homogenise: " + what); }
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The cell options of lubrication/flow_factors.h for this one realisation, single-threaded.
 lubrication::HomogenisationOptions cell_options(const HomogeniseOptions& o, std::uint64_t seed, double floor_fraction) {
@@ -64,7 +62,15 @@ void validate(const HomogeniseOptions& o) {
     bad("lift_contact_gap_fraction must lie in (0, 0.5]");
   if (!(o.bem_tolerance > 0 && o.bem_tolerance < 1)) bad("bem_tolerance must lie in (0, 1)");
   if (o.pin_grid < 9) bad("pin_grid must be >= 9");
+  if (o.min_contact_grid < 1) bad("min_contact_grid must be >= 1");
+  if (!(o.target_relative_error > 0 && o.target_relative_error < 1)) bad("target_relative_error must lie in (0, 1)");
   if (o.threads < 0) bad("threads must be >= 0");
+}
+
+int contact_refinement(const HomogeniseOptions& o) {
+  int f = 2;
+  while (f * o.surface.grid < o.min_contact_grid) f *= 2;
+  return f;
 }
 
 PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
@@ -74,65 +80,31 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   contact::GaussianSurfaceParams sp = o.surface;
   sp.seed = r.seed;
   const Eigen::ArrayXXd z = contact::gaussian_surface(sp);
-  const double sigma = o.surface.rms_height_m, side = o.surface.size_m, patch_area = side * side;
+  const double sigma = o.surface.rms_height_m;
   const std::size_t nodes = o.separation_ratios.size();
   for (double ratio : o.separation_ratios) r.separation_m.push_back(ratio * sigma);
-  r.first_contact_separation_m = -z.minCoeff();
-  if (!(r.separation_m.back() > r.first_contact_separation_m))
-    bad("the largest separation ratio " + numerics::shortest(o.separation_ratios.back()) +
-        " lies below the first contact of seed " + std::to_string(r.seed) + " at h/σ = " +
-        numerics::shortest(r.first_contact_separation_m / sigma) + "; add a larger one");
 
   using Clock = std::chrono::steady_clock;
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const auto bem_start = Clock::now();
 
-  // Solid: the rigid film is h̄ + z, so as a profile against a flat gap0 = z − min z and δ = −min z − h̄.
-  const contact::Grid grid = contact::Grid::patch(z.rows(), z.cols(), side, side);
-  contact::ElasticHalfSpace halfspace(grid, o.e_star_Pa, true, 1);
-  const Eigen::ArrayXXd gap0 = z - z.minCoeff();
-  contact::NormalContactOptions bem;
-  bem.tolerance = o.bem_tolerance;
-  bem.pressure_cap_Pa = o.hardness_Pa;
-  r.solid_pressure_Pa.assign(nodes, 0.0);
-  r.area_fraction.assign(nodes, 0.0);
-  Eigen::ArrayXXd warm;
-  for (std::size_t m = nodes; m-- > 0;) {  // from light to heavy contact, warm-started
-    const double approach = r.first_contact_separation_m - r.separation_m[m];
-    if (approach <= 0.0) continue;
-    const contact::NormalContactResult c =
-        contact::solve_approach(halfspace, gap0, approach, bem, warm.size() ? &warm : nullptr);
-    r.bem_iterations += c.summary.iterations;
-    if (!c.summary.converged) {
-      ++r.unconverged;
-      r.messages += "BEM at h/σ = " + numerics::shortest(o.separation_ratios[m]) + ": " + c.summary.message + "; ";
-      r.solid_pressure_Pa[m] = r.area_fraction[m] = kNaN;
-      continue;
-    }
-    r.solid_pressure_Pa[m] = c.normal_load_N / patch_area;
-    r.area_fraction[m] = c.area_fraction;
-    warm = c.pressure_Pa;
-  }
-
-  // Static and dry boundary friction at the pin's nominal pressure.
-  const double pin_area = M_PI * o.pin.radius_m * o.pin.radius_m;
-  const double load = o.pin.normal_load_N / pin_area * patch_area;
-  const double tau = o.interface_shear_strength_Pa;
-  const auto area_at_cap = [&](double cap) {
-    contact::NormalContactOptions capped = bem;
-    capped.pressure_cap_Pa = cap;
-    const contact::NormalContactResult c = contact::solve_normal_load(halfspace, gap0, load, capped);
-    r.bem_iterations += c.summary.iterations;
-    if (!c.summary.converged) {
-      ++r.unconverged;
-      r.messages += "BEM at the pin load with cap " + numerics::shortest(cap) + " Pa: " + c.summary.message + "; ";
-      return kNaN;
-    }
-    return c.real_area_m2;
-  };
-  r.mu_s_max = tau * area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau)) / load;
-  r.mu_boundary = tau * area_at_cap(o.hardness_Pa) / load;
-
+  // Solid: on the contact grid, and on half of it for the discretisation error.
+  const int f = contact_refinement(o);
+  const SolidContact fine = solid_contact(o, contact::fourier_refine(z, f));
+  r.first_contact_separation_m = fine.first_contact_separation_m;  // the refined surface's lowest point (≤ the grid's)
+  if (!(r.separation_m.back() > r.first_contact_separation_m))
+    bad("the largest separation ratio " + numerics::shortest(o.separation_ratios.back()) +
+        " lies below the first contact of seed " + std::to_string(r.seed) + " at h/σ = " +
+        numerics::shortest(r.first_contact_separation_m / sigma) + "; add a larger one");
+  const SolidContact coarse = solid_contact(o, contact::fourier_refine(z, f / 2));
+  r.contact_grid = f * static_cast<int>(o.surface.grid);
+  r.solid_pressure_Pa = fine.solid_pressure_Pa, r.area_fraction = fine.area_fraction;
+  r.solid_pressure_coarse_Pa = coarse.solid_pressure_Pa, r.area_fraction_coarse = coarse.area_fraction;
+  r.mu_s_max = fine.mu_s_max, r.mu_boundary = fine.mu_boundary;
+  r.mu_s_max_coarse = coarse.mu_s_max, r.mu_boundary_coarse = coarse.mu_boundary;
+  r.bem_iterations = fine.bem_iterations + coarse.bem_iterations;
+  r.unconverged = fine.unconverged + coarse.unconverged;
+  r.messages = fine.messages + coarse.messages;
   r.bem_s = seconds_since(bem_start);
 
   // Fluid cells on the same realisation.
@@ -177,6 +149,11 @@ nlohmann::json to_json(const PatchResult& p) {
           {"lift_per_eta_u_per_m", p.lift_per_eta_u_per_m},
           {"mu_s_max", p.mu_s_max},
           {"mu_boundary", p.mu_boundary},
+          {"solid_pressure_coarse_Pa", p.solid_pressure_coarse_Pa},
+          {"area_fraction_coarse", p.area_fraction_coarse},
+          {"mu_s_max_coarse", p.mu_s_max_coarse},
+          {"mu_boundary_coarse", p.mu_boundary_coarse},
+          {"contact_grid", p.contact_grid},
           {"bem_iterations", p.bem_iterations},
           {"stage_wall_s", {{"bem", p.bem_s}, {"flow_cells", p.flow_cells_s}, {"lift_cells", p.lift_cells_s}}},
           {"unconverged", p.unconverged},
@@ -201,6 +178,11 @@ PatchResult patch_from_json(const nlohmann::json& j) {
   j.at("lift_per_eta_u_per_m").get_to(p.lift_per_eta_u_per_m);
   j.at("mu_s_max").get_to(p.mu_s_max);
   j.at("mu_boundary").get_to(p.mu_boundary);
+  j.at("solid_pressure_coarse_Pa").get_to(p.solid_pressure_coarse_Pa);
+  j.at("area_fraction_coarse").get_to(p.area_fraction_coarse);
+  j.at("mu_s_max_coarse").get_to(p.mu_s_max_coarse);
+  j.at("mu_boundary_coarse").get_to(p.mu_boundary_coarse);
+  j.at("contact_grid").get_to(p.contact_grid);
   j.at("bem_iterations").get_to(p.bem_iterations);
   const nlohmann::json& t = j.at("stage_wall_s");
   t.at("bem").get_to(p.bem_s);

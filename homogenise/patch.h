@@ -1,17 +1,12 @@
 // One realisation of the surface pair on a periodic patch: every micro solve the homogenised law
 // needs, at the table's separations (options.h).
 //
-//   solid   elastic-plastic BEM (contact/normal_contact.h, cap σ0) at approach δ = −min z − h̄:
-//           nominal solid pressure p_s(h̄) = N/L² and real-area fraction A_r/L²;
+//   solid   elastic-plastic BEM (homogenise/solid_contact.h) on the realisation refined to the
+//           contact grid, and on half of it: N_s/L² and A_r/L² at the separations, μs,max and the
+//           dry μ_b at the pin's nominal pressure;
 //   fluid   Patir–Cheng cells on the rigid film h̄ + z (lubrication/flow_factors.h): φx, φy, Φs,
 //           h̄_T, the shear factors φf, φf − φfs (measured) and φfp; rugosity lift p̄/(ηU) with JFO
-//           cavitation;
-//   static  the junction at slip: with the interfacial shear τ = F/A equal to τ_i the Tabor cap
-//           (3.1.5) is p_cap = √(σ0² − α τ_i²), so one capped solve at the pin's nominal pressure
-//           gives the slip area A_s and μs,max = τ_i A_s / W (contact/tangential.h's fixed point at
-//           its slip end; fully plastic it is (3.1.23)'s 1/√(S² − α));
-//   dry     μ_b = τ_i A_r / W with the cap σ0 at the same pressure (Bowden–Tabor shear of the
-//           junctions while sliding).
+//           cavitation.
 #pragma once
 
 #include <cstdint>
@@ -28,12 +23,15 @@ struct PatchResult {
   std::uint64_t seed = 0;
   double first_contact_separation_m = 0;  // −min z: contact vanishes above it
   std::vector<double> separation_m;       // the nodes (options' ratios × σ)
-  std::vector<double> solid_pressure_Pa;  // N_s / L²
-  std::vector<double> area_fraction;      // A_r / L²
+  std::vector<double> solid_pressure_Pa;  // N_s / L², on the contact grid
+  std::vector<double> area_fraction;      // A_r / L², on the contact grid
+  std::vector<double> solid_pressure_coarse_Pa, area_fraction_coarse;  // the same on half of it
   std::vector<double> phi_x, phi_y, phi_s, film_over_sigma, phi_f, couette_shear_factor, phi_fp, contact_fraction;
   std::vector<double> lift_per_eta_u_per_m;  // p̄ / (ηU) of the cavitating cell, 1/m
-  double mu_s_max = 0;                     // at the pin's nominal pressure
-  double mu_boundary = 0;                  // τ_i A_r / W at the same pressure
+  double mu_s_max = 0;                     // at the pin's nominal pressure, on the contact grid
+  double mu_boundary = 0;                  // τ_i A_r / W at the same pressure and grid
+  double mu_s_max_coarse = 0, mu_boundary_coarse = 0;  // the same on half the contact grid
+  int contact_grid = 0;                    // nodes a side of the static solves
   int bem_iterations = 0;                  // CG iterations summed over the solid solves
   // Wall time of the stages (s): BEM load–separation and junction solves, flow- and shear-factor
   // cells, cavitating lift cells.

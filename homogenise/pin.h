@@ -34,8 +34,10 @@ namespace tribo::homogenise {
 struct PinTable {
   double nominal_area_m2 = 0;
   std::vector<double> separation_m;
-  std::vector<double> solid_load_N, solid_load_standard_error_N;
-  std::vector<double> real_area_m2, real_area_standard_error_m2;
+  // Errors integrated over the face as the values are (an upper bound where they vary in sign):
+  // the ensemble's standard error and the contact grid's discretisation error.
+  std::vector<double> solid_load_N, solid_load_standard_error_N, solid_load_discretisation_error_N;
+  std::vector<double> real_area_m2, real_area_standard_error_m2, real_area_discretisation_error_m2;
   std::vector<double> wedge_lift_per_eta_u_m;    // N_w / (ηU)
   std::vector<double> rugosity_lift_per_eta_u_m; // N_r / (ηU)
   std::vector<double> squeeze_per_eta_m;         // K

@@ -388,8 +388,9 @@ def plot_sweep(d):
     (shown in the title); one varying axis gives a line (log x when it spans two decades or more), two
     on a full grid of more than three values each give a heat map with the values written in;
     otherwise lines against the varying axis with the most values, one per combination of the others
-    (a curve per value of a short axis reads better than a heat map of two or three rows). Text columns (the rig's regime) are coloured by
-    category; failed points are blank."""
+    (a curve per value of a short axis reads better than a heat map of two or three rows), with error
+    bars where the sweep has NAME_standard_error and NAME_discretisation_error columns beside NAME (in
+    quadrature). Text columns (the rig's regime) are coloured by category; failed points are blank."""
     import json
 
     with open(os.path.join(d, "sweep.json")) as f:
@@ -473,7 +474,14 @@ def plot_sweep(d):
                 x = [float(r[xa]) for r in rs]
                 y = [(float(r[col]) if r[col] != "" else float("nan")) if numeric else cats.index(r[col]) for r in rs]
                 label = ", ".join("%s = %s" % (o, k) for o, k in zip(others, key)) or None
-                ax.plot(x, y, "o-" if numeric else "o", label=label)
+                errors = [c for c in (col + "_standard_error", col + "_discretisation_error") if c in fields]
+                if numeric and errors:
+                    # error bar: the ensemble's standard error and the discretisation error in quadrature
+                    # (an unknown one, empty in the CSV, counts 0)
+                    yerr = [sum((_number(r[c]) or 0.0) ** 2 for c in errors) ** 0.5 for r in rs]
+                    ax.errorbar(x, y, yerr=yerr, fmt="o-", capsize=3, label=label)
+                else:
+                    ax.plot(x, y, "o-" if numeric else "o", label=label)
             if not numeric:
                 ax.set_yticks(range(len(cats)))
                 ax.set_yticklabels(cats)

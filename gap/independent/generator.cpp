@@ -335,4 +335,46 @@ IndependentCase make_velocity_step_case(const std::string& effect, std::uint64_t
   return make_drive_history_case("velocity_step", effect, seed, o);
 }
 
+std::map<std::string, double> truth_parameters(const IndependentCase& c) {
+  const IndependentLaw& t = c.truth;
+  std::map<std::string, double> p{{"coulomb.mu_s", t.mu_s},
+                                  {"coulomb.mu_k", t.mu_k},
+                                  {"rig.mass_kg", c.actual.mass_kg},
+                                  {"rig.stiffness_N_per_m", c.actual.stiffness_N_per_m},
+                                  {"rig.damping_N_s_per_m", c.actual.damping_N_s_per_m},
+                                  {"rig.normal_load_N", c.actual.normal_load_N},
+                                  {"friction_channel.gain", c.friction_chain.gain},
+                                  {"friction_channel.delay_s", c.friction_chain.delay_s},
+                                  {"friction_channel.sensor_time_constant_s", c.friction_chain.sensor_time_constant_s}};
+  if (t.stick_ageing)
+    p.insert({{"stick_ageing.mu_0", t.stick_ageing->mu_0},
+              {"stick_ageing.mu_inf", t.stick_ageing->mu_inf},
+              {"stick_ageing.time_s", t.stick_ageing->time_s},
+              {"stick_ageing.exponent", t.stick_ageing->exponent}});
+  if (t.rate_hardening)
+    p.insert({{"rate_hardening.mu_s_ref", t.rate_hardening->mu_s_ref},
+              {"rate_hardening.coefficient", t.rate_hardening->coefficient},
+              {"rate_hardening.reference_rate_per_s", t.rate_hardening->reference_rate_per_s}});
+  if (t.rate_state)
+    p.insert({{"rate_state.mu_0", t.rate_state->mu_0},
+              {"rate_state.a", t.rate_state->a},
+              {"rate_state.b", t.rate_state->b},
+              {"rate_state.reference_speed_m_per_s", t.rate_state->reference_speed_m_per_s},
+              {"rate_state.decay_distance_m", t.rate_state->decay_distance_m},
+              {"rate_state.slip_law", t.rate_state->evolution == RateState::Evolution::slip ? 1.0 : 0.0}});
+  if (t.lift)
+    p.insert({{"lift.max_fraction", t.lift->max_fraction},
+              {"lift.stribeck_speed_m_per_s", t.lift->stribeck_speed_m_per_s},
+              {"lift.exponent", t.lift->exponent}});
+  if (t.squeeze)
+    p.insert({{"squeeze.max_fraction", t.squeeze->max_fraction},
+              {"squeeze.full_thickness_m", t.squeeze->full_thickness_m},
+              {"squeeze.build_up_distance_m", t.squeeze->build_up_distance_m}});
+  if (t.eyring)
+    p.insert({{"eyring.coefficient_N_s_per_m", t.eyring->coefficient_N_s_per_m}, {"eyring.eyring_speed_m_per_s", t.eyring->eyring_speed_m_per_s}});
+  if (t.vogel)
+    p.insert({{"vogel.coefficient_N_s_per_m", t.vogel->coefficient_N_s_per_m}, {"vogel.heating_K_s_per_m", t.vogel->heating_K_s_per_m}});
+  return p;
+}
+
 }  // namespace tribo::gap::independent

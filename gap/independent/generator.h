@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,12 @@ struct IndependentCase {
   DriveHistory drive;                   // the drive as run (drive-history cases; else empty)
   ExperimentBundle bundle;
 };
+
+// What a case holds, by name, in this generator's own forms (not the catalogue's): the baseline
+// μs and μk, the rig as it is, the friction channel's gain, delay and sensor lag, and the
+// parameters of the withheld mechanism ("squeeze.full_thickness_m", ...). For truth.json: a user
+// who reads a diagnosis of the case can compare what it fitted with what was there.
+std::map<std::string, double> truth_parameters(const IndependentCase& c);
 
 // Catalogue effects this generator has an alternative form for.
 const std::vector<std::string>& independent_effects();

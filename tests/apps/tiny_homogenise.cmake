@@ -1,5 +1,5 @@
 # A homogenisation small enough for a CLI test (a 32² patch of the thesis-like self-affine surface
-# under a flat pin): write_tiny_homogenise_config(FILE REALISATIONS SPEEDS) writes its config.
+# under a flat pin, its solid solves on 64² and 32²): write_tiny_homogenise_config(FILE REALISATIONS SPEEDS) writes its config.
 function(write_tiny_homogenise_config file realisations speeds)
   file(WRITE ${file}
     "[surface]\nkind = \"gaussian\"\nspectrum = \"self_affine\"\nrms_height_m = 4.35e-7\nhurst = 0.8\n"
@@ -7,5 +7,5 @@ function(write_tiny_homogenise_config file realisations speeds)
     "[domain]\nsize_m = 2.5e-4\ngrid = 32\n"
     "[pin]\nshape = \"flat\"\nradius_m = 4.7625e-3\nnormal_load_N = 93.86\n"
     "[speeds]\nmin_m_per_s = 1e-5\nmax_m_per_s = 0.1\ncount = ${speeds}\n"
-    "[homogenise]\nrealisations = ${realisations}\n")
+    "[homogenise]\nrealisations = ${realisations}\nmin_contact_grid = 64\n")
 endfunction()

@@ -226,6 +226,49 @@ TEST(SurfaceStatistics, ObliqueCosineOnARectangleHasExactRmsAndSlope) {
   EXPECT_NEAR(s.kurtosis, 1.5, 1e-12);  // a sinusoid's kurtosis: ⟨cos⁴⟩/⟨cos²⟩² = (3/8)/(1/4)
 }
 
+// A sum of modes below the coarse Nyquist wavenumber is its own band-limited interpolant: the
+// refined field is the closed form on the fine grid, to round-off (1e-12 of the amplitude). An
+// even and an odd, rectangular grid; the even one carries a Nyquist cosine along x, which refines
+// to cos(q_N x) (its real, even-split interpretation).
+TEST(FourierRefine, BandLimitedModesRefineToTheirClosedForm) {
+  for (const auto [nx, ny] : {std::pair<Eigen::Index, Eigen::Index>{16, 12}, {15, 9}}) {
+    const double lx = 2e-4, ly = 1.5e-4;
+    const auto field = [&](Eigen::Index mx, Eigen::Index my) {
+      Eigen::ArrayXXd h(mx, my);
+      for (Eigen::Index i = 0; i < mx; ++i)
+        for (Eigen::Index j = 0; j < my; ++j) {
+          const double x = lx * static_cast<double>(i) / static_cast<double>(mx), y = ly * static_cast<double>(j) / static_cast<double>(my);
+          h(i, j) = 1e-6 * std::cos(2 * std::numbers::pi * (3 * x / lx + 2 * y / ly) + 0.4) + 5e-7 * std::sin(2 * std::numbers::pi * 4 * y / ly);
+          if (nx % 2 == 0) h(i, j) += 2e-7 * std::cos(std::numbers::pi * static_cast<double>(nx) * x / lx);
+        }
+      return h;
+    };
+    for (int factor : {2, 3}) {
+      const Eigen::ArrayXXd refined = fourier_refine(field(nx, ny), factor);
+      ASSERT_EQ(refined.rows(), factor * nx);
+      ASSERT_EQ(refined.cols(), factor * ny);
+      EXPECT_LT((refined - field(factor * nx, factor * ny)).abs().maxCoeff(), 1e-18) << nx << "x" << ny << ", factor " << factor;
+    }
+  }
+}
+
+// Any field, band-limited or not, keeps its values at the coarse nodes, its mean and its Rq
+// (Parseval: the coefficients are kept) when refined.
+TEST(FourierRefine, RefinedSurfaceKeepsTheCoarseNodesAndRq) {
+  GaussianSurfaceParams p;
+  p.grid = 33;
+  p.size_m = 1e-4;
+  p.rms_height_m = 4e-7;
+  const Eigen::ArrayXXd z = gaussian_surface(p);
+  const Eigen::ArrayXXd f = fourier_refine(z, 2);
+  double worst = 0;
+  for (Eigen::Index i = 0; i < z.rows(); ++i)
+    for (Eigen::Index j = 0; j < z.cols(); ++j) worst = std::max(worst, std::abs(f(2 * i, 2 * j) - z(i, j)));
+  EXPECT_LT(worst, 1e-12 * p.rms_height_m);  // round-off of two FFTs
+  EXPECT_NEAR(std::sqrt((f - f.mean()).square().mean()), p.rms_height_m, 1e-12 * p.rms_height_m);
+  EXPECT_THROW(fourier_refine(z, 0), std::invalid_argument);
+}
+
 TEST(SurfaceStatistics, HistogramIsANormalisedDensity) {
   const auto p = self_affine(64);
   const HeightHistogram hist = height_histogram(gaussian_surface(p), 20);

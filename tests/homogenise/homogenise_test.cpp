@@ -28,6 +28,8 @@ CellTable uniform_cells(double phi) {
     t.separation_m.push_back(r * kSigma);
     t.solid_pressure_Pa.push_back({0, 0});
     t.area_fraction.push_back({0, 0});
+    t.solid_pressure_coarse_Pa.push_back({0, 0});
+    t.area_fraction_coarse.push_back({0, 0});
     t.phi_x.push_back({phi, 0});
     t.phi_y.push_back({phi, 0});
     t.phi_s.push_back({0, 0});
@@ -112,24 +114,35 @@ TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
   EXPECT_NEAR(p.phi_x.back(), 1.0 - 1.5 / 64.0, 0.02);
 }
 
+// A patch with hand-set columns: N_s and A_r falling to 0 at 4σ, smooth-film flow factors, lift
+// 1e6/r per m — NaN at 2σ (a lift cell that converged nowhere) — and the static friction on the
+// contact grid and half of it.
+PatchResult toy_patch(double mu_s_max, double mu_s_max_coarse, double mu_boundary, double mu_boundary_coarse) {
+  PatchResult p;
+  for (double r : {1.0, 2.0, 3.0, 4.0, 8.0}) {
+    p.separation_m.push_back(r * kSigma);
+    p.solid_pressure_Pa.push_back(r < 4.0 ? 1e8 * std::pow(1.0 - r / 4.0, 2) : 0.0);
+    p.area_fraction.push_back(r < 4.0 ? 0.1 * std::pow(1.0 - r / 4.0, 2) : 0.0);
+    p.solid_pressure_coarse_Pa.push_back(1.1 * p.solid_pressure_Pa.back());
+    p.area_fraction_coarse.push_back(1.2 * p.area_fraction.back());
+    for (auto* c : {&p.phi_x, &p.phi_y, &p.phi_f, &p.couette_shear_factor, &p.phi_fp}) c->push_back(1.0);
+    for (auto* c : {&p.phi_s, &p.contact_fraction}) c->push_back(0.0);
+    p.film_over_sigma.push_back(r);
+    p.lift_per_eta_u_per_m.push_back(r == 2.0 ? std::nan("") : 1e6 / r);
+  }
+  p.mu_s_max = mu_s_max, p.mu_s_max_coarse = mu_s_max_coarse;
+  p.mu_boundary = mu_boundary, p.mu_boundary_coarse = mu_boundary_coarse;
+  p.contact_grid = 2048;
+  return p;
+}
+
 TEST(LawFile, SeparationsWithoutAConvergedSolveAreLeftOutOfTheTableAndListed) {
   // A lift cell that converged in no realisation leaves NaN at its separation; the pin scale and the
   // rig's monotone interpolant need finite nodes, so the table omits that separation (every column
   // alike), names it, and the law still reads back.
   HomogeniseOptions o;
   o.surface.rms_height_m = kSigma;
-  PatchResult p;
-  for (double r : {1.0, 2.0, 3.0, 4.0, 8.0}) {
-    p.separation_m.push_back(r * kSigma);
-    p.solid_pressure_Pa.push_back(r < 4.0 ? 1e8 * std::pow(1.0 - r / 4.0, 2) : 0.0);
-    p.area_fraction.push_back(r < 4.0 ? 0.1 * std::pow(1.0 - r / 4.0, 2) : 0.0);
-    for (auto* c : {&p.phi_x, &p.phi_y, &p.phi_f, &p.couette_shear_factor, &p.phi_fp}) c->push_back(1.0);
-    for (auto* c : {&p.phi_s, &p.contact_fraction}) c->push_back(0.0);
-    p.film_over_sigma.push_back(r);
-    p.lift_per_eta_u_per_m.push_back(r == 2.0 ? std::nan("") : 1e6 / r);
-  }
-  p.mu_s_max = 0.55;
-  p.mu_boundary = 0.19;
+  const PatchResult p = toy_patch(0.55, 0.55, 0.19, 0.19);
   const CellTable cells = aggregate(o, {p});
   ASSERT_EQ(cells.separation_m.size(), 4u);
   ASSERT_EQ(cells.dropped_separation_m, std::vector<double>{2.0 * kSigma});
@@ -139,6 +152,28 @@ TEST(LawFile, SeparationsWithoutAConvergedSolveAreLeftOutOfTheTableAndListed) {
   EXPECT_EQ(table.at("separation_m")[1].get<double>(), 3.0 * kSigma);
   EXPECT_EQ(table.at("dropped_separations_m")[0].get<double>(), 2.0 * kSigma);
   EXPECT_NO_THROW(rig::law_table_from_json(law, "law.json"));
+}
+
+// The discretisation error is the change of the ensemble mean from half the contact grid to it
+// (first order: static_friction.h), taken over the realisations solved on both; the law carries it
+// beside the standard error, and a warning names each quantity above the target.
+TEST(LawFile, DiscretisationErrorIsTheMeanChangeOnRefinementAndWarnsAboveTheTarget) {
+  HomogeniseOptions o;
+  o.surface.rms_height_m = kSigma;
+  o.target_relative_error = 0.01;
+  PatchResult unsolved = toy_patch(std::nan(""), 0.9, std::nan(""), 0.9);  // left out of both means
+  const CellTable cells = aggregate(o, {toy_patch(0.58, 0.60, 0.2005, 0.2015), toy_patch(0.56, 0.56, 0.1995, 0.1985), unsolved});
+  EXPECT_NEAR(cells.mu_s_max.mean, 0.57, 1e-12);
+  EXPECT_NEAR(cells.mu_s_max_discretisation_error, 0.01, 1e-12);  // 0.58 − 0.57
+  EXPECT_NEAR(cells.mu_boundary_discretisation_error, 0.0, 1e-12);  // the two changes cancel
+  const nlohmann::json law = law_json(o, cells, pin_scale(o, cells));
+  EXPECT_EQ(law.at("junction").at("mu_s_max_discretisation_error").get<double>(), cells.mu_s_max_discretisation_error);
+  EXPECT_EQ(law.at("junction").at("contact_grid").get<int>(), 2048);
+  const std::vector<std::string> warnings = law.at("warnings").get<std::vector<std::string>>();
+  ASSERT_EQ(warnings.size(), 1u);  // μs,max at 1.75 % warns, μ_b at 0 % does not
+  EXPECT_EQ(warnings[0].rfind("mu_s_max = 0.57 carries a discretisation error of 0.01 (1.8 %, target 1 %) on the 2048² contact grid", 0), 0u) << warnings[0];
+  o.target_relative_error = 0.02;
+  EXPECT_TRUE(resolution_warnings(o, cells).empty());
 }
 
 // A mixed-lubrication table: N_s falls to 0 at 3σ, lift and squeeze from a rugosity-like law.

@@ -1,0 +1,68 @@
+#include "homogenise/solid_contact.h"
+
+#include <cmath>
+#include <limits>
+
+#include "contact/grid.h"
+#include "contact/halfspace.h"
+#include "contact/normal_contact.h"
+#include "numerics/format.h"
+
+namespace tribo::homogenise {
+
+SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  SolidContact r;
+  const double sigma = o.surface.rms_height_m, side = o.surface.size_m, patch_area = side * side;
+  const std::string grid_name = std::to_string(z.rows()) + "²";
+  const contact::Grid grid = contact::Grid::patch(z.rows(), z.cols(), side, side);
+  contact::ElasticHalfSpace halfspace(grid, o.e_star_Pa, true, 1);
+  const Eigen::ArrayXXd gap0 = z - z.minCoeff();  // the rigid film h̄ + z against a flat: gap0 = z − min z
+  r.first_contact_separation_m = -z.minCoeff();
+  contact::NormalContactOptions bem;
+  bem.tolerance = o.bem_tolerance;
+  bem.pressure_cap_Pa = o.hardness_Pa;
+  const auto failed = [&](const std::string& where, const contact::NormalContactResult& c) {
+    ++r.unconverged;
+    r.messages += "BEM (" + grid_name + ") " + where + ": " + c.summary.message + "; ";
+  };
+
+  const std::size_t nodes = o.separation_ratios.size();
+  r.solid_pressure_Pa.assign(nodes, 0.0);
+  r.area_fraction.assign(nodes, 0.0);
+  Eigen::ArrayXXd warm;
+  for (std::size_t m = nodes; m-- > 0;) {  // from light to heavy contact, warm-started
+    const double approach = r.first_contact_separation_m - o.separation_ratios[m] * sigma;
+    if (approach <= 0.0) continue;
+    const contact::NormalContactResult c = contact::solve_approach(halfspace, gap0, approach, bem, warm.size() ? &warm : nullptr);
+    r.bem_iterations += c.summary.iterations;
+    if (!c.summary.converged) {
+      failed("at h/σ = " + numerics::shortest(o.separation_ratios[m]), c);
+      r.solid_pressure_Pa[m] = r.area_fraction[m] = kNaN;
+      continue;
+    }
+    r.solid_pressure_Pa[m] = c.normal_load_N / patch_area;
+    r.area_fraction[m] = c.area_fraction;
+    warm = c.pressure_Pa;
+  }
+
+  const double pin_area = M_PI * o.pin.radius_m * o.pin.radius_m;
+  const double load = o.pin.normal_load_N / pin_area * patch_area;  // the pin's nominal pressure on the patch
+  const double tau = o.interface_shear_strength_Pa;
+  const auto area_at_cap = [&](double cap) {
+    contact::NormalContactOptions capped = bem;
+    capped.pressure_cap_Pa = cap;
+    const contact::NormalContactResult c = contact::solve_normal_load(halfspace, gap0, load, capped);
+    r.bem_iterations += c.summary.iterations;
+    if (!c.summary.converged) {
+      failed("at the pin load with cap " + numerics::shortest(cap) + " Pa", c);
+      return kNaN;
+    }
+    return c.real_area_m2;
+  };
+  r.mu_s_max = tau * area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau)) / load;  // thesis (3.1.5)
+  r.mu_boundary = tau * area_at_cap(o.hardness_Pa) / load;
+  return r;
+}
+
+}  // namespace tribo::homogenise

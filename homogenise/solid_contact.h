@@ -1,0 +1,55 @@
+// The solid side of one realisation (issue 37): the elastic-plastic BEM (contact/normal_contact.h,
+// cap σ0) on the realisation refined to the contact grid.
+//
+//   load–separation  at the table's separations h̄, approach δ = −min z − h̄ (the rigid film of the
+//           fluid cells is h̄ + z, so solid and fluid columns belong to the same surfaces at the
+//           same separation): nominal solid pressure p_s(h̄) = N/L² and real-area fraction A_r/L²;
+//   static  the junction at slip: with the interfacial shear τ = F/A equal to τ_i the Tabor cap
+//           (3.1.5) is p_cap = √(σ0² − α τ_i²), so one capped solve at the pin's nominal pressure
+//           gives the slip area A_s and μs,max = τ_i A_s / W (contact/tangential.h's fixed point at
+//           its slip end; fully plastic it is (3.1.23)'s 1/√(S² − α));
+//   dry     μ_b = τ_i A_r / W with the cap σ0 at the same pressure (Bowden–Tabor shear of the
+//           junctions while sliding).
+//
+// At the thesis' pressure (1.3 MPa, A_r/A0 ≈ 0.16 %) a 128² patch resolves ≈ 27 contact cells and
+// overstates the area by the elastic rim of every spot (μ_b 40 % high). The solves therefore run
+// on the realisation Fourier-refined (contact/surface.h: the same continuous surface, sampled more
+// finely) to the contact grid, and once more on half of it: the change between the two is the
+// discretisation error's estimate (error_from_refinement). The flow and lift cells keep their own
+// grid (the patch's).
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "homogenise/options.h"
+
+namespace tribo::homogenise {
+
+struct SolidContact {
+  double first_contact_separation_m = 0;  // −min z: contact vanishes above it
+  std::vector<double> solid_pressure_Pa;  // at options.separation_ratios × σ; NaN where unconverged
+  std::vector<double> area_fraction;
+  double mu_s_max = 0;     // NaN when its solve did not converge
+  double mu_boundary = 0;  // NaN when its solve did not converge
+  int bem_iterations = 0;  // CG iterations summed over the solves
+  int unconverged = 0;
+  std::string messages;    // why, for each unconverged solve
+};
+
+// Every solid solve on the heights `z_m` (a periodic patch of side options.surface.size_m, any grid).
+SolidContact solid_contact(const HomogeniseOptions& options, const Eigen::ArrayXXd& z_m);
+
+// The discretisation error of a quantity solved at spacing Δ (value `coarse`) and Δ/2 (`fine`),
+// converging as Δ^p: the error of the fine value is |fine − coarse| / (2^p − 1) (Richardson).
+// The contact area of a BEM converges at first order at best (the perimeter's cells are half in,
+// half out), and irregularly (tests/homogenise/solid_contact_slow_test.cpp: observed orders
+// 0.2 – 3.7), so p = 1 — the estimate is the change itself, the error's size rather than its digits.
+inline double error_from_refinement(double coarse, double fine, double order = 1.0) {
+  return std::abs(fine - coarse) / (std::pow(2.0, order) - 1.0);
+}
+
+}  // namespace tribo::homogenise
