@@ -64,13 +64,6 @@ void run_reynolds(const ReynoldsArgs& args) {
   run_reynolds(run, args, config_hash(args.config), folder_sink(args.out));
 }
 
-std::string csv_number(double v) {
-  if (!std::isfinite(v)) return "";
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
 
 void run_flow_factors(const ReynoldsArgs& args) {
   if (args.config.empty()) throw InputError("reynolds flow-factors: a CONFIG.toml is required");

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <optional>
 
 #include "apps/config.h"
@@ -10,6 +11,7 @@
 #include "apps/provenance.h"
 #include "apps/rig_output.h"
 #include "homogenise/law.h"
+#include "homogenise/solid_contact.h"
 #include "rig/law_table.h"
 #include "rig/steady_sliding.h"
 
@@ -34,13 +36,39 @@ std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& 
 }
 
 void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig::SteadySliding>& points,
-                        const nlohmann::json& provenance) {
+                        const std::vector<double>& mu_errors, const nlohmann::json& provenance) {
   CsvFile f(path, provenance);
-  f.stream() << "U_m_per_s,mu,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N\n";
-  for (const rig::SteadySliding& s : points)
-    f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << s.fluid_share << ',' << s.separation_m << ','
-               << s.temperature_rise_K << ',' << s.solid_load_N << ',' << s.lift_N << ',' << s.fluid_shear_N << '\n';
+  f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N\n";
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const rig::SteadySliding& s = points[k];
+    f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << csv_number(mu_errors[k]) << ',' << s.fluid_share << ','
+               << s.separation_m << ',' << s.temperature_rise_K << ',' << s.solid_load_N << ',' << s.lift_N << ','
+               << s.fluid_shear_N << '\n';
+  }
   f.commit();
+}
+
+// The Stribeck μ's discretisation error: the same steady sliding on the law whose solid columns
+// come from half the contact grid (the pin table's coarse integrals), error_from_refinement of the
+// two μ at each speed; NaN where the coarse law has no converged point.
+std::vector<double> stribeck_discretisation_errors(nlohmann::json law, const homogenise::PinTable& pin,
+                                                   const std::vector<rig::SteadySliding>& points, double normal_load_N,
+                                                   const std::string& source) {
+  law["table"]["solid_load_N"] = pin.solid_load_coarse_N;
+  law["table"]["real_area_m2"] = pin.real_area_coarse_m2;
+  const rig::HomogenisedBase coarse(rig::law_table_from_json(law, source + " (solid columns on half the contact grid)"), normal_load_N);
+  std::vector<double> errors;
+  for (const rig::SteadySliding& s : points) {
+    double e = std::numeric_limits<double>::quiet_NaN();
+    try {
+      const rig::SteadySliding c = rig::steady_sliding(coarse, s.speed_m_per_s);
+      if (c.converged) e = homogenise::error_from_refinement(c.mu, s.mu);
+    } catch (const std::out_of_range&) {
+      // beyond the coarse table: no estimate at this speed
+    }
+    errors.push_back(e);
+  }
+  return errors;
 }
 
 void write_area_csv(const std::filesystem::path& path, const homogenise::PinTable& pin, double sigma,
@@ -117,10 +145,14 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   const rig::HomogenisedBase base(rig::law_table_from_json(law, (dir / "law.json").string()), o.pin.normal_load_N);
   const StribeckCurve curve = stribeck_curve(run.speeds_m_per_s, [&](double u) { return rig::steady_sliding(base, u); });
   const std::vector<rig::SteadySliding>& stribeck = curve.points;
+  const std::vector<double> mu_errors =
+      stribeck_discretisation_errors(law, pin, stribeck, o.pin.normal_load_N, (dir / "law.json").string());
   nlohmann::json sj = nlohmann::json::array();
-  for (const rig::SteadySliding& s : stribeck) {
+  for (std::size_t k = 0; k < stribeck.size(); ++k) {
+    const rig::SteadySliding& s = stribeck[k];
     sj.push_back({{"U_m_per_s", s.speed_m_per_s},
                   {"mu", s.mu},
+                  {"mu_discretisation_error", mu_errors[k]},
                   {"fluid_share", s.fluid_share},
                   {"separation_m", s.separation_m},
                   {"temperature_rise_K", s.temperature_rise_K},
@@ -144,7 +176,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
 
   const nlohmann::json& provenance = law["provenance"];
   write_area_csv(dir / "area.csv", pin, cells.sigma_m, provenance);
-  write_stribeck_csv(dir / "stribeck.csv", stribeck, provenance);
+  write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, provenance);
   write_file_atomically(dir / "law.json", law.dump(2) + "\n");
   std::printf("mu_s,max %.4g ± %.2g (BEM on %d², %d realisations; ± the discretisation error), dry mu %.4g ± %.2g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
               cells.mu_s_max.mean, cells.mu_s_max_discretisation_error, cells.contact_grid, cells.realisations, cells.mu_boundary.mean,

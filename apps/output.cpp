@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include "apps/config.h"
@@ -36,6 +38,14 @@ void AtomicFile::commit() {
   stream_.close();
   std::filesystem::rename(tmp_, path_);
   committed_ = true;
+}
+
+std::string csv_number(double v) {
+  if (!std::isfinite(v)) return "";
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
 }
 
 std::string exact(double v) {

@@ -61,6 +61,10 @@ void write_csv_atomically(const std::filesystem::path& path, const std::string& 
 // A number for reports and CSV fields: numerics/format.h.
 using numerics::fmt;
 
+// A CSV field: 10 significant digits, empty for NaN or ∞ (an unknown value: numpy reads nan,
+// pandas NaN).
+std::string csv_number(double v);
+
 // A number with all 17 significant digits: read back, it is the same double.
 std::string exact(double v);
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "homogenise/solid_contact.h"
 #include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
 #include "rig/law_table.h"
@@ -40,10 +41,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   for (const Estimate& e : t.solid_pressure_Pa) ps_se.push_back({e.standard_error, 0});
   for (const Estimate& e : t.area_fraction) ar_se.push_back({e.standard_error, 0});
   const Column ps_err(t, ps_se, 0.0), ar_err(t, ar_se, 0.0);
-  std::vector<Estimate> ps_disc, ar_disc;
-  for (double e : discretisation_error(t.solid_pressure_Pa, t.solid_pressure_coarse_Pa)) ps_disc.push_back({e, 0});
-  for (double e : discretisation_error(t.area_fraction, t.area_fraction_coarse)) ar_disc.push_back({e, 0});
-  const Column ps_disc_err(t, ps_disc, 0.0), ar_disc_err(t, ar_disc, 0.0);
+  const Column ps_coarse(t, t.solid_pressure_coarse_Pa, 0.0), ar_coarse(t, t.area_fraction_coarse, 0.0);
   const Column phix(t, t.phi_x, 1.0), phiy(t, t.phi_y, 1.0), phis(t, t.phi_s, 0.0), phif(t, t.phi_f, 1.0);
   const Column phifp(t, t.phi_fp, 1.0), lift(t, t.lift_per_eta_u_per_m, 0.0);
   const Column film(t, t.film_over_sigma, 0.0, sigma);  // h̄_T in m; above the last node h̄_T = h (slope 1)
@@ -86,17 +84,17 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
 
     // Face integrals over the wetted nodes, weights scaled so they sum to πR² exactly.
     const double w = pin.nominal_area_m2 / static_cast<double>(wedge.wetted.count());
-    double ns = 0, ns_se = 0, ns_disc = 0, a = 0, a_se = 0, a_disc = 0, rug = 0, shear = 0;
+    double ns = 0, ns_se = 0, ns_coarse = 0, a = 0, a_se = 0, a_coarse = 0, rug = 0, shear = 0;
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
         if (!wedge.wetted(i, j)) continue;
         const double hk = h(i, j);
         ns += w * ps(hk);
         ns_se += w * ps_err(hk);
-        ns_disc += w * ps_disc_err(hk);
+        ns_coarse += w * ps_coarse(hk);
         a += w * ar(hk);
         a_se += w * ar_err(hk);
-        a_disc += w * ar_disc_err(hk);
+        a_coarse += w * ar_coarse(hk);
         rug += w * lift(hk);
         // Central difference of the wedge pressure (ambient 0 beyond the rim).
         const auto p_at = [&](int ii) {
@@ -107,10 +105,12 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
       }
     pin.solid_load_N.push_back(ns);
     pin.solid_load_standard_error_N.push_back(ns_se);
-    pin.solid_load_discretisation_error_N.push_back(ns_disc);
+    pin.solid_load_coarse_N.push_back(ns_coarse);
+    pin.solid_load_discretisation_error_N.push_back(error_from_refinement(ns_coarse, ns));
     pin.real_area_m2.push_back(a);
     pin.real_area_standard_error_m2.push_back(a_se);
-    pin.real_area_discretisation_error_m2.push_back(a_disc);
+    pin.real_area_coarse_m2.push_back(a_coarse);
+    pin.real_area_discretisation_error_m2.push_back(error_from_refinement(a_coarse, a));
     pin.wedge_lift_per_eta_u_m.push_back(wedge.load_N);
     pin.rugosity_lift_per_eta_u_m.push_back(rug);
     pin.squeeze_per_eta_m.push_back(squeeze.load_N);

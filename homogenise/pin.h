@@ -34,10 +34,11 @@ namespace tribo::homogenise {
 struct PinTable {
   double nominal_area_m2 = 0;
   std::vector<double> separation_m;
-  // Errors integrated over the face as the values are (an upper bound where they vary in sign):
-  // the ensemble's standard error and the contact grid's discretisation error.
-  std::vector<double> solid_load_N, solid_load_standard_error_N, solid_load_discretisation_error_N;
-  std::vector<double> real_area_m2, real_area_standard_error_m2, real_area_discretisation_error_m2;
+  // The ensemble's standard error integrated over the face as the values are (an upper bound where
+  // it varies in sign); the solid columns integrated from half the contact grid too, and their
+  // change (error_from_refinement) as the discretisation error.
+  std::vector<double> solid_load_N, solid_load_standard_error_N, solid_load_coarse_N, solid_load_discretisation_error_N;
+  std::vector<double> real_area_m2, real_area_standard_error_m2, real_area_coarse_m2, real_area_discretisation_error_m2;
   std::vector<double> wedge_lift_per_eta_u_m;    // N_w / (ηU)
   std::vector<double> rugosity_lift_per_eta_u_m; // N_r / (ηU)
   std::vector<double> squeeze_per_eta_m;         // K
