@@ -90,13 +90,16 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
 
   // Solid: on the contact grid, and on half of it for the discretisation error.
   const int f = contact_refinement(o);
-  const SolidContact fine = solid_contact(o, contact::fourier_refine(z, f));
-  r.first_contact_separation_m = fine.first_contact_separation_m;  // the refined surface's lowest point (≤ the grid's)
+  const Eigen::ArrayXXd z_fine = contact::fourier_refine(z, f);
+  r.first_contact_separation_m = -z_fine.minCoeff();  // the refined surface's lowest point (≤ the grid's)
   if (!(r.separation_m.back() > r.first_contact_separation_m))
     bad("the largest separation ratio " + numerics::shortest(o.separation_ratios.back()) +
         " lies below the first contact of seed " + std::to_string(r.seed) + " at h/σ = " +
         numerics::shortest(r.first_contact_separation_m / sigma) + "; add a larger one");
-  const SolidContact coarse = solid_contact(o, contact::fourier_refine(z, f / 2));
+  SolidPressures coarse_pressures;
+  const SolidContact coarse = solid_contact(o, contact::fourier_refine(z, f / 2), nullptr, &coarse_pressures);
+  const SolidContact fine = solid_contact(o, z_fine, &coarse_pressures);
+  coarse_pressures = {};
   r.contact_grid = f * static_cast<int>(o.surface.grid);
   r.solid_pressure_Pa = fine.solid_pressure_Pa, r.area_fraction = fine.area_fraction;
   r.solid_pressure_coarse_Pa = coarse.solid_pressure_Pa, r.area_fraction_coarse = coarse.area_fraction;

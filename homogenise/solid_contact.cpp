@@ -1,7 +1,9 @@
 #include "homogenise/solid_contact.h"
 
+#include <cassert>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "contact/grid.h"
 #include "contact/halfspace.h"
@@ -9,8 +11,28 @@
 #include "numerics/format.h"
 
 namespace tribo::homogenise {
+namespace {
 
-SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z) {
+// A coarse cell's pressure on each of the 2 × 2 fine cells it covers (empty stays empty).
+Eigen::ArrayXXd spread_to_finer(const Eigen::ArrayXXd& coarse, Eigen::Index rows, Eigen::Index cols) {
+  if (coarse.size() == 0) return {};
+  assert(2 * coarse.rows() == rows && 2 * coarse.cols() == cols);
+  Eigen::ArrayXXd fine(rows, cols);
+  for (Eigen::Index j = 0; j < cols; ++j)
+    for (Eigen::Index i = 0; i < rows; ++i) fine(i, j) = coarse(i / 2, j / 2);
+  return fine;
+}
+
+}  // namespace
+
+SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z, const SolidPressures* coarse, SolidPressures* keep) {
+  if (coarse && (coarse->at_node.size() != o.separation_ratios.size()))
+    throw std::invalid_argument("solid_contact: the coarse pressures are for another table");
+  const auto start = [&](const Eigen::ArrayXXd& coarse_field, const Eigen::ArrayXXd& fallback) {
+    Eigen::ArrayXXd w = coarse ? spread_to_finer(coarse_field, z.rows(), z.cols()) : Eigen::ArrayXXd();
+    return w.size() ? w : fallback;
+  };
+  if (keep) *keep = SolidPressures{std::vector<Eigen::ArrayXXd>(o.separation_ratios.size()), {}, {}};
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   SolidContact r;
   const double sigma = o.surface.rms_height_m, side = o.surface.size_m, patch_area = side * side;
@@ -34,7 +56,8 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z)
   for (std::size_t m = nodes; m-- > 0;) {  // from light to heavy contact, warm-started
     const double approach = r.first_contact_separation_m - o.separation_ratios[m] * sigma;
     if (approach <= 0.0) continue;
-    const contact::NormalContactResult c = contact::solve_approach(halfspace, gap0, approach, bem, warm.size() ? &warm : nullptr);
+    const Eigen::ArrayXXd w = start(coarse ? coarse->at_node[m] : Eigen::ArrayXXd(), warm);
+    const contact::NormalContactResult c = contact::solve_approach(halfspace, gap0, approach, bem, w.size() ? &w : nullptr);
     r.bem_iterations += c.summary.iterations;
     if (!c.summary.converged) {
       failed("at h/σ = " + numerics::shortest(o.separation_ratios[m]), c);
@@ -44,24 +67,30 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z)
     r.solid_pressure_Pa[m] = c.normal_load_N / patch_area;
     r.area_fraction[m] = c.area_fraction;
     warm = c.pressure_Pa;
+    if (keep) keep->at_node[m] = c.pressure_Pa;
   }
 
   const double pin_area = M_PI * o.pin.radius_m * o.pin.radius_m;
   const double load = o.pin.normal_load_N / pin_area * patch_area;  // the pin's nominal pressure on the patch
   const double tau = o.interface_shear_strength_Pa;
-  const auto area_at_cap = [&](double cap) {
+  const auto area_at_cap = [&](double cap, const Eigen::ArrayXXd* coarse_field, Eigen::ArrayXXd* kept) {
     contact::NormalContactOptions capped = bem;
     capped.pressure_cap_Pa = cap;
-    const contact::NormalContactResult c = contact::solve_normal_load(halfspace, gap0, load, capped);
+    const Eigen::ArrayXXd w = start(coarse_field ? *coarse_field : Eigen::ArrayXXd(), Eigen::ArrayXXd());
+    const contact::NormalContactResult c = contact::solve_normal_load(halfspace, gap0, load, capped, w.size() ? &w : nullptr);
     r.bem_iterations += c.summary.iterations;
     if (!c.summary.converged) {
       failed("at the pin load with cap " + numerics::shortest(cap) + " Pa", c);
       return kNaN;
     }
+    if (kept) *kept = c.pressure_Pa;
     return c.real_area_m2;
   };
-  r.mu_s_max = tau * area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau)) / load;  // thesis (3.1.5)
-  r.mu_boundary = tau * area_at_cap(o.hardness_Pa) / load;
+  r.mu_s_max = tau *
+               area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau), coarse ? &coarse->at_slip_cap : nullptr,
+                           keep ? &keep->at_slip_cap : nullptr) /
+               load;  // thesis (3.1.5)
+  r.mu_boundary = tau * area_at_cap(o.hardness_Pa, coarse ? &coarse->at_hardness_cap : nullptr, keep ? &keep->at_hardness_cap : nullptr) / load;
   return r;
 }
 

@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include <nlohmann/json.hpp>
 
+#include "contact/surface.h"
 #include "homogenise/law.h"
 #include "homogenise/patch.h"
 #include "homogenise/pin.h"
+#include "homogenise/solid_contact.h"
 #include "rig/homogenised_law.h"
 #include "rig/law_table.h"
 #include "rig/steady_sliding.h"
@@ -174,6 +177,31 @@ TEST(LawFile, DiscretisationErrorIsTheMeanChangeOnRefinementAndWarnsAboveTheTarg
   EXPECT_EQ(warnings[0].rfind("mu_s_max = 0.57 carries a discretisation error of 0.01 (1.8 %, target 1 %) on the 2048² contact grid", 0), 0u) << warnings[0];
   o.target_relative_error = 0.02;
   EXPECT_TRUE(resolution_warnings(o, cells).empty());
+}
+
+// The coarse grid's pressures only start the fine solves: the answer is the cold start's to the
+// BEM's tolerance (1e-8 of the deflection; the loads to 1e-6), in fewer iterations.
+TEST(SolidContact, CoarseGridStartKeepsTheAnswerInFewerIterations) {
+  HomogeniseOptions o;
+  o.surface.grid = 64;
+  o.surface.size_m = 5e-4;
+  o.surface.rms_height_m = kSigma;
+  o.surface.cutoff_wavelength_m = 1.6e-5;
+  o.separation_ratios = {0.5, 1.0, 2.0, 3.0, 6.0};
+  const Eigen::ArrayXXd z = contact::gaussian_surface(o.surface);
+  SolidPressures coarse;
+  solid_contact(o, contact::fourier_refine(z, 2), nullptr, &coarse);
+  const SolidContact cold = solid_contact(o, contact::fourier_refine(z, 4));
+  const SolidContact warm = solid_contact(o, contact::fourier_refine(z, 4), &coarse);
+  ASSERT_EQ(cold.unconverged + warm.unconverged, 0) << cold.messages << warm.messages;
+  for (std::size_t m = 0; m < o.separation_ratios.size(); ++m) {
+    EXPECT_NEAR(warm.solid_pressure_Pa[m], cold.solid_pressure_Pa[m], 1e-6 * cold.solid_pressure_Pa[m] + 1e-9);
+    EXPECT_NEAR(warm.area_fraction[m], cold.area_fraction[m], 2.0 / (256.0 * 256.0));  // a cell or two at the edge
+  }
+  EXPECT_NEAR(warm.mu_s_max, cold.mu_s_max, 1e-3 * cold.mu_s_max);
+  EXPECT_NEAR(warm.mu_boundary, cold.mu_boundary, 1e-3 * cold.mu_boundary);
+  EXPECT_LT(warm.bem_iterations, cold.bem_iterations);
+  std::printf("BEM iterations at 256²: cold %d, from 128² %d\n", cold.bem_iterations, warm.bem_iterations);
 }
 
 // A mixed-lubrication table: N_s falls to 0 at 3σ, lift and squeeze from a rugosity-like law.
