@@ -136,5 +136,25 @@ TEST(RugosityLift, RoughParallelSurfacesLiftWithCavitationInProportionToSpeed) {
   EXPECT_NEAR(fast.cavitated_fraction.mean, r.cavitated_fraction.mean, 1e-6);
 }
 
+// The thesis preset's rough cells (examples/thesis-steel.toml: 128², self-affine H 0.8 between
+// 62.5 and 15.6 µm, seed 1, lift floor 0.1σ) at its closest separation, h/σ = 0.25, where the
+// cavitating lift cell needed 62 Newton steps and the limit of 60 dropped it (issue 37): every
+// flow, Couette and lift cell converges.
+TEST(RugosityLift, ThesisPresetCellsConvergeAtTheClosestSeparation) {
+  HomogenisationOptions o;
+  o.surface.grid = 128;
+  o.surface.size_m = 1e-3;
+  o.surface.rms_height_m = 4.35e-7;
+  o.surface.hurst = 0.8;
+  o.surface.rolloff_wavelength_m = 6.25e-5;
+  o.surface.cutoff_wavelength_m = 1.5625e-5;
+  o.gap_ratios = {0.25};
+  o.realisations = 1;
+  o.contact_gap_fraction = 0.1;
+  EXPECT_EQ(rugosity_lift(o)[0].unconverged, 0);
+  o.contact_gap_fraction = 1e-3;  // the flow cells' floor
+  EXPECT_EQ(flow_factors(o)[0].unconverged, 0);
+}
+
 }  // namespace
 }  // namespace tribo::lubrication
