@@ -1,11 +1,47 @@
 #include "apps/homogenise_config.h"
 
 #include <cmath>
+#include <optional>
 
 #include "apps/config.h"
 #include "apps/surface_config.h"
+#include "contact/surface_io.h"
+#include "numerics/format.h"
 
 namespace tribo::cli {
+namespace {
+
+// [surface] kind = "file": a measured composite topography (the readers of contact/surface_io.h),
+// square, its side from the file or [domain] size_m; the mean removed and σ its Rq. One realisation.
+void read_measured_surface(ConfigTable& surface, ConfigTable* domain, homogenise::HomogeniseOptions& o) {
+  const std::filesystem::path file = surface.input_file("file");
+  const double scale = surface.number("height_scale", 1.0, Range::positive);
+  const contact::Topography topo = input_guard(surface, "file", [&] { return contact::read_topography(file, scale); });
+  const Eigen::Index n = topo.heights_m.rows();
+  if (topo.heights_m.cols() != n)
+    surface.fail("file", file.string() + " is " + std::to_string(n) + "x" + std::to_string(topo.heights_m.cols()) +
+                             ": homogenise needs a square map (crop it)");
+  const std::optional<double> size_m = domain ? domain->optional_number("size_m", Range::positive) : std::nullopt;
+  double side = topo.lx_m;
+  if (side == 0.0) {
+    if (!size_m) surface.fail("file", file.string() + " gives no lateral size: set [domain] size_m");
+    side = *size_m;
+  } else if (size_m && std::abs(*size_m - side) > 1e-9 * side) {
+    domain->fail("size_m", "does not match the x extent " + numerics::shortest(side) + " m of " + file.string());
+  }
+  if (domain && domain->has("grid") && domain->integer("grid", 0, 1) != n)
+    domain->fail("grid", "does not match the " + std::to_string(n) + " rows of " + file.string());
+  Eigen::ArrayXXd z = topo.heights_m - topo.heights_m.mean();
+  o.surface.grid = n;
+  o.surface.size_m = side;
+  o.surface.rms_height_m = std::sqrt(z.square().mean());
+  o.surface.rms_slope = 0.0;
+  if (!(o.surface.rms_height_m > 0.0)) surface.fail("file", file.string() + " is flat (Rq = 0)");
+  o.measured_heights_m = std::move(z);
+  o.realisations = 1;
+}
+
+}  // namespace
 
 HomogeniseRun load_homogenise_run(const std::filesystem::path& path) {
   return load_homogenise_run(parse_toml_file(path), path);
@@ -18,9 +54,13 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
 
   auto surface = root.table("surface");
   if (!surface) root.fail("surface", "table [surface] is required (the composite roughness of the pair)");
-  surface->choice("kind", "gaussian", {"gaussian"});
+  const std::string kind = surface->choice("kind", "gaussian", {"gaussian", "file"});
   auto domain = root.table("domain");
-  o.surface = read_gaussian_surface(*surface, domain ? &*domain : nullptr);
+  if (kind == "gaussian") {
+    o.surface = read_gaussian_surface(*surface, domain ? &*domain : nullptr);
+  } else {
+    read_measured_surface(*surface, domain ? &*domain : nullptr, o);
+  }
   surface->finish();
   if (domain) domain->finish();
 
@@ -79,6 +119,7 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
     run.speeds_m_per_s.push_back(u_min * std::pow(u_max / u_min, static_cast<double>(k) / (count - 1)));
   if (auto h = root.table("homogenise")) {
     o.realisations = static_cast<int>(h->integer("realisations", o.realisations, 1, 1'000'000));
+    if (o.measured_heights_m && o.realisations != 1) h->fail("realisations", "a measured topography is one realisation: must be 1");
     if (h->has("separation_ratios")) o.separation_ratios = h->number_array("separation_ratios", Range::positive);
     o.flow_contact_gap_fraction = h->number("flow_contact_gap_fraction", o.flow_contact_gap_fraction, Range::positive);
     o.lift_contact_gap_fraction = h->number("lift_contact_gap_fraction", o.lift_contact_gap_fraction, Range::positive);
@@ -90,6 +131,7 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
     h->finish();
   }
   input_guard(root, "homogenise", [&] { homogenise::validate(o); return 0; });
+  run.input_files = root.input_files();
   root.finish();
   return run;
 }

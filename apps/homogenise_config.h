@@ -1,5 +1,6 @@
 // Reading a `tribo homogenise` config: [surface] and [domain] as `tribo contact` reads a Gaussian
-// surface (σ is the composite rms height of the pair), [material], [junction], [lubricant],
+// surface (σ is the composite rms height of the pair) or a measured one (kind = "file", square:
+// one realisation, σ its Rq), [material], [junction], [lubricant],
 // [pin], [speeds] and [homogenise] (docs/homogenise.md lists every key and its default).
 #pragma once
 
@@ -15,6 +16,7 @@ namespace tribo::cli {
 struct HomogeniseRun {
   homogenise::HomogeniseOptions options;
   std::vector<double> speeds_m_per_s;  // the Stribeck curve's speeds, log-spaced
+  std::vector<std::filesystem::path> input_files;  // files the config names (a measured topography)
 };
 
 // Throws InputError naming the file, the key and the reason.

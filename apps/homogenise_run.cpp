@@ -19,9 +19,14 @@ namespace tribo::cli {
 namespace {
 
 // A cached patch is reused only when the same build made it from the same inputs: its key is the
-// config's hash and the build's commit (git_commit()), so a newer build solves the patches again
-// rather than tabulate an older build's under its own provenance.
-std::string cache_key(const std::string& config_hash) { return config_hash + "@" + git_commit(); }
+// config's hash, the hashes of the files it names (a measured topography) and the build's commit
+// (git_commit()), so a newer build or an edited map solves the patches again rather than tabulate
+// an older answer under the new provenance.
+std::string cache_key(const std::string& config_hash, const std::vector<std::filesystem::path>& inputs) {
+  std::string key = config_hash;
+  for (const auto& f : inputs) key += "+" + tribo::cli::config_hash(f);
+  return key + "@" + git_commit();
+}
 
 std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& file, const std::string& key) {
   std::ifstream in(file);
@@ -115,7 +120,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   const std::filesystem::path patches = dir / "patches";
   make_output_dir(patches);
   const auto start = std::chrono::steady_clock::now();
-  const std::string hash = config_hash(config), key = cache_key(hash);
+  const std::string hash = config_hash(config), key = cache_key(hash, run.input_files);
   const homogenise::HomogeniseOptions& o = run.options;
 
   std::vector<std::optional<homogenise::PatchResult>> cached;
@@ -136,7 +141,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   const homogenise::CellTable cells = homogenise::aggregate(o, patch_results);
   const homogenise::PinTable pin = homogenise::pin_scale(o, cells);
   nlohmann::json law = homogenise::law_json(o, cells, pin);
-  law["provenance"] = provenance_json(config, hash);
+  law["provenance"] = provenance_json(config, hash, run.input_files);
   law["provenance"]["seeds"] = nlohmann::json::array();
   for (const auto& p : patch_results) law["provenance"]["seeds"].push_back(p.seed);
   law["provenance"]["realisations_reused"] = reused;

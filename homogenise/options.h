@@ -9,8 +9,11 @@
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "contact/surface.h"
 #include "lubrication/viscosity.h"
@@ -31,6 +34,10 @@ struct HomogeniseOptions {
   // uses seed surface.seed + k.
   contact::GaussianSurfaceParams surface;
   int realisations = 4;
+  // A measured composite topography instead (mean removed; surface.grid² nodes over
+  // surface.size_m, surface.rms_height_m its Rq): the one realisation, for the BEM and every cell.
+  // Taken as periodic, as the synthesised patches are: its edges meet where the instrument's do not.
+  std::optional<Eigen::ArrayXXd> measured_heights_m;
   double e_star_Pa = 1.137e11;         // composite modulus, steel on steel (DESIGN §5)
   double hardness_Pa = 1.18e9;         // σ0 of the softer body (disc, Brinell 120)
   double alpha = 25.0;                 // Tabor's α (3.1.5)

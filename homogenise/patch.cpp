@@ -18,9 +18,11 @@ namespace {
 [[noreturn]] void bad(const std::string& what) { throw std::invalid_argument("homogenise: " + what); }
 
 // The cell options of lubrication/flow_factors.h for this one realisation, single-threaded.
-lubrication::HomogenisationOptions cell_options(const HomogeniseOptions& o, std::uint64_t seed, double floor_fraction) {
+lubrication::HomogenisationOptions cell_options(const HomogeniseOptions& o, std::uint64_t seed, const Eigen::ArrayXXd& z,
+                                                double floor_fraction) {
   lubrication::HomogenisationOptions c;
   c.surface = o.surface;
+  c.heights_m = z;  // the realisation the BEM solved, not one generated again from its seed
   c.gap_ratios = o.separation_ratios;
   c.realisations = 1;
   c.first_seed = seed;
@@ -65,6 +67,13 @@ void validate(const HomogeniseOptions& o) {
   if (o.min_contact_grid < 1) bad("min_contact_grid must be >= 1");
   if (!(o.target_relative_error > 0 && o.target_relative_error < 1)) bad("target_relative_error must lie in (0, 1)");
   if (o.threads < 0) bad("threads must be >= 0");
+  if (const auto& m = o.measured_heights_m) {
+    if (o.realisations != 1) bad("a measured topography is one realisation: realisations must be 1");
+    if (m->rows() != o.surface.grid || m->cols() != o.surface.grid)
+      bad("the measured topography is " + std::to_string(m->rows()) + "x" + std::to_string(m->cols()) + ", surface.grid is " +
+          std::to_string(o.surface.grid) + " (a square map is needed)");
+    if (!m->allFinite()) bad("the measured topography holds a non-finite height");
+  }
 }
 
 int contact_refinement(const HomogeniseOptions& o) {
@@ -79,7 +88,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   r.seed = o.surface.seed + static_cast<std::uint64_t>(realisation);
   contact::GaussianSurfaceParams sp = o.surface;
   sp.seed = r.seed;
-  const Eigen::ArrayXXd z = contact::gaussian_surface(sp);
+  const Eigen::ArrayXXd z = o.measured_heights_m ? *o.measured_heights_m : contact::gaussian_surface(sp);
   const double sigma = o.surface.rms_height_m;
   const std::size_t nodes = o.separation_ratios.size();
   for (double ratio : o.separation_ratios) r.separation_m.push_back(ratio * sigma);
@@ -112,10 +121,10 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
 
   // Fluid cells on the same realisation.
   const auto flow_start = Clock::now();
-  const auto ff = lubrication::flow_factors(cell_options(o, r.seed, o.flow_contact_gap_fraction));
+  const auto ff = lubrication::flow_factors(cell_options(o, r.seed, z, o.flow_contact_gap_fraction));
   r.flow_cells_s = seconds_since(flow_start);
   const auto lift_start = Clock::now();
-  const auto lift = lubrication::rugosity_lift(cell_options(o, r.seed, o.lift_contact_gap_fraction));
+  const auto lift = lubrication::rugosity_lift(cell_options(o, r.seed, z, o.lift_contact_gap_fraction));
   r.lift_cells_s = seconds_since(lift_start);
   for (std::size_t m = 0; m < nodes; ++m) {
     r.phi_x.push_back(ff[m].phi_x.mean);

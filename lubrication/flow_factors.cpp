@@ -145,6 +145,13 @@ void validate(const HomogenisationOptions& o) {
   if (!(std::isfinite(o.pressure_drop_Pa) && o.pressure_drop_Pa > 0)) bad_cell_input("pressure_drop_Pa must be finite and > 0");
   if (!(o.contact_gap_fraction > 0 && o.contact_gap_fraction <= 0.5)) bad_cell_input("contact_gap_fraction must be in (0, 0.5]");
   if (o.threads < 0) bad_cell_input("threads must be >= 0");
+  if (o.heights_m) {
+    if (o.realisations != 1) bad_cell_input("given heights are one realisation: realisations must be 1");
+    if (o.heights_m->rows() != o.surface.grid || o.heights_m->cols() != o.surface.grid)
+      bad_cell_input("given heights are " + std::to_string(o.heights_m->rows()) + "x" + std::to_string(o.heights_m->cols()) +
+                     ", surface.grid is " + std::to_string(o.surface.grid));
+    if (!o.heights_m->allFinite()) bad_cell_input("given heights must be finite");
+  }
 }
 
 namespace {
@@ -171,7 +178,7 @@ void for_each_realisation(const HomogenisationOptions& o, F per_realisation) {
     try {
       contact::GaussianSurfaceParams p = o.surface;
       p.seed = o.first_seed + static_cast<std::uint64_t>(k);
-      const Eigen::ArrayXXd z = contact::gaussian_surface(p);
+      const Eigen::ArrayXXd z = o.heights_m ? *o.heights_m : contact::gaussian_surface(p);
       ReynoldsSolver solver(cell_solver_options());
       per_realisation(k, solver, z);
     } catch (const std::exception& e) {

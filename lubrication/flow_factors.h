@@ -50,6 +50,7 @@
 #include "contact/surface.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace tribo::lubrication {
@@ -66,6 +67,10 @@ struct HomogenisationOptions {
   double pressure_drop_Pa = 1e5;           // for φ_x, φ_y (the answer does not depend on it)
   double contact_gap_fraction = 1e-3;      // film floor at contact, × σ
   int threads = 0;                         // OpenMP threads; 0 = default
+  // The one realisation's heights (surface.grid² nodes over surface.size_m, σ = surface.rms_height_m),
+  // used as they are instead of a surface generated from `surface`: a measured map, or the caller's
+  // own realisation (homogenise/ passes the one its BEM solved). Requires realisations = 1.
+  std::optional<Eigen::ArrayXXd> heights_m;
 };
 
 // Throws std::invalid_argument naming the bad field.
