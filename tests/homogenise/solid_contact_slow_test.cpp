@@ -9,19 +9,14 @@
 
 #include "contact/surface.h"
 #include "homogenise/solid_contact.h"
+#include "tests/contact/fixture.h"
 
 namespace tribo::homogenise {
 namespace {
 
 HomogeniseOptions thesis_preset() {
   HomogeniseOptions o;  // materials, τ_i, α and the pin are the preset's defaults
-  o.surface.grid = 128;
-  o.surface.size_m = 1e-3;
-  o.surface.rms_height_m = 4.35e-7;
-  o.surface.hurst = 0.8;
-  o.surface.rolloff_wavelength_m = 6.25e-5;
-  o.surface.cutoff_wavelength_m = 1.5625e-5;
-  o.surface.seed = 1;
+  o.surface = contact::fixture::thesis_steel_surface();
   o.interface_shear_strength_Pa = 2.2264e8;
   o.pin.normal_load_N = 93.86;
   return o;

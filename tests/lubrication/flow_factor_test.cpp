@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "lubrication/flow_factors.h"
+#include "tests/contact/fixture.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -142,12 +143,7 @@ TEST(RugosityLift, RoughParallelSurfacesLiftWithCavitationInProportionToSpeed) {
 // flow, Couette and lift cell converges.
 TEST(RugosityLift, ThesisPresetCellsConvergeAtTheClosestSeparation) {
   HomogenisationOptions o;
-  o.surface.grid = 128;
-  o.surface.size_m = 1e-3;
-  o.surface.rms_height_m = 4.35e-7;
-  o.surface.hurst = 0.8;
-  o.surface.rolloff_wavelength_m = 6.25e-5;
-  o.surface.cutoff_wavelength_m = 1.5625e-5;
+  o.surface = contact::fixture::thesis_steel_surface();
   o.gap_ratios = {0.25};
   o.realisations = 1;
   o.contact_gap_fraction = 0.1;
