@@ -473,7 +473,7 @@ def plot_sweep(d):
                 rs.sort(key=lambda r: float(r[xa]))
                 x = [float(r[xa]) for r in rs]
                 y = [(float(r[col]) if r[col] != "" else float("nan")) if numeric else cats.index(r[col]) for r in rs]
-                label = ", ".join("%s = %s" % (o, k) for o, k in zip(others, key)) or None
+                label = ", ".join("%s = %s" % (o, "%g" % _number(k) if _number(k) is not None else k) for o, k in zip(others, key)) or None
                 errors = [c for c in (col + "_standard_error", col + "_discretisation_error") if c in fields]
                 if numeric and errors:
                     # error bar: the ensemble's standard error and the discretisation error in quadrature
