@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "lubrication/ehl_newton.h"
 #include "lubrication/reference/ehl_film.h"
 #include "numerics/format.h"
 
@@ -39,6 +40,7 @@ class LineProblem {
 
   int nodes() const { return n_; }
   int unknowns() const { return n_ - 1; }  // N − 2 pressures and H0
+  int pressure_unknowns() const { return n_ - 2; }
   double dx() const { return dx_; }
   const Eigen::VectorXd& x() const { return x_; }
   double half_width_m() const { return b_; }
@@ -162,70 +164,6 @@ class LineProblem {
   Eigen::MatrixXd kernel_;
 };
 
-struct NewtonOutcome {
-  bool converged = false;
-  int iterations = 0;
-  double residual = 0.0;
-  std::string why;
-};
-
-// Newton with a backtracking line search on ‖F‖₂ that keeps the film positive.
-NewtonOutcome newton(const LineProblem& problem, double lambda, Eigen::VectorXd& u, const EhlLineOptions& o) {
-  NewtonOutcome out;
-  Eigen::MatrixXd jac;
-  auto state = problem.nodal(u, lambda);
-  Eigen::VectorXd scales = problem.row_scales(state);
-  Eigen::VectorXd f = problem.residual(state, scales, &jac);
-  double norm = f.norm();
-  const int np = problem.nodes() - 2;
-  for (int it = 0; it < o.max_newton_iterations; ++it) {
-    const Eigen::VectorXd step = jac.partialPivLu().solve(-f);
-    if (!step.allFinite()) {
-      out.why = "the Newton system is singular";
-      break;
-    }
-    // The step may change no film by more than half of itself: a full Newton step from a start far
-    // from the solution closes the film in the contact, and from a collapsed film (ε ~ H³ → 0) the
-    // iteration crawls.
-    const Eigen::VectorXd dh = problem.film_change(step);
-    double t = 1.0;
-    for (int i = 0; i < dh.size(); ++i)
-      if (std::abs(dh(i)) > 0.5 * state.h(i)) t = std::min(t, 0.5 * state.h(i) / std::abs(dh(i)));
-    Eigen::VectorXd trial;
-    auto trial_state = state;
-    bool accepted = false;
-    for (int k = 0; k < 30; ++k, t *= 0.5) {
-      trial = u + t * step;
-      trial_state = problem.nodal(trial, lambda);
-      if (trial_state.h.minCoeff() <= 0.0) continue;
-      const double trial_norm = problem.residual(trial_state, scales, nullptr).norm();
-      if (std::isfinite(trial_norm) && trial_norm < (1.0 - 1e-4 * t) * norm) {
-        accepted = true;
-        break;
-      }
-    }
-    ++out.iterations;
-    if (!accepted) {
-      out.why = "the line search found no decrease of the residual";
-      break;
-    }
-    const double moved = (t * step.head(np)).lpNorm<Eigen::Infinity>();
-    u = trial;
-    state = std::move(trial_state);
-    scales = problem.row_scales(state);
-    f = problem.residual(state, scales, &jac);
-    norm = f.norm();
-    out.residual = f.lpNorm<Eigen::Infinity>();
-    if (out.residual <= o.tolerance && moved <= 10.0 * o.tolerance * std::max(1.0, u.head(np).lpNorm<Eigen::Infinity>())) {
-      out.converged = true;
-      return out;
-    }
-  }
-  out.residual = f.lpNorm<Eigen::Infinity>();
-  if (out.why.empty()) out.why = "the iteration limit was reached";
-  return out;
-}
-
 void validate(const EhlLineContact& c, const EhlLineOptions& o) {
   auto positive = [](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0)
@@ -279,49 +217,10 @@ EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLu
 
   EhlLineResult result;
   const Eigen::VectorXd start = u;
-  NewtonOutcome outcome = newton(problem, lambda, u, options);
-  result.iterations = outcome.iterations;
-  if (!outcome.converged) {
-    // Continuation from a thinner film: λ lowered by decades from the start until Newton converges
-    // (the smaller λ, the closer the pressure to the Hertz start), then raised back to the target,
-    // the step halved (in log λ) on every failure.
-    const double log_target = std::log(lambda);
-    double log_current = log_target, step = std::log(10.0);
-    Eigen::VectorXd anchor;
-    bool anchored = false, reached = false;
-    int steps = 0;
-    while (steps < options.max_continuation_steps && !anchored) {
-      ++steps;
-      log_current -= step;
-      anchor = start;
-      const NewtonOutcome o = newton(problem, std::exp(log_current), anchor, options);
-      result.iterations += o.iterations;
-      anchored = o.converged;
-    }
-    while (anchored && !reached && steps < options.max_continuation_steps) {
-      ++steps;
-      const double next = std::min(log_target, log_current + step);
-      Eigen::VectorXd trial = anchor;
-      const NewtonOutcome o = newton(problem, std::exp(next), trial, options);
-      result.iterations += o.iterations;
-      if (o.converged) {
-        anchor = trial;
-        log_current = next;
-        reached = next == log_target;
-        if (reached) outcome = o;
-      } else {
-        step *= 0.5;
-      }
-    }
-    result.continuation_steps = steps;
-    if (reached) {
-      u = anchor;
-    } else {
-      outcome.why += anchored ? " (continuation in λ from a thinner film stopped at λ = " + shortest(std::exp(log_current)) +
-                                    ", the target " + shortest(lambda) + ")"
-                              : " (and at every λ of the continuation)";
-    }
-  }
+  const ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+  const ehl::NewtonOutcome& outcome = solved.newton;
+  result.iterations = solved.iterations;
+  result.continuation_steps = solved.continuation_steps;
 
   const Eigen::VectorXd p = problem.pressures(u), h = problem.film(u);
   result.x_m.resize(n);

@@ -1,0 +1,148 @@
+// The nonlinear method shared by the EHL solvers (ehl_line.h, ehl_point.h): Newton's method on the
+// coupled system of pressures and the rigid-body film constant H0, with the dense Jacobian of the
+// elastic integral, a step limit that keeps every film positive, a backtracking line search on
+// ‖F‖₂, and continuation in the speed parameter λ when Newton does not converge from the start.
+// Internal to lubrication/: a Problem provides
+//   Nodal nodal(u, λ)                      the state at every node (its member h: the film)
+//   VectorXd row_scales(const Nodal&)      c_i, frozen over a step
+//   VectorXd residual(const Nodal&, c, MatrixXd* jacobian)
+//   VectorXd film_change(du)               the film's (linear) change for a step du
+//   int pressure_unknowns()                the pressures among the unknowns (first), then H0
+// and Options the fields tolerance, max_newton_iterations and max_continuation_steps.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "numerics/format.h"
+
+namespace tribo::lubrication::ehl {
+
+struct NewtonOutcome {
+  bool converged = false;
+  int iterations = 0;
+  double residual = 0.0;
+  std::string why;
+};
+
+// Newton from u (updated in place). Converged when ‖F‖∞ ≤ tolerance and the last step moved no
+// pressure by more than 10·tolerance·max(1, max P).
+template <class Problem, class Options>
+NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, const Options& o) {
+  NewtonOutcome out;
+  Eigen::MatrixXd jac;
+  auto state = problem.nodal(u, lambda);
+  Eigen::VectorXd scales = problem.row_scales(state);
+  Eigen::VectorXd f = problem.residual(state, scales, &jac);
+  double norm = f.norm();
+  const int np = problem.pressure_unknowns();
+  for (int it = 0; it < o.max_newton_iterations; ++it) {
+    const Eigen::VectorXd step = jac.partialPivLu().solve(-f);
+    if (!step.allFinite()) {
+      out.why = "the Newton system is singular";
+      break;
+    }
+    // The step may change no film by more than half of itself: a full Newton step from a start far
+    // from the solution closes the film in the contact, and from a collapsed film (ε ~ H³ → 0) the
+    // iteration crawls.
+    const Eigen::VectorXd dh = problem.film_change(step);
+    double t = 1.0;
+    for (int i = 0; i < dh.size(); ++i)
+      if (std::abs(dh(i)) > 0.5 * state.h(i)) t = std::min(t, 0.5 * state.h(i) / std::abs(dh(i)));
+    Eigen::VectorXd trial;
+    auto trial_state = state;
+    bool accepted = false;
+    for (int k = 0; k < 30; ++k, t *= 0.5) {
+      trial = u + t * step;
+      trial_state = problem.nodal(trial, lambda);
+      if (trial_state.h.minCoeff() <= 0.0) continue;
+      const double trial_norm = problem.residual(trial_state, scales, nullptr).norm();
+      if (std::isfinite(trial_norm) && trial_norm < (1.0 - 1e-4 * t) * norm) {
+        accepted = true;
+        break;
+      }
+    }
+    ++out.iterations;
+    if (!accepted) {
+      out.why = "the line search found no decrease of the residual";
+      break;
+    }
+    const double moved = (t * step.head(np)).template lpNorm<Eigen::Infinity>();
+    u = trial;
+    state = std::move(trial_state);
+    scales = problem.row_scales(state);
+    f = problem.residual(state, scales, &jac);
+    norm = f.norm();
+    out.residual = f.template lpNorm<Eigen::Infinity>();
+    if (out.residual <= o.tolerance &&
+        moved <= 10.0 * o.tolerance * std::max(1.0, u.head(np).template lpNorm<Eigen::Infinity>())) {
+      out.converged = true;
+      return out;
+    }
+  }
+  out.residual = f.template lpNorm<Eigen::Infinity>();
+  if (out.why.empty()) out.why = "the iteration limit was reached";
+  return out;
+}
+
+struct SolveOutcome {
+  NewtonOutcome newton;  // the last Newton solve (at the target λ when it converged)
+  int iterations = 0;    // Newton iterations, continuation steps included
+  int continuation_steps = 0;
+};
+
+// Newton from `start` at λ; where it does not converge, continuation from a thinner film: λ lowered
+// by decades from the start until Newton converges (the smaller λ, the closer the pressure to the
+// Hertz start), then raised back to the target, the step halved (in log λ) on every failure.
+// u returns the answer (the first Newton attempt's last iterate when nothing converged).
+template <class Problem, class Options>
+SolveOutcome solve_with_continuation(const Problem& problem, double lambda, const Eigen::VectorXd& start, Eigen::VectorXd& u,
+                                     const Options& o) {
+  SolveOutcome out;
+  u = start;
+  out.newton = newton(problem, lambda, u, o);
+  out.iterations = out.newton.iterations;
+  if (out.newton.converged) return out;
+  const double log_target = std::log(lambda);
+  double log_current = log_target, step = std::log(10.0);
+  Eigen::VectorXd anchor;
+  bool anchored = false, reached = false;
+  int steps = 0;
+  while (steps < o.max_continuation_steps && !anchored) {
+    ++steps;
+    log_current -= step;
+    anchor = start;
+    const NewtonOutcome n = newton(problem, std::exp(log_current), anchor, o);
+    out.iterations += n.iterations;
+    anchored = n.converged;
+  }
+  while (anchored && !reached && steps < o.max_continuation_steps) {
+    ++steps;
+    const double next = std::min(log_target, log_current + step);
+    Eigen::VectorXd trial = anchor;
+    const NewtonOutcome n = newton(problem, std::exp(next), trial, o);
+    out.iterations += n.iterations;
+    if (n.converged) {
+      anchor = trial;
+      log_current = next;
+      reached = next == log_target;
+      if (reached) out.newton = n;
+    } else {
+      step *= 0.5;
+    }
+  }
+  out.continuation_steps = steps;
+  if (reached) {
+    u = anchor;
+  } else {
+    out.newton.why += anchored ? " (continuation in λ from a thinner film stopped at λ = " + numerics::shortest(std::exp(log_current)) +
+                                     ", the target " + numerics::shortest(lambda) + ")"
+                               : " (and at every λ of the continuation)";
+  }
+  return out;
+}
+
+}  // namespace tribo::lubrication::ehl
