@@ -1,0 +1,286 @@
+#include "lubrication/ehl_point.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "lubrication/ehl_newton.h"
+#include "lubrication/reference/ehl_point_film.h"
+#include "numerics/format.h"
+
+namespace tribo::lubrication {
+namespace {
+
+using numerics::shortest;
+constexpr double kPi = std::numbers::pi;
+
+// ∫∫ dS dT / √(S² + T²) over [0, s] × [0, t] and its signed extension: F(s, t) = s asinh(t/|s|) +
+// t asinh(s/|t|) (each term 0 where its factor is), so ∂²F/∂s∂t = 1/r.
+double inverse_distance_antiderivative(double s, double t) {
+  return (s == 0.0 ? 0.0 : s * std::asinh(t / std::abs(s))) + (t == 0.0 ? 0.0 : t * std::asinh(s / std::abs(t)));
+}
+
+// The discrete problem in Hertz units (header): unknowns P at the interior nodes, then H0.
+class PointProblem {
+ public:
+  PointProblem(const EhlPointContact& c, const PiezoviscousLubricant& l, const EhlPointOptions& o)
+      : lub_(l), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
+        dy_(2.0 * o.side_over_radius / (o.nodes_y - 1)) {
+    a_ = reference::hertz_point_radius_m(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
+    ph_ = reference::hertz_point_peak_pressure_Pa(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
+    radius_ = c.reduced_radius_m;
+    x_.resize(nx_);
+    y_.resize(ny_);
+    for (int i = 0; i < nx_; ++i) x_(i) = o.inlet_over_radius + i * dx_;
+    for (int j = 0; j < ny_; ++j) y_(j) = -o.side_over_radius + j * dy_;
+    // Deformation (2/π²) ∫∫_cell 1/r of P constant on each interior node's cell, a function of the
+    // node offsets alone.
+    Eigen::MatrixXd offset(nx_, ny_);
+    const double hx = 0.5 * dx_, hy = 0.5 * dy_;
+    for (int di = 0; di < nx_; ++di)
+      for (int dj = 0; dj < ny_; ++dj) {
+        const double s = di * dx_, t = dj * dy_;
+        offset(di, dj) = 2.0 / (kPi * kPi) *
+                         (inverse_distance_antiderivative(s + hx, t + hy) - inverse_distance_antiderivative(s + hx, t - hy) -
+                          inverse_distance_antiderivative(s - hx, t + hy) + inverse_distance_antiderivative(s - hx, t - hy));
+      }
+    kernel_.resize(nx_ * ny_, interior());
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i)
+        for (int l = 1; l <= ny_ - 2; ++l)
+          for (int k = 1; k <= nx_ - 2; ++k) kernel_(node(i, j), unknown(k, l)) = offset(std::abs(i - k), std::abs(j - l));
+    self_ = offset(0, 0);
+    rigid_.resize(nx_ * ny_);
+    for (int j = 0; j < ny_; ++j)
+      for (int i = 0; i < nx_; ++i) rigid_(node(i, j)) = 0.5 * (x_(i) * x_(i) + y_(j) * y_(j));
+  }
+
+  int interior() const { return (nx_ - 2) * (ny_ - 2); }
+  int unknowns() const { return interior() + 1; }
+  int pressure_unknowns() const { return interior(); }
+  int node(int i, int j) const { return i + nx_ * j; }
+  int unknown(int i, int j) const { return (i - 1) + (nx_ - 2) * (j - 1); }
+  bool inside(int i, int j) const { return i >= 1 && i <= nx_ - 2 && j >= 1 && j <= ny_ - 2; }
+  int nx() const { return nx_; }
+  int ny() const { return ny_; }
+  double dx() const { return dx_; }
+  double dy() const { return dy_; }
+  const Eigen::VectorXd& x() const { return x_; }
+  const Eigen::VectorXd& y() const { return y_; }
+  double radius_m() const { return a_; }
+  double hertz_pressure_Pa() const { return ph_; }
+  double film_scale_m() const { return a_ * a_ / radius_; }  // h = H a²/R
+
+  Eigen::VectorXd pressures(const Eigen::VectorXd& u) const {
+    Eigen::VectorXd p = Eigen::VectorXd::Zero(nx_ * ny_);
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i) p(node(i, j)) = u(unknown(i, j));
+    return p;
+  }
+  // A nodal field bilinearly interpolated at X = Y = 0.
+  double at_centre(const Eigen::VectorXd& v) const {
+    const int i = std::clamp(static_cast<int>(std::floor(-x_(0) / dx_)), 0, nx_ - 2);
+    const int j = std::clamp(static_cast<int>(std::floor(-y_(0) / dy_)), 0, ny_ - 2);
+    const double s = -x_(i) / dx_, t = -y_(j) / dy_;
+    return (1 - s) * (1 - t) * v(node(i, j)) + s * (1 - t) * v(node(i + 1, j)) + (1 - s) * t * v(node(i, j + 1)) +
+           s * t * v(node(i + 1, j + 1));
+  }
+  Eigen::VectorXd film_change(const Eigen::VectorXd& du) const {
+    return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + kernel_ * du.head(interior());
+  }
+  Eigen::VectorXd film(const Eigen::VectorXd& u) const {
+    return (Eigen::VectorXd::Constant(nx_ * ny_, u(interior())) + rigid_) + kernel_ * u.head(interior());
+  }
+
+  struct Nodal {
+    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w;
+  };
+  Nodal nodal(const Eigen::VectorXd& u, double lambda) const {
+    const int n = nx_ * ny_;
+    Nodal s{pressures(u), film(u), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
+    for (int k = 0; k < n; ++k) {
+      const ViscosityAtPressure v = viscosity_ratio(lub_, s.p(k) * ph_);
+      const DensityAtPressure r = density_ratio(lub_, s.p(k) * ph_);
+      s.rho(k) = r.ratio;
+      s.drho(k) = r.slope_per_Pa * ph_;
+      s.eps(k) = s.rho(k) * std::pow(s.h(k), 3) / (v.ratio * lambda);
+      s.dlog_eps(k) = s.drho(k) / s.rho(k) - v.log_slope_per_Pa * ph_;  // ∂ ln ε/∂P at fixed H
+      s.w(k) = s.rho(k) * s.h(k);
+    }
+    return s;
+  }
+
+  // Row scales c = 1/|∂R/∂P| of the diagonal (Poiseuille and the deformation's wedge part), as
+  // the line contact's: c R reads as a pressure in the thick inlet and the stiff Hertz zone alike.
+  Eigen::VectorXd row_scales(const Nodal& s) const {
+    Eigen::VectorXd c(interior());
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i) {
+        const auto e = [&](int ii, int jj) { return s.eps(node(ii, jj)); };
+        const double xx = 0.5 * (e(i - 1, j) + 2.0 * e(i, j) + e(i + 1, j)) / (dx_ * dx_);
+        const double yy = 0.5 * (e(i, j - 1) + 2.0 * e(i, j) + e(i, j + 1)) / (dy_ * dy_);
+        c(unknown(i, j)) = 1.0 / (xx + yy + 1.5 * s.rho(node(i, j)) * self_ / dx_);
+      }
+    return c;
+  }
+
+  Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
+    const int np = interior();
+    Eigen::VectorXd f(np + 1);
+    if (jacobian) jacobian->setZero(np + 1, np + 1);
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i) {
+        const int row = unknown(i, j), here = node(i, j);
+        const int east = node(i + 1, j), west = node(i - 1, j), north = node(i, j + 1), south = node(i, j - 1);
+        const double epx = 0.5 * (s.eps(here) + s.eps(east)), emx = 0.5 * (s.eps(west) + s.eps(here));
+        const double epy = 0.5 * (s.eps(here) + s.eps(north)), emy = 0.5 * (s.eps(south) + s.eps(here));
+        const double gpx = s.p(east) - s.p(here), gmx = s.p(here) - s.p(west);
+        const double gpy = s.p(north) - s.p(here), gmy = s.p(here) - s.p(south);
+        const double poiseuille = (epx * gpx - emx * gmx) / (dx_ * dx_) + (epy * gpy - emy * gmy) / (dy_ * dy_);
+        const bool second_order = i >= 2;
+        const double wedge = second_order ? (3.0 * s.w(here) - 4.0 * s.w(west) + s.w(node(i - 2, j))) / (2.0 * dx_)
+                                          : (s.w(here) - s.w(west)) / dx_;
+        const double scale = c(row);
+        const double r = -scale * (poiseuille - wedge);
+        // Cavitation as the Fischer–Burmeister function φ(P, −c R) = 0 (ehl_line.cpp says why).
+        const double a = s.p(here), root = std::hypot(a, r);
+        f(row) = a + r - root;
+        if (!jacobian) continue;
+        const double da = root > 0.0 ? 1.0 - a / root : 1.0, db = root > 0.0 ? 1.0 - r / root : 0.0;
+        // ∂(poiseuille − wedge)/∂u: through ε and ρ̄H at the stencil's nodes (each a dense row of the
+        // kernel: ∂ε_k/∂P_q = ε_k (3 K_kq/H_k + δ_kq ∂ln ε_k/∂P_k), ∂(ρ̄H)_k/∂P_q = ρ̄_k K_kq +
+        // δ_kq ρ̄'_k H_k), and through the pressures of the five-point stencil.
+        struct Term {
+          int i, j;
+          double through_eps, through_mass;  // coefficients of ∂ε_k and −∂(ρ̄H)_k
+        };
+        const double wx = 1.0 / (2.0 * dx_);
+        Term terms[7] = {{i, j, 0.5 * (gpx - gmx) / (dx_ * dx_) + 0.5 * (gpy - gmy) / (dy_ * dy_), second_order ? 3.0 * wx : 1.0 / dx_},
+                         {i + 1, j, 0.5 * gpx / (dx_ * dx_), 0.0},
+                         {i - 1, j, -0.5 * gmx / (dx_ * dx_), second_order ? -4.0 * wx : -1.0 / dx_},
+                         {i, j + 1, 0.5 * gpy / (dy_ * dy_), 0.0},
+                         {i, j - 1, -0.5 * gmy / (dy_ * dy_), 0.0},
+                         {i - 2, j, 0.0, second_order ? wx : 0.0},
+                         {-1, -1, 0.0, 0.0}};
+        auto jrow = jacobian->row(row);
+        double d_h0 = 0.0;
+        for (const Term& t : terms) {
+          if (t.i < 0 || (t.through_eps == 0.0 && t.through_mass == 0.0)) continue;
+          const int k = node(t.i, t.j);
+          const double dh = t.through_eps * 3.0 * s.eps(k) / s.h(k) - t.through_mass * s.rho(k);  // per unit ∂H_k
+          jrow.head(np) += (-scale * db * dh) * kernel_.row(k);
+          d_h0 += dh;
+          if (inside(t.i, t.j))
+            jrow(unknown(t.i, t.j)) += -scale * db * (t.through_eps * s.eps(k) * s.dlog_eps(k) - t.through_mass * s.drho(k) * s.h(k));
+        }
+        // The pressures of the stencil.
+        const auto pressure_term = [&](int ii, int jj, double coefficient) {
+          if (inside(ii, jj)) jrow(unknown(ii, jj)) += -scale * db * coefficient;
+        };
+        pressure_term(i + 1, j, epx / (dx_ * dx_));
+        pressure_term(i - 1, j, emx / (dx_ * dx_));
+        pressure_term(i, j + 1, epy / (dy_ * dy_));
+        pressure_term(i, j - 1, emy / (dy_ * dy_));
+        pressure_term(i, j, -(epx + emx) / (dx_ * dx_) - (epy + emy) / (dy_ * dy_));
+        jrow(row) += da;
+        (*jacobian)(row, np) = -scale * db * d_h0;
+      }
+    // Load balance: ΔX ΔY Σ P = 2π/3 (P = 0 on the boundary).
+    const double cell = dx_ * dy_;
+    double sum = 0.0;
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i) sum += s.p(node(i, j));
+    f(np) = cell * sum - 2.0 * kPi / 3.0;
+    if (jacobian) jacobian->row(np).head(np).setConstant(cell);
+    return f;
+  }
+
+ private:
+  PiezoviscousLubricant lub_;
+  int nx_, ny_;
+  double dx_, dy_, a_ = 0.0, ph_ = 0.0, radius_ = 0.0, self_ = 0.0;
+  Eigen::VectorXd x_, y_, rigid_;
+  Eigen::MatrixXd kernel_;  // all nodes × interior nodes
+};
+
+void validate(const EhlPointContact& c, const EhlPointOptions& o) {
+  auto positive = [](double v, const char* name) {
+    if (!std::isfinite(v) || v <= 0.0)
+      throw std::invalid_argument(std::string("EHL point contact: ") + name + " must be positive and finite, got " + shortest(v));
+  };
+  positive(c.load_N, "load_N");
+  positive(c.reduced_radius_m, "reduced_radius_m");
+  positive(c.reduced_modulus_Pa, "reduced_modulus_Pa");
+  positive(c.mean_speed_m_per_s, "mean_speed_m_per_s");
+  if (!(o.inlet_over_radius < -1.0) || !(o.outlet_over_radius > 0.0) || !(o.side_over_radius > 1.0) ||
+      !std::isfinite(o.inlet_over_radius) || !std::isfinite(o.outlet_over_radius) || !std::isfinite(o.side_over_radius))
+    throw std::invalid_argument("EHL point contact: the domain [" + shortest(o.inlet_over_radius) + ", " +
+                                shortest(o.outlet_over_radius) + "] × ±" + shortest(o.side_over_radius) +
+                                " (in Hertz radii) must start before −1, end after 0 and reach past ±1 sideways");
+  if (o.nodes_x < 11 || o.nodes_y < 11)
+    throw std::invalid_argument("EHL point contact: nodes must be ≥ 11 a side, got " + std::to_string(o.nodes_x) + " × " +
+                                std::to_string(o.nodes_y));
+  if (!(o.tolerance > 0.0)) throw std::invalid_argument("EHL point contact: tolerance must be positive, got " + shortest(o.tolerance));
+}
+
+}  // namespace
+
+EhlPointResult solve_ehl_point(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant, const EhlPointOptions& options) {
+  validate(contact, options);
+  validate(lubricant);
+  const PointProblem problem(contact, lubricant, options);
+  const double radius = contact.reduced_radius_m, a = problem.radius_m(), ph = problem.hertz_pressure_Pa();
+  const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (a * a * a * ph);
+
+  // Start: the Hertz semi-ellipsoid, widened over the rigid film's pressure zone √(2 R h) when that
+  // is the larger (a light, hydrodynamic contact), and H0 placing the central film at Hamrock and
+  // Dowson's estimate (with G at least 1000, so an isoviscous lubricant starts from a film too).
+  reference::PointContactGroups g = reference::point_contact_groups(contact.load_N, radius, contact.reduced_modulus_Pa,
+                                                                    contact.mean_speed_m_per_s, lubricant.viscosity_Pa_s,
+                                                                    lubricant.pressure_viscosity_per_Pa);
+  g.material = std::max(g.material, 1000.0);
+  const double h_start_m = reference::hamrock_dowson_central_film(g) * radius;
+  const double spread = std::max(1.0, std::sqrt(2.0 * radius * h_start_m) / a);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.unknowns());
+  for (int j = 1; j <= problem.ny() - 2; ++j)
+    for (int i = 1; i <= problem.nx() - 2; ++i) {
+      const double r2 = (problem.x()(i) * problem.x()(i) + problem.y()(j) * problem.y()(j)) / (spread * spread);
+      u(problem.unknown(i, j)) = std::sqrt(std::max(0.0, 1.0 - r2)) / (spread * spread);
+    }
+  const int np = problem.pressure_unknowns();
+  u(np) = 0.0;
+  u(np) = h_start_m / problem.film_scale_m() - problem.at_centre(problem.film(u));
+  if (const double lowest = problem.film(u).minCoeff(); lowest <= 0.0) u(np) += 0.5 * h_start_m / problem.film_scale_m() - lowest;
+
+  const Eigen::VectorXd start = u;
+  const ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+
+  EhlPointResult result;
+  const Eigen::VectorXd p = problem.pressures(u), h = problem.film(u);
+  for (int i = 0; i < problem.nx(); ++i) result.x_m.push_back(problem.x()(i) * a);
+  for (int j = 0; j < problem.ny(); ++j) result.y_m.push_back(problem.y()(j) * a);
+  result.pressure_Pa.resize(p.size());
+  result.film_m.resize(h.size());
+  for (Eigen::Index k = 0; k < p.size(); ++k) {
+    result.pressure_Pa[static_cast<std::size_t>(k)] = p(k) * ph;
+    result.film_m[static_cast<std::size_t>(k)] = h(k) * problem.film_scale_m();
+  }
+  result.central_film_m = problem.at_centre(h) * problem.film_scale_m();
+  result.minimum_film_m = h.minCoeff() * problem.film_scale_m();
+  result.max_pressure_Pa = p.maxCoeff() * ph;
+  result.hertz_radius_m = a;
+  result.hertz_pressure_Pa = ph;
+  result.load_balance_error = (problem.dx() * problem.dy() * p.sum() - 2.0 * kPi / 3.0) / (2.0 * kPi / 3.0);
+  result.converged = solved.newton.converged;
+  result.iterations = solved.iterations;
+  result.continuation_steps = solved.continuation_steps;
+  result.residual = solved.newton.residual;
+  result.message = result.converged ? "converged: ‖F‖∞ = " + shortest(result.residual) + " after " + std::to_string(result.iterations) +
+                                          " Newton iterations"
+                                    : "not converged: " + solved.newton.why + "; ‖F‖∞ = " + shortest(result.residual);
+  return result;
+}
+
+}  // namespace tribo::lubrication

@@ -1,0 +1,76 @@
+// Elastohydrodynamic circular point contact: a ball of reduced radius R on a flat (or two balls),
+// load W, entrained along x at the mean surface speed u_m = (u1 + u2)/2, steady, isothermal,
+// smooth surfaces — the contact of a ball-on-disc tribometer.
+//
+// Equations (Hamrock & Dowson 1976; the dimensionless form of Venner & Lubrecht 2000, ch. 9):
+//   Reynolds   ∂/∂x(ρh³/(12η) ∂p/∂x) + ∂/∂y(ρh³/(12η) ∂p/∂y) = u_m ∂(ρh)/∂x,   p ≥ 0 with the
+//              Reynolds residual complementary to it (Swift–Stieber cavitation, as ehl_line.h)
+//   film       h(x, y) = h0 + (x² + y²)/(2R) + (2/(π E')) ∫∫ p(s, t)/√((x−s)² + (y−t)²) ds dt
+//   load       ∫∫ p dx dy = W
+//   fluid      η(p), ρ(p) of piezoviscous.h.
+// Scaled by the dry Hertz contact (reference/ehl_point_film.h): a, p_H, X = x/a, P = p/p_H,
+// H = h R/a²: H = H0 + (X² + Y²)/2 + (2/π²) ∫∫ P/ρ dS dT, ∫∫ P dX dY = 2π/3, and
+// ∇·(ε ∇P) = ∂(ρ̄H)/∂X with ε = ρ̄H³/(η̄λ), λ = 12 η0 u_m R²/(a³ p_H).
+//
+// Discretisation: nx × ny nodes on [X_in, X_out] × [−Y_side, Y_side], P = 0 on the boundary; the
+// Poiseuille terms by central differences with ε at the half nodes (the mean of its neighbours),
+// the wedge term by second-order upwind differences along x (first order at the first interior
+// column), the deformation with P constant on each node's cell — the exact integral of 1/r over a
+// rectangle (Love 1929), so the elastic operator is a dense matrix with the Toeplitz structure of
+// the grid.
+//
+// Method: ehl_newton.h — Newton on pressures and H0 together with the dense Jacobian of the
+// elastic integral, step limits, line search and continuation in λ, as the line contact. Cost:
+// the dense LU of an (nx−2)(ny−2) + 1 system per step, O(N³) — 41 × 41 nodes ≈ 0.3 s a step,
+// 61 × 61 ≈ 4 s: the grids of a design calculation and of the tests, not of a converged map of
+// the film's side lobes (Venner & Lubrecht's multilevel methods are what reaches 10⁶ nodes).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "lubrication/piezoviscous.h"
+
+namespace tribo::lubrication {
+
+struct EhlPointContact {
+  double load_N = 0.0;              // W > 0
+  double reduced_radius_m = 0.0;    // R = 1/(1/R1 + 1/R2) > 0
+  double reduced_modulus_Pa = 0.0;  // E' = 2 E* > 0
+  double mean_speed_m_per_s = 0.0;  // u_m = (u1 + u2)/2 > 0 (entrainment, along x)
+};
+
+struct EhlPointOptions {
+  double inlet_over_radius = -3.5;   // X_in = x_in / a (the inlet must not starve the film)
+  double outlet_over_radius = 1.5;   // X_out = x_out / a (past the cavitation front)
+  double side_over_radius = 2.5;     // the domain spans |Y| ≤ this
+  int nodes_x = 41, nodes_y = 41;    // ≥ 11 each
+  // Converged when the scaled residual ‖F‖∞ ≤ tolerance, F = (φ(P, −c R_Reynolds) in units of p_H,
+  // load balance ΔXΔY ΣP − 2π/3), and the last Newton step moved no P by more than 10·tolerance·max P.
+  double tolerance = 1e-9;
+  int max_newton_iterations = 30;   // per solve (the direct one and each continuation step)
+  int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
+};
+
+struct EhlPointResult {
+  std::vector<double> x_m, y_m;           // node coordinates
+  std::vector<double> pressure_Pa, film_m;  // nx × ny, x fastest (index i + nx j)
+  double central_film_m = 0.0;   // at the Hertz centre (x = y = 0, interpolated)
+  double minimum_film_m = 0.0;   // smallest nodal film
+  double max_pressure_Pa = 0.0;
+  double hertz_radius_m = 0.0, hertz_pressure_Pa = 0.0;
+  double load_balance_error = 0.0;  // (∫∫p − W)/W
+  bool converged = false;
+  int iterations = 0;             // Newton iterations, continuation steps included
+  int continuation_steps = 0;
+  double residual = 0.0;          // ‖F‖∞ at return
+  std::string message;
+};
+
+// Throws std::invalid_argument for bad input (non-positive or non-finite contact data, a domain
+// that does not contain the Hertz circle's centre with room before it, fewer than 11 nodes a
+// side); never throws for non-convergence (see `converged` and `message`).
+EhlPointResult solve_ehl_point(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant,
+                               const EhlPointOptions& options = {});
+
+}  // namespace tribo::lubrication
