@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "numerics/format.h"
@@ -42,42 +43,80 @@ double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, 
   return tau;
 }
 
-}  // namespace
-
-EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
-                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating) {
+// The inputs both tractions check; `load` in the unit of `load_unit`.
+void check_traction_inputs(const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s, double eyring_stress_Pa, double load,
+                           const char* load_name, const FilmHeating& heating) {
   validate(lubricant);
   if (!std::isfinite(sliding_speed_m_per_s))
     throw std::invalid_argument("EHL traction: the sliding speed must be finite, got " + numerics::shortest(sliding_speed_m_per_s) + " m/s");
   if (!(eyring_stress_Pa > 0.0))
     throw std::invalid_argument("EHL traction: the Eyring stress must be positive (infinite for a Newtonian film), got " +
                                 numerics::shortest(eyring_stress_Pa) + " Pa");
-  if (!(load_per_length_N_per_m > 0.0) || !std::isfinite(load_per_length_N_per_m))
-    throw std::invalid_argument("EHL traction: the load per length must be positive, got " + numerics::shortest(load_per_length_N_per_m) + " N/m");
+  if (!(load > 0.0) || !std::isfinite(load))
+    throw std::invalid_argument(std::string("EHL traction: the ") + load_name + " must be positive, got " + numerics::shortest(load));
   if (!(heating.thermal_conductivity_W_per_m_K >= 0.0) || !std::isfinite(heating.thermal_conductivity_W_per_m_K) ||
       !(heating.temperature_viscosity_per_K >= 0.0) || !std::isfinite(heating.temperature_viscosity_per_K))
     throw std::invalid_argument("EHL traction: the film's thermal conductivity and temperature-viscosity coefficient must be finite and >= 0, got " +
                                 numerics::shortest(heating.thermal_conductivity_W_per_m_K) + " W/(m K) and " +
                                 numerics::shortest(heating.temperature_viscosity_per_K) + " 1/K");
+}
+
+// τ at one node of pressure p and film h (0 where the film is cavitated, p ≤ 0), its sign Δu's;
+// where() names the node in the error (formatted only then).
+template <class Where>
+double node_stress_Pa(const PiezoviscousLubricant& lubricant, double p, double h, double du, double tau0, const FilmHeating& heating,
+                      double* rise_K, const Where& where) {
+  *rise_K = 0.0;
+  if (!(p > 0.0)) return 0.0;  // cavitated (or at the domain's edge)
+  if (!(h > 0.0)) throw std::invalid_argument("EHL traction: non-positive film " + numerics::shortest(h) + " m at " + where());
+  const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, p).ratio;
+  return (du < 0.0 ? -1.0 : 1.0) * shear_stress_Pa(eta, std::abs(du), h, tau0, heating, rise_K);
+}
+
+}  // namespace
+
+EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
+                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating) {
+  check_traction_inputs(lubricant, sliding_speed_m_per_s, eyring_stress_Pa, load_per_length_N_per_m, "load per length (N/m)", heating);
   const std::size_t n = film.x_m.size();
   if (n < 2 || film.pressure_Pa.size() != n || film.film_m.size() != n)
     throw std::invalid_argument("EHL traction: the film needs at least two nodes with x, pressure and film thickness each");
   EhlTraction out;
   std::vector<double> tau(n, 0.0);
-  const double du = std::abs(sliding_speed_m_per_s), sign = sliding_speed_m_per_s < 0.0 ? -1.0 : 1.0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!(film.pressure_Pa[i] > 0.0)) continue;  // cavitated (or at the domain's ends)
-    const double h = film.film_m[i];
-    if (!(h > 0.0))
-      throw std::invalid_argument("EHL traction: non-positive film " + numerics::shortest(h) + " m at x = " + numerics::shortest(film.x_m[i]) + " m");
-    const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, film.pressure_Pa[i]).ratio;
     double rise_K = 0.0;
-    tau[i] = sign * shear_stress_Pa(eta, du, h, eyring_stress_Pa, heating, &rise_K);
+    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating, &rise_K,
+                            [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
     out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau[i]));
     out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
   }
   for (std::size_t i = 1; i < n; ++i) out.force_per_length_N_per_m += 0.5 * (tau[i] + tau[i - 1]) * (film.x_m[i] - film.x_m[i - 1]);
   out.friction_coefficient = out.force_per_length_N_per_m / load_per_length_N_per_m;
+  return out;
+}
+
+EhlPointTraction ehl_point_traction(const EhlPointResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
+                                    double eyring_stress_Pa, double load_N, const FilmHeating& heating) {
+  check_traction_inputs(lubricant, sliding_speed_m_per_s, eyring_stress_Pa, load_N, "load (N)", heating);
+  const std::size_t nx = film.x_m.size(), ny = film.y_m.size();
+  if (nx < 2 || ny < 2 || film.pressure_Pa.size() != nx * ny || film.film_m.size() != nx * ny)
+    throw std::invalid_argument("EHL traction: the point contact's pressure and film need nx × ny = " + std::to_string(nx * ny) +
+                                " values each, got " + std::to_string(film.pressure_Pa.size()) + " and " + std::to_string(film.film_m.size()));
+  const double cell = (film.x_m[1] - film.x_m[0]) * (film.y_m[1] - film.y_m[0]);
+  EhlPointTraction out;
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      double rise_K = 0.0;
+      const std::size_t k = i + nx * j;
+      const double tau = node_stress_Pa(lubricant, film.pressure_Pa[k], film.film_m[k], sliding_speed_m_per_s, eyring_stress_Pa, heating,
+                                        &rise_K, [&] {
+                                          return "x = " + numerics::shortest(film.x_m[i]) + " m, y = " + numerics::shortest(film.y_m[j]) + " m";
+                                        });
+      out.force_N += tau * cell;
+      out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau));
+      out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
+    }
+  out.friction_coefficient = out.force_N / load_N;
   return out;
 }
 

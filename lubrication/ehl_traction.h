@@ -20,10 +20,11 @@
 // the cavitated outlet (p = 0 at the nodes past the film's rupture, where the gap holds striations
 // of unknown extent); and heat in the film solve itself (the pressure and film are isothermal).
 // Traction force per unit length F = ∫ τ dx (trapezoidal rule over the solve's nodes), friction
-// coefficient μ = F / w.
+// coefficient μ = F / w; over a point contact's area F = ∫∫ τ dA (each node its cell), μ = F / W.
 #pragma once
 
 #include "lubrication/ehl_line.h"
+#include "lubrication/ehl_point.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
@@ -47,5 +48,18 @@ struct EhlTraction {
 // pressure is positive.
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
                               double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating = {});
+
+// The same shear over a point contact's nodes (ehl_point.h), each node standing for its Δx Δy
+// cell: traction force F = Σ τ Δx Δy over the pressurised nodes, μ = F / W.
+struct EhlPointTraction {
+  double force_N = 0.0;
+  double friction_coefficient = 0.0;
+  double max_shear_stress_Pa = 0.0;
+  double max_film_temperature_rise_K = 0.0;
+};
+// Throws std::invalid_argument as ehl_line_traction (a non-positive load in N), and for fields whose
+// sizes do not match the grid.
+EhlPointTraction ehl_point_traction(const EhlPointResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
+                                    double eyring_stress_Pa, double load_N, const FilmHeating& heating = {});
 
 }  // namespace tribo::lubrication

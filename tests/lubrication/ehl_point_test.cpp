@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "lubrication/ehl_traction.h"
 #include "lubrication/reference/ehl_point_film.h"
 #include "tests/lubrication/ball_on_disc.h"
 
@@ -41,6 +42,32 @@ TEST(EhlPoint, HighLoadPressureIsHertzianAcrossTheFlow) {
   EXPECT_GE(inside, 6);
   // The horseshoe: the minimum film lies below the central one.
   EXPECT_LT(r.minimum_film_m, r.central_film_m);
+}
+
+// The traction of a point film is the Eyring stress τ0 asinh(η(p) Δu/(τ0 h)) over each pressurised
+// node's Δx Δy cell (Johnson & Tevaarwerk 1977's model): on a hand-made film of uniform p and h over
+// 3 × 3 of 5 × 5 nodes the force is 9 of those cells' worth, to round-off; the cavitated rim
+// carries none, and the sign follows the sliding.
+TEST(EhlPoint, TractionIsTheEyringStressOverThePressurisedCells) {
+  EhlPointResult film;
+  const double dx = 2e-5, dy = 3e-5, p0 = 5e8, h0 = 2e-7;
+  for (int i = 0; i < 5; ++i) film.x_m.push_back(i * dx), film.y_m.push_back(i * dy);
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 5; ++i) {
+      const bool inner = i > 0 && i < 4 && j > 0 && j < 4;
+      film.pressure_Pa.push_back(inner ? p0 : 0.0);
+      film.film_m.push_back(h0);
+    }
+  const double du = 0.1, tau0 = 5e6, load = 10.0;
+  const double eta = oil().viscosity_Pa_s * viscosity_ratio(oil(), p0).ratio;
+  const double tau = tau0 * std::asinh(eta * du / (tau0 * h0));
+  const EhlPointTraction t = ehl_point_traction(film, oil(), du, tau0, load);
+  EXPECT_NEAR(t.force_N, 9.0 * tau * dx * dy, 1e-12 * t.force_N);
+  EXPECT_NEAR(t.friction_coefficient, t.force_N / load, 1e-15);
+  EXPECT_NEAR(t.max_shear_stress_Pa, tau, 1e-9 * tau);
+  EXPECT_NEAR(ehl_point_traction(film, oil(), -du, tau0, load).force_N, -t.force_N, 1e-12 * t.force_N);
+  film.film_m.pop_back();
+  EXPECT_THROW(ehl_point_traction(film, oil(), du, tau0, load), std::invalid_argument);
 }
 
 TEST(EhlPoint, BadInputIsRejectedAndNonConvergenceIsReported) {
