@@ -1,7 +1,7 @@
-// `tribo ehl CONFIG.toml --out DIR`: one elastohydrodynamic contact (a line contact so far),
-// writing DIR/ehl.json (films, pressures, traction, convergence, the published fits at the same
-// dimensionless groups, provenance), the profiles x_m.npy, pressure_Pa.npy and film_m.npy, and with
-// --plot ehl.png. Every key is read and checked before anything is written (docs/lubrication.md).
+// `tribo ehl CONFIG.toml --out DIR`: one elastohydrodynamic contact, a line or a circular point
+// contact, writing DIR/ehl.json (films, pressures, traction, convergence, the published fits at the
+// same dimensionless groups, provenance), the fields x_m.npy, pressure_Pa.npy and film_m.npy
+// (a point contact: y_m.npy too, and nx × ny fields), and with --plot ehl.png. Every key is read and checked before anything is written (docs/lubrication.md).
 // The reader and the solve are apps/ehl_run.h; this file parses argv and writes the files.
 #include <cstdio>
 #include <filesystem>
@@ -35,7 +35,22 @@ void run_ehl(const EhlArgs& args) {
   const EhlSolve solved = solve_ehl_run(run);
   nlohmann::json j = solved.summary;
   j["provenance"] = provenance_json(args.config);
-  if (!args.summary_only) {
+  if (!args.summary_only && solved.point_film) {
+    const lubrication::EhlPointResult& f = *solved.point_film;
+    j["fields"] = {{"x_m", "x_m.npy"},
+                   {"y_m", "y_m.npy"},
+                   {"pressure_Pa", "pressure_Pa.npy"},
+                   {"film_m", "film_m.npy"},
+                   {"layout", "float64 arrays; x_m (nx,) in the rolling direction and y_m (ny,) across it, from the contact centre; "
+                              "pressure_Pa and film_m of shape (nx, ny): [i, j] is the node at x_m[i], y_m[j]"}};
+    write_npy_atomically(dir / "x_m.npy", f.x_m);
+    write_npy_atomically(dir / "y_m.npy", f.y_m);
+    const auto field = [&](const std::vector<double>& v) {
+      return Eigen::Map<const Eigen::ArrayXXd>(v.data(), static_cast<Eigen::Index>(f.x_m.size()), static_cast<Eigen::Index>(f.y_m.size()));
+    };
+    write_npy_atomically(dir / "pressure_Pa.npy", Eigen::ArrayXXd(field(f.pressure_Pa)));
+    write_npy_atomically(dir / "film_m.npy", Eigen::ArrayXXd(field(f.film_m)));
+  } else if (!args.summary_only) {
     j["fields"] = {{"x_m", "x_m.npy"},
                    {"pressure_Pa", "pressure_Pa.npy"},
                    {"film_m", "film_m.npy"},
@@ -47,7 +62,13 @@ void run_ehl(const EhlArgs& args) {
   write_file_atomically(dir / "ehl.json", j.dump(2) + "\n");
   const auto& f = solved.film;
   const std::string mu = solved.converged ? fmt(j["friction_coefficient"].get<double>(), "%.4g") : "-";
-  if (solved.mixed)
+  if (solved.point_film) {
+    const lubrication::EhlPointResult& p = *solved.point_film;
+    std::printf("point contact: central film %s m, minimum %s m, max pressure %s Pa, friction coefficient %s, %d iterations -> %s\n",
+                fmt(p.central_film_m, "%.4g").c_str(), fmt(p.minimum_film_m, "%.4g").c_str(), fmt(p.max_pressure_Pa, "%.4g").c_str(),
+                mu.c_str(), p.iterations, args.out.c_str());
+    if (!solved.converged) throw std::runtime_error("EHL solve did not converge (residual " + fmt(p.residual, "%.3g") + "): " + p.message);
+  } else if (solved.mixed)
     std::printf("line contact, mixed: film share %s of the load, film parameter %s, central film %s m, friction coefficient %s, %d film solves -> %s\n",
                 fmt(solved.mixed->film_share, "%.4g").c_str(), fmt(solved.mixed->film_parameter, "%.3g").c_str(),
                 fmt(f.central_film_m, "%.4g").c_str(), mu.c_str(), solved.mixed->film_solves, args.out.c_str());
@@ -66,9 +87,9 @@ void run_ehl(const EhlArgs& args) {
 
 void add_ehl_command(CLI::App& app) {
   auto args = std::make_shared<EhlArgs>();
-  CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line contact: film, pressure and traction (TOML config)");
+  CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line or point contact: film, pressure and traction (TOML config)");
   cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime, [solver])")->required();
-  cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy)")->capture_default_str();
+  cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy; a point contact y_m.npy too)")->capture_default_str();
   CLI::Option* plot = cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
   add_summary_only_flag(cmd, args->summary_only, "ehl.json")->excludes(plot);
   cmd->callback([args] { run_ehl(*args); });

@@ -7,6 +7,7 @@
 
 #include "apps/config.h"
 #include "lubrication/reference/ehl_film.h"
+#include "lubrication/reference/ehl_point_film.h"
 #include "lubrication/viscosity.h"
 
 namespace tribo::cli {
@@ -21,11 +22,21 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   auto c = root.table("contact");
   if (!c) root.fail("contact", "the [contact] table is required");
   const std::string geometry = c->choice("geometry", "line", {"line", "point"});
-  if (geometry == "point") c->fail("geometry", "point contacts are not solved yet (issue 36); \"line\" is");
-  run.contact.load_per_length_N_per_m = c->required_number("load_per_length_N_per_m", Range::positive);
-  run.contact.reduced_radius_m = c->required_number("reduced_radius_m", Range::positive);
-  run.contact.reduced_modulus_Pa = c->required_number("reduced_modulus_Pa", Range::positive);
-  run.contact.mean_speed_m_per_s = c->required_number("mean_speed_m_per_s", Range::positive);
+  if (geometry == "point") {
+    if (c->has("load_per_length_N_per_m")) c->fail("load_per_length_N_per_m", "a point contact takes load_N");
+    lub::EhlPointContact& p = run.point.emplace();
+    p.load_N = c->required_number("load_N", Range::positive);
+    p.reduced_radius_m = c->required_number("reduced_radius_m", Range::positive);
+    p.reduced_modulus_Pa = c->required_number("reduced_modulus_Pa", Range::positive);
+    p.mean_speed_m_per_s = c->required_number("mean_speed_m_per_s", Range::positive);
+    run.contact.mean_speed_m_per_s = p.mean_speed_m_per_s;
+  } else {
+    if (c->has("load_N")) c->fail("load_N", "a line contact takes load_per_length_N_per_m");
+    run.contact.load_per_length_N_per_m = c->required_number("load_per_length_N_per_m", Range::positive);
+    run.contact.reduced_radius_m = c->required_number("reduced_radius_m", Range::positive);
+    run.contact.reduced_modulus_Pa = c->required_number("reduced_modulus_Pa", Range::positive);
+    run.contact.mean_speed_m_per_s = c->required_number("mean_speed_m_per_s", Range::positive);
+  }
   // The sliding speed absolute, or as a share of the entrainment (a Stribeck sweep over u_m keeps it).
   if (c->has("slide_to_roll_ratio")) {
     if (c->has("sliding_speed_m_per_s")) c->fail("slide_to_roll_ratio", "give sliding_speed_m_per_s or slide_to_roll_ratio, not both");
@@ -59,6 +70,7 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
   }
   if (auto r = root.table("roughness")) {
+    if (run.point) root.fail("roughness", "the mixed regime is solved for line contacts only so far ([contact] geometry = \"line\")");
     EhlRun::Roughness rough;
     rough.summits.summit_density_per_m2 = r->required_number("summit_density_per_m2", Range::positive);
     rough.summits.summit_radius_m = r->required_number("summit_radius_m", Range::positive);
@@ -70,14 +82,26 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     run.roughness = rough;
   }
   if (auto s = root.table("solver")) {
-    run.options.nodes = static_cast<int>(s->integer("nodes", run.options.nodes, 11, 20001));
-    run.options.inlet_over_half_width = s->number("inlet_over_half_width", run.options.inlet_over_half_width);
-    run.options.outlet_over_half_width = s->number("outlet_over_half_width", run.options.outlet_over_half_width);
-    run.options.tolerance = s->number("tolerance", run.options.tolerance, Range::positive);
-    run.options.max_newton_iterations =
-        static_cast<int>(s->integer("max_newton_iterations", run.options.max_newton_iterations, 1, 100000));
-    run.options.max_continuation_steps =
-        static_cast<int>(s->integer("max_continuation_steps", run.options.max_continuation_steps, 0, 1000));
+    if (run.point) {
+      lub::EhlPointOptions& o = run.point_options;
+      o.nodes_x = static_cast<int>(s->integer("nodes_x", o.nodes_x, 11, 129));  // a dense (n_x n_y)² Jacobian: 129² is ≈ 2 GB
+      o.nodes_y = static_cast<int>(s->integer("nodes_y", o.nodes_y, 11, 129));
+      o.inlet_over_radius = s->number("inlet_over_radius", o.inlet_over_radius);
+      o.outlet_over_radius = s->number("outlet_over_radius", o.outlet_over_radius);
+      o.side_over_radius = s->number("side_over_radius", o.side_over_radius, Range::positive);
+      o.tolerance = s->number("tolerance", o.tolerance, Range::positive);
+      o.max_newton_iterations = static_cast<int>(s->integer("max_newton_iterations", o.max_newton_iterations, 1, 100000));
+      o.max_continuation_steps = static_cast<int>(s->integer("max_continuation_steps", o.max_continuation_steps, 0, 1000));
+    } else {
+      run.options.nodes = static_cast<int>(s->integer("nodes", run.options.nodes, 11, 20001));
+      run.options.inlet_over_half_width = s->number("inlet_over_half_width", run.options.inlet_over_half_width);
+      run.options.outlet_over_half_width = s->number("outlet_over_half_width", run.options.outlet_over_half_width);
+      run.options.tolerance = s->number("tolerance", run.options.tolerance, Range::positive);
+      run.options.max_newton_iterations =
+          static_cast<int>(s->integer("max_newton_iterations", run.options.max_newton_iterations, 1, 100000));
+      run.options.max_continuation_steps =
+          static_cast<int>(s->integer("max_continuation_steps", run.options.max_continuation_steps, 0, 1000));
+    }
     s->finish();
   }
   root.finish();
@@ -85,15 +109,86 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     lub::validate(run.lubricant);
     return 0;
   });
+  if (run.point) {
+    if (!(run.point_options.inlet_over_radius < -1.0)) root.fail("solver.inlet_over_radius", "must lie before the contact, below -1");
+    if (!(run.point_options.outlet_over_radius > 1.0)) root.fail("solver.outlet_over_radius", "must lie past the contact, above 1");
+    if (!(run.point_options.side_over_radius > 1.0)) root.fail("solver.side_over_radius", "must reach past the contact, above 1");
+    return run;
+  }
   if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
   if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
   return run;
 }
 
+namespace {
+
+// ehl.json's inputs beyond the contact's geometry: the sliding and the lubricant.
+nlohmann::json lubricant_inputs(const EhlRun& run) {
+  return {{"sliding_speed_m_per_s", run.sliding_speed_m_per_s},
+          {"viscosity_Pa_s", run.lubricant.viscosity_Pa_s},
+          {"pressure_viscosity_per_Pa", run.lubricant.pressure_viscosity_per_Pa},
+          {"pressure_viscosity_law", run.lubricant.law == lub::PressureViscosityLaw::barus ? "barus" : "roelands"},
+          {"compressible", run.lubricant.compressible},
+          {"eyring_stress_Pa", std::isinf(run.eyring_stress_Pa) ? nlohmann::json("newtonian") : nlohmann::json(run.eyring_stress_Pa)},
+          {"thermal_conductivity_W_per_m_K", run.heating.thermal_conductivity_W_per_m_K},
+          {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K}};
+}
+
+// The point contact's solve and summary (geometry = "point").
+void solve_point(const EhlRun& run, EhlSolve& out) {
+  nlohmann::json& j = out.summary;
+  const lub::EhlPointContact& c = *run.point;
+  const lub::EhlPointResult& f = out.point_film.emplace(lub::solve_ehl_point(c, run.lubricant, run.point_options));
+  out.converged = f.converged;
+  if (out.converged)
+    out.point_traction = lub::ehl_point_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating);
+  j["regime"] = "full film (smooth surfaces)";
+  j["geometry"] = "point";
+  j["converged"] = out.converged;
+  j["iterations"] = f.iterations;
+  j["continuation_steps"] = f.continuation_steps;
+  j["residual"] = f.residual;
+  j["message"] = f.message;
+  j["central_film_m"] = f.central_film_m;
+  j["minimum_film_m"] = f.minimum_film_m;
+  j["max_pressure_Pa"] = f.max_pressure_Pa;
+  j["hertz_radius_m"] = f.hertz_radius_m;
+  j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
+  j["load_balance_error"] = f.load_balance_error;
+  if (out.converged) {
+    j["friction_coefficient"] = out.point_traction.friction_coefficient;
+    j["traction_N"] = out.point_traction.force_N;
+    j["max_shear_stress_Pa"] = out.point_traction.max_shear_stress_Pa;
+    j["max_film_temperature_rise_K"] = out.point_traction.max_film_temperature_rise_K;
+  } else {
+    for (const char* key : {"friction_coefficient", "traction_N", "max_shear_stress_Pa", "max_film_temperature_rise_K"}) j[key] = nullptr;
+  }
+  const auto g = lub::reference::point_contact_groups(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s,
+                                                      run.lubricant.viscosity_Pa_s, run.lubricant.pressure_viscosity_per_Pa);
+  j["dimensionless"] = {{"W", g.load}, {"U", g.speed}, {"G", g.material}};
+  // Hamrock & Dowson's fits at the same groups, for comparison (lubrication/reference/ehl_point_film.h).
+  j["fits"] = {{"hamrock_dowson_central_film_m", lub::reference::hamrock_dowson_central_film(g) * c.reduced_radius_m},
+               {"hamrock_dowson_minimum_film_m", lub::reference::hamrock_dowson_minimum_film(g) * c.reduced_radius_m}};
+  j["inputs"] = {{"load_N", c.load_N},
+                 {"reduced_radius_m", c.reduced_radius_m},
+                 {"reduced_modulus_Pa", c.reduced_modulus_Pa},
+                 {"mean_speed_m_per_s", c.mean_speed_m_per_s},
+                 {"nodes_x", run.point_options.nodes_x},
+                 {"nodes_y", run.point_options.nodes_y}};
+  j["inputs"].update(lubricant_inputs(run));
+}
+
+}  // namespace
+
 EhlSolve solve_ehl_run(const EhlRun& run) {
   EhlSolve out;
   const auto start = std::chrono::steady_clock::now();
   nlohmann::json& j = out.summary;
+  if (run.point) {
+    solve_point(run, out);
+    j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+  }
   if (run.roughness) {
     lub::MixedLineContact mc;
     mc.film = run.contact;
@@ -166,15 +261,8 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                  {"reduced_radius_m", c.reduced_radius_m},
                  {"reduced_modulus_Pa", c.reduced_modulus_Pa},
                  {"mean_speed_m_per_s", c.mean_speed_m_per_s},
-                 {"sliding_speed_m_per_s", run.sliding_speed_m_per_s},
-                 {"viscosity_Pa_s", run.lubricant.viscosity_Pa_s},
-                 {"pressure_viscosity_per_Pa", run.lubricant.pressure_viscosity_per_Pa},
-                 {"pressure_viscosity_law", run.lubricant.law == lub::PressureViscosityLaw::barus ? "barus" : "roelands"},
-                 {"compressible", run.lubricant.compressible},
-                 {"eyring_stress_Pa", std::isinf(run.eyring_stress_Pa) ? nlohmann::json("newtonian") : nlohmann::json(run.eyring_stress_Pa)},
-                 {"thermal_conductivity_W_per_m_K", run.heating.thermal_conductivity_W_per_m_K},
-                 {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K},
                  {"nodes", run.options.nodes}};
+  j["inputs"].update(lubricant_inputs(run));
   if (run.roughness) {
     const auto& r = *run.roughness;
     j["inputs"]["roughness"] = {{"summit_density_per_m2", r.summits.summit_density_per_m2},

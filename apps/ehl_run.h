@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "lubrication/ehl_line.h"
+#include "lubrication/ehl_point.h"
 #include "lubrication/ehl_traction.h"
 #include "lubrication/mixed_line.h"
 #include "lubrication/piezoviscous.h"
@@ -18,7 +19,10 @@ namespace tribo::cli {
 
 // Everything a `tribo ehl` run needs, read and validated before any file is written.
 struct EhlRun {
-  lubrication::EhlLineContact contact;
+  lubrication::EhlLineContact contact;   // geometry = "line"
+  // geometry = "point": a ball on a flat (ehl_point.h); `contact` then unused.
+  std::optional<lubrication::EhlPointContact> point;
+  lubrication::EhlPointOptions point_options;
   double sliding_speed_m_per_s = 0.0;  // u1 − u2 (the traction's; the film depends on u_m only)
   lubrication::PiezoviscousLubricant lubricant;
   double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film
@@ -34,8 +38,8 @@ struct EhlRun {
   std::optional<Roughness> roughness;
 };
 
-// Reads and checks `path`: [contact] (geometry = "line", load, radius, modulus, entrainment, and the
-// sliding speed or the slide-to-roll ratio), [lubricant] (η0, α, law, compressible,
+// Reads and checks `path`: [contact] (geometry = "line" with load_per_length_N_per_m, or "point"
+// with load_N; radius, modulus, entrainment, and the sliding speed or the slide-to-roll ratio), [lubricant] (η0, α, law, compressible,
 // eyring_stress_Pa, the film's heating), optionally [roughness] (summit density, radius, standard
 // deviation and mean height, boundary friction coefficient) and [solver] (docs/lubrication.md).
 // Bad input is an InputError naming file, key and reason.
@@ -45,6 +49,8 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path);
 struct EhlSolve {
   lubrication::EhlLineResult film;    // with roughness: the film's share of the load
   lubrication::EhlTraction traction;  // the film's traction
+  std::optional<lubrication::EhlPointResult> point_film;  // geometry = "point" (film, traction above unused)
+  lubrication::EhlPointTraction point_traction;
   std::optional<lubrication::MixedLineResult> mixed;  // with roughness
   bool converged = false;
   nlohmann::json summary;  // ehl.json without "provenance" and "fields"

@@ -502,31 +502,48 @@ def plot_sweep(d):
 
 
 def plot_ehl(d):
-    """Pressure (GPa) and film (um) along the contact, x over the Hertz half-width, with the dry Hertz
-    pressure and the published central-film fits for comparison."""
+    """Pressure (GPa) and film (um) along the contact, x over the Hertz half-width (a point contact:
+    its radius, along the centre line y = 0, beside a map of the film), with the dry Hertz pressure
+    and the published central-film fits for comparison."""
     import numpy as np
 
     with open(os.path.join(d, "ehl.json")) as f:
         s = json.load(f)
-    b, p_h = s["hertz_half_width_m"], s["hertz_pressure_Pa"]
+    point = s.get("geometry") == "point"
+    b, p_h = (s["hertz_radius_m"] if point else s["hertz_half_width_m"]), s["hertz_pressure_Pa"]
     x = np.load(os.path.join(d, "x_m.npy")) / b
     p = np.load(os.path.join(d, "pressure_Pa.npy"))
     h = np.load(os.path.join(d, "film_m.npy"))
-    fig, ax = plt.subplots(figsize=(7, 4.2))
+    if point:
+        y = np.load(os.path.join(d, "y_m.npy")) / b
+        centre = int(np.argmin(np.abs(y)))
+        fig, (ax, ax_map) = plt.subplots(1, 2, figsize=(12, 4.2), gridspec_kw={"width_ratios": [1.4, 1]})
+        # levels up to 3 h_c, so the horseshoe of the constriction shows (the rim's film is far thicker)
+        im = ax_map.contourf(x, y, (h * 1e6).T, levels=np.linspace(0, 3 * s["central_film_m"] * 1e6, 25), cmap="viridis", extend="max")
+        ax_map.contour(x, y, p.T, levels=[1e-3 * p_h], colors="white", linewidths=0.8)
+        fig.colorbar(im, ax=ax_map, label="film (um)")
+        ax_map.set_aspect("equal")
+        ax_map.set_xlabel("x / a (rolling direction)")
+        ax_map.set_ylabel("y / a")
+        ax_map.set_title("film; white: the pressurised zone's edge", fontsize=9)
+        p, h = p[:, centre], h[:, centre]
+    else:
+        fig, ax = plt.subplots(figsize=(7, 4.2))
     ax.plot(x, p / 1e9, color="tab:red", label="pressure")
     inside = np.abs(x) <= 1
     ax.plot(x[inside], p_h * np.sqrt(1 - x[inside] ** 2) / 1e9, "--", color="tab:red", lw=0.8, label="dry Hertz")
-    ax.set_xlabel("x / b (Hertz half-width %.3g um)" % (b * 1e6))
+    ax.set_xlabel(("x / a (Hertz radius %.3g um), y = 0" if point else "x / b (Hertz half-width %.3g um)") % (b * 1e6))
     ax.set_ylabel("pressure (GPa)", color="tab:red")
     film = ax.twinx()
     film.plot(x, h * 1e6, color="tab:blue", label="film")
-    for key, style in (("pan_hamrock_central_film_m", ":"), ("dowson_toyoda_central_film_m", "-.")):
+    fits = (("hamrock_dowson_central_film_m", ":"),) if point else (("pan_hamrock_central_film_m", ":"), ("dowson_toyoda_central_film_m", "-."))
+    for key, style in fits:
         film.axhline(s["fits"][key] * 1e6, color="tab:blue", ls=style, lw=0.8, label=key.replace("_central_film_m", " h_c"))
     film.set_ylabel("film (um)", color="tab:blue")
     film.set_ylim(0, 4 * s["central_film_m"] * 1e6)
     mu = s.get("friction_coefficient")
-    ax.set_title("EHL line contact: h_c %.3g um, h_min %.3g um, p_max %.3g GPa%s" % (
-        s["central_film_m"] * 1e6, s["minimum_film_m"] * 1e6, s["max_pressure_Pa"] / 1e9,
+    ax.set_title("EHL %s contact: h_c %.3g um, h_min %.3g um, p_max %.3g GPa%s" % (
+        "point" if point else "line", s["central_film_m"] * 1e6, s["minimum_film_m"] * 1e6, s["max_pressure_Pa"] / 1e9,
         "" if mu is None else ", mu %.3g" % mu), fontsize=9)
     lines = ax.get_legend_handles_labels()[0] + film.get_legend_handles_labels()[0]
     ax.legend(lines, [ln.get_label() for ln in lines], fontsize=8, loc="upper left")

@@ -42,10 +42,39 @@ if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo ehl: ehl.json or the profiles are not as documented: ${why}")
 endif()
 
-# No Eyring stress: the lubricant's τ0 has no default; point contacts are refused until solved.
+# No Eyring stress: the lubricant's τ0 has no default; a point contact takes load_N, not a load per length.
 expect_refused(no_tau "${contact}[lubricant]\nviscosity_Pa_s = 0.04\n" "lubricant.eyring_stress_Pa")
 string(REPLACE "geometry = \"line\"" "geometry = \"point\"" point "${contact}")
-expect_refused(point "${point}[lubricant]\neyring_stress_Pa = 5e6\n" "contact.geometry")
+expect_refused(point "${point}[lubricant]\neyring_stress_Pa = 5e6\n" "contact.load_per_length_N_per_m")
+
+# A ball on a disc (geometry = "point"): ehl.json with the films, the Hertz circle, Hamrock and
+# Dowson's fits and the traction; the fields as (nx, ny) arrays whose integral is the load.
+set(ball "[contact]\ngeometry = \"point\"\nload_N = 20\nreduced_radius_m = 9.525e-3\nreduced_modulus_Pa = 2.308e11\nmean_speed_m_per_s = 0.5\nslide_to_roll_ratio = 0.05\n[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n")
+file(WRITE ${WORK}/ball.toml "${ball}[solver]\nnodes_x = 31\nnodes_y = 25\n")
+execute_process(COMMAND ${TRIBO} ehl ${WORK}/ball.toml --out ${WORK}/out_ball RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, point contact, failed (${status}): ${out} ${err}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "
+import json, math, sys
+import numpy as np
+d = sys.argv[1]
+s = json.load(open(d + '/ehl.json'))
+assert s['geometry'] == 'point' and s['converged'], s['message']
+a = (3 * 20 * 9.525e-3 / (2 * 2.308e11)) ** (1 / 3)  # dry Hertz circle, (3 W R / (2 E'))^(1/3)
+assert abs(s['hertz_radius_m'] / a - 1) < 1e-12 and abs(s['hertz_pressure_Pa'] / (3 * 20 / (2 * math.pi * a * a)) - 1) < 1e-12, s
+assert 0 < s['minimum_film_m'] < s['central_film_m'] < 1e-6 and s['fits']['hamrock_dowson_central_film_m'] > 0, s
+assert 0 < s['friction_coefficient'] < 0.2 and abs(s['traction_N'] / 20 - s['friction_coefficient']) < 1e-12, s
+x, y, p, h = (np.load(d + '/' + s['fields'][k]) for k in ('x_m', 'y_m', 'pressure_Pa', 'film_m'))
+assert x.shape == (31,) and y.shape == (25,) and p.shape == h.shape == (31, 25), (x.shape, y.shape, p.shape)
+load = p.sum() * (x[1] - x[0]) * (y[1] - y[0])
+assert abs(load / 20 - 1) < 1e-9, load  # the load balance, from the written field
+" ${WORK}/out_ball RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, point contact: ehl.json or the fields are not as documented: ${why}")
+endif()
+expect_refused(ball_rough "${ball}[roughness]\nsummit_density_per_m2 = 4e10\n" "roughness")
+expect_refused(ball_nodes "${ball}[solver]\nnodes = 41\n" "solver.nodes")
 
 # With [roughness]: the mixed regime by load sharing. ehl.json splits the load between film and
 # summits and its friction coefficient is the boundary friction on the summits' share plus the
