@@ -1,6 +1,7 @@
 // libFuzzer harness for the `tribo ehl` config loader (apps/ehl_run.h): the input is the TOML text,
 // parsed in memory. Bad input must end as InputError or std::invalid_argument (exit status 2); a
-// config that loads must hold a contact and options the solver accepts; anything else is a finding.
+// config that loads must hold a contact (line or point) and options the solver accepts; anything
+// else is a finding.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,12 +17,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const toml::table doc = tribo::cli::parse_toml_text(std::string_view(reinterpret_cast<const char*>(data), size), path);
     const tribo::cli::EhlRun run = tribo::cli::load_ehl_run(doc, path);
-    const auto& c = run.contact;
-    for (double v : {c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s})
-      TRIBO_FUZZ_CHECK(std::isfinite(v) && v > 0.0);
+    if (run.point) {  // a ball on a disc
+      const auto& p = *run.point;
+      for (double v : {p.load_N, p.reduced_radius_m, p.reduced_modulus_Pa, p.mean_speed_m_per_s}) TRIBO_FUZZ_CHECK(std::isfinite(v) && v > 0.0);
+      const auto& o = run.point_options;
+      TRIBO_FUZZ_CHECK(o.nodes_x >= 11 && o.nodes_y >= 11 && o.nodes_x <= 129 && o.nodes_y <= 129);
+      TRIBO_FUZZ_CHECK(o.inlet_over_radius < -1.0 && o.outlet_over_radius > 1.0 && o.side_over_radius > 1.0);
+      TRIBO_FUZZ_CHECK(!run.roughness);
+    } else {
+      const auto& c = run.contact;
+      for (double v : {c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s})
+        TRIBO_FUZZ_CHECK(std::isfinite(v) && v > 0.0);
+      TRIBO_FUZZ_CHECK(run.options.nodes >= 11 && run.options.inlet_over_half_width < -1.0 && run.options.outlet_over_half_width > 1.0);
+    }
     TRIBO_FUZZ_CHECK(std::isfinite(run.sliding_speed_m_per_s));
     TRIBO_FUZZ_CHECK(run.eyring_stress_Pa > 0.0);
-    TRIBO_FUZZ_CHECK(run.options.nodes >= 11 && run.options.inlet_over_half_width < -1.0 && run.options.outlet_over_half_width > 1.0);
     TRIBO_FUZZ_CHECK(run.heating.thermal_conductivity_W_per_m_K >= 0.0 && run.heating.temperature_viscosity_per_K >= 0.0);
   } catch (const tribo::cli::InputError& e) {
     TRIBO_FUZZ_CHECK(std::string_view(e.what()).find(path) != std::string_view::npos);  // names the config
