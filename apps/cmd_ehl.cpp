@@ -62,7 +62,13 @@ void run_ehl(const EhlArgs& args) {
   write_file_atomically(dir / "ehl.json", j.dump(2) + "\n");
   const auto& f = solved.film;
   const std::string mu = solved.converged ? fmt(j["friction_coefficient"].get<double>(), "%.4g") : "-";
-  if (solved.point_film) {
+  if (solved.mixed_point) {
+    const lubrication::MixedPointResult& m = *solved.mixed_point;
+    std::printf("point contact, mixed: film share %s of the load, film parameter %s, central film %s m, friction coefficient %s, %d film solves -> %s\n",
+                fmt(m.film_share, "%.4g").c_str(), fmt(m.film_parameter, "%.3g").c_str(), fmt(m.central_film_m, "%.4g").c_str(), mu.c_str(),
+                m.film_solves, args.out.c_str());
+    if (!solved.converged) throw std::runtime_error("mixed-lubrication solve did not converge: " + m.message);
+  } else if (solved.point_film) {
     const lubrication::EhlPointResult& p = *solved.point_film;
     std::printf("point contact: central film %s m, minimum %s m, max pressure %s Pa, friction coefficient %s, %d iterations -> %s\n",
                 fmt(p.central_film_m, "%.4g").c_str(), fmt(p.minimum_film_m, "%.4g").c_str(), fmt(p.max_pressure_Pa, "%.4g").c_str(),

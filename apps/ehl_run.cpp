@@ -70,12 +70,11 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
   }
   if (auto r = root.table("roughness")) {
-    if (run.point) root.fail("roughness", "the mixed regime is solved for line contacts only so far ([contact] geometry = \"line\")");
     EhlRun::Roughness rough;
     rough.summits.summit_density_per_m2 = r->required_number("summit_density_per_m2", Range::positive);
     rough.summits.summit_radius_m = r->required_number("summit_radius_m", Range::positive);
     rough.summits.summit_std_m = r->required_number("summit_std_m", Range::positive);
-    rough.summits.e_star_Pa = 0.5 * run.contact.reduced_modulus_Pa;
+    rough.summits.e_star_Pa = 0.5 * (run.point ? run.point->reduced_modulus_Pa : run.contact.reduced_modulus_Pa);
     rough.summit_height_m = r->required_number("summit_height_m", Range::non_negative);
     rough.boundary_friction_coefficient = r->required_number("boundary_friction_coefficient", Range::non_negative);
     r->finish();
@@ -134,21 +133,78 @@ nlohmann::json lubricant_inputs(const EhlRun& run) {
           {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K}};
 }
 
+nlohmann::json roughness_inputs(const EhlRun::Roughness& r) {
+  return {{"summit_density_per_m2", r.summits.summit_density_per_m2},
+          {"summit_radius_m", r.summits.summit_radius_m},
+          {"summit_std_m", r.summits.summit_std_m},
+          {"summit_height_m", r.summit_height_m},
+          {"boundary_friction_coefficient", r.boundary_friction_coefficient}};
+}
+
+// The mixed contact of [roughness] around `film` (MixedLineContact or MixedPointContact).
+template <class Mixed, class Film>
+Mixed mixed_contact(const EhlRun& run, const Film& film) {
+  Mixed mc;
+  mc.film = film;
+  mc.asperities = run.roughness->summits;
+  mc.summit_height_m = run.roughness->summit_height_m;
+  mc.boundary_friction_coefficient = run.roughness->boundary_friction_coefficient;
+  mc.sliding_speed_m_per_s = run.sliding_speed_m_per_s;
+  mc.eyring_stress_Pa = run.eyring_stress_Pa;
+  mc.heating = run.heating;
+  return mc;
+}
+
+// ehl.json's "mixed" block; loads and forces per unit length for a line ("per_length_N_per_m",
+// "N_per_m"), in N for a point ("N", "N").
+struct MixedNumbers {
+  double film_load, asperity_load, boundary_friction, film_friction;
+};
+template <class Result>
+nlohmann::json mixed_json(const Result& m, const MixedNumbers& n, const std::string& load_unit, const std::string& force_unit) {
+  return {{"converged", m.converged},
+          {"film_solves", m.film_solves},
+          {"load_balance_residual", m.residual},
+          {"message", m.message},
+          {"film_share", m.film_share},
+          {"film_load_" + load_unit, n.film_load},
+          {"asperity_load_" + load_unit, n.asperity_load},
+          {"separation_m", m.separation_m},
+          {"film_parameter", m.film_parameter},
+          {"asperity_area_fraction", m.asperity_area_fraction},
+          {"boundary_friction_" + force_unit, n.boundary_friction},
+          {"film_friction_" + force_unit, n.film_friction}};
+}
+
 // The point contact's solve and summary (geometry = "point").
 void solve_point(const EhlRun& run, EhlSolve& out) {
   nlohmann::json& j = out.summary;
   const lub::EhlPointContact& c = *run.point;
-  const lub::EhlPointResult& f = out.point_film.emplace(lub::solve_ehl_point(c, run.lubricant, run.point_options));
-  out.converged = f.converged;
-  if (out.converged)
-    out.point_traction = lub::ehl_point_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating);
-  j["regime"] = "full film (smooth surfaces)";
+  if (run.roughness) {
+    const auto mc = mixed_contact<lub::MixedPointContact>(run, c);
+    lub::MixedPointOptions mo;
+    mo.film = run.point_options;
+    const lub::MixedPointResult& m = out.mixed_point.emplace(lub::solve_mixed_point(mc, run.lubricant, mo));
+    out.point_film = m.film;
+    out.point_traction = m.traction;
+    out.converged = m.converged;
+    j["regime"] = "mixed (load sharing, lubrication/mixed_point.h): the film fields are the film's share of the load";
+    j["mixed"] = mixed_json(m, {m.film_load_N, m.asperity_load_N, m.boundary_friction_N, m.film_friction_N}, "N", "N");
+  } else {
+    out.point_film = lub::solve_ehl_point(c, run.lubricant, run.point_options);
+    out.converged = out.point_film->converged;
+    if (out.converged)
+      out.point_traction =
+          lub::ehl_point_traction(*out.point_film, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating);
+    j["regime"] = "full film (smooth surfaces)";
+  }
+  const lub::EhlPointResult& f = *out.point_film;
   j["geometry"] = "point";
   j["converged"] = out.converged;
   j["iterations"] = f.iterations;
   j["continuation_steps"] = f.continuation_steps;
   j["residual"] = f.residual;
-  j["message"] = f.message;
+  j["message"] = out.mixed_point ? out.mixed_point->message : f.message;
   j["central_film_m"] = f.central_film_m;
   j["minimum_film_m"] = f.minimum_film_m;
   j["max_pressure_Pa"] = f.max_pressure_Pa;
@@ -156,7 +212,8 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
   j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
   j["load_balance_error"] = f.load_balance_error;
   if (out.converged) {
-    j["friction_coefficient"] = out.point_traction.friction_coefficient;
+    // With roughness, the whole contact's: boundary friction on the summits' share plus the film's traction.
+    j["friction_coefficient"] = out.mixed_point ? out.mixed_point->friction_coefficient : out.point_traction.friction_coefficient;
     j["traction_N"] = out.point_traction.force_N;
     j["max_shear_stress_Pa"] = out.point_traction.max_shear_stress_Pa;
     j["max_film_temperature_rise_K"] = out.point_traction.max_film_temperature_rise_K;
@@ -176,6 +233,7 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
                  {"nodes_x", run.point_options.nodes_x},
                  {"nodes_y", run.point_options.nodes_y}};
   j["inputs"].update(lubricant_inputs(run));
+  if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
 }
 
 }  // namespace
@@ -190,14 +248,7 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
     return out;
   }
   if (run.roughness) {
-    lub::MixedLineContact mc;
-    mc.film = run.contact;
-    mc.asperities = run.roughness->summits;
-    mc.summit_height_m = run.roughness->summit_height_m;
-    mc.boundary_friction_coefficient = run.roughness->boundary_friction_coefficient;
-    mc.sliding_speed_m_per_s = run.sliding_speed_m_per_s;
-    mc.eyring_stress_Pa = run.eyring_stress_Pa;
-    mc.heating = run.heating;
+    const auto mc = mixed_contact<lub::MixedLineContact>(run, run.contact);
     lub::MixedLineOptions mo;
     mo.film = run.options;
     const lub::MixedLineResult& m = out.mixed.emplace(lub::solve_mixed_line(mc, run.lubricant, mo));
@@ -205,18 +256,9 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
     out.traction = m.traction;
     out.converged = m.converged;
     j["regime"] = "mixed (load sharing, lubrication/mixed_line.h): the film fields are the film's share of the load";
-    j["mixed"] = {{"converged", m.converged},
-                  {"film_solves", m.film_solves},
-                  {"load_balance_residual", m.residual},
-                  {"message", m.message},
-                  {"film_share", m.film_share},
-                  {"film_load_per_length_N_per_m", m.film_load_per_length_N_per_m},
-                  {"asperity_load_per_length_N_per_m", m.asperity_load_per_length_N_per_m},
-                  {"separation_m", m.separation_m},
-                  {"film_parameter", m.film_parameter},
-                  {"asperity_area_fraction", m.asperity_area_fraction},
-                  {"boundary_friction_N_per_m", m.boundary_friction_N_per_m},
-                  {"film_friction_N_per_m", m.film_friction_N_per_m}};
+    j["mixed"] = mixed_json(m, {m.film_load_per_length_N_per_m, m.asperity_load_per_length_N_per_m, m.boundary_friction_N_per_m,
+                                m.film_friction_N_per_m},
+                            "per_length_N_per_m", "N_per_m");
   } else {
     out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
     out.converged = out.film.converged;
@@ -263,14 +305,7 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                  {"mean_speed_m_per_s", c.mean_speed_m_per_s},
                  {"nodes", run.options.nodes}};
   j["inputs"].update(lubricant_inputs(run));
-  if (run.roughness) {
-    const auto& r = *run.roughness;
-    j["inputs"]["roughness"] = {{"summit_density_per_m2", r.summits.summit_density_per_m2},
-                                {"summit_radius_m", r.summits.summit_radius_m},
-                                {"summit_std_m", r.summits.summit_std_m},
-                                {"summit_height_m", r.summit_height_m},
-                                {"boundary_friction_coefficient", r.boundary_friction_coefficient}};
-  }
+  if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
   j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

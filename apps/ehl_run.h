@@ -13,6 +13,7 @@
 #include "lubrication/ehl_point.h"
 #include "lubrication/ehl_traction.h"
 #include "lubrication/mixed_line.h"
+#include "lubrication/mixed_point.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::cli {
@@ -28,7 +29,7 @@ struct EhlRun {
   double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film
   lubrication::FilmHeating heating;    // off unless [lubricant] thermal_conductivity_W_per_m_K is given
   lubrication::EhlLineOptions options;
-  // With [roughness]: the rough contact's mixed regime by load sharing (mixed_line.h) — the summits,
+  // With [roughness]: the rough contact's mixed regime by load sharing (mixed_line.h, mixed_point.h) — the summits,
   // their offset y_s and the boundary friction; the film and traction are then the film's share.
   struct Roughness {
     contact::GreenwoodWilliamson summits;  // e_star_Pa = E'/2
@@ -50,7 +51,8 @@ struct EhlSolve {
   lubrication::EhlLineResult film;    // with roughness: the film's share of the load
   lubrication::EhlTraction traction;  // the film's traction
   std::optional<lubrication::EhlPointResult> point_film;  // geometry = "point" (film, traction above unused)
-  lubrication::EhlPointTraction point_traction;
+  lubrication::EhlPointTraction point_traction;           // with roughness: the film's share's
+  std::optional<lubrication::MixedPointResult> mixed_point;  // geometry = "point" with roughness
   std::optional<lubrication::MixedLineResult> mixed;  // with roughness
   bool converged = false;
   nlohmann::json summary;  // ehl.json without "provenance" and "fields"

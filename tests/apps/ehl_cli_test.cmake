@@ -73,7 +73,27 @@ assert abs(load / 20 - 1) < 1e-9, load  # the load balance, from the written fie
 if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo ehl, point contact: ehl.json or the fields are not as documented: ${why}")
 endif()
-expect_refused(ball_rough "${ball}[roughness]\nsummit_density_per_m2 = 4e10\n" "roughness")
+# The rough ball: the mixed regime over the Hertz circle (lubrication/mixed_point.h), its load split
+# and friction as the line's.
+file(WRITE ${WORK}/ball_rough.toml "${ball}[roughness]\nsummit_density_per_m2 = 4e10\nsummit_radius_m = 1e-5\nsummit_std_m = 1e-7\nsummit_height_m = 1e-7\nboundary_friction_coefficient = 0.1\n[solver]\nnodes_x = 31\nnodes_y = 25\n")
+execute_process(COMMAND ${TRIBO} ehl ${WORK}/ball_rough.toml --out ${WORK}/out_ball_rough --summary-only RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, rough ball, failed (${status}): ${out} ${err}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+m = s['mixed']
+assert s['geometry'] == 'point' and s['converged'] and m['load_balance_residual'] <= 1e-6, m['message']
+assert 0.0 < m['film_share'] <= 1.0, m['film_share']
+assert abs(m['film_load_N'] + m['asperity_load_N'] - 20) <= 1e-6 * 20, m
+mu = (m['boundary_friction_N'] + m['film_friction_N']) / 20
+assert abs(s['friction_coefficient'] - mu) <= 1e-12, (s['friction_coefficient'], mu)
+assert s['inputs']['roughness']['summit_std_m'] == 1e-7, s['inputs']
+" ${WORK}/out_ball_rough RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, rough ball: ehl.json is not as documented: ${why}")
+endif()
 expect_refused(ball_nodes "${ball}[solver]\nnodes = 41\n" "solver.nodes")
 
 # With [roughness]: the mixed regime by load sharing. ehl.json splits the load between film and

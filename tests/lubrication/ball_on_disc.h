@@ -4,6 +4,7 @@
 #pragma once
 
 #include "lubrication/ehl_point.h"
+#include "lubrication/mixed_point.h"
 
 namespace tribo::lubrication::ball_on_disc {
 
@@ -23,6 +24,27 @@ inline EhlPointOptions grid(int nodes) {
   EhlPointOptions o;
   o.nodes_x = o.nodes_y = nodes;
   return o;
+}
+
+// The mixed solves of the tests: each film on 25² nodes.
+inline MixedPointOptions coarse_mixed() {
+  MixedPointOptions o;
+  o.film = grid(25);
+  return o;
+}
+
+// The same ball rough (as the rollers of steel_roller_pair.h): summits 4e10 per m² of radius 10 µm,
+// σ_s = 0.1 µm, their mean plane 0.1 µm above the surface's, boundary friction 0.1; 10 N, 5 %
+// slide-to-roll, Eyring τ0 = 5 MPa.
+inline MixedPointContact rough_ball(double speed_m_per_s) {
+  MixedPointContact c;
+  c.film = contact(10.0, speed_m_per_s);
+  c.asperities = {4e10, 1e-5, 1e-7, 0.5 * kModulus_Pa};
+  c.summit_height_m = 1e-7;
+  c.boundary_friction_coefficient = 0.1;
+  c.sliding_speed_m_per_s = 0.05 * speed_m_per_s;
+  c.eyring_stress_Pa = 5e6;
+  return c;
 }
 
 }  // namespace tribo::lubrication::ball_on_disc

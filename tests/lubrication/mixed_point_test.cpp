@@ -1,0 +1,50 @@
+// Mixed lubrication of a rough ball on a disc by load sharing (lubrication/mixed_point.h): the
+// smooth limit (the EHL film alone) and bad input. The boundary limit and the load balance take
+// tens of film solves each: mixed_point_slow_test.cpp. Coarse film grids (25²).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "lubrication/mixed_point.h"
+#include "tests/lubrication/ball_on_disc.h"
+
+namespace tribo::lubrication {
+namespace {
+
+using namespace ball_on_disc;
+
+// Summits far below the film (σ_s = 1 nm against h_c ≈ 0.13 µm) carry nothing: the film takes the
+// whole load, and the point is the smooth EHL contact's, film and traction alike (one film solve).
+TEST(MixedPoint, SmoothSurfacesLeaveTheWholeLoadToTheFilm) {
+  MixedPointContact c = rough_ball(0.5);
+  c.asperities.summit_std_m = 1e-9;
+  c.summit_height_m = 0.0;
+  const MixedPointResult r = solve_mixed_point(c, oil(), coarse_mixed());
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_EQ(r.film_share, 1.0);
+  EXPECT_EQ(r.film_solves, 1);
+  EXPECT_EQ(r.asperity_load_N, 0.0);
+  const EhlPointResult smooth = solve_ehl_point(c.film, oil(), coarse_mixed().film);
+  const EhlPointTraction t = ehl_point_traction(smooth, oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa, c.film.load_N);
+  EXPECT_DOUBLE_EQ(r.central_film_m, smooth.central_film_m);
+  EXPECT_NEAR(r.friction_coefficient, t.friction_coefficient, 1e-12 * t.friction_coefficient);
+}
+
+TEST(MixedPoint, BadInputIsRejected) {
+  MixedPointContact c = rough_ball(1.0);
+  c.asperities.e_star_Pa *= 1.1;  // not the bodies' E'/2
+  EXPECT_THROW(solve_mixed_point(c, oil(), coarse_mixed()), std::invalid_argument);
+  c = rough_ball(1.0);
+  c.summit_height_m = -1e-8;
+  EXPECT_THROW(solve_mixed_point(c, oil(), coarse_mixed()), std::invalid_argument);
+  c = rough_ball(1.0);
+  c.film.load_N = 0.0;
+  EXPECT_THROW(solve_mixed_point(c, oil(), coarse_mixed()), std::invalid_argument);
+  MixedPointOptions o = coarse_mixed();
+  o.max_film_solves = 1;
+  EXPECT_THROW(solve_mixed_point(rough_ball(1.0), oil(), o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tribo::lubrication
