@@ -14,7 +14,6 @@ namespace tribo::lubrication {
 namespace {
 
 using numerics::shortest;
-constexpr double kPi = std::numbers::pi;
 
 // ∫∫ dS dT / √(S² + T²) over [0, s] × [0, t] and its signed extension: F(s, t) = s asinh(t/|s|) +
 // t asinh(s/|t|) (each term 0 where its factor is), so ∂²F/∂s∂t = 1/r.
@@ -42,7 +41,7 @@ class PointProblem {
     for (int di = 0; di < nx_; ++di)
       for (int dj = 0; dj < ny_; ++dj) {
         const double s = di * dx_, t = dj * dy_;
-        offset(di, dj) = 2.0 / (kPi * kPi) *
+        offset(di, dj) = 2.0 / (std::numbers::pi * std::numbers::pi) *
                          (inverse_distance_antiderivative(s + hx, t + hy) - inverse_distance_antiderivative(s + hx, t - hy) -
                           inverse_distance_antiderivative(s - hx, t + hy) + inverse_distance_antiderivative(s - hx, t - hy));
       }
@@ -192,7 +191,7 @@ class PointProblem {
     double sum = 0.0;
     for (int j = 1; j <= ny_ - 2; ++j)
       for (int i = 1; i <= nx_ - 2; ++i) sum += s.p(node(i, j));
-    f(np) = cell * sum - 2.0 * kPi / 3.0;
+    f(np) = cell * sum - 2.0 * std::numbers::pi / 3.0;
     if (jacobian) jacobian->row(np).head(np).setConstant(cell);
     return f;
   }
@@ -272,7 +271,7 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   result.max_pressure_Pa = p.maxCoeff() * ph;
   result.hertz_radius_m = a;
   result.hertz_pressure_Pa = ph;
-  result.load_balance_error = (problem.dx() * problem.dy() * p.sum() - 2.0 * kPi / 3.0) / (2.0 * kPi / 3.0);
+  result.load_balance_error = (problem.dx() * problem.dy() * p.sum() - 2.0 * std::numbers::pi / 3.0) / (2.0 * std::numbers::pi / 3.0);
   result.converged = solved.newton.converged;
   result.iterations = solved.iterations;
   result.continuation_steps = solved.continuation_steps;

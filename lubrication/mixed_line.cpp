@@ -15,7 +15,7 @@ namespace {
 
 // The film solved at share s = e^{ln_share}, the summits at its separation, and the load balance
 // g(s)/w they leave.
-struct Trial {
+struct LineTrial {
   double ln_share = 0.0, balance = 0.0, asperity_load_N_per_m = 0.0;
   EhlLineResult film;
   contact::GwState summits;
@@ -38,7 +38,7 @@ MixedLineResult solve_mixed_line(const MixedLineContact& c, const PiezoviscousLu
     EhlLineContact scaled = f;
     scaled.load_per_length_N_per_m = s * w;
     scaled.reduced_modulus_Pa = s * f.reduced_modulus_Pa;
-    Trial t{ln_share, 0.0, 0.0, solve_ehl_line(scaled, lubricant, o.film), {}};
+    LineTrial t{ln_share, 0.0, 0.0, solve_ehl_line(scaled, lubricant, o.film), {}};
     if (t.film.converged) {
       t.summits = contact::gw_at_separation(c.asperities, t.film.central_film_m - c.summit_height_m);
       t.asperity_load_N_per_m = 2.0 * half_width_m * t.summits.pressure_Pa;
@@ -46,10 +46,10 @@ MixedLineResult solve_mixed_line(const MixedLineContact& c, const PiezoviscousLu
     }
     return t;
   };
-  load_sharing::Outcome<Trial> searched = load_sharing::find_film_share<Trial>(at, sharing);
+  load_sharing::Outcome<LineTrial> searched = load_sharing::find_film_share<LineTrial>(at, sharing);
   MixedLineResult out;
   out.film_solves = searched.film_solves;
-  Trial& found = searched.found;
+  LineTrial& found = searched.found;
   if (!searched.failure.empty()) {
     out.film = std::move(found.film);
     out.film_share = std::exp(found.ln_share);

@@ -14,7 +14,7 @@ namespace {
 
 // The film solved at share s = e^{ln_share}, the summits at its separation, and the load balance
 // g(s)/W they leave.
-struct Trial {
+struct PointTrial {
   double ln_share = 0.0, balance = 0.0, asperity_load_N = 0.0;
   EhlPointResult film;
   contact::GwState summits;
@@ -38,7 +38,7 @@ MixedPointResult solve_mixed_point(const MixedPointContact& c, const Piezoviscou
     EhlPointContact scaled = f;
     scaled.load_N = s * w;
     scaled.reduced_modulus_Pa = s * f.reduced_modulus_Pa;
-    Trial t{ln_share, 0.0, 0.0, solve_ehl_point(scaled, lubricant, o.film), {}};
+    PointTrial t{ln_share, 0.0, 0.0, solve_ehl_point(scaled, lubricant, o.film), {}};
     if (t.film.converged) {
       t.summits = contact::gw_at_separation(c.asperities, t.film.central_film_m - c.summit_height_m);
       t.asperity_load_N = area_m2 * t.summits.pressure_Pa;
@@ -46,10 +46,10 @@ MixedPointResult solve_mixed_point(const MixedPointContact& c, const Piezoviscou
     }
     return t;
   };
-  load_sharing::Outcome<Trial> searched = load_sharing::find_film_share<Trial>(at, sharing);
+  load_sharing::Outcome<PointTrial> searched = load_sharing::find_film_share<PointTrial>(at, sharing);
   MixedPointResult out;
   out.film_solves = searched.film_solves;
-  Trial& found = searched.found;
+  PointTrial& found = searched.found;
   const double s = std::exp(found.ln_share);
   out.film_share = s;
   out.residual = std::abs(found.balance);

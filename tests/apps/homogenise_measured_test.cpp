@@ -19,7 +19,7 @@
 namespace tribo::cli {
 namespace {
 
-std::filesystem::path folder() {
+std::filesystem::path measured_folder() {
   static const std::filesystem::path dir = [] {
     auto d = std::filesystem::temp_directory_path() / "tribo_homogenise_measured_tests";
     std::filesystem::create_directories(d);
@@ -28,8 +28,8 @@ std::filesystem::path folder() {
   return dir;
 }
 
-std::filesystem::path write_config(const std::string& name, const std::string& surface_tables) {
-  const std::filesystem::path p = folder() / name;
+std::filesystem::path measured_config(const std::string& name, const std::string& surface_tables) {
+  const std::filesystem::path p = measured_folder() / name;
   std::ofstream(p) << surface_tables
                    << "[pin]\nnormal_load_N = 93.86\n[speeds]\ncount = 3\n"
                       "[homogenise]\nrealisations = 1\nmin_contact_grid = 64\nseparation_ratios = [0.5, 1.0, 2.0, 4.0, 8.0]\n";
@@ -41,10 +41,10 @@ const std::string kGenerated =
     "rolloff_wavelength_m = 6.25e-5\ncutoff_wavelength_m = 1.5625e-5\nseed = 3\n[domain]\nsize_m = 2.5e-4\ngrid = 32\n";
 
 TEST(HomogeniseMeasured, AMapOfTheSynthesisedRealisationGivesItsPatch) {
-  const HomogeniseRun generated = load_homogenise_run(write_config("generated.toml", kGenerated));
-  contact::write_npy(folder() / "map.npy", contact::gaussian_surface(generated.options.surface));
+  const HomogeniseRun generated = load_homogenise_run(measured_config("generated.toml", kGenerated));
+  contact::write_npy(measured_folder() / "map.npy", contact::gaussian_surface(generated.options.surface));
   const HomogeniseRun measured =
-      load_homogenise_run(write_config("measured.toml", "[surface]\nkind = \"file\"\nfile = \"map.npy\"\n[domain]\nsize_m = 2.5e-4\n"));
+      load_homogenise_run(measured_config("measured.toml", "[surface]\nkind = \"file\"\nfile = \"map.npy\"\n[domain]\nsize_m = 2.5e-4\n"));
   ASSERT_TRUE(measured.options.measured_heights_m);
   EXPECT_EQ(measured.options.surface.grid, 32);
   EXPECT_NEAR(measured.options.surface.rms_height_m, 4.35e-7, 1e-15 * 4.35e-7);
@@ -64,7 +64,7 @@ TEST(HomogeniseMeasured, AMapOfTheSynthesisedRealisationGivesItsPatch) {
   }
 }
 
-std::string error_of(const std::filesystem::path& config) {
+std::string homogenise_error(const std::filesystem::path& config) {
   try {
     load_homogenise_run(config);
   } catch (const InputError& e) {
@@ -74,15 +74,15 @@ std::string error_of(const std::filesystem::path& config) {
 }
 
 TEST(HomogeniseMeasured, BadMapsAreRefusedNamingTheFileAndTheReason) {
-  std::ofstream(folder() / "wide.txt") << "0 1 2\n1 2 3\n";
-  fixture::expect_all(error_of(write_config("wide.toml", "[surface]\nkind = \"file\"\nfile = \"wide.txt\"\n[domain]\nsize_m = 1e-4\n")),
+  std::ofstream(measured_folder() / "wide.txt") << "0 1 2\n1 2 3\n";
+  fixture::expect_all(homogenise_error(measured_config("wide.toml", "[surface]\nkind = \"file\"\nfile = \"wide.txt\"\n[domain]\nsize_m = 1e-4\n")),
                       {"wide.toml", "file", "2x3", "square"});
-  std::ofstream(folder() / "square.txt") << "0 1\n1 0\n";
-  fixture::expect_all(error_of(write_config("nosize.toml", "[surface]\nkind = \"file\"\nfile = \"square.txt\"\n")),
+  std::ofstream(measured_folder() / "square.txt") << "0 1\n1 0\n";
+  fixture::expect_all(homogenise_error(measured_config("nosize.toml", "[surface]\nkind = \"file\"\nfile = \"square.txt\"\n")),
                       {"nosize.toml", "no lateral size", "[domain] size_m"});
-  std::ofstream(folder() / "four.toml") << "[surface]\nkind = \"file\"\nfile = \"square.txt\"\n[domain]\nsize_m = 1e-4\n"
+  std::ofstream(measured_folder() / "four.toml") << "[surface]\nkind = \"file\"\nfile = \"square.txt\"\n[domain]\nsize_m = 1e-4\n"
                                            "[homogenise]\nrealisations = 4\n";
-  fixture::expect_all(error_of(folder() / "four.toml"), {"four.toml", "realisations", "one realisation"});
+  fixture::expect_all(homogenise_error(measured_folder() / "four.toml"), {"four.toml", "realisations", "one realisation"});
 }
 
 }  // namespace

@@ -8,19 +8,19 @@
 
 namespace tribo::lubrication::ball_on_disc {
 
-inline constexpr double kRadius_m = 9.525e-3;
-inline constexpr double kModulus_Pa = 2.1e11 / (1.0 - 0.3 * 0.3);
+inline constexpr double kBallRadius_m = 9.525e-3;
+inline constexpr double kBallModulus_Pa = 2.1e11 / (1.0 - 0.3 * 0.3);
 
-inline PiezoviscousLubricant oil() {
+inline PiezoviscousLubricant ball_oil() {
   PiezoviscousLubricant l;
   l.viscosity_Pa_s = 0.04;
   l.pressure_viscosity_per_Pa = 2e-8;
   return l;
 }
 
-inline EhlPointContact contact(double load_N, double speed_m_per_s) { return {load_N, kRadius_m, kModulus_Pa, speed_m_per_s}; }
+inline EhlPointContact ball_contact(double load_N, double speed_m_per_s) { return {load_N, kBallRadius_m, kBallModulus_Pa, speed_m_per_s}; }
 
-inline EhlPointOptions grid(int nodes) {
+inline EhlPointOptions ball_grid(int nodes) {
   EhlPointOptions o;
   o.nodes_x = o.nodes_y = nodes;
   return o;
@@ -29,7 +29,7 @@ inline EhlPointOptions grid(int nodes) {
 // The mixed solves of the tests: each film on 25² nodes.
 inline MixedPointOptions coarse_mixed() {
   MixedPointOptions o;
-  o.film = grid(25);
+  o.film = ball_grid(25);
   return o;
 }
 
@@ -38,8 +38,8 @@ inline MixedPointOptions coarse_mixed() {
 // slide-to-roll, Eyring τ0 = 5 MPa.
 inline MixedPointContact rough_ball(double speed_m_per_s) {
   MixedPointContact c;
-  c.film = contact(10.0, speed_m_per_s);
-  c.asperities = {4e10, 1e-5, 1e-7, 0.5 * kModulus_Pa};
+  c.film = ball_contact(10.0, speed_m_per_s);
+  c.asperities = {4e10, 1e-5, 1e-7, 0.5 * kBallModulus_Pa};
   c.summit_height_m = 1e-7;
   c.boundary_friction_coefficient = 0.1;
   c.sliding_speed_m_per_s = 0.05 * speed_m_per_s;

@@ -21,13 +21,13 @@ using namespace ball_on_disc;
 // The minimum film, 0.115 µm, against the fit's 0.108.
 TEST(EhlPoint, FilmAgreesWithHamrockDowsonAndConvergesWithTheGrid) {
   const double load = 2.0, speed = 0.5;
-  const reference::PointContactGroups g = reference::point_contact_groups(load, kRadius_m, kModulus_Pa, speed, oil().viscosity_Pa_s,
-                                                                          oil().pressure_viscosity_per_Pa);
-  const double hc_fit = reference::hamrock_dowson_central_film(g) * kRadius_m;
-  const double hmin_fit = reference::hamrock_dowson_minimum_film(g) * kRadius_m;
+  const reference::PointContactGroups g = reference::point_contact_groups(load, kBallRadius_m, kBallModulus_Pa, speed, ball_oil().viscosity_Pa_s,
+                                                                          ball_oil().pressure_viscosity_per_Pa);
+  const double hc_fit = reference::hamrock_dowson_central_film(g) * kBallRadius_m;
+  const double hmin_fit = reference::hamrock_dowson_minimum_film(g) * kBallRadius_m;
   double previous = 0.0, previous_change = 0.0, previous_spacing = 0.0;
   for (int n : {25, 31, 41}) {
-    const EhlPointResult r = solve_ehl_point(contact(load, speed), oil(), grid(n));
+    const EhlPointResult r = solve_ehl_point(ball_contact(load, speed), ball_oil(), ball_grid(n));
     ASSERT_TRUE(r.converged) << n << ": " << r.message;
     const double spacing = 5.0 / (n - 1);
     std::printf("%d²: h_c %.4g µm, h_min %.4g µm (Hamrock–Dowson %.4g, %.4g), p_max %.3g GPa, %d Newton iterations\n", n,

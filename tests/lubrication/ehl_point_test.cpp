@@ -23,9 +23,9 @@ using namespace ball_on_disc;
 // outlet's constriction, along x).
 TEST(EhlPoint, HighLoadPressureIsHertzianAcrossTheFlow) {
   const double load = 20.0;
-  const EhlPointResult r = solve_ehl_point(contact(load, 0.5), oil(), grid(31));
+  const EhlPointResult r = solve_ehl_point(ball_contact(load, 0.5), ball_oil(), ball_grid(31));
   ASSERT_TRUE(r.converged) << r.message;
-  EXPECT_NEAR(r.hertz_pressure_Pa, reference::hertz_point_peak_pressure_Pa(load, kRadius_m, kModulus_Pa), 1e-12 * r.hertz_pressure_Pa);
+  EXPECT_NEAR(r.hertz_pressure_Pa, reference::hertz_point_peak_pressure_Pa(load, kBallRadius_m, kBallModulus_Pa), 1e-12 * r.hertz_pressure_Pa);
   EXPECT_NEAR(r.load_balance_error, 0.0, 1e-9);
   const std::size_t nx = r.x_m.size();
   std::size_t centre = 0;  // the column nearest x = 0
@@ -59,27 +59,27 @@ TEST(EhlPoint, TractionIsTheEyringStressOverThePressurisedCells) {
       film.film_m.push_back(h0);
     }
   const double du = 0.1, tau0 = 5e6, load = 10.0;
-  const double eta = oil().viscosity_Pa_s * viscosity_ratio(oil(), p0).ratio;
+  const double eta = ball_oil().viscosity_Pa_s * viscosity_ratio(ball_oil(), p0).ratio;
   const double tau = tau0 * std::asinh(eta * du / (tau0 * h0));
-  const EhlPointTraction t = ehl_point_traction(film, oil(), du, tau0, load);
+  const EhlPointTraction t = ehl_point_traction(film, ball_oil(), du, tau0, load);
   EXPECT_NEAR(t.force_N, 9.0 * tau * dx * dy, 1e-12 * t.force_N);
   EXPECT_NEAR(t.friction_coefficient, t.force_N / load, 1e-15);
   EXPECT_NEAR(t.max_shear_stress_Pa, tau, 1e-9 * tau);
-  EXPECT_NEAR(ehl_point_traction(film, oil(), -du, tau0, load).force_N, -t.force_N, 1e-12 * t.force_N);
+  EXPECT_NEAR(ehl_point_traction(film, ball_oil(), -du, tau0, load).force_N, -t.force_N, 1e-12 * t.force_N);
   film.film_m.pop_back();
-  EXPECT_THROW(ehl_point_traction(film, oil(), du, tau0, load), std::invalid_argument);
+  EXPECT_THROW(ehl_point_traction(film, ball_oil(), du, tau0, load), std::invalid_argument);
 }
 
 TEST(EhlPoint, BadInputIsRejectedAndNonConvergenceIsReported) {
-  EXPECT_THROW(solve_ehl_point(contact(-1.0, 0.5), oil(), grid(21)), std::invalid_argument);
-  EhlPointOptions narrow = grid(21);
+  EXPECT_THROW(solve_ehl_point(ball_contact(-1.0, 0.5), ball_oil(), ball_grid(21)), std::invalid_argument);
+  EhlPointOptions narrow = ball_grid(21);
   narrow.side_over_radius = 0.8;  // the Hertz circle does not fit
-  EXPECT_THROW(solve_ehl_point(contact(2.0, 0.5), oil(), narrow), std::invalid_argument);
-  EXPECT_THROW(solve_ehl_point(contact(2.0, 0.5), oil(), grid(9)), std::invalid_argument);
-  EhlPointOptions starved = grid(21);
+  EXPECT_THROW(solve_ehl_point(ball_contact(2.0, 0.5), ball_oil(), narrow), std::invalid_argument);
+  EXPECT_THROW(solve_ehl_point(ball_contact(2.0, 0.5), ball_oil(), ball_grid(9)), std::invalid_argument);
+  EhlPointOptions starved = ball_grid(21);
   starved.max_newton_iterations = 1;
   starved.max_continuation_steps = 0;
-  const EhlPointResult r = solve_ehl_point(contact(2.0, 0.5), oil(), starved);
+  const EhlPointResult r = solve_ehl_point(ball_contact(2.0, 0.5), ball_oil(), starved);
   EXPECT_FALSE(r.converged);
   EXPECT_GT(r.residual, starved.tolerance);
   EXPECT_NE(r.message.find("not converged"), std::string::npos) << r.message;

@@ -20,7 +20,7 @@ using namespace ball_on_disc;
 // Slow and rough (3 mm/s, Λ < 1): the summits carry nearly all the load, and μ is the boundary
 // friction f_c = 0.1 within 3 % — the left end of the ball-on-disc Stribeck curve.
 TEST(MixedPoint, SlowRoughContactRunsAtTheBoundaryFriction) {
-  const MixedPointResult r = solve_mixed_point(rough_ball(3e-3), oil(), coarse_mixed());
+  const MixedPointResult r = solve_mixed_point(rough_ball(3e-3), ball_oil(), coarse_mixed());
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_LT(r.film_share, 0.03);
   EXPECT_LT(r.film_parameter, 1.0);
@@ -33,16 +33,16 @@ TEST(MixedPoint, SlowRoughContactRunsAtTheBoundaryFriction) {
 TEST(MixedPoint, TheShareFoundBalancesTheLoadWithGreenwoodWilliamson) {
   const MixedPointContact c = rough_ball(0.1);
   const MixedPointOptions o = coarse_mixed();
-  const MixedPointResult r = solve_mixed_point(c, oil(), o);
+  const MixedPointResult r = solve_mixed_point(c, ball_oil(), o);
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_GT(r.film_share, 0.05);
   EXPECT_LT(r.film_share, 0.95);
   EhlPointContact scaled = c.film;
   scaled.load_N *= r.film_share;
   scaled.reduced_modulus_Pa *= r.film_share;
-  const EhlPointResult film = solve_ehl_point(scaled, oil(), o.film);
+  const EhlPointResult film = solve_ehl_point(scaled, ball_oil(), o.film);
   EXPECT_DOUBLE_EQ(film.central_film_m, r.central_film_m);
-  const double a = reference::hertz_point_radius_m(c.film.load_N, kRadius_m, kModulus_Pa);
+  const double a = reference::hertz_point_radius_m(c.film.load_N, kBallRadius_m, kBallModulus_Pa);
   const double asperities =
       std::numbers::pi * a * a * contact::gw_at_separation(c.asperities, film.central_film_m - c.summit_height_m).pressure_Pa;
   EXPECT_NEAR(r.film_share * c.film.load_N + asperities, c.film.load_N, o.tolerance * c.film.load_N);

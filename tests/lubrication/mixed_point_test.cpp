@@ -20,13 +20,13 @@ TEST(MixedPoint, SmoothSurfacesLeaveTheWholeLoadToTheFilm) {
   MixedPointContact c = rough_ball(0.5);
   c.asperities.summit_std_m = 1e-9;
   c.summit_height_m = 0.0;
-  const MixedPointResult r = solve_mixed_point(c, oil(), coarse_mixed());
+  const MixedPointResult r = solve_mixed_point(c, ball_oil(), coarse_mixed());
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_EQ(r.film_share, 1.0);
   EXPECT_EQ(r.film_solves, 1);
   EXPECT_EQ(r.asperity_load_N, 0.0);
-  const EhlPointResult smooth = solve_ehl_point(c.film, oil(), coarse_mixed().film);
-  const EhlPointTraction t = ehl_point_traction(smooth, oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa, c.film.load_N);
+  const EhlPointResult smooth = solve_ehl_point(c.film, ball_oil(), coarse_mixed().film);
+  const EhlPointTraction t = ehl_point_traction(smooth, ball_oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa, c.film.load_N);
   EXPECT_DOUBLE_EQ(r.central_film_m, smooth.central_film_m);
   EXPECT_NEAR(r.friction_coefficient, t.friction_coefficient, 1e-12 * t.friction_coefficient);
 }
@@ -34,16 +34,16 @@ TEST(MixedPoint, SmoothSurfacesLeaveTheWholeLoadToTheFilm) {
 TEST(MixedPoint, BadInputIsRejected) {
   MixedPointContact c = rough_ball(1.0);
   c.asperities.e_star_Pa *= 1.1;  // not the bodies' E'/2
-  EXPECT_THROW(solve_mixed_point(c, oil(), coarse_mixed()), std::invalid_argument);
+  EXPECT_THROW(solve_mixed_point(c, ball_oil(), coarse_mixed()), std::invalid_argument);
   c = rough_ball(1.0);
   c.summit_height_m = -1e-8;
-  EXPECT_THROW(solve_mixed_point(c, oil(), coarse_mixed()), std::invalid_argument);
+  EXPECT_THROW(solve_mixed_point(c, ball_oil(), coarse_mixed()), std::invalid_argument);
   c = rough_ball(1.0);
   c.film.load_N = 0.0;
-  EXPECT_THROW(solve_mixed_point(c, oil(), coarse_mixed()), std::invalid_argument);
+  EXPECT_THROW(solve_mixed_point(c, ball_oil(), coarse_mixed()), std::invalid_argument);
   MixedPointOptions o = coarse_mixed();
   o.max_film_solves = 1;
-  EXPECT_THROW(solve_mixed_point(rough_ball(1.0), oil(), o), std::invalid_argument);
+  EXPECT_THROW(solve_mixed_point(rough_ball(1.0), ball_oil(), o), std::invalid_argument);
 }
 
 }  // namespace
