@@ -40,12 +40,15 @@ function(tribo_test_pch)
   target_precompile_headers(tribo_test_pch PRIVATE <gtest/gtest.h>)
 endfunction()
 
-# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s] [COST c]): one GoogleTest
-# executable registered with CTest. Label `slow` marks tests the sanitizer build skips
-# (ctest -LE slow), `mpi` those that start Open MPI (sanitized without leak detection);
-# TIMEOUT overrides ctest's --timeout for a test known to run long; COST orders them (below).
+# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s] [COST c] [PROCESSORS n]):
+# one GoogleTest executable registered with CTest. Label `slow` marks tests the sanitizer build
+# skips (ctest -LE slow), `mpi` those that start Open MPI (sanitized without leak detection);
+# TIMEOUT overrides ctest's --timeout for a test known to run long; COST orders them (below);
+# PROCESSORS n reserves n of ctest -j's slots for each test — for tests whose OpenMP loops or
+# Eigen products use every core: beside another test their threads spin at each barrier for a
+# thread that is not running (a 47-s BEM convergence test took 843 s so under ctest -j2).
 function(tribo_add_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT;COST" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT;COST;PROCESSORS" "SOURCES;DEPENDS;LABELS" ${ARGN})
   # Without TRIBO_SLOW_TESTS (the sanitizer build, which runs `-LE slow` anyway) a slow test's
   # executable is not even built.
   if(ARG_LABELS STREQUAL "slow" AND NOT TRIBO_SLOW_TESTS)
@@ -72,6 +75,9 @@ function(tribo_add_test name)
   endif()
   if(ARG_TIMEOUT)
     list(APPEND properties TIMEOUT ${ARG_TIMEOUT})
+  endif()
+  if(ARG_PROCESSORS)
+    list(APPEND properties PROCESSORS ${ARG_PROCESSORS})
   endif()
   # CTest -j starts tests in descending COST: on a clean clone (no timings recorded yet) the long
   # ones must start first, or one of them runs alone at the end while the other core idles.
