@@ -17,6 +17,7 @@ namespace {
 HomogeniseOptions thesis_preset() {
   HomogeniseOptions o;  // materials, τ_i, α and the pin are the preset's defaults
   o.surface = contact::fixture::thesis_steel_surface();
+  o.separation_ratios = {50.0};  // above first contact: no load–separation solve, only the two at the pin's pressure
   o.interface_shear_strength_Pa = 2.2264e8;
   o.pin.normal_load_N = 93.86;
   return o;
