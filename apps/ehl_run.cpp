@@ -176,6 +176,38 @@ nlohmann::json mixed_json(const Result& m, const MixedNumbers& n, const std::str
           {"film_friction_" + force_unit, n.film_friction}};
 }
 
+// ehl.json's convergence, film and traction fields, the same for both geometries: `mixed` the mixed
+// contact's result (nullptr for smooth surfaces), whose friction coefficient is the whole
+// contact's (boundary friction on the summits' share plus the film's traction); the traction force
+// under `force_key` (per length for a line, in N for a point). No traction from a film that is not
+// a solution: those fields are null then.
+struct TractionNumbers {
+  double friction_coefficient, force, max_shear_stress_Pa, max_film_temperature_rise_K;
+};
+template <class Film, class Mixed>
+void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed* mixed, const TractionNumbers& t, const std::string& force_key) {
+  j["converged"] = converged;
+  j["iterations"] = f.iterations;
+  j["continuation_steps"] = f.continuation_steps;
+  j["residual"] = f.residual;
+  j["message"] = mixed ? mixed->message : f.message;
+  j["central_film_m"] = f.central_film_m;
+  j["minimum_film_m"] = f.minimum_film_m;
+  j["max_pressure_Pa"] = f.max_pressure_Pa;
+  j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
+  j["load_balance_error"] = f.load_balance_error;
+  if (converged) {
+    j["friction_coefficient"] = mixed ? mixed->friction_coefficient : t.friction_coefficient;
+    j[force_key] = t.force;
+    j["max_shear_stress_Pa"] = t.max_shear_stress_Pa;
+    j["max_film_temperature_rise_K"] = t.max_film_temperature_rise_K;
+  } else {
+    for (const std::string& key : {std::string("friction_coefficient"), force_key, std::string("max_shear_stress_Pa"),
+                                   std::string("max_film_temperature_rise_K")})
+      j[key] = nullptr;
+  }
+}
+
 // The point contact's solve and summary (geometry = "point").
 void solve_point(const EhlRun& run, EhlSolve& out) {
   nlohmann::json& j = out.summary;
@@ -199,27 +231,11 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
     j["regime"] = "full film (smooth surfaces)";
   }
   const lub::EhlPointResult& f = *out.point_film;
+  const lub::EhlPointTraction& t = out.point_traction;
   j["geometry"] = "point";
-  j["converged"] = out.converged;
-  j["iterations"] = f.iterations;
-  j["continuation_steps"] = f.continuation_steps;
-  j["residual"] = f.residual;
-  j["message"] = out.mixed_point ? out.mixed_point->message : f.message;
-  j["central_film_m"] = f.central_film_m;
-  j["minimum_film_m"] = f.minimum_film_m;
-  j["max_pressure_Pa"] = f.max_pressure_Pa;
   j["hertz_radius_m"] = f.hertz_radius_m;
-  j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
-  j["load_balance_error"] = f.load_balance_error;
-  if (out.converged) {
-    // With roughness, the whole contact's: boundary friction on the summits' share plus the film's traction.
-    j["friction_coefficient"] = out.mixed_point ? out.mixed_point->friction_coefficient : out.point_traction.friction_coefficient;
-    j["traction_N"] = out.point_traction.force_N;
-    j["max_shear_stress_Pa"] = out.point_traction.max_shear_stress_Pa;
-    j["max_film_temperature_rise_K"] = out.point_traction.max_film_temperature_rise_K;
-  } else {
-    for (const char* key : {"friction_coefficient", "traction_N", "max_shear_stress_Pa", "max_film_temperature_rise_K"}) j[key] = nullptr;
-  }
+  film_summary(j, f, out.converged, out.mixed_point ? &*out.mixed_point : nullptr,
+               {t.friction_coefficient, t.force_N, t.max_shear_stress_Pa, t.max_film_temperature_rise_K}, "traction_N");
   const auto g = lub::reference::point_contact_groups(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s,
                                                       run.lubricant.viscosity_Pa_s, run.lubricant.pressure_viscosity_per_Pa);
   j["dimensionless"] = {{"W", g.load}, {"U", g.speed}, {"G", g.material}};
@@ -268,27 +284,11 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
     j["regime"] = "full film (smooth surfaces)";
   }
   const lub::EhlLineResult& f = out.film;
+  const lub::EhlTraction& t = out.traction;
   j["geometry"] = "line";
-  j["converged"] = out.converged;
-  j["iterations"] = f.iterations;
-  j["continuation_steps"] = f.continuation_steps;
-  j["residual"] = f.residual;
-  j["message"] = out.mixed ? out.mixed->message : f.message;
-  j["central_film_m"] = f.central_film_m;
-  j["minimum_film_m"] = f.minimum_film_m;
-  j["max_pressure_Pa"] = f.max_pressure_Pa;
   j["hertz_half_width_m"] = f.hertz_half_width_m;
-  j["hertz_pressure_Pa"] = f.hertz_pressure_Pa;
-  j["load_balance_error"] = f.load_balance_error;
-  if (out.converged) {
-    // With roughness, the whole contact's: boundary friction on the summits' share plus the film's traction.
-    j["friction_coefficient"] = out.mixed ? out.mixed->friction_coefficient : out.traction.friction_coefficient;
-    j["traction_N_per_m"] = out.traction.force_per_length_N_per_m;
-    j["max_shear_stress_Pa"] = out.traction.max_shear_stress_Pa;
-    j["max_film_temperature_rise_K"] = out.traction.max_film_temperature_rise_K;
-  } else {
-    for (const char* key : {"friction_coefficient", "traction_N_per_m", "max_shear_stress_Pa", "max_film_temperature_rise_K"}) j[key] = nullptr;
-  }
+  film_summary(j, f, out.converged, out.mixed ? &*out.mixed : nullptr,
+               {t.friction_coefficient, t.force_per_length_N_per_m, t.max_shear_stress_Pa, t.max_film_temperature_rise_K}, "traction_N_per_m");
   const lub::EhlLineContact& c = run.contact;
   const auto g = lub::reference::line_contact_groups(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa,
                                                      c.mean_speed_m_per_s, run.lubricant.viscosity_Pa_s,
