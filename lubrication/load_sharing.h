@@ -104,4 +104,32 @@ Outcome<Trial> find_film_share(const At& at, const Options& o) {
   return out;
 }
 
+// What a mixed result (MixedLineResult, MixedPointResult) takes from the search whatever its
+// geometry: the film solves, the share and the load balance's residual, and the film found; on
+// success its central film, the summits' separation, area fraction and film parameter Λ = h_c/σ_s,
+// and whether the balance met the tolerance. Returns false when the search failed (`message` why);
+// the caller then has nothing more to fill.
+template <class Result, class Trial>
+bool take_outcome(Result& out, Outcome<Trial>& searched, double summit_std_m, double tolerance) {
+  Trial& found = searched.found;
+  out.film_solves = searched.film_solves;
+  out.film_share = std::exp(found.ln_share);
+  out.residual = std::abs(found.balance);
+  if (!searched.failure.empty()) {
+    out.film = std::move(found.film);
+    out.message = searched.failure;
+    return false;
+  }
+  out.central_film_m = found.film.central_film_m;
+  out.separation_m = found.summits.separation_m;
+  out.film_parameter = found.film.central_film_m / summit_std_m;
+  out.asperity_area_fraction = found.summits.area_fraction;
+  out.film = std::move(found.film);
+  out.converged = out.residual <= tolerance;
+  out.message = out.converged ? "converged: load balance " + numerics::shortest(out.residual) + " of the load"
+                              : "the load balance stayed at " + numerics::shortest(out.residual) + " of the load after " +
+                                    std::to_string(out.film_solves) + " film solves";
+  return true;
+}
+
 }  // namespace tribo::lubrication::load_sharing

@@ -2,11 +2,9 @@
 
 #include <cmath>
 #include <stdexcept>
-#include <utility>
 
 #include "lubrication/load_sharing.h"
 #include "lubrication/reference/ehl_film.h"
-#include "numerics/format.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -48,34 +46,13 @@ MixedLineResult solve_mixed_line(const MixedLineContact& c, const PiezoviscousLu
   };
   load_sharing::Outcome<LineTrial> searched = load_sharing::find_film_share<LineTrial>(at, sharing);
   MixedLineResult out;
-  out.film_solves = searched.film_solves;
-  LineTrial& found = searched.found;
-  if (!searched.failure.empty()) {
-    out.film = std::move(found.film);
-    out.film_share = std::exp(found.ln_share);
-    out.residual = std::abs(found.balance);
-    out.message = searched.failure;
-    return out;
-  }
-
-  const double s = std::exp(found.ln_share);
-  out.film_share = s;
-  out.film_load_per_length_N_per_m = s * w;
-  out.asperity_load_per_length_N_per_m = found.asperity_load_N_per_m;
-  out.central_film_m = found.film.central_film_m;
-  out.separation_m = found.summits.separation_m;
-  out.film_parameter = found.film.central_film_m / c.asperities.summit_std_m;
-  out.asperity_area_fraction = found.summits.area_fraction;
-  out.film = std::move(found.film);
-  out.traction = ehl_line_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, s * w, c.heating);
+  if (!load_sharing::take_outcome(out, searched, c.asperities.summit_std_m, o.tolerance)) return out;
+  out.film_load_per_length_N_per_m = out.film_share * w;
+  out.asperity_load_per_length_N_per_m = searched.found.asperity_load_N_per_m;  // take_outcome moved only the film
+  out.traction = ehl_line_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, c.heating);
   out.boundary_friction_N_per_m = c.boundary_friction_coefficient * out.asperity_load_per_length_N_per_m;
   out.film_friction_N_per_m = out.traction.force_per_length_N_per_m;
   out.friction_coefficient = (out.boundary_friction_N_per_m + out.film_friction_N_per_m) / w;
-  out.residual = std::abs(found.balance);
-  out.converged = out.residual <= o.tolerance;
-  out.message = out.converged ? "converged: load balance " + numerics::shortest(out.residual) + " of the load"
-                              : "the load balance stayed at " + numerics::shortest(out.residual) + " of the load after " +
-                                    std::to_string(out.film_solves) + " film solves";
   return out;
 }
 

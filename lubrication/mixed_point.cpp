@@ -3,11 +3,9 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
-#include <utility>
 
 #include "lubrication/load_sharing.h"
 #include "lubrication/reference/ehl_point_film.h"
-#include "numerics/format.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -48,31 +46,13 @@ MixedPointResult solve_mixed_point(const MixedPointContact& c, const Piezoviscou
   };
   load_sharing::Outcome<PointTrial> searched = load_sharing::find_film_share<PointTrial>(at, sharing);
   MixedPointResult out;
-  out.film_solves = searched.film_solves;
-  PointTrial& found = searched.found;
-  const double s = std::exp(found.ln_share);
-  out.film_share = s;
-  out.residual = std::abs(found.balance);
-  if (!searched.failure.empty()) {
-    out.film = std::move(found.film);
-    out.message = searched.failure;
-    return out;
-  }
-  out.film_load_N = s * w;
-  out.asperity_load_N = found.asperity_load_N;
-  out.central_film_m = found.film.central_film_m;
-  out.separation_m = found.summits.separation_m;
-  out.film_parameter = found.film.central_film_m / c.asperities.summit_std_m;
-  out.asperity_area_fraction = found.summits.area_fraction;
-  out.film = std::move(found.film);
-  out.traction = ehl_point_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, s * w, c.heating);
+  if (!load_sharing::take_outcome(out, searched, c.asperities.summit_std_m, o.tolerance)) return out;
+  out.film_load_N = out.film_share * w;
+  out.asperity_load_N = searched.found.asperity_load_N;  // take_outcome moved only the film
+  out.traction = ehl_point_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, c.heating);
   out.boundary_friction_N = c.boundary_friction_coefficient * out.asperity_load_N;
   out.film_friction_N = out.traction.force_N;
   out.friction_coefficient = (out.boundary_friction_N + out.film_friction_N) / w;
-  out.converged = out.residual <= o.tolerance;
-  out.message = out.converged ? "converged: load balance " + numerics::shortest(out.residual) + " of the load"
-                              : "the load balance stayed at " + numerics::shortest(out.residual) + " of the load after " +
-                                    std::to_string(out.film_solves) + " film solves";
   return out;
 }
 
