@@ -820,7 +820,7 @@ struct UnitKey {
 };
 
 // Held-out data must be data the fit has not seen (issue 15): the split units are blocks, and
-// even blocks train, odd ones are held out (diagnosis.cpp). Units at one driven speed (within
+// even blocks train, odd ones are held out (pipeline.h make_fit_problem). Units at one driven speed (within
 // kSameSpeed: a run and the static point read off it) form one block, so a held-out speed is a
 // speed nothing was trained at; blocks at speeds come first, in order of speed. The others
 // alternate within their observable, in the order the data give them, the first training: a

@@ -54,6 +54,7 @@
 
 #include "gap/bundle.h"
 #include "gap/diagnosis_types.h"
+#include "gap/pipeline.h"  // default_candidates
 #include "rig/friction_model.h"
 #include "rig/parameters.h"
 
@@ -62,10 +63,6 @@ namespace tribo::gap {
 // `model_rig` is the model's rig with the bundle's [rig] keys applied by the caller (apply_bundle_rig).
 Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& model_rig, const rig::FrictionModel& model,
                    const DiagnosisOptions& options);
-
-// The candidates when the options name none: every catalogue effect the model lacks that the
-// catalogue tries on this experiment kind (rig::EffectInfo::diagnosed_in).
-std::vector<std::string> default_candidates(const rig::FrictionModel& model, const std::string& kind);
 
 // The model's rig with every [rig] key the bundle gives.
 rig::RigParameters apply_bundle_rig(const ExperimentBundle& bundle, rig::RigParameters rig);

@@ -7,7 +7,7 @@
 // triplets of W J_t. Its residuals on every item then become r + J Δu; the held-out ones are what
 // the bootstrap judges. Exact for a model linear in its parameters. For the catalogue's effects
 // it holds only as far as the residuals are linear over the step a redraw makes, so each
-// direction v_k is checked (diagnosis.cpp): where a probe two standard deviations of the step
+// direction v_k is checked (pipeline_verdict.cpp): where a probe two standard deviations of the step
 // along it does not change the training residuals as J predicts (within half), the direction is
 // dropped — a nonlinear refit would not follow a straight line there (the velocity-step record:
 // slip_transient's rate weakening, a direction with σ_k/σ_1 = 1.5e-4, moved 19 % of its range on

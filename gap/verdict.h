@@ -126,7 +126,7 @@ Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& s
 // Share of the summed squared residuals by (observable, phase + speed class), largest first.
 std::vector<Localization> localize(const std::vector<Item>& items, const std::vector<double>& r);
 
-// The leaders refitted on one redraw of the training data (diagnosis.cpp, refit_leaders): the
+// The leaders refitted on one redraw of the training data (pipeline.h confidence, refit_leaders): the
 // residuals the baseline and each refitted candidate (by its index in `candidates`) leave on every
 // item, held-out ones included.
 struct Refit {

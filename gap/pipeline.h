@@ -1,0 +1,141 @@
+// The diagnosis as a pipeline (diagnosis.h describes the procedure):
+//   make_fit_problem → calibrate → baseline_at → search_singles → recalibrate → refine_leaders
+//   → nest → pair → choose → confidence
+// Each stage is a plain function of the immutable FitProblem and of what the stages before it
+// returned; none keeps state, so each can be run and tested alone (tests/gap/pipeline_test.cpp).
+// diagnose() (diagnosis.cpp) runs them in that order and assembles the Diagnosis.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gap/bundle.h"
+#include "gap/compare.h"
+#include "gap/diagnosis_types.h"
+#include "gap/fit.h"
+#include "gap/verdict.h"
+
+namespace tribo::gap {
+
+// What every stage fits against, fixed before the first fit: the comparison (its items and the
+// predictions), the split, the data's noise, the parameter spaces and the options.
+struct FitProblem {
+  std::shared_ptr<const Comparison> comparison;  // the bundle's items and the model's predictions of them
+  rig::RigParameters model_rig;            // the model's rig with the bundle's [rig] keys
+  rig::FrictionModel model;                // the model as given (no effect yet)
+  DiagnosisOptions options;
+  std::vector<Item> items;
+  std::vector<bool> train, heldout, all;   // per item; without a second unit train = held-out = all
+  bool has_heldout = true;
+  Multiplicity held_m;                     // multiplicity(heldout)
+  std::vector<double> noise_r;             // the data's noise per item, gap units (Comparison::relative_noise)
+  std::vector<double> item_sd;             // item_noise(items, noise_r)
+  std::vector<double> equal_w;             // weights(items, train): every observable the same
+  std::vector<FitParameter> base_space;    // the baseline's parameters (baseline_space)
+  std::vector<FitParameter> search_base;   // the same without the rig keys: the candidates' searches hold the rig
+  std::vector<std::string> candidates;     // the options' or default_candidates()
+  double median_v_m_per_s = 0.0;           // the data's median driven speed
+  std::shared_ptr<std::mutex> progress_mutex = std::make_shared<std::mutex>();
+
+  // The options' progress callback, serialised (stages report from parallel fits).
+  void report(const std::string& what) const;
+  // The baseline parameters and, unless `with_rig` is false, the rig keys, then the effects'
+  // fitted parameters (with the effects they imply).
+  std::vector<FitParameter> space_of(const std::vector<std::string>& effects, bool with_rig) const;
+};
+
+// Validates the options, the model and the candidates (std::invalid_argument, before any work),
+// then reads the bundle's items (Comparison) and fixes the problem.
+FitProblem make_fit_problem(const ExperimentBundle& bundle, const rig::RigParameters& model_rig, const rig::FrictionModel& model,
+                            const DiagnosisOptions& options);
+
+// The candidates when the options name none: every catalogue effect the model lacks that the
+// catalogue tries on this experiment kind (rig::EffectInfo::diagnosed_in) and the model can take.
+std::vector<std::string> default_candidates(const rig::FrictionModel& model, const std::string& kind);
+
+// Step 1: the baseline's own parameters fitted on train from several starts, first with every
+// observable weighing the same, then (FitWeights::likelihood) by the likelihood at the scale
+// that fit leaves.
+struct Calibration {
+  FitResult fit;
+  std::vector<double> weights;  // the baseline's least-squares weights (its re-calibration and bootstrap refits use them)
+  int starts = 0;
+  std::map<std::string, double> fit_scale_by_observable;  // CalibrationSummary's
+};
+Calibration calibrate(const FitProblem& p);
+
+// The baseline at a fit: its predictions, residuals, gaps and pointwise held-out log density, the
+// yardstick every candidate is judged against.
+struct Baseline {
+  FitSetup setup;
+  FitResult fit;
+  std::map<std::string, double> params;  // values(base_space)
+  std::vector<double> simulated, residuals, lpd;
+  double train_gap = 0.0;
+  GapBreakdown all, heldout;
+};
+Baseline baseline_at(const FitProblem& p, const FitResult& f);
+
+// A candidate's evidence over the baseline among `comparisons` candidates (verdict.h standing_of):
+// sets heldout_gap_before, evidence_nats, evidence_se_nats and earns.
+void judge(const FitProblem& p, const Baseline& b, int comparisons, Candidate& c);
+// Earning candidates first, then by evidence (stable: ties keep their order).
+void rank(std::vector<Candidate>& cs);
+
+// Step 2, one candidate: the effects added to the baseline at its calibration (started where the
+// data show them, where they do), searched with the rig held, judged.
+Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::string>& effects, std::uint64_t seed,
+                 int comparisons);
+// Every candidate of the problem searched (in parallel), ranked.
+std::vector<Candidate> search_singles(const FitProblem& p, const Baseline& b);
+
+// A fair baseline: re-calibrated from the baseline parameters the three leading `ranked` candidates
+// settled on, with the calibration's weights; the best of those fits when it fits train better
+// than the baseline, else nothing.
+std::optional<FitResult> recalibrate(const FitProblem& p, const Calibration& cal, const Baseline& b,
+                                     const std::vector<Candidate>& ranked);
+
+// A candidate's fit continued to convergence from where it stopped, the rig free again.
+Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int comparisons);
+// The first four of `ranked` refined (in parallel); the others as they are.
+std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, std::vector<Candidate> ranked, int comparisons);
+
+// Nested candidates (a general effect that reduces to a special one in a limit): where the general
+// fits train better, the special one is refined again from the general's projection and kept if
+// it then fits train better. Returns the candidates ranked.
+std::vector<Candidate> nest(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons);
+
+// When the best single closes less than pair_threshold of the held-out gap, the two best fitted
+// together; every candidate is then judged among one more comparison. Returns the candidates
+// ranked and the number of comparisons they were judged among.
+struct Paired {
+  std::vector<Candidate> candidates;
+  int comparisons = 0;
+};
+Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons);
+
+// Step 4's rule (verdict.h decide): the chosen candidate's index (−1: none or unexplained), those
+// the held-out data do not tell from it, and whether the gap stays unexplained.
+struct Choice {
+  int index = -1;
+  bool unexplained = false;
+  std::vector<std::string> indistinguishable;
+};
+Choice choose(const FitProblem& p, const Baseline& b, const std::vector<Candidate>& candidates, int comparisons, double noise_floor);
+
+// The verdict's bootstrap confidence (verdict.h bootstrap_confidence), with the baseline and the
+// leading candidates refitted (linearised) on redrawn training data where the data give a noise
+// on train; `fixed` holds every fit where it is.
+struct ConfidenceStage {
+  Confidence with_refits, fixed;
+  std::vector<std::string> refitted;  // "baseline" and the leaders' names; empty without refits
+};
+ConfidenceStage confidence(const FitProblem& p, const Calibration& cal, const Baseline& b, const std::vector<Candidate>& candidates,
+                           int chosen, const std::string& verdict);
+
+}  // namespace tribo::gap

@@ -1,0 +1,223 @@
+// The pipeline's candidate stages (pipeline.h): search, refinement, nested candidates and the pair.
+#include <algorithm>
+#include <cmath>
+
+#include "contact/junction_locus.h"
+#include "gap/calibration.h"
+#include "gap/parallel.h"
+#include "gap/pipeline.h"
+
+namespace tribo::gap {
+namespace {
+
+// Nested candidates: `general` reduces to `special` in a limit of its other parameters, where
+// special.parameter = general's effect.parameter for each carried parameter. Thermal thinning with
+// U_T far above the slip speeds is viscous friction with c = c0 (rig/effects/thermal_thinning.h);
+// strain-rate hardening at m = 0 is the junction locus it implies (on a model without the locus,
+// implied_effects), with that locus's own parameters.
+struct Carried {
+  const char *effect, *parameter, *special_parameter;
+};
+struct Nesting {
+  const char *general, *special;
+  Carried carried[2];
+};
+constexpr Nesting kNestings[] = {
+    {"thermal_thinning", "viscous_friction", {{"thermal_thinning", "traction_coefficient_N_s_per_m", "coefficient_N_s_per_m"}, {}}},
+    {"strain_rate_hardening", "rate_dependent_static",
+     {{"rate_dependent_static", "mu_s_max", "mu_s_max"}, {"rate_dependent_static", "location_per_s", "location_per_s"}}}};
+
+// A candidate from its fit over `space`: its residuals, gaps and standing.
+Candidate candidate_from(const FitProblem& p, const Baseline& b, const std::vector<std::string>& effects,
+                         const std::vector<FitParameter>& space, const FitResult& fitted, int comparisons) {
+  const Comparison& comparison = *p.comparison;
+  Candidate c;
+  c.effects = effects;
+  c.model = fitted.setup.model;
+  c.rig = fitted.setup.rig;
+  c.params = values(space, fitted.setup);
+  c.fit = fitted.termination;
+  c.extra_parameters = static_cast<int>(
+      std::count_if(space.begin(), space.end(), [](const FitParameter& q) { return q.target == FitParameter::Target::effect; }));
+  c.residuals = comparison.residuals(comparison.predict(c.rig, c.model, p.options.seed));
+  c.train_gap = breakdown(p.items, c.residuals, p.train).gap;
+  const GapBreakdown held = breakdown(p.items, c.residuals, p.heldout);
+  c.heldout_gap_after = held.gap;
+  c.heldout_after_by_observable = held.by_observable;
+  judge(p, b, comparisons, c);
+  return c;
+}
+
+// Where a candidate's search starts: the baseline at its calibration with the effects added, placed
+// where the data show them. Sets `read_off` when the start was read off the data.
+FitSetup search_start(const FitProblem& p, const Baseline& b, const std::vector<std::string>& effects, bool& read_off) {
+  FitSetup start = b.setup;
+  const double median_v = p.median_v_m_per_s;
+  const double phi = start.rig.stiffness_N_per_m * median_v / start.rig.normal_load_N;  // the data's median load rate
+  const std::vector<std::string> with_implied = implied_effects(effects, p.model);
+  const bool locus_fitted = std::count(with_implied.begin(), with_implied.end(), "rate_dependent_static") > 0;
+  for (const auto& e : with_implied) {
+    start.model.add(e);
+    if ((e == "rate_and_state" || e == "slip_transient") && median_v > 0.0) {
+      // Reference speed at the data's median driven speed (not fitted: another V0 only moves
+      // the baseline μk, which is fitted), so the increments stay small where the data are.
+      start.model.set(e, "reference_speed_m_per_s", std::clamp(median_v, 1e-9, 10.0));
+    }
+    if (e == "strain_rate_hardening" && phi > 0.0 && locus_fitted) {
+      // Hardening referred to the median load rate, where the locus below starts; any other
+      // reference only moves the fitted location. A locus the model gives keeps its own
+      // reference: moved, the same m would shift μs at every rate (the first generator's
+      // second-effect cases, whose truth hardens from the slowest rate: held-out shrink 38 %
+      // against 63 % with the reference left alone, tests/gap/rate_hardening_test.cpp).
+      start.model.set(e, "reference_load_rate_per_s", std::clamp(phi, 1e-6, 1e3));
+    }
+    if (e == "rate_dependent_static") {
+      // Start the locus through the calibrated μs at the median load rate of the data.
+      contact::JunctionLocus shape;
+      const double mu_s_max = std::max(start.model.get("rate_dependent_static", "mu_s_max"), 1.2 * b.setup.model.baseline.mu_s);
+      shape.sigma0_over_tau_i = contact::sigma0_over_tau_i_from_upper_asymptote(mu_s_max, shape.alpha);
+      if (phi > 0.0 && b.setup.model.baseline.mu_s < mu_s_max) {
+        start.model.set("rate_dependent_static", "mu_s_max", mu_s_max);
+        start.model.set("rate_dependent_static", "location_per_s",
+                        std::clamp(contact::location_through_point_per_s(shape, phi, b.setup.model.baseline.mu_s), 1e-5, 1e5));
+      }
+    }
+  }
+  // A velocity step shows the slip transient directly: a peak Δμ above the old level, then a
+  // decay over a slip distance. Breakaway at μs = μk + Δμ_peak with the whole excess decaying
+  // (a = 1) over the measured 1/e distance is where that fit starts too.
+  const StepResponse& step = p.comparison->step_response();
+  read_off = false;
+  if (effects == std::vector<std::string>{"slip_transient"} && !start.model.baseline.kinetic && step.decay_distance_m > 0.0) {
+    start.model.baseline.mu_s = start.model.baseline.mu_k + step.peak_rise;
+    start.model.set("slip_transient", "amplitude", 1.0);
+    start.model.set("slip_transient", "decay_distance_m", step.decay_distance_m);
+    read_off = true;
+  }
+  // A slide-hold-slide test shows the healing directly: the re-slide peaks grow as
+  // b ln(1 + t_h V/D_c) with the hold (calibration.h). The ageing law's fit starts there, with
+  // the peaks all the healing's (μs = μk).
+  if (effects == std::vector<std::string>{"rate_and_state"}) {
+    if (const Healing h = healing_from_data(p.items, p.train); std::isfinite(h.b)) {
+      start.model.baseline.mu_s = start.model.baseline.mu_k;
+      start.model.set("rate_and_state", "b", std::min(h.b, 0.05));
+      start.model.set("rate_and_state", "decay_distance_m", h.decay_distance_m);
+      read_off = true;
+    }
+  }
+  return start;
+}
+
+}  // namespace
+
+void judge(const FitProblem& p, const Baseline& b, int comparisons, Candidate& c) {
+  c.heldout_gap_before = b.heldout.gap;
+  const Standing st = standing_of(p.items, c.residuals, p.item_sd, p.train, b.lpd, b.heldout.gap, p.held_m, comparisons);
+  c.evidence_nats = st.evidence.gain, c.evidence_se_nats = st.evidence.se;
+  c.earns = st.earns;
+}
+
+void rank(std::vector<Candidate>& cs) {
+  std::stable_sort(cs.begin(), cs.end(), [](const Candidate& a, const Candidate& b) {
+    if (a.earns != b.earns) return a.earns;
+    return a.evidence_nats > b.evidence_nats;
+  });
+}
+
+Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::string>& effects, std::uint64_t seed,
+                 int comparisons) {
+  bool read_off = false;
+  const FitSetup start = search_start(p, b, effects, read_off);
+  const std::vector<FitParameter> space = p.space_of(effects, false);
+  const FitResult r = fit(*p.comparison, space, start, p.equal_w, p.options, seed, p.options.starts, p.search_base.size(),
+                          Resolution::search, read_off);
+  Candidate c = candidate_from(p, b, effects, space, r, comparisons);
+  p.report("fitted " + verdict_name(effects));
+  return c;
+}
+
+std::vector<Candidate> search_singles(const FitProblem& p, const Baseline& b) {
+  const int comparisons = static_cast<int>(p.candidates.size());
+  std::vector<Candidate> singles(p.candidates.size());
+  parallel_for(p.candidates.size(),
+               [&](std::size_t k) { singles[k] = search(p, b, {p.candidates[k]}, p.options.seed * 7919 + k, comparisons); });
+  rank(singles);
+  return singles;
+}
+
+// The leading candidates are compared at convergence: continue their fits from where the
+// search stopped, so that a nested effect (thermal thinning with a large U_T is viscous
+// friction) does not win over a simpler one only because its search ran further.
+Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int comparisons) {
+  DiagnosisOptions refining = p.options;
+  refining.max_iterations = std::max(20, p.options.max_iterations);
+  const std::vector<FitParameter> space = p.space_of(c.effects, true);
+  const FitResult r = fit(*p.comparison, space, FitSetup{c.rig, c.model}, p.equal_w, refining, p.options.seed, 1, space.size(),
+                          Resolution::refine);
+  Candidate refined = candidate_from(p, b, c.effects, space, r, comparisons);
+  refined.fit.wall_s += c.fit.wall_s;  // the search's time too
+  p.report("refined " + verdict_name(c.effects));
+  return refined;
+}
+
+std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, std::vector<Candidate> ranked, int comparisons) {
+  // Four: the hardened locus (three parameters on a Coulomb model) fits static friction well enough
+  // to rank third on data with a dynamic effect, and with three slots it pushed out the effect
+  // itself (independent lift seed 306: the lift's search stops at its grid start, U½ = 0.63 mm/s,
+  // where the cost is flat; refined, it moves to 1.4 mm/s and closes the gap). On two threads the
+  // fourth refinement runs beside the third.
+  constexpr std::size_t kRefined = 4;
+  parallel_for(std::min(kRefined, ranked.size()), [&](std::size_t k) { ranked[k] = refine(p, b, ranked[k], comparisons); });
+  return ranked;
+}
+
+// Nested candidates (kNestings): when the general fit does better on train, the special one is
+// refined again from the general fit's projection and kept if it then fits train better, so that
+// it is judged at its own best rather than lose to its generalisation on search luck (selftest
+// seed 3: the viscous search stopped at c = 33.7 N s/m, held-out gap 0.0045, while thermal
+// thinning settled at U_T = 10 m/s, c0 = 34.6 N s/m, held-out gap 0.0015; independent seed 301,
+// Kato ageing: the locus search stopped at a held-out gap of 0.0112 and the hardened locus, one
+// parameter more, was named at 47 %; refined from its m = 0 projection the locus is named, 56 %).
+std::vector<Candidate> nest(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons) {
+  const auto single = [&](const std::string& e) {
+    return std::find_if(singles.begin(), singles.end(), [&](const Candidate& c) { return c.effects == std::vector<std::string>{e}; });
+  };
+  for (const Nesting& nesting : kNestings) {
+    const auto general = single(nesting.general), special = single(nesting.special);
+    if (general == singles.end() || special == singles.end() || !(general->train_gap < special->train_gap)) continue;
+    Candidate from = *special;
+    from.rig = general->rig;
+    from.model.baseline = general->model.baseline;
+    const std::vector<FitParameter> special_space = effect_parameters(nesting.special);
+    for (const Carried& carried : nesting.carried) {
+      if (!carried.effect) continue;
+      // Into the special effect's fit range: the general one's parameter may lie beyond it (thermal
+      // thinning's traction coefficient of 2.5e4 N s/m on the slide-hold-slide case, where viscous
+      // friction's range ends at 1e4 N s/m, and the projection would not be a model at all).
+      double value = general->model.get(carried.effect, carried.parameter);
+      for (const FitParameter& q : special_space)
+        if (q.name == carried.special_parameter) value = std::clamp(value, q.lower, q.upper);
+      from.model.set(nesting.special, carried.special_parameter, value);
+    }
+    if (Candidate projected = refine(p, b, from, comparisons); projected.train_gap < special->train_gap) *special = projected;
+  }
+  rank(singles);
+  return singles;
+}
+
+Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons) {
+  Paired out{std::move(singles), comparisons};
+  if (out.candidates.size() < 2) return out;
+  const Candidate& best = out.candidates.front();
+  const double closed = best.heldout_gap_before > 0.0 ? 1.0 - best.heldout_gap_after / best.heldout_gap_before : 1.0;
+  if (!(closed < p.options.pair_threshold && b.heldout.gap > 0.0)) return out;
+  // Against the singles it must have decisive evidence over the simpler one (verdict_index()).
+  out.comparisons = static_cast<int>(out.candidates.size()) + 1;
+  for (Candidate& c : out.candidates) judge(p, b, out.comparisons, c);
+  const std::vector<std::string> both{out.candidates[0].effects[0], out.candidates[1].effects[0]};
+  out.candidates.push_back(refine(p, b, search(p, b, both, p.options.seed * 7919 + 104729, out.comparisons), out.comparisons));
+  rank(out.candidates);
+  return out;
+}
+
+}  // namespace tribo::gap

@@ -1,0 +1,214 @@
+// The diagnosis' stages one at a time (gap/pipeline.h), each on a small synthetic bundle whose truth
+// is known: what a stage must do, checked without running the stages after it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+#include "gap/pipeline.h"
+#include "gap/selftest.h"
+
+namespace tribo::gap {
+namespace {
+
+// Static-friction points only from a Coulomb rig (μs 0.3, μk 0.2; noise 1 % of μk W per point),
+// diagnosed against a model whose μs is 20 % high.
+ExperimentBundle static_points_bundle() {
+  SyntheticOptions so;
+  so.speeds_m_per_s = {8e-3, 1.4e-2, 2.4e-2};
+  so.duration_s = 1.5;
+  ExperimentBundle b = synthesize_bundle(rig::RigParameters{}, rig::coulomb(0.3, 0.2), so, 5);
+  b.runs.clear();
+  return b;
+}
+
+DiagnosisOptions static_options() {
+  DiagnosisOptions o;
+  o.max_iterations = 6;
+  return o;
+}
+
+// What a problem fixes before any fit: the split (even units train, odd units held out), weights
+// that give every observable on train the same share (Σ_{i in o} w_i² = 1/N_obs), and a search
+// space without rig keys.
+TEST(Pipeline, TheProblemSplitsByUnitAndWeighsEveryObservableTheSame) {
+  const FitProblem p = make_fit_problem(static_points_bundle(), rig::RigParameters{}, rig::coulomb(0.36, 0.2), static_options());
+  ASSERT_TRUE(p.has_heldout);
+  std::map<std::string, double> share;
+  for (std::size_t i = 0; i < p.items.size(); ++i) {
+    EXPECT_EQ(p.heldout[i], p.items[i].unit % 2 == 1);
+    EXPECT_EQ(p.train[i], !p.heldout[i]);
+    EXPECT_EQ(p.equal_w[i] > 0.0, p.train[i]);
+    share[p.items[i].observable] += p.equal_w[i] * p.equal_w[i];
+  }
+  for (const auto& [observable, s] : share) EXPECT_NEAR(s, 1.0 / static_cast<double>(share.size()), 1e-12) << observable;
+  EXPECT_EQ(p.base_space.size(), 2u);  // μs and μk/μs: the bundle states no rig uncertainty
+  EXPECT_EQ(p.search_base.size(), 2u);
+  EXPECT_FALSE(p.candidates.empty());
+}
+
+// Bad options and candidates the model cannot take are refused before the bundle is read.
+TEST(Pipeline, TheProblemRefusesBadOptionsBeforeAnyWork) {
+  DiagnosisOptions o = static_options();
+  o.starts = 0;
+  try {
+    make_fit_problem(static_points_bundle(), rig::RigParameters{}, rig::coulomb(0.36, 0.2), o);
+    ADD_FAILURE() << "starts = 0 was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "gap options: starts must be at least 1");
+  }
+}
+
+// Calibration alone: μs recovered from static points to 1 % (each point's noise is 1 % of μk W,
+// averaged over the points), and the calibrated baseline fits the training points at least as
+// well as the truth does (within 1 %: the truth lies in the model's family, so a calibration that
+// converged cannot leave more than the truth's own noise).
+TEST(Pipeline, CalibrationRecoversMuSAndFitsTrainAsWellAsTheTruth) {
+  const FitProblem p = make_fit_problem(static_points_bundle(), rig::RigParameters{}, rig::coulomb(0.36, 0.2), static_options());
+  const Calibration cal = calibrate(p);
+  EXPECT_NEAR(cal.fit.setup.model.baseline.mu_s, 0.3, 0.003);
+  EXPECT_EQ(cal.starts, 5);  // model, data, data ± 20 % excess, and the first answer re-weighed
+  const Baseline b = baseline_at(p, cal.fit);
+  const std::vector<double> truth = p.comparison->residuals(p.comparison->predict(p.model_rig, rig::coulomb(0.3, 0.2), p.options.seed));
+  const double truth_gap = breakdown(p.items, truth, p.train).gap;
+  ASSERT_GT(truth_gap, 0.0);
+  EXPECT_LE(b.train_gap, 1.01 * truth_gap) << "calibrated " << b.train_gap << ", truth " << truth_gap;
+}
+
+// Re-calibration from the leaders: a baseline left 10 % off in μs is replaced by the fit that
+// starts from a leader's baseline parameters (the truth here), which fits train better.
+TEST(Pipeline, RecalibrationFromALeaderReplacesABaselineLeftOff) {
+  const FitProblem p = make_fit_problem(static_points_bundle(), rig::RigParameters{}, rig::coulomb(0.36, 0.2), static_options());
+  const Calibration cal = calibrate(p);
+  const FitSetup off{p.model_rig, rig::coulomb(0.33, 0.2)};
+  const Baseline off_baseline = baseline_at(p, fit(*p.comparison, {}, off, cal.weights, p.options, p.options.seed, 1, 0));
+  Candidate leader;
+  leader.model = rig::coulomb(0.3, 0.2);
+  leader.rig = p.model_rig;
+  const std::optional<FitResult> better = recalibrate(p, cal, off_baseline, {leader});
+  ASSERT_TRUE(better.has_value());
+  EXPECT_LT(better->cost, off_baseline.fit.cost);
+  EXPECT_NEAR(better->setup.model.baseline.mu_s, 0.3, 0.003);
+}
+
+// Traces of a rig with viscous friction (c = 60 N s/m) withheld, against a Coulomb model: the
+// problem, calibration and baseline computed once for the stages after them.
+class ViscousPipeline : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    rig::FrictionModel truth = rig::coulomb(0.32, 0.18);
+    truth.set("viscous_friction", "coefficient_N_s_per_m", 60.0);
+    SyntheticOptions so;
+    so.speeds_m_per_s = {6e-3, 9e-3, 1.3e-2, 1.8e-2};  // below the speed where c = 60 N s/m stabilises sliding
+    so.duration_s = 1.5;
+    ExperimentBundle bundle = synthesize_bundle(rig::RigParameters{}, truth, so, 11);
+    bundle.static_points.clear();
+    DiagnosisOptions o;
+    o.max_iterations = 8;
+    o.candidates = {"viscous_friction", "thermal_thinning"};
+    o.bootstrap_samples = 40;
+    o.seed = 4;
+    problem_ = std::make_unique<FitProblem>(make_fit_problem(bundle, rig::RigParameters{}, rig::coulomb(0.3, 0.2), o));
+    calibration_ = std::make_unique<Calibration>(calibrate(*problem_));
+    baseline_ = std::make_unique<Baseline>(baseline_at(*problem_, calibration_->fit));
+    viscous_ = std::make_unique<Candidate>(search(*problem_, *baseline_, {"viscous_friction"}, 7, 2));
+  }
+  static void TearDownTestSuite() { problem_.reset(), calibration_.reset(), baseline_.reset(), viscous_.reset(); }
+  // A candidate with `model` as its fit, its residuals and gaps from the problem's predictions.
+  static Candidate candidate_at(const std::vector<std::string>& effects, const rig::FrictionModel& model) {
+    const FitProblem& p = *problem_;
+    Candidate c;
+    c.effects = effects;
+    c.model = model;
+    c.rig = baseline_->setup.rig;
+    c.residuals = p.comparison->residuals(p.comparison->predict(c.rig, c.model, p.options.seed));
+    c.train_gap = breakdown(p.items, c.residuals, p.train).gap;
+    c.heldout_gap_after = breakdown(p.items, c.residuals, p.heldout).gap;
+    judge(p, *baseline_, 2, c);
+    return c;
+  }
+  static double train_sse(const Candidate& c) {
+    return weighted_sse(c.residuals, problem_->equal_w, multiplicity(problem_->train));
+  }
+  static std::unique_ptr<FitProblem> problem_;
+  static std::unique_ptr<Calibration> calibration_;
+  static std::unique_ptr<Baseline> baseline_;
+  static std::unique_ptr<Candidate> viscous_;
+};
+std::unique_ptr<FitProblem> ViscousPipeline::problem_;
+std::unique_ptr<Calibration> ViscousPipeline::calibration_;
+std::unique_ptr<Baseline> ViscousPipeline::baseline_;
+std::unique_ptr<Candidate> ViscousPipeline::viscous_;
+
+// The search of the withheld effect alone: it earns its parameter (decisive evidence over the
+// baseline, verdict.h) and more than halves the held-out gap; its c lies within a third of the
+// truth (eight iterations on a piecewise-smooth cost, as the full diagnosis' test allows).
+TEST_F(ViscousPipeline, SearchOfTheWithheldEffectEarnsItsParameter) {
+  const Candidate& c = *viscous_;
+  EXPECT_TRUE(c.earns) << c.evidence_nats << " ± " << c.evidence_se_nats << " nats";
+  EXPECT_GT(c.evidence_nats, Evidence::kStrong);
+  EXPECT_DOUBLE_EQ(c.heldout_gap_before, baseline_->heldout.gap);
+  EXPECT_LT(c.heldout_gap_after, 0.5 * c.heldout_gap_before);
+  EXPECT_NEAR(c.params.at("viscous_friction.coefficient_N_s_per_m"), 60.0, 20.0);
+  EXPECT_EQ(c.extra_parameters, 1);
+}
+
+// Refinement continues the search's fit: Levenberg–Marquardt accepts no step uphill, so the
+// training cost (the fits' weighted sum of squares) cannot rise — to the simulation's round-off.
+TEST_F(ViscousPipeline, RefinementNeverLeavesTheTrainingCostHigher) {
+  const Candidate refined = refine(*problem_, *baseline_, *viscous_, 2);
+  EXPECT_LE(train_sse(refined), train_sse(*viscous_) * (1.0 + 1e-9));
+  EXPECT_GE(refined.fit.wall_s, viscous_->fit.wall_s);  // the search's time counted in
+}
+
+// Nested candidates: thermal thinning with U_T far above the slip speeds is viscous friction with
+// c = c0. With thermal thinning at the truth (μs, μk and c0 = 60 N s/m, U_T = 10 m/s) fitting train better
+// than a viscous fit stopped at c = 25 N s/m, viscous friction is refined from the projection
+// c = 60 and kept: it then fits train as well as its generalisation (within 5 %) and its c lies
+// within 10 % of the truth.
+TEST_F(ViscousPipeline, ANestedSpecialEffectIsRefinedFromItsGeneralisationsProjection) {
+  rig::FrictionModel thermal = rig::coulomb(0.32, 0.18);  // the truth's levels
+  thermal.set("thermal_thinning", "traction_coefficient_N_s_per_m", 60.0);
+  thermal.set("thermal_thinning", "thermal_speed_m_per_s", 10.0);
+  rig::FrictionModel stopped = rig::coulomb(0.32, 0.18);
+  stopped.set("viscous_friction", "coefficient_N_s_per_m", 25.0);
+  const Candidate general = candidate_at({"thermal_thinning"}, thermal), special = candidate_at({"viscous_friction"}, stopped);
+  ASSERT_LT(general.train_gap, special.train_gap);
+  const std::vector<Candidate> out = nest(*problem_, *baseline_, {general, special}, 2);
+  const auto viscous = std::find_if(out.begin(), out.end(), [](const Candidate& c) { return c.effects[0] == "viscous_friction"; });
+  ASSERT_NE(viscous, out.end());
+  EXPECT_LT(viscous->train_gap, 1.05 * general.train_gap);
+  EXPECT_NEAR(viscous->model.get("viscous_friction", "coefficient_N_s_per_m"), 60.0, 6.0);
+}
+
+// No pair when the best single closes more than pair_threshold (0.5) of the held-out gap: the
+// candidates come back as they were, judged among as many comparisons as before.
+TEST_F(ViscousPipeline, NoPairIsTriedWhenTheBestSingleClosesMostOfTheGap) {
+  ASSERT_LT(viscous_->heldout_gap_after, 0.5 * viscous_->heldout_gap_before);
+  Candidate other = *viscous_;
+  other.effects = {"thermal_thinning"};
+  const Paired out = pair(*problem_, *baseline_, {*viscous_, other}, 2);
+  EXPECT_EQ(out.candidates.size(), 2u);
+  EXPECT_EQ(out.comparisons, 2);
+}
+
+// The choice and its confidence: the earning candidate is chosen (not unexplained), and with the
+// baseline and the verdict's candidate refitted on redrawn training data, the resamples agree with
+// the verdict at least 80 % of the time (a cut of more than half the gap on four speeds).
+TEST_F(ViscousPipeline, TheEarningCandidateIsChosenWithHighConfidence) {
+  const std::vector<Candidate> cs{*viscous_};
+  const Choice choice = choose(*problem_, *baseline_, cs, 1, breakdown(problem_->items, problem_->noise_r, problem_->heldout).gap);
+  ASSERT_EQ(choice.index, 0);
+  EXPECT_FALSE(choice.unexplained);
+  const ConfidenceStage conf = confidence(*problem_, *calibration_, *baseline_, cs, 0, "viscous_friction");
+  ASSERT_EQ(conf.refitted.size(), 2u);
+  EXPECT_EQ(conf.refitted[0], "baseline");
+  EXPECT_EQ(conf.refitted[1], "viscous_friction");
+  EXPECT_GE(conf.with_refits.agreement, 0.8);
+  EXPECT_GE(conf.fixed.agreement, 0.8);
+}
+
+}  // namespace
+}  // namespace tribo::gap
