@@ -117,6 +117,22 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
   }
   for (int k = 0; k < count; ++k)
     run.speeds_m_per_s.push_back(u_min * std::pow(u_max / u_min, static_cast<double>(k) / (count - 1)));
+  if (auto e = root.table("micro_ehl")) {
+    homogenise::MicroEhl m;
+    m.eyring_stress_Pa = e->number("eyring_stress_Pa", m.eyring_stress_Pa, Range::positive);
+    m.tip_roughness_m = e->number("tip_roughness_m", m.tip_roughness_m, Range::positive);
+    m.min_speed_m_per_s = e->number("min_speed_m_per_s", m.min_speed_m_per_s, Range::positive);
+    m.max_speed_m_per_s = e->number("max_speed_m_per_s", m.max_speed_m_per_s, Range::positive);
+    m.speeds_per_decade = static_cast<int>(e->integer("speeds_per_decade", m.speeds_per_decade, 1, 100));
+    if (!(m.max_speed_m_per_s > m.min_speed_m_per_s)) e->fail("max_speed_m_per_s", "must exceed min_speed_m_per_s");
+    if (m.max_speed_m_per_s < u_max)
+      e->fail("max_speed_m_per_s", "must reach the Stribeck curve's [speeds] max_m_per_s = " + numerics::shortest(u_max) +
+                                       " (the law is never extrapolated)");
+    if (!(o.lubricant.pressure_viscosity_per_Pa > 0.0))
+      e->fail("eyring_stress_Pa", "the films need the lubricant's pressure_viscosity_per_Pa > 0");
+    o.micro_ehl = m;
+    e->finish();
+  }
   if (auto h = root.table("homogenise")) {
     o.realisations = static_cast<int>(h->integer("realisations", o.realisations, 1, 1'000'000));
     if (o.measured_heights_m && o.realisations != 1) h->fail("realisations", "a measured topography is one realisation: must be 1");

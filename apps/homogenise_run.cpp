@@ -43,12 +43,13 @@ std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& 
 void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig::SteadySliding>& points,
                         const std::vector<double>& mu_errors, const nlohmann::json& provenance) {
   CsvFile f(path, provenance);
-  f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N\n";
+  f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N,"
+                "solid_shear_Pa\n";
   for (std::size_t k = 0; k < points.size(); ++k) {
     const rig::SteadySliding& s = points[k];
     f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << csv_number(mu_errors[k]) << ',' << s.fluid_share << ','
                << s.separation_m << ',' << s.temperature_rise_K << ',' << s.solid_load_N << ',' << s.lift_N << ','
-               << s.fluid_shear_N << '\n';
+               << s.fluid_shear_N << ',' << s.solid_shear_Pa << '\n';
   }
   f.commit();
 }
@@ -61,6 +62,7 @@ std::vector<double> stribeck_discretisation_errors(nlohmann::json law, const hom
                                                    const std::string& source) {
   law["table"]["solid_load_N"] = pin.solid_load_coarse_N;
   law["table"]["real_area_m2"] = pin.real_area_coarse_m2;
+  if (!pin.solid_shear_coarse_Pa.empty()) law["table"]["solid_shear_Pa"] = pin.solid_shear_coarse_Pa;
   const rig::HomogenisedBase coarse(rig::law_table_from_json(law, source + " (solid columns on half the contact grid)"), normal_load_N);
   std::vector<double> errors;
   for (const rig::SteadySliding& s : points) {

@@ -31,6 +31,20 @@ std::vector<Estimate> column(const std::vector<PatchResult>& patches, std::vecto
   return out;
 }
 
+// A node × ηU column: mean ± standard error over the realisations at every entry (empty when the
+// patches have none).
+std::vector<std::vector<Estimate>> column_2d(const std::vector<PatchResult>& patches,
+                                             std::vector<std::vector<double>> PatchResult::*field) {
+  std::vector<std::vector<Estimate>> out((patches.front().*field).size());
+  for (std::size_t m = 0; m < out.size(); ++m)
+    for (std::size_t k = 0; k < (patches.front().*field)[m].size(); ++k) {
+      std::vector<double> v;
+      for (const PatchResult& p : patches) v.push_back((p.*field).at(m).at(k));
+      out[m].push_back(finite_estimate(v));
+    }
+  return out;
+}
+
 // Removes the nodes where any tabulated column's mean is NaN (no realisation converged there),
 // keeping their separations in dropped_separation_m; the coarse solid columns (for the
 // discretisation error alone: NaN there leaves the error unknown, not the node) follow.
@@ -41,6 +55,8 @@ void drop_unresolved_nodes(CellTable& t) {
   std::vector<std::vector<Estimate>*> columns = tabulated;
   columns.push_back(&t.solid_pressure_coarse_Pa);
   columns.push_back(&t.area_fraction_coarse);
+  const std::vector<std::vector<std::vector<Estimate>>*> rows_2d = {&t.spot_shear_Pa, &t.spot_shear_coarse_Pa};
+  std::vector<std::vector<std::vector<Estimate>>> kept_2d(rows_2d.size());
   std::vector<double> kept_separation;
   std::vector<std::vector<Estimate>> kept(columns.size());
   for (std::size_t m = 0; m < t.separation_m.size(); ++m) {
@@ -52,11 +68,14 @@ void drop_unresolved_nodes(CellTable& t) {
     }
     kept_separation.push_back(t.separation_m[m]);
     for (std::size_t c = 0; c < columns.size(); ++c) kept[c].push_back((*columns[c])[m]);
+    for (std::size_t c = 0; c < rows_2d.size(); ++c)
+      if (!rows_2d[c]->empty()) kept_2d[c].push_back((*rows_2d[c])[m]);
   }
   if (kept_separation.size() < 2)
     throw std::invalid_argument("homogenise: fewer than two separations have a converged solve in every column");
   t.separation_m = kept_separation;
   for (std::size_t c = 0; c < columns.size(); ++c) *columns[c] = std::move(kept[c]);
+  for (std::size_t c = 0; c < rows_2d.size(); ++c) *rows_2d[c] = std::move(kept_2d[c]);
 }
 
 }  // namespace
@@ -94,6 +113,8 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
   t.phi_fp = column(patches, &PatchResult::phi_fp);
   t.contact_fraction = column(patches, &PatchResult::contact_fraction);
   t.lift_per_eta_u_per_m = column(patches, &PatchResult::lift_per_eta_u_per_m);
+  t.spot_shear_Pa = column_2d(patches, &PatchResult::spot_shear_Pa);
+  t.spot_shear_coarse_Pa = column_2d(patches, &PatchResult::spot_shear_coarse_Pa);
   std::vector<double> mus, mub, mus_coarse, mub_coarse;
   for (const PatchResult& p : patches) {
     if (p.contact_grid != patches.front().contact_grid)

@@ -104,7 +104,9 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
   for (std::size_t m = 0; m < lift.size(); ++m)
     lift[m] = std::max(pin.wedge_lift_per_eta_u_m[m], 0.0) + pin.rugosity_lift_per_eta_u_m[m];
   nlohmann::json j;
-  j["format"] = "tribo-law-1";
+  // Micro-EHL films make the kinetic shear a function of ηU as well (rig/law_table.h "tribo-law-2").
+  const bool films = !pin.eta_u_Pa_m.empty();
+  j["format"] = films ? "tribo-law-2" : "tribo-law-1";
   j["pin"] = {{"shape", o.pin.shape == PinShape::flat ? "flat" : "spherical"},
               {"radius_m", o.pin.radius_m},
               {"crown_radius_m", o.pin.crown_radius_m},
@@ -148,6 +150,18 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                 {"squeeze_per_eta_m", pin.squeeze_per_eta_m},
                 {"shear_per_eta_u_m", pin.shear_per_eta_u_m},
                 {"dropped_separations_m", cells.dropped_separation_m}};
+  if (films) {
+    j["micro_ehl"] = {{"eyring_stress_Pa", o.micro_ehl->eyring_stress_Pa},
+                      {"tip_roughness_m", o.micro_ehl->tip_roughness_m},
+                      {"pressure_viscosity_per_Pa", o.lubricant.pressure_viscosity_per_Pa},
+                      {"min_speed_m_per_s", o.micro_ehl->min_speed_m_per_s},
+                      {"max_speed_m_per_s", o.micro_ehl->max_speed_m_per_s},
+                      {"speeds_per_decade", o.micro_ehl->speeds_per_decade}};
+    j["table"]["eta_u_Pa_m"] = pin.eta_u_Pa_m;
+    j["table"]["solid_shear_Pa"] = pin.solid_shear_Pa;
+    j["table"]["solid_shear_standard_error_Pa"] = pin.solid_shear_standard_error_Pa;
+    j["table"]["solid_shear_discretisation_error_Pa"] = pin.solid_shear_discretisation_error_Pa;
+  }
   j["cells"] = {{"sigma_m", cells.sigma_m},
                 {"realisations", cells.realisations},
                 {"unconverged", cells.unconverged},
@@ -170,6 +184,11 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                 {"contact_fraction", means(cells.contact_fraction)},
                 {"lift_per_eta_u_per_m", means(cells.lift_per_eta_u_per_m)},
                 {"lift_per_eta_u_standard_error_per_m", errors(cells.lift_per_eta_u_per_m)}};
+  if (films) {
+    nlohmann::json tau = nlohmann::json::array();
+    for (const auto& row : cells.spot_shear_Pa) tau.push_back(means(row));
+    j["cells"]["spot_shear_Pa"] = tau;
+  }
   return j;
 }
 

@@ -29,6 +29,18 @@ struct Pin {
   double normal_load_N = 93.86;     // W (thesis 21.1 lb)
 };
 
+// Elastohydrodynamic films at the contact spots (lubrication/micro_ehl.h), tabulated over ηU: the
+// spots' mean shear τ̄(h̄, ηU) that replaces τ_i in the law's kinetic force (law.json "tribo-law-2").
+// The axis: ηU = 0, then η0 U at speeds from min to max, speeds_per_decade a decade (log-spaced);
+// a rig whose η(ΔT)|U| leaves it is refused, never extrapolated.
+struct MicroEhl {
+  double eyring_stress_Pa = 5.0e6;   // lubrication::MicroEhlOptions
+  double tip_roughness_m = 40e-9;    // lubrication::MicroEhlOptions (hand-set: thesis Appendix V)
+  double min_speed_m_per_s = 1e-6;
+  double max_speed_m_per_s = 10.0;
+  int speeds_per_decade = 2;
+};
+
 struct HomogeniseOptions {
   // Composite roughness of the pair (σ = rms_height_m): grid, patch size, spectrum. Realisation k
   // uses seed surface.seed + k.
@@ -73,6 +85,7 @@ struct HomogeniseOptions {
   // fraction of its value.
   double target_relative_error = 0.01;
   int pin_grid = 65;                         // nodes across the pin face (average Reynolds)
+  std::optional<MicroEhl> micro_ehl;         // absent: the spots shear at τ_i ("tribo-law-1")
   int threads = 0;                           // realisations in parallel; 0 = all OpenMP threads
 };
 
@@ -81,5 +94,8 @@ void validate(const HomogeniseOptions& options);
 
 // The refinement factor f of the static-friction solves (f · surface.grid nodes a side).
 int contact_refinement(const HomogeniseOptions& options);
+
+// The ηU axis of the micro-EHL columns (Pa·m): 0, then η0 U over the MicroEhl speeds; empty without them.
+std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& options);
 
 }  // namespace tribo::homogenise

@@ -1,5 +1,6 @@
 #include "homogenise/patch.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -67,6 +68,14 @@ void validate(const HomogeniseOptions& o) {
   if (o.min_contact_grid < 1) bad("min_contact_grid must be >= 1");
   if (!(o.target_relative_error > 0 && o.target_relative_error < 1)) bad("target_relative_error must lie in (0, 1)");
   if (o.threads < 0) bad("threads must be >= 0");
+  if (const auto& e = o.micro_ehl) {
+    if (!(e->eyring_stress_Pa > 0 && std::isfinite(e->eyring_stress_Pa))) bad("micro_ehl eyring_stress_Pa must be finite and > 0");
+    if (!(e->tip_roughness_m > 0 && std::isfinite(e->tip_roughness_m))) bad("micro_ehl tip_roughness_m must be finite and > 0");
+    if (!(e->min_speed_m_per_s > 0 && e->max_speed_m_per_s > e->min_speed_m_per_s && std::isfinite(e->max_speed_m_per_s)))
+      bad("micro_ehl speeds must satisfy 0 < min_speed_m_per_s < max_speed_m_per_s (finite)");
+    if (e->speeds_per_decade < 1 || e->speeds_per_decade > 100) bad("micro_ehl speeds_per_decade must lie in [1, 100]");
+    if (!(o.lubricant.pressure_viscosity_per_Pa > 0)) bad("micro_ehl needs the lubricant's pressure_viscosity_per_Pa > 0");
+  }
   if (const auto& m = o.measured_heights_m) {
     if (o.realisations != 1) bad("a measured topography is one realisation: realisations must be 1");
     if (m->rows() != o.surface.grid || m->cols() != o.surface.grid)
@@ -74,6 +83,17 @@ void validate(const HomogeniseOptions& o) {
           std::to_string(o.surface.grid) + " (a square map is needed)");
     if (!m->allFinite()) bad("the measured topography holds a non-finite height");
   }
+}
+
+std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& o) {
+  if (!o.micro_ehl) return {};
+  const MicroEhl& e = *o.micro_ehl;
+  const double decades = std::log10(e.max_speed_m_per_s / e.min_speed_m_per_s);
+  const int steps = std::max(1, static_cast<int>(std::ceil(decades * e.speeds_per_decade - 1e-9)));
+  std::vector<double> axis{0.0};
+  for (int k = 0; k <= steps; ++k)
+    axis.push_back(o.lubricant.viscosity_Pa_s * e.min_speed_m_per_s * std::pow(e.max_speed_m_per_s / e.min_speed_m_per_s, static_cast<double>(k) / steps));
+  return axis;
 }
 
 int contact_refinement(const HomogeniseOptions& o) {
@@ -114,6 +134,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   r.solid_pressure_coarse_Pa = coarse.solid_pressure_Pa, r.area_fraction_coarse = coarse.area_fraction;
   r.mu_s_max = fine.mu_s_max, r.mu_boundary = fine.mu_boundary;
   r.mu_s_max_coarse = coarse.mu_s_max, r.mu_boundary_coarse = coarse.mu_boundary;
+  r.spot_shear_Pa = fine.spot_shear_Pa, r.spot_shear_coarse_Pa = coarse.spot_shear_Pa;
   r.bem_iterations = fine.bem_iterations + coarse.bem_iterations;
   r.unconverged = fine.unconverged + coarse.unconverged;
   r.messages = fine.messages + coarse.messages;
@@ -165,6 +186,8 @@ nlohmann::json to_json(const PatchResult& p) {
           {"area_fraction_coarse", p.area_fraction_coarse},
           {"mu_s_max_coarse", p.mu_s_max_coarse},
           {"mu_boundary_coarse", p.mu_boundary_coarse},
+          {"spot_shear_Pa", p.spot_shear_Pa},
+          {"spot_shear_coarse_Pa", p.spot_shear_coarse_Pa},
           {"contact_grid", p.contact_grid},
           {"bem_iterations", p.bem_iterations},
           {"stage_wall_s", {{"bem", p.bem_s}, {"flow_cells", p.flow_cells_s}, {"lift_cells", p.lift_cells_s}}},
@@ -194,6 +217,8 @@ PatchResult patch_from_json(const nlohmann::json& j) {
   j.at("area_fraction_coarse").get_to(p.area_fraction_coarse);
   j.at("mu_s_max_coarse").get_to(p.mu_s_max_coarse);
   j.at("mu_boundary_coarse").get_to(p.mu_boundary_coarse);
+  j.at("spot_shear_Pa").get_to(p.spot_shear_Pa);
+  j.at("spot_shear_coarse_Pa").get_to(p.spot_shear_coarse_Pa);
   j.at("contact_grid").get_to(p.contact_grid);
   j.at("bem_iterations").get_to(p.bem_iterations);
   const nlohmann::json& t = j.at("stage_wall_s");

@@ -31,6 +31,9 @@ struct PatchResult {
   double mu_s_max = 0;                     // at the pin's nominal pressure, on the contact grid
   double mu_boundary = 0;                  // τ_i A_r / W at the same pressure and grid
   double mu_s_max_coarse = 0, mu_boundary_coarse = 0;  // the same on half the contact grid
+  // With micro-EHL films: the spots' mean shear τ̄ per table node and ηU node, on the contact grid
+  // and on half of it (empty without).
+  std::vector<std::vector<double>> spot_shear_Pa, spot_shear_coarse_Pa;
   int contact_grid = 0;                    // nodes a side of the static solves
   int bem_iterations = 0;                  // CG iterations summed over the solid solves
   // Wall time of the stages (s): BEM load–separation and junction solves, flow- and shear-factor

@@ -48,6 +48,20 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   const auto mean_film = [&](double h) { return h > t.separation_m.back() ? h : film(h); };
   const auto film_slope = [&](double h) { return h > t.separation_m.back() ? 1.0 : film.slope(h); };
 
+  // The spots' shear per ηU node, its standard error and its value on half the contact grid.
+  pin.eta_u_Pa_m = micro_ehl_eta_u_Pa_m(o);
+  const auto shear_columns = [&](const std::vector<std::vector<Estimate>>& cells, bool error) {
+    std::vector<Column> out;
+    for (std::size_t k = 0; k < pin.eta_u_Pa_m.size(); ++k) {
+      std::vector<Estimate> c;
+      for (const auto& row : cells) c.push_back(error ? Estimate{row[k].standard_error, 0} : row[k]);
+      out.emplace_back(t, c, error ? 0.0 : o.interface_shear_strength_Pa);
+    }
+    return out;
+  };
+  const std::vector<Column> tau = shear_columns(t.spot_shear_Pa, false), tau_se = shear_columns(t.spot_shear_Pa, true),
+                            tau_coarse = shear_columns(t.spot_shear_coarse_Pa, false);
+
   const int n = o.pin_grid;
   lubrication::ReynoldsSolver solver;
   for (double centre : t.separation_m) {
@@ -85,6 +99,8 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     // Face integrals over the wetted nodes, weights scaled so they sum to πR² exactly.
     const double w = pin.nominal_area_m2 / static_cast<double>(wedge.wetted.count());
     double ns = 0, ns_se = 0, ns_coarse = 0, a = 0, a_se = 0, a_coarse = 0, rug = 0, shear = 0;
+    const std::size_t speeds = pin.eta_u_Pa_m.size();
+    std::vector<double> spot_force(speeds, 0.0), spot_force_se(speeds, 0.0), spot_force_coarse(speeds, 0.0);
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
         if (!wedge.wetted(i, j)) continue;
@@ -95,6 +111,11 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
         a += w * ar(hk);
         a_se += w * ar_err(hk);
         a_coarse += w * ar_coarse(hk);
+        for (std::size_t k = 0; k < speeds; ++k) {
+          spot_force[k] += w * ar(hk) * tau[k](hk);
+          spot_force_se[k] += w * ar(hk) * tau_se[k](hk);
+          spot_force_coarse[k] += w * ar_coarse(hk) * tau_coarse[k](hk);
+        }
         rug += w * lift(hk);
         // Central difference of the wedge pressure (ambient 0 beyond the rim).
         const auto p_at = [&](int ii) {
@@ -115,6 +136,20 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     pin.rugosity_lift_per_eta_u_m.push_back(rug);
     pin.squeeze_per_eta_m.push_back(squeeze.load_N);
     pin.shear_per_eta_u_m.push_back(shear);
+    if (speeds > 0) {
+      const auto per_area = [&](double force, double area) { return area > 0.0 ? force / area : o.interface_shear_strength_Pa; };
+      std::vector<double> tau_row, se_row, error_row, coarse_row;
+      for (std::size_t k = 0; k < speeds; ++k) {
+        tau_row.push_back(per_area(spot_force[k], a));
+        se_row.push_back(a > 0.0 ? spot_force_se[k] / a : 0.0);
+        coarse_row.push_back(per_area(spot_force_coarse[k], a_coarse));
+        error_row.push_back(error_from_refinement(coarse_row.back(), tau_row.back()));
+      }
+      pin.solid_shear_coarse_Pa.push_back(coarse_row);
+      pin.solid_shear_Pa.push_back(tau_row);
+      pin.solid_shear_standard_error_Pa.push_back(se_row);
+      pin.solid_shear_discretisation_error_Pa.push_back(error_row);
+    }
   }
   return pin;
 }

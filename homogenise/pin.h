@@ -20,7 +20,9 @@
 //             The shear-induced pressure's part φfs is left out: the cells' measured φf − φfs turns
 //             negative below h̄ ≈ 1.5σ (their nodal pressure gradient cannot resolve the films
 //             next to contact spots), so it is kept in the tables for inspection but not used;
-//             it is 1.5 (σ/h̄)² of φf at large h̄ (lubrication/flow_factors.h).
+//             it is 1.5 (σ/h̄)² of φf at large h̄ (lubrication/flow_factors.h);
+//   spots     with micro-EHL films, the contact spots' mean shear weighted by the real area over
+//             the face (below), the τ_i of the law's kinetic force τ_i A_r made a function of h̄, ηU.
 #pragma once
 
 #include <string>
@@ -43,6 +45,12 @@ struct PinTable {
   std::vector<double> rugosity_lift_per_eta_u_m; // N_r / (ηU)
   std::vector<double> squeeze_per_eta_m;         // K
   std::vector<double> shear_per_eta_u_m;         // F_f / (ηU)
+  // With micro-EHL films: the ηU axis and the mean shear of the real contact area over the face,
+  //   τ̄(h̄, ηU) = ∫ τ̄_cell(h, ηU) (A_r/A)(h) dA / ∫ (A_r/A)(h) dA   (τ_i where there is no contact),
+  // with its standard error and discretisation error (half the contact grid), per node and ηU.
+  std::vector<double> eta_u_Pa_m;
+  std::vector<std::vector<double>> solid_shear_Pa, solid_shear_standard_error_Pa, solid_shear_discretisation_error_Pa;
+  std::vector<std::vector<double>> solid_shear_coarse_Pa;  // the same from half the contact grid
   int reynolds_unconverged = 0;
   std::string messages;
 };

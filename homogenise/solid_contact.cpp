@@ -5,9 +5,11 @@
 #include <limits>
 #include <stdexcept>
 
+#include "contact/contact_spots.h"
 #include "contact/grid.h"
 #include "contact/halfspace.h"
 #include "contact/normal_contact.h"
+#include "lubrication/micro_ehl.h"
 #include "numerics/format.h"
 
 namespace tribo::homogenise {
@@ -52,6 +54,16 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
   const std::size_t nodes = o.separation_ratios.size();
   r.solid_pressure_Pa.assign(nodes, 0.0);
   r.area_fraction.assign(nodes, 0.0);
+  const std::vector<double> eta_u = micro_ehl_eta_u_Pa_m(o);
+  lubrication::MicroEhlOptions films;
+  if (o.micro_ehl) {
+    films.e_star_Pa = o.e_star_Pa;
+    films.pressure_viscosity_per_Pa = o.lubricant.pressure_viscosity_per_Pa;
+    films.eyring_stress_Pa = o.micro_ehl->eyring_stress_Pa;
+    films.tip_roughness_m = o.micro_ehl->tip_roughness_m;
+    films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
+    r.spot_shear_Pa.assign(nodes, std::vector<double>(eta_u.size(), o.interface_shear_strength_Pa));
+  }
   Eigen::ArrayXXd warm;
   for (std::size_t m = nodes; m-- > 0;) {  // from light to heavy contact, warm-started
     const double approach = r.first_contact_separation_m - o.separation_ratios[m] * sigma;
@@ -62,7 +74,12 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
     if (!c.summary.converged) {
       failed("at h/σ = " + numerics::shortest(o.separation_ratios[m]), c);
       r.solid_pressure_Pa[m] = r.area_fraction[m] = kNaN;
+      if (o.micro_ehl) r.spot_shear_Pa[m].assign(eta_u.size(), kNaN);
       continue;
+    }
+    if (o.micro_ehl) {
+      const std::vector<contact::ContactSpot> spots = contact::contact_spots(c.pressure_Pa, grid, o.e_star_Pa);
+      for (std::size_t k = 0; k < eta_u.size(); ++k) r.spot_shear_Pa[m][k] = lubrication::mean_spot_shear_Pa(spots, eta_u[k], films);
     }
     r.solid_pressure_Pa[m] = c.normal_load_N / patch_area;
     r.area_fraction[m] = c.area_fraction;

@@ -9,7 +9,9 @@
 //           gives the slip area A_s and μs,max = τ_i A_s / W (contact/tangential.h's fixed point at
 //           its slip end; fully plastic it is (3.1.23)'s 1/√(S² − α));
 //   dry     μ_b = τ_i A_r / W with the cap σ0 at the same pressure (Bowden–Tabor shear of the
-//           junctions while sliding).
+//           junctions while sliding);
+//   films   with options.micro_ehl, each node's contact spots (contact/contact_spots.h) as EHL point
+//           contacts: their mean shear τ̄(ηU) (lubrication/micro_ehl.h).
 //
 // At the thesis' pressure (1.3 MPa, A_r/A0 ≈ 0.16 %) a 128² patch resolves ≈ 27 contact cells and
 // overstates the area by the elastic rim of every spot (μ_b 40 % high). The solves therefore run
@@ -35,6 +37,9 @@ struct SolidContact {
   std::vector<double> area_fraction;
   double mu_s_max = 0;     // NaN when its solve did not converge
   double mu_boundary = 0;  // NaN when its solve did not converge
+  // With options.micro_ehl: the contact spots' mean shear τ̄ (lubrication/micro_ehl.h) per table node
+  // and ηU node (micro_ehl_eta_u_Pa_m); τ_i where a node has no contact, NaN where its solve failed.
+  std::vector<std::vector<double>> spot_shear_Pa;
   int bem_iterations = 0;  // CG iterations summed over the solves
   int unconverged = 0;
   std::string messages;    // why, for each unconverged solve

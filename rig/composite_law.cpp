@@ -54,7 +54,7 @@ std::optional<double> CompositeLaw::for_each_effect(const FrictionContext& c, Vi
   EffectContext e;
   e.rig = &c;
   e.mu_s = static_coefficient(c);
-  e.mu_k_baseline = baseline_.homogenised ? baseline_.homogenised->solid_kinetic_coefficient(base_state(c))
+  e.mu_k_baseline = baseline_.homogenised ? baseline_.homogenised->solid_kinetic_coefficient(base_state(c), c.relative_speed_m_per_s)
                                           : baseline_kinetic_coefficient(c.relative_speed_m_per_s);
   for (std::size_t i = 0; i < effects_.size(); ++i) {
     e.state = slice(c.state, i);

@@ -33,6 +33,7 @@ HomogenisedBase::HomogenisedBase(LawTable table, double normal_load_N)
                                 internal::exact_decimal(n_front) + "] N (" + (table_.source.empty() ? std::string("table") : table_.source) +
                                 ": table.solid_load_N); the film's equilibrium N_s(h) = W must lie inside the table");
   }
+  if (!table_.eta_u_Pa_m.empty()) solid_shear_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.solid_shear_Pa);
   lubricant_.viscosity_Pa_s = table_.lubricant.viscosity_Pa_s;
   lubricant_.pressure_viscosity_per_Pa = 0.0;  // ambient pressure: the rig's film is not EHL
   lubricant_.temperature_viscosity_per_K = table_.lubricant.temperature_viscosity_per_K;
@@ -80,9 +81,14 @@ double HomogenisedBase::static_coefficient(const FrictionContext& c) const {
   return contact::static_friction_from_load_rate(table_.junction.locus, c.tangential_load_rate_per_s);
 }
 
-double HomogenisedBase::solid_kinetic_coefficient(std::span<const double> state) const {
+double HomogenisedBase::solid_shear_Pa(double h, double eta_u) const {
+  return solid_shear_ ? solid_shear_->value(h, eta_u) : table_.junction.interface_shear_strength_Pa;
+}
+
+double HomogenisedBase::solid_kinetic_coefficient(std::span<const double> state, double u) const {
   const double h = state[kSeparation], n_s = solid_load_N(h);
-  return n_s > 0.0 ? table_.junction.interface_shear_strength_Pa * real_area_m2(h) / n_s : 0.0;
+  const double eta_u = viscosity_Pa_s(state[kTemperatureRise]) * std::abs(u);
+  return n_s > 0.0 ? solid_shear_Pa(h, eta_u) * real_area_m2(h) / n_s : 0.0;
 }
 
 double HomogenisedBase::static_limit_N(const FrictionContext& c, double solid_fraction, double static_increment) const {
@@ -92,8 +98,9 @@ double HomogenisedBase::static_limit_N(const FrictionContext& c, double solid_fr
 double HomogenisedBase::kinetic_force_N(const FrictionContext& c, double solid_fraction, double kinetic_increment,
                                         double fluid_force_N) const {
   const double h = c.state[kSeparation];
-  const double solid = table_.junction.interface_shear_strength_Pa * real_area_m2(h) + kinetic_increment * solid_load_N(h);
-  const double viscous = viscosity_Pa_s(c.state[kTemperatureRise]) * c.relative_speed_m_per_s * shear_per_eta_u_m(h);
+  const double eta = viscosity_Pa_s(c.state[kTemperatureRise]);
+  const double solid = solid_shear_Pa(h, eta * std::abs(c.relative_speed_m_per_s)) * real_area_m2(h) + kinetic_increment * solid_load_N(h);
+  const double viscous = eta * c.relative_speed_m_per_s * shear_per_eta_u_m(h);
   return solid_fraction * solid + viscous + fluid_force_N;
 }
 

@@ -6,7 +6,9 @@
 //   load balance         W = N_s(h̄) + η|U| L(h̄) − η K(h̄) dh̄/dt  (solid + lift + squeeze, DESIGN §4)
 //     ⇒  dh̄/dt = [N_s(h̄) + η|U| L(h̄) − W] / (η K(h̄));   η = 0 (dry): dh̄/dt = 0, h̄ stays at h̄0
 //   initial film         N_s(h̄0) = W, ΔT0 = 0                  (the slider starts at rest, unheated)
-//   kinetic force        F_k = τ_i A_r(h̄) + η(ΔT)|U| S(h̄)      (boundary shear + viscous shear)
+//   kinetic force        F_k = τ̄ A_r(h̄) + η(ΔT)|U| S(h̄)      (boundary shear + viscous shear)
+//     τ̄ = τ_i ("tribo-law-1"), or τ̄(h̄, η(ΔT)|U|) of the asperity tops' EHL films ("tribo-law-2",
+//     lubrication/micro_ehl.h): the flash temperature thins those films through η(ΔT)
 //   static limit         F_s = μs(φ̇) N_s(h̄)                    (junction locus, thesis (3.1.24); re-attach alike)
 //   flash temperature    thesis (5.2.1) in SI (Jaeger; the gravity g and heat-work J constants drop):
 //       ΔT_J = P b / (1.9 √A [1.1 ξ2 b + 0.7 ξ1 A^{1/4} √|U|]),   P = F_k |U|,  b = √(κ_slider)
@@ -26,6 +28,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -72,13 +75,16 @@ class HomogenisedBase {
   double viscosity_Pa_s(double temperature_rise_K) const;
   // μs at the context's load rate from the table's junction locus, thesis (3.1.24).
   double static_coefficient(const FrictionContext& c) const;
-  // τ_i A_r(h̄) / N_s(h̄): the solid contact's kinetic coefficient (0 once N_s = 0).
-  double solid_kinetic_coefficient(std::span<const double> state) const;
+  // τ̄ of the real contact area at h̄ and ηU (τ_i in a "tribo-law-1" table); std::out_of_range
+  // outside the table's ηU axis.
+  double solid_shear_Pa(double h_m, double eta_u_Pa_m) const;
+  // τ̄ A_r(h̄) / N_s(h̄) at the sliding speed: the solid contact's kinetic coefficient (0 once N_s = 0).
+  double solid_kinetic_coefficient(std::span<const double> state, double speed_m_per_s) const;
 
   // Channels with the effects' contributions (χ = 1, no increments, no fluid force for the bare law):
   //   F_static = χ (μs + Δμs) N_s(h̄)
   double static_limit_N(const FrictionContext& c, double solid_fraction, double static_increment) const;
-  //   F_k = χ (τ_i A_r(h̄) + Δμ N_s(h̄)) + η(ΔT)|U| S(h̄) + F_fluid
+  //   F_k = χ (τ̄ A_r(h̄) + Δμ N_s(h̄)) + η(ΔT)|U| S(h̄) + F_fluid
   double kinetic_force_N(const FrictionContext& c, double solid_fraction, double kinetic_increment,
                          double fluid_force_N) const;
 
@@ -97,6 +103,7 @@ class HomogenisedBase {
   LawTable table_;
   double normal_load_N_;
   MonotoneTable solid_load_, real_area_, lift_, squeeze_, shear_;
+  std::optional<ShearTable> solid_shear_;  // "tribo-law-2" only
   lubrication::Lubricant lubricant_;
   lubrication::JaegerContact jaeger_;
   double h0_m_ = 0.0;

@@ -155,6 +155,23 @@ void validate(const LawTable& t) {
   check_column(s, "table.lift_per_eta_u_m", t.lift_per_eta_u_m, Sign::non_negative);
   check_column(s, "table.squeeze_per_eta_m", t.squeeze_per_eta_m, Sign::positive);
   check_column(s, "table.shear_per_eta_u_m", t.shear_per_eta_u_m, Sign::positive);
+  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty()) return;  // "tribo-law-1"
+  const std::vector<double>& e = t.eta_u_Pa_m;
+  if (e.size() < 2) fail(s, "table.eta_u_Pa_m", "needs at least 2 entries (got " + std::to_string(e.size()) + ")");
+  if (e.front() != 0.0) fail(s, "table.eta_u_Pa_m[0]", "must be 0 (the law must answer at rest), got " + exact_decimal(e.front()));
+  for (std::size_t i = 1; i < e.size(); ++i) {
+    require_finite(s, "table.eta_u_Pa_m[" + std::to_string(i) + "]", e[i]);
+    if (!(e[i] > e[i - 1]))
+      fail(s, "table.eta_u_Pa_m[" + std::to_string(i) + "]", "must be strictly increasing (" + exact_decimal(e[i - 1]) + " then " + exact_decimal(e[i]) + ")");
+  }
+  if (t.solid_shear_Pa.size() != n)
+    fail(s, "table.solid_shear_Pa", "has " + std::to_string(t.solid_shear_Pa.size()) + " rows but table.separation_m has " + std::to_string(n));
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::string key = "table.solid_shear_Pa[" + std::to_string(m) + "]";
+    if (t.solid_shear_Pa[m].size() != e.size())
+      fail(s, key, "has " + std::to_string(t.solid_shear_Pa[m].size()) + " entries but table.eta_u_Pa_m has " + std::to_string(e.size()));
+    check_column(s, key, t.solid_shear_Pa[m], Sign::positive);
+  }
 }
 
 LawTable read_law_table(const std::filesystem::path& path) {
@@ -177,9 +194,10 @@ LawTable law_table_from_json(const json& doc, const std::string& source) {
   LawTable t;
   t.source = source;
   const json& format = r.member(doc, "", "format");
-  if (!format.is_string() || format.get<std::string>() != "tribo-law-1") {
-    fail(source, "format", "must be \"tribo-law-1\" (got " + format.dump() + ")");
+  if (!format.is_string() || (format.get<std::string>() != "tribo-law-1" && format.get<std::string>() != "tribo-law-2")) {
+    fail(source, "format", "must be \"tribo-law-1\" or \"tribo-law-2\" (got " + format.dump() + ")");
   }
+  const bool films = format.get<std::string>() == "tribo-law-2";
 
   const json& pin = r.object(doc, "", "pin");
   t.pin.shape = r.string_or(pin, "pin", "shape", "");
@@ -215,6 +233,15 @@ LawTable law_table_from_json(const json& doc, const std::string& source) {
   t.lift_per_eta_u_m = r.column(tab, "table", "lift_per_eta_u_m");
   t.squeeze_per_eta_m = r.column(tab, "table", "squeeze_per_eta_m");
   t.shear_per_eta_u_m = r.column(tab, "table", "shear_per_eta_u_m");
+  if (films) {
+    t.eta_u_Pa_m = r.column(tab, "table", "eta_u_Pa_m");
+    const json& rows = r.member(tab, "table", "solid_shear_Pa");
+    if (!rows.is_array()) fail(source, "table.solid_shear_Pa", "must be an array of arrays of numbers");
+    for (std::size_t m = 0; m < rows.size(); ++m) {
+      const json row{{"row", rows[m]}};
+      t.solid_shear_Pa.push_back(r.column(row, "table.solid_shear_Pa", "row"));
+    }
+  }
 
   validate(t);
   return t;
@@ -309,6 +336,34 @@ double MonotoneTable::slope(double x) const {
   const double h = x_[k + 1] - x_[k], t = (x - x_[k]) / h, t2 = t * t;
   const double g10 = 3.0 * t2 - 4.0 * t + 1.0, g01 = 6.0 * (t - t2), g11 = 3.0 * t2 - 2.0 * t;
   return g01 * (y_[k + 1] - y_[k]) / h + g10 * d_[k] + g11 * d_[k + 1];
+}
+
+// ---- ShearTable --------------------------------------------------------------------------------
+
+ShearTable::ShearTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m,
+                       const std::vector<std::vector<double>>& shear_Pa)
+    : eta_u_(std::move(eta_u_Pa_m)) {
+  if (eta_u_.size() < 2 || shear_Pa.size() != separation_m.size())
+    throw std::invalid_argument("ShearTable: needs two ηU nodes and one row per separation");
+  for (std::size_t k = 0; k < eta_u_.size(); ++k) {
+    std::vector<double> column;
+    for (const std::vector<double>& row : shear_Pa) {
+      if (row.size() != eta_u_.size()) throw std::invalid_argument("ShearTable: a row's length differs from the ηU axis");
+      column.push_back(row[k]);
+    }
+    at_eta_u_.emplace_back(separation_m, column, "separation_m");
+  }
+}
+
+double ShearTable::value(double h_m, double eta_u) const {
+  if (!(eta_u >= eta_u_.front() && eta_u <= eta_u_.back()))
+    throw std::out_of_range("law table: eta_u_Pa_m = " + exact_decimal(eta_u) + " lies outside the table's [" + exact_decimal(eta_u_.front()) +
+                            ", " + exact_decimal(eta_u_.back()) + "]; homogenise with a larger [micro_ehl] max_speed_m_per_s");
+  const auto upper = std::upper_bound(eta_u_.begin(), eta_u_.end(), eta_u);
+  const std::size_t k = upper == eta_u_.end() ? eta_u_.size() - 2 : static_cast<std::size_t>(upper - eta_u_.begin()) - 1;
+  const double a = eta_u_[k], b = eta_u_[k + 1];
+  const double w = a > 0.0 ? std::log(eta_u / a) / std::log(b / a) : (eta_u - a) / (b - a);
+  return (1.0 - w) * at_eta_u_[k].value(h_m) + w * at_eta_u_[k + 1].value(h_m);
 }
 
 }  // namespace tribo::rig

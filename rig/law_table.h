@@ -1,4 +1,4 @@
-// The homogenised friction-law table `law.json` (format "tribo-law-1"), written by
+// The homogenised friction-law table `law.json` (formats "tribo-law-1" and "tribo-law-2"), written by
 // `tribo homogenise` (homogenise/) and read here as plain data — the rig does not link the micro
 // solvers (DESIGN §1, §4). Every column is a function of the pin face's mean separation h̄ (m):
 //
@@ -7,6 +7,11 @@
 //   L(h̄)         table.lift_per_eta_u_m    N_lift = η U L(h̄)   rugosity / wedge lift (m), ≥ 0
 //   K(h̄)         table.squeeze_per_eta_m   N_sq = −η K(h̄) ḣ     squeeze film (m), > 0
 //   S(h̄)         table.shear_per_eta_u_m   F_fluid = η U S(h̄)  viscous shear of the film (m), > 0
+//
+// and in "tribo-law-2" a second axis, ηU (Pa·m, the disc speed times the oil's viscosity at its
+// temperature), for the shear of the real contact area:
+//
+//   τ̄(h̄, ηU)    table.solid_shear_Pa [h][ηU]  F_solid = τ̄ A_r (τ_i A_r in "tribo-law-1"), > 0
 //
 // plus the pin, the lubricant (η = η0 exp(−γ ΔT), lubrication/viscosity.h), the thermal constants
 // of Jaeger's flash temperature (thesis (5.2.1)) and the junction locus (thesis (3.1.24)) with the
@@ -17,7 +22,9 @@
 // slopes (F. N. Fritsch and R. E. Carlson, "Monotone piecewise cubic interpolation",
 // SIAM J. Numer. Anal. 17 (1980) 238–246): C¹, exact at the nodes and on linear data, and
 // monotone on every interval where the data are, so a non-increasing, non-negative column (N_s,
-// A_r) stays non-increasing and non-negative between its nodes. It never extrapolates.
+// A_r) stays non-increasing and non-negative between its nodes. It never extrapolates. Over ηU
+// (ShearTable) the columns are interpolated linearly in ln ηU between positive nodes and linearly
+// in ηU between 0 and the first, and never extrapolated either.
 #pragma once
 
 #include <filesystem>
@@ -67,6 +74,10 @@ struct LawTable {
   std::vector<double> lift_per_eta_u_m;     // L
   std::vector<double> squeeze_per_eta_m;    // K
   std::vector<double> shear_per_eta_u_m;    // S
+  // "tribo-law-2" only (empty in "tribo-law-1"): the mean shear of the real contact area with the
+  // asperity tops' EHL films (lubrication/micro_ehl.h), τ̄(h̄, ηU), per separation and ηU node.
+  std::vector<double> eta_u_Pa_m;                 // ηU axis (Pa·m): starts at 0, strictly increasing
+  std::vector<std::vector<double>> solid_shear_Pa;  // [separation][ηU], > 0
 };
 
 // Reads law.json. Any defect (unreadable file, malformed JSON, wrong format, missing key, wrong
@@ -100,6 +111,19 @@ class MonotoneTable {
 
   std::vector<double> x_, y_, d_;   // nodes, values, Hermite slopes
   std::string axis_;
+};
+
+// τ̄(h̄, ηU) of a "tribo-law-2" table: PCHIP over h̄ at each ηU node (MonotoneTable), linear between
+// ηU nodes (in ln ηU above the first positive node). Outside either axis std::out_of_range.
+class ShearTable {
+ public:
+  // The table's separation axis and its ηU axis and τ̄ rows; std::invalid_argument on a shape mismatch.
+  ShearTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m, const std::vector<std::vector<double>>& shear_Pa);
+  double value(double h_m, double eta_u_Pa_m) const;
+
+ private:
+  std::vector<double> eta_u_;
+  std::vector<MonotoneTable> at_eta_u_;  // τ̄(h̄) at each ηU node
 };
 
 }  // namespace tribo::rig

@@ -18,14 +18,15 @@ SteadySliding steady_sliding(const HomogenisedBase& b, double u) {
   if (!(u > 0.0 && std::isfinite(u))) throw std::invalid_argument("steady sliding: speed must be finite and > 0");
   SteadySliding s;
   s.speed_m_per_s = u;
-  const double w = b.normal_load_N(), tau = b.table().junction.interface_shear_strength_Pa;
+  const double w = b.normal_load_N();
   double dT = 0.0;
   for (int it = 0; it < 500; ++it) {
     const double eta = b.viscosity_Pa_s(dT);
     s.separation_m = b.balanced_separation_m(eta * u);
     s.solid_load_N = b.solid_load_N(s.separation_m);
     s.lift_N = eta * u * b.lift_per_eta_u_m(s.separation_m);
-    s.solid_friction_N = tau * b.real_area_m2(s.separation_m);
+    s.solid_shear_Pa = b.solid_shear_Pa(s.separation_m, eta * u);
+    s.solid_friction_N = s.solid_shear_Pa * b.real_area_m2(s.separation_m);
     s.fluid_shear_N = eta * u * b.shear_per_eta_u_m(s.separation_m);
     const double target = b.jaeger_temperature_rise_K((s.solid_friction_N + s.fluid_shear_N) * u, s.separation_m, u);
     s.temperature_rise_K = dT;

@@ -3,7 +3,8 @@
 //
 //   film         N_s(h̄) + η(ΔT) U L(h̄) = W                  (dh̄/dt = 0, no squeeze)
 //   temperature  ΔT = ΔT_J(F U, h̄, U)                          (dΔT/dt = 0, thesis (5.2.1))
-//   friction     μ = F/W,  F = τ_i A_r(h̄) + η(ΔT) U S(h̄);  fluid share = η U L(h̄) / W
+//   friction     μ = F/W,  F = τ̄(h̄, η(ΔT) U) A_r(h̄) + η(ΔT) U S(h̄);  fluid share = η U L(h̄) / W
+//                (τ̄ = τ_i without the asperity tops' EHL films, "tribo-law-1")
 // h̄ by HomogenisedBase::balanced_separation_m, ΔT by damped fixed-point iteration. A film that settles
 // over a slip distance U t_h independent of U decays with slip distance, as the thesis' transient
 // (§5.2a, Figs 5.2.3–5.2.6); one with t_h independent of U decays with time.
@@ -24,6 +25,7 @@ struct SteadySliding {
   double separation_m = 0;
   double temperature_rise_K = 0;
   double solid_load_N = 0, lift_N = 0, solid_friction_N = 0, fluid_shear_N = 0;
+  double solid_shear_Pa = 0;          // τ̄ of the real contact area (τ_i without micro-EHL films)
   double film_relaxation_time_s = 0;  // t_h of the film about this state (homogenised_law.h); it
                                       // settles over the slip distance U t_h
   double mu = 0;             // (solid + fluid shear) / W

@@ -73,6 +73,17 @@ TEST(ConfigHostile, CountsThatSizeAllocationsAreBounded) {
   EXPECT_EQ(homogenise_error(surface + "[speeds]\ncount = 3\n"), "");
 }
 
+// The micro-EHL table's ηU axis must cover the Stribeck curve's speeds (the law is never
+// extrapolated), and its keys are checked like every other.
+TEST(ConfigHostile, MicroEhlAxisMustReachTheStribeckSpeeds) {
+  const std::string surface = "[surface]\nrms_height_m = 1e-7\ncorrelation_length_m = 1e-5\n";
+  expect_all(homogenise_error(surface + "[speeds]\nmax_m_per_s = 2.0\n[micro_ehl]\nmax_speed_m_per_s = 1.0\n"),
+             {kHomogenise, "key 'micro_ehl.max_speed_m_per_s'", "max_m_per_s = 2"});
+  expect_all(homogenise_error(surface + "[micro_ehl]\ntip_roughness_m = -1e-9\n"), {"key 'micro_ehl.tip_roughness_m'"});
+  expect_all(homogenise_error(surface + "[micro_ehl]\nspeeds_per_decade = 1000\n"), {"key 'micro_ehl.speeds_per_decade'", "at most"});
+  EXPECT_EQ(homogenise_error(surface + "[micro_ehl]\n"), "");
+}
+
 TEST(ConfigHostile, SweepSizeIsBounded) {
   // count = 1e12 pushed 1e12 values; three axes of 1000 would enumerate 1e9 point configs.
   const auto dir = std::filesystem::temp_directory_path() / "tribo_cli_hostile_sweep";

@@ -14,6 +14,7 @@
 #include "homogenise/patch.h"
 #include "homogenise/pin.h"
 #include "homogenise/solid_contact.h"
+#include "lubrication/micro_ehl.h"
 #include "rig/homogenised_law.h"
 #include "rig/law_table.h"
 #include "rig/steady_sliding.h"
@@ -202,6 +203,50 @@ TEST(SolidContact, CoarseGridStartKeepsTheAnswerInFewerIterations) {
   EXPECT_NEAR(warm.mu_boundary, cold.mu_boundary, 1e-3 * cold.mu_boundary);
   EXPECT_LT(warm.bem_iterations, cold.bem_iterations);
   std::printf("BEM iterations at 256²: cold %d, from 128² %d\n", cold.bem_iterations, warm.bem_iterations);
+}
+
+// One paraboloidal asperity (R = 100 µm) pressed δ = 10 nm into the counter-face (a = 1 µm, 20
+// cells; p_H = 0.72 GPa, elastic) through the solid solve with micro-EHL films: the spot's shear at
+// every ηU node is the film of its Hertz contact (lubrication/micro_ehl.h) to 2 % of τ_i — the BEM's
+// counted area (half a cell of 20, 2.5 %, tripled in R_eq; h_c ∝ R^0.46) is all that differs — and
+// τ_i exactly at rest and where there is no contact.
+TEST(SolidContact, ASingleAsperitysFilmIsThatOfItsHertzContact) {
+  HomogeniseOptions o;
+  const int n = 256;
+  const double radius = 1e-4, approach = 1e-8, side = 12.8e-6, sigma = 1e-8;
+  o.surface.grid = n;
+  o.surface.size_m = side;
+  o.surface.rms_height_m = sigma;
+  o.separation_ratios = {1.0, 2.0, 3.0};  // approaches 10 nm, 0, −10 nm
+  o.micro_ehl = MicroEhl{};
+  Eigen::ArrayXXd z(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = (i - n / 2) * side / n, y = (j - n / 2) * side / n;
+      z(i, j) = (x * x + y * y) / (2.0 * radius) - (approach + sigma);
+    }
+  const SolidContact s = solid_contact(o, z);
+  ASSERT_EQ(s.unconverged, 0) << s.messages;
+  const double a = std::sqrt(radius * approach), load = 4.0 / 3.0 * o.e_star_Pa * std::sqrt(radius) * std::pow(approach, 1.5);
+  contact::ContactSpot hertz;
+  hertz.area_m2 = M_PI * a * a;
+  hertz.load_N = load;
+  hertz.mean_pressure_Pa = load / hertz.area_m2;
+  hertz.equivalent_radius_m = radius;
+  lubrication::MicroEhlOptions films;
+  films.e_star_Pa = o.e_star_Pa;
+  films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
+  const std::vector<double> eta_u = micro_ehl_eta_u_Pa_m(o);
+  ASSERT_EQ(s.spot_shear_Pa.size(), 3u);
+  double lowest = o.interface_shear_strength_Pa;
+  for (std::size_t k = 0; k < eta_u.size(); ++k) {
+    const double expected = lubrication::spot_film(hertz, eta_u[k], films).shear_Pa;
+    EXPECT_NEAR(s.spot_shear_Pa[0][k], expected, 0.02 * o.interface_shear_strength_Pa) << "eta U = " << eta_u[k];
+    EXPECT_EQ(s.spot_shear_Pa[2][k], o.interface_shear_strength_Pa);  // no contact
+    lowest = std::min(lowest, s.spot_shear_Pa[0][k]);
+  }
+  EXPECT_EQ(s.spot_shear_Pa[0][0], o.interface_shear_strength_Pa);
+  EXPECT_LT(lowest, 0.7 * o.interface_shear_strength_Pa);  // the axis reaches films that carry the spot
 }
 
 // A mixed-lubrication table: N_s falls to 0 at 3σ, lift and squeeze from a rugosity-like law.

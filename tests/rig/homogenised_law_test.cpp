@@ -266,7 +266,7 @@ TEST(LawTableReader, MalformedFilesNameTheKeyAndTheReason) {
   }
   {
     nlohmann::json d = good;
-    d["format"] = "tribo-law-2";
+    d["format"] = "tribo-law-9";
     expect_rejected("format.json", d, {"format", "tribo-law-1"});
   }
   expect_rejected("short.json", [&] {
@@ -574,6 +574,84 @@ TEST(HomogenisedLaw, LubricatedThesisLikeRigBreaksAwayOnTheLocusWithTheFilmAtRes
   const double phi_dot = rig.stiffness_N_per_m * v / rig.normal_load_N;
   const double mu_s = contact::static_friction_from_load_rate(thesis_locus(), phi_dot);
   EXPECT_NEAR(r.events.front().mu, mu_s, 1e-8);  // CVODE root location, as in effects_test
+}
+
+
+// ---- "tribo-law-2": the real area's shear over ηU (asperity-top EHL films) --------------------------
+
+// The linear table with a shear table over ηU = 0, 1e-4, 1e-2 Pa m: τ_i, 0.9 τ_i, 0.6 τ_i at every
+// separation, so that interpolation over h̄ is exact and over ηU its own rule shows.
+LawTable filmed_table() {
+  LawTable t = linear_table(LinearSpec{});
+  t.eta_u_Pa_m = {0.0, 1e-4, 1e-2};
+  const double tau = t.junction.interface_shear_strength_Pa;
+  t.solid_shear_Pa.assign(t.separation_m.size(), {tau, 0.9 * tau, 0.6 * tau});
+  return t;
+}
+
+nlohmann::json filmed_json(const LawTable& t) {
+  nlohmann::json j = to_json(t);
+  j["format"] = "tribo-law-2";
+  j["table"]["eta_u_Pa_m"] = t.eta_u_Pa_m;
+  j["table"]["solid_shear_Pa"] = t.solid_shear_Pa;
+  return j;
+}
+
+TEST(LawTableReader, ReadsBothFormatsAndTheShearTableOfTheSecond) {
+  const LawTable t = filmed_table();
+  const LawTable r = read_law_table(write_json("filmed.json", filmed_json(t).dump()));
+  EXPECT_EQ(r.eta_u_Pa_m, t.eta_u_Pa_m);
+  EXPECT_EQ(r.solid_shear_Pa, t.solid_shear_Pa);
+  EXPECT_TRUE(read_law_table(write_json("plain.json", to_json(t).dump())).eta_u_Pa_m.empty());  // "tribo-law-1"
+}
+
+TEST(LawTableReader, AMalformedShearTableNamesTheKeyAndTheReason) {
+  const nlohmann::json good = filmed_json(filmed_table());
+  {
+    nlohmann::json d = good;
+    d["table"]["eta_u_Pa_m"][0] = 1e-6;
+    expect_rejected("axis_start.json", d, {"table.eta_u_Pa_m[0]", "must be 0"});
+  }
+  {
+    nlohmann::json d = good;
+    d["table"]["solid_shear_Pa"][3].erase(2);
+    expect_rejected("short_row.json", d, {"table.solid_shear_Pa[3]", "entries"});
+  }
+  {
+    nlohmann::json d = good;
+    d["table"].erase("solid_shear_Pa");
+    expect_rejected("no_shear.json", d, {"table.solid_shear_Pa", "missing"});
+  }
+  {
+    nlohmann::json d = good;
+    d["format"] = "tribo-law-3";
+    expect_rejected("format3.json", d, {"format", "tribo-law-2"});
+  }
+}
+
+// The kinetic force's solid part is τ̄(h̄, ηU) A_r(h̄): τ_i A_r at rest; at ηU = 1e-3 Pa m, halfway
+// between 1e-4 and 1e-2 in ln ηU, 0.75 τ_i A_r (linear in ln ηU); at 5e-5, halfway between 0 and
+// 1e-4 in ηU, 0.95 τ_i A_r; beyond 1e-2 the query is refused, naming the axis (never extrapolated).
+TEST(HomogenisedLaw, FilmedShearScalesTheSolidKineticForceAndIsNeverExtrapolated) {
+  const LawTable t = filmed_table();
+  const HomogenisedBase base(t, 93.857);
+  const HomogenisedLaw law(std::make_shared<const HomogenisedBase>(t, 93.857));
+  const double h = t.separation_m[2], tau = t.junction.interface_shear_strength_Pa, eta = t.lubricant.viscosity_Pa_s;
+  const std::vector<double> state = {h, 0.0};
+  for (const auto& [eta_u, factor] : {std::pair{1e-3, 0.75}, std::pair{5e-5, 0.95}}) {
+    const double u = eta_u / eta;
+    const double viscous = eta * u * base.shear_per_eta_u_m(h);
+    EXPECT_NEAR(law.kinetic_force_N(context_at(state, u, 93.857)), factor * tau * base.real_area_m2(h) + viscous, 1e-9 * tau * base.real_area_m2(h))
+        << eta_u;
+  }
+  EXPECT_DOUBLE_EQ(base.solid_shear_Pa(h, 0.0), tau);
+  EXPECT_NEAR(base.solid_kinetic_coefficient(state, 1e-3 / eta), 0.75 * tau * base.real_area_m2(h) / base.solid_load_N(h), 1e-12);
+  try {
+    law.kinetic_force_N(context_at(state, 2e-2 / eta, 93.857));
+    ADD_FAILURE() << "a query beyond the ηU axis was answered";
+  } catch (const std::out_of_range& e) {
+    EXPECT_NE(std::string(e.what()).find("eta_u_Pa_m"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -1,0 +1,109 @@
+// EHL films at the contact spots (lubrication/micro_ehl.h) against their closed forms: the rest
+// limit, Hamrock–Dowson with the pin's kinematics, the Greenwood–Williamson share, Eyring's shear
+// and the area-weighted mean.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "lubrication/micro_ehl.h"
+#include "lubrication/reference/ehl_point_film.h"
+
+namespace tribo::lubrication {
+namespace {
+
+// A spot pressed to the hardness of the thesis' disc: 10 µm², 1.18 GPa, with its Hertz radius.
+contact::ContactSpot hard_spot() {
+  contact::ContactSpot s;
+  s.area_m2 = 1e-11;
+  s.mean_pressure_Pa = 1.18e9;
+  s.load_N = s.area_m2 * s.mean_pressure_Pa;
+  const double a = std::sqrt(s.area_m2 / std::numbers::pi);
+  s.equivalent_radius_m = 4.0 * MicroEhlOptions{}.e_star_Pa * a * a * a / (3.0 * s.load_N);
+  return s;
+}
+
+// At rest there is no film: the spot shears as a boundary junction, τ = τ_i exactly.
+TEST(MicroEhl, AtRestTheSpotShearsAtTheInterfaceStrength) {
+  const MicroEhlOptions o;
+  const SpotFilm f = spot_film(hard_spot(), 0.0, o);
+  EXPECT_EQ(f.central_film_m, 0.0);
+  EXPECT_EQ(f.boundary_share, 1.0);
+  EXPECT_EQ(f.shear_Pa, o.interface_shear_strength_Pa);
+}
+
+// The film is Hamrock–Dowson's central film of the spot with the pin at rest and the disc at U:
+// entrained at u_m = U/2, E' = 2E* (to round-off), for the thesis oil at 1 in/s.
+TEST(MicroEhl, FilmIsHamrockDowsonsAtHalfTheSlidingSpeed) {
+  const MicroEhlOptions o;
+  const contact::ContactSpot s = hard_spot();
+  const double eta = 0.021, u = 0.0254;
+  const auto g = reference::point_contact_groups(s.load_N, s.equivalent_radius_m, 2.0 * o.e_star_Pa, 0.5 * u, eta, o.pressure_viscosity_per_Pa);
+  const double expected = s.equivalent_radius_m * reference::hamrock_dowson_central_film(g);
+  EXPECT_NEAR(spot_film(s, eta * u, o).central_film_m / expected, 1.0, 1e-12);
+  EXPECT_GT(expected, 0.1e-9);  // a film of molecular size at the thesis' maximum of friction
+  EXPECT_LT(expected, 10e-9);
+}
+
+// Where the film is as thick as the tips' roughness (Λ = 1) the pierced share is
+// F_1(1)/F_1(0) = (φ(1) − (1 − Φ(1))) / φ(0) = 0.20884 (Gaussian summits; Greenwood & Williamson).
+TEST(MicroEhl, BoundaryShareAtUnitFilmParameterIsTheGaussianRatio) {
+  MicroEhlOptions o;
+  const double eta_u = 0.021 * 0.3;
+  o.tip_roughness_m = spot_film(hard_spot(), eta_u, o).central_film_m;
+  const double phi1 = std::exp(-0.5) / std::sqrt(2.0 * std::numbers::pi), tail1 = 0.5 * std::erfc(1.0 / std::numbers::sqrt2);
+  const double expected = (phi1 - tail1) / (1.0 / std::sqrt(2.0 * std::numbers::pi));
+  EXPECT_NEAR(expected, 0.20884, 1e-5);
+  EXPECT_NEAR(spot_film(hard_spot(), eta_u, o).boundary_share, expected, 1e-9);
+}
+
+// The fluid shear is Eyring's, τ0 asinh(η e^{α p̄} U / (τ0 h_c)), at a low spot pressure (1 MPa,
+// Barus factor 1.02) and at the hardness (factor e^{23.6}, where the code takes asinh x = ln 2x):
+// both to 1e-9 of the closed form. The spot then shears τ = b τ_i + (1 − b) τ_f.
+TEST(MicroEhl, FluidShearIsEyringsAtTheSpotsBarusViscosity) {
+  const MicroEhlOptions o;
+  const double eta_u = 0.021 * 0.3;
+  for (double p : {1e6, 1.18e9}) {
+    contact::ContactSpot s = hard_spot();
+    s.mean_pressure_Pa = p;
+    const SpotFilm f = spot_film(s, eta_u, o);
+    const double x = eta_u * std::exp(o.pressure_viscosity_per_Pa * p) / (o.eyring_stress_Pa * f.central_film_m);
+    EXPECT_NEAR(f.fluid_shear_Pa / (o.eyring_stress_Pa * std::asinh(x)), 1.0, 1e-9) << p;
+    EXPECT_NEAR(f.shear_Pa, f.boundary_share * o.interface_shear_strength_Pa + (1.0 - f.boundary_share) * f.fluid_shear_Pa, 1e-6);
+  }
+}
+
+// Thick films leave almost no junction: at ηU = 1 Pa m (a 0.05 Pa s oil at 20 m/s) the film is
+// ≈ 0.2 µm, five tip roughnesses (b = F_1(5)/F_1(0) ≈ 1e-7), and the spot shears as fluid.
+TEST(MicroEhl, ThickFilmsShearAsFluid) {
+  const MicroEhlOptions o;
+  const SpotFilm f = spot_film(hard_spot(), 1.0, o);
+  EXPECT_GT(f.central_film_m, 4.0 * o.tip_roughness_m);
+  EXPECT_LT(f.boundary_share, 1e-5);
+  EXPECT_NEAR(f.shear_Pa, f.fluid_shear_Pa, 1e-5 * o.interface_shear_strength_Pa);
+}
+
+// Over several spots the shear is area-weighted; with none, the interface strength.
+TEST(MicroEhl, MeanShearIsAreaWeightedAndTauIWithoutSpots) {
+  const MicroEhlOptions o;
+  contact::ContactSpot small = hard_spot(), large = hard_spot();
+  large.area_m2 *= 3.0, large.load_N *= 3.0, large.equivalent_radius_m *= std::sqrt(3.0);
+  const double eta_u = 0.021 * 0.1;
+  const double expected = (small.area_m2 * spot_film(small, eta_u, o).shear_Pa + large.area_m2 * spot_film(large, eta_u, o).shear_Pa) /
+                          (small.area_m2 + large.area_m2);
+  EXPECT_NEAR(mean_spot_shear_Pa({small, large}, eta_u, o), expected, 1e-6);
+  EXPECT_EQ(mean_spot_shear_Pa({}, eta_u, o), o.interface_shear_strength_Pa);
+}
+
+TEST(MicroEhl, NegativeSpeedsAndEmptySpotsAreRefused) {
+  const MicroEhlOptions o;
+  EXPECT_THROW(spot_film(hard_spot(), -1.0, o), std::invalid_argument);
+  EXPECT_THROW(spot_film(contact::ContactSpot{}, 1e-3, o), std::invalid_argument);
+  MicroEhlOptions bad;
+  bad.tip_roughness_m = 0.0;
+  EXPECT_THROW(validate(bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tribo::lubrication
