@@ -7,8 +7,6 @@
 #include <stdexcept>
 
 #include "contact/contact_spots.h"
-#include "contact/halfspace.h"
-#include "contact/normal_contact.h"
 #include "tests/contact/fixture.h"
 
 namespace tribo::contact {
@@ -41,18 +39,12 @@ TEST(ContactSpots, LabelsPeriodicFourConnectedRegionsExactly) {
 class SpotRadius : public ::testing::TestWithParam<Eigen::Index> {};
 
 TEST_P(SpotRadius, EquivalentRadiusOfAHertzSpotIsTheSpheres) {
-  const Eigen::Index n = GetParam();
-  const double side = 1e-3 * static_cast<double>(n) / 128.0;
-  const Grid grid = Grid::patch(n, n, side, side);
-  const double radius = 0.01, a_target = 0.25e-3;
-  const double load = 4.0 * kEStar * std::pow(a_target, 3) / (3.0 * radius);
-  ElasticHalfSpace hs(grid, kEStar, /*periodic=*/false);
-  const NormalContactResult r = solve_normal_load(hs, sphere_gap(grid, radius), load);
-  ASSERT_TRUE(r.summary.converged) << r.summary.message;
-  const std::vector<ContactSpot> spots = contact_spots(r.pressure_Pa, grid, kEStar);
+  const fixture::CoarseHertz h = fixture::coarse_hertz(GetParam());
+  ASSERT_TRUE(h.result.summary.converged) << h.result.summary.message;
+  const std::vector<ContactSpot> spots = contact_spots(h.result.pressure_Pa, h.grid, kEStar);
   ASSERT_EQ(spots.size(), 1u);
-  EXPECT_NEAR(spots[0].load_N / load, 1.0, 1e-6);
-  EXPECT_NEAR(spots[0].equivalent_radius_m / radius, 1.0, 0.05);
+  EXPECT_NEAR(spots[0].load_N / h.load_N, 1.0, 1e-6);
+  EXPECT_NEAR(spots[0].equivalent_radius_m / h.radius_m, 1.0, 0.05);
 }
 
 INSTANTIATE_TEST_SUITE_P(OddAndEvenGrids, SpotRadius, ::testing::Values(127, 128));

@@ -26,13 +26,9 @@ using fixture::kEStar;
 class HertzCoarse : public ::testing::TestWithParam<Eigen::Index> {};
 
 TEST_P(HertzCoarse, SphereNonPeriodicRadiusPeakAndApproach) {
-  const Eigen::Index n = GetParam();
-  const double side = 1e-3 * static_cast<double>(n) / 128.0;
-  const Grid grid = Grid::patch(n, n, side, side);
-  const double radius = 0.01, a_target = 0.25e-3;
-  const double load = 4.0 * kEStar * std::pow(a_target, 3) / (3.0 * radius);
-  ElasticHalfSpace hs(grid, kEStar, /*periodic=*/false);
-  const NormalContactResult r = solve_normal_load(hs, sphere_gap(grid, radius), load);
+  const fixture::CoarseHertz h = fixture::coarse_hertz(GetParam());
+  const NormalContactResult& r = h.result;
+  const double radius = h.radius_m, load = h.load_N;
   ASSERT_TRUE(r.summary.converged) << r.summary.message;
   const double a = std::sqrt(r.real_area_m2 / std::numbers::pi);
   EXPECT_NEAR(a / reference::hertz_contact_radius_m(load, radius, kEStar), 1.0, 0.025);
