@@ -33,7 +33,7 @@ void add_homogenise_command(CLI::App& app) {
   auto args = std::make_shared<HomogeniseArgs>();
   CLI::App* cmd = app.add_subcommand(
       "homogenise", "friction-law tables (law.json) from BEM contact and Reynolds solves on a rough surface pair");
-  cmd->add_option("config", args->config, "CONFIG.toml: [surface] [domain] [material] [junction] [lubricant] [pin] [speeds] [homogenise]")
+  cmd->add_option("config", args->config, "CONFIG.toml: [surface] [domain] [material] [junction] [lubricant] [pin] [speeds] [homogenise] [micro_ehl] (docs/homogenise.md)")
       ->required();
   cmd->add_option("--out", args->out, "output directory (law.json, stribeck.csv, area.csv, PNGs, patches/)");
   cmd->add_flag("!--no-plots", args->plots, "skip stribeck.png and area.png");
