@@ -37,7 +37,8 @@ struct CoarseHertz {
 };
 inline CoarseHertz coarse_hertz(Eigen::Index n) {
   const double side = 1e-3 * static_cast<double>(n) / 128.0, a_target = 0.25e-3;
-  CoarseHertz h{Grid::patch(n, n, side, side)};
+  CoarseHertz h;
+  h.grid = Grid::patch(n, n, side, side);
   h.load_N = 4.0 * kEStar * std::pow(a_target, 3) / (3.0 * h.radius_m);
   ElasticHalfSpace hs(h.grid, kEStar, /*periodic=*/false);
   h.result = solve_normal_load(hs, sphere_gap(h.grid, h.radius_m), h.load_N);

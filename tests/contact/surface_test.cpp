@@ -231,7 +231,7 @@ TEST(SurfaceStatistics, ObliqueCosineOnARectangleHasExactRmsAndSlope) {
 // even and an odd, rectangular grid; the even one carries a Nyquist cosine along x, which refines
 // to cos(q_N x) (its real, even-split interpretation).
 TEST(FourierRefine, BandLimitedModesRefineToTheirClosedForm) {
-  for (const auto [nx, ny] : {std::pair<Eigen::Index, Eigen::Index>{16, 12}, {15, 9}}) {
+  for (const auto& [nx, ny] : {std::pair<Eigen::Index, Eigen::Index>{16, 12}, {15, 9}}) {
     const double lx = 2e-4, ly = 1.5e-4;
     const auto field = [&](Eigen::Index mx, Eigen::Index my) {
       Eigen::ArrayXXd h(mx, my);
