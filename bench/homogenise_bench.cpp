@@ -2,13 +2,19 @@
 // (examples/thesis-steel.toml): one realisation — BEM load–separation and junction solves on the
 // preset's contact grid (2048², and 1024² for the discretisation error), the flow- and
 // shear-factor cells, the cavitating lift cells on 64² and the preset's 128² — and the
-// pin-face average Reynolds solves of pin_scale. One thread per realisation, as the CLI runs them
-// (it solves realisations in parallel, one per thread).
+// pin-face average Reynolds solves of pin_scale; and the contact spots' films of one table node (the
+// labelling and the film at every ηU node, lubrication/micro_ehl.h). One thread per realisation, as
+// the CLI runs them (it solves realisations in parallel, one per thread).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <vector>
 
 #include "apps/homogenise_config.h"
+#include "contact/contact_spots.h"
+#include "contact/surface.h"
+#include "lubrication/micro_ehl.h"
 #include "homogenise/cell_table.h"
 #include "homogenise/patch.h"
 #include "homogenise/pin.h"
@@ -40,6 +46,32 @@ void BM_PinScale(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(tribo::homogenise::pin_scale(o, cells));
 }
 BENCHMARK(BM_PinScale)->Iterations(2)->Unit(benchmark::kSecond)->UseRealTime();
+
+// The films of one table node on the preset's 2048² contact grid. The field: the realisation's lowest
+// 0.16 % of nodes (the real area's share at the pin's pressure) at the hardness — the spots' count
+// and sizes set the cost, not their pressures.
+void BM_SpotFilms(benchmark::State& state) {
+  const auto o = preset(128);
+  const Eigen::ArrayXXd z = tribo::contact::fourier_refine(tribo::contact::gaussian_surface(o.surface), 16);
+  std::vector<double> sorted(z.data(), z.data() + z.size());
+  const auto k = static_cast<std::ptrdiff_t>(0.0016 * static_cast<double>(sorted.size()));
+  std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
+  const Eigen::ArrayXXd p = (z <= sorted[static_cast<std::size_t>(k)]).cast<double>() * o.hardness_Pa;
+  const auto grid = tribo::contact::Grid::patch(z.rows(), z.cols(), o.surface.size_m, o.surface.size_m);
+  tribo::lubrication::MicroEhlOptions films;
+  films.e_star_Pa = o.e_star_Pa;
+  films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
+  const std::vector<double> eta_u = tribo::homogenise::micro_ehl_eta_u_Pa_m(o);
+  std::size_t spots = 0;
+  for (auto _ : state) {
+    const auto s = tribo::contact::contact_spots(p, grid, o.e_star_Pa);
+    for (double e : eta_u) benchmark::DoNotOptimize(tribo::lubrication::mean_spot_shear_Pa(s, e, films));
+    spots = s.size();
+  }
+  state.counters["spots"] = static_cast<double>(spots);
+  state.counters["eta_u_nodes"] = static_cast<double>(eta_u.size());
+}
+BENCHMARK(BM_SpotFilms)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 
