@@ -44,12 +44,12 @@ void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig
                         const std::vector<double>& mu_errors, const nlohmann::json& provenance) {
   CsvFile f(path, provenance);
   f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N,"
-                "solid_shear_Pa\n";
+                "solid_shear_Pa,film_share_of_contact\n";
   for (std::size_t k = 0; k < points.size(); ++k) {
     const rig::SteadySliding& s = points[k];
     f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << csv_number(mu_errors[k]) << ',' << s.fluid_share << ','
                << s.separation_m << ',' << s.temperature_rise_K << ',' << s.solid_load_N << ',' << s.lift_N << ','
-               << s.fluid_shear_N << ',' << s.solid_shear_Pa << '\n';
+               << s.fluid_shear_N << ',' << s.solid_shear_Pa << ',' << s.film_share_of_contact << '\n';
   }
   f.commit();
 }
@@ -161,6 +161,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
                   {"mu", s.mu},
                   {"mu_discretisation_error", mu_errors[k]},
                   {"fluid_share", s.fluid_share},
+                  {"film_share_of_contact", s.film_share_of_contact},
                   {"separation_m", s.separation_m},
                   {"temperature_rise_K", s.temperature_rise_K},
                   {"regime", rig::to_string(s.regime)}});

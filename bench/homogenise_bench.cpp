@@ -65,7 +65,7 @@ void BM_SpotFilms(benchmark::State& state) {
   std::size_t spots = 0;
   for (auto _ : state) {
     const auto s = tribo::contact::contact_spots(p, grid, o.e_star_Pa);
-    for (double e : eta_u) benchmark::DoNotOptimize(tribo::lubrication::mean_spot_shear_Pa(s, e, films));
+    for (double e : eta_u) benchmark::DoNotOptimize(tribo::lubrication::mean_spot_films(s, e, films));
     spots = s.size();
   }
   state.counters["spots"] = static_cast<double>(spots);

@@ -55,7 +55,7 @@ void drop_unresolved_nodes(CellTable& t) {
   std::vector<std::vector<Estimate>*> columns = tabulated;
   columns.push_back(&t.solid_pressure_coarse_Pa);
   columns.push_back(&t.area_fraction_coarse);
-  const std::vector<std::vector<std::vector<Estimate>>*> rows_2d = {&t.spot_shear_Pa, &t.spot_shear_coarse_Pa};
+  const std::vector<std::vector<std::vector<Estimate>>*> rows_2d = {&t.spot_shear_Pa, &t.spot_shear_coarse_Pa, &t.spot_film_share};
   std::vector<std::vector<std::vector<Estimate>>> kept_2d(rows_2d.size());
   std::vector<double> kept_separation;
   std::vector<std::vector<Estimate>> kept(columns.size());
@@ -115,6 +115,7 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
   t.lift_per_eta_u_per_m = column(patches, &PatchResult::lift_per_eta_u_per_m);
   t.spot_shear_Pa = column_2d(patches, &PatchResult::spot_shear_Pa);
   t.spot_shear_coarse_Pa = column_2d(patches, &PatchResult::spot_shear_coarse_Pa);
+  t.spot_film_share = column_2d(patches, &PatchResult::spot_film_share);
   std::vector<double> mus, mub, mus_coarse, mub_coarse;
   for (const PatchResult& p : patches) {
     if (p.contact_grid != patches.front().contact_grid)

@@ -20,7 +20,7 @@ struct CellTable {
   std::vector<Estimate> lift_per_eta_u_per_m;
   // With micro-EHL films: the spots' mean shear τ̄ per node and ηU node (options' micro_ehl_eta_u_Pa_m),
   // on the contact grid and on half of it; empty without.
-  std::vector<std::vector<Estimate>> spot_shear_Pa, spot_shear_coarse_Pa;
+  std::vector<std::vector<Estimate>> spot_shear_Pa, spot_shear_coarse_Pa, spot_film_share;
   Estimate mu_s_max, mu_boundary;
   // Discretisation error of the two means (error_from_refinement of the realisations' mean on half
   // the contact grid against their mean on it), and that grid's nodes a side.

@@ -161,6 +161,7 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
     j["table"]["solid_shear_Pa"] = pin.solid_shear_Pa;
     j["table"]["solid_shear_standard_error_Pa"] = pin.solid_shear_standard_error_Pa;
     j["table"]["solid_shear_discretisation_error_Pa"] = pin.solid_shear_discretisation_error_Pa;
+    j["table"]["film_share"] = pin.film_share;
   }
   j["cells"] = {{"sigma_m", cells.sigma_m},
                 {"realisations", cells.realisations},

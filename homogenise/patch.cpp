@@ -135,6 +135,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   r.mu_s_max = fine.mu_s_max, r.mu_boundary = fine.mu_boundary;
   r.mu_s_max_coarse = coarse.mu_s_max, r.mu_boundary_coarse = coarse.mu_boundary;
   r.spot_shear_Pa = fine.spot_shear_Pa, r.spot_shear_coarse_Pa = coarse.spot_shear_Pa;
+  r.spot_film_share = fine.spot_film_share;
   r.bem_iterations = fine.bem_iterations + coarse.bem_iterations;
   r.unconverged = fine.unconverged + coarse.unconverged;
   r.messages = fine.messages + coarse.messages;
@@ -188,6 +189,7 @@ nlohmann::json to_json(const PatchResult& p) {
           {"mu_boundary_coarse", p.mu_boundary_coarse},
           {"spot_shear_Pa", p.spot_shear_Pa},
           {"spot_shear_coarse_Pa", p.spot_shear_coarse_Pa},
+          {"spot_film_share", p.spot_film_share},
           {"contact_grid", p.contact_grid},
           {"bem_iterations", p.bem_iterations},
           {"stage_wall_s", {{"bem", p.bem_s}, {"flow_cells", p.flow_cells_s}, {"lift_cells", p.lift_cells_s}}},
@@ -219,6 +221,7 @@ PatchResult patch_from_json(const nlohmann::json& j) {
   j.at("mu_boundary_coarse").get_to(p.mu_boundary_coarse);
   j.at("spot_shear_Pa").get_to(p.spot_shear_Pa);
   j.at("spot_shear_coarse_Pa").get_to(p.spot_shear_coarse_Pa);
+  j.at("spot_film_share").get_to(p.spot_film_share);
   j.at("contact_grid").get_to(p.contact_grid);
   j.at("bem_iterations").get_to(p.bem_iterations);
   const nlohmann::json& t = j.at("stage_wall_s");

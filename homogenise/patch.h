@@ -34,6 +34,7 @@ struct PatchResult {
   // With micro-EHL films: the spots' mean shear τ̄ per table node and ηU node, on the contact grid
   // and on half of it (empty without).
   std::vector<std::vector<double>> spot_shear_Pa, spot_shear_coarse_Pa;
+  std::vector<std::vector<double>> spot_film_share;  // on the contact grid
   int contact_grid = 0;                    // nodes a side of the static solves
   int bem_iterations = 0;                  // CG iterations summed over the solid solves
   // Wall time of the stages (s): BEM load–separation and junction solves, flow- and shear-factor

@@ -61,6 +61,12 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   };
   const std::vector<Column> tau = shear_columns(t.spot_shear_Pa, false), tau_se = shear_columns(t.spot_shear_Pa, true),
                             tau_coarse = shear_columns(t.spot_shear_coarse_Pa, false);
+  std::vector<Column> separated;
+  for (std::size_t k = 0; k < pin.eta_u_Pa_m.size(); ++k) {
+    std::vector<Estimate> c;
+    for (const auto& row : t.spot_film_share) c.push_back(row[k]);
+    separated.emplace_back(t, c, 0.0);
+  }
 
   const int n = o.pin_grid;
   lubrication::ReynoldsSolver solver;
@@ -100,7 +106,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     const double w = pin.nominal_area_m2 / static_cast<double>(wedge.wetted.count());
     double ns = 0, ns_se = 0, ns_coarse = 0, a = 0, a_se = 0, a_coarse = 0, rug = 0, shear = 0;
     const std::size_t speeds = pin.eta_u_Pa_m.size();
-    std::vector<double> spot_force(speeds, 0.0), spot_force_se(speeds, 0.0), spot_force_coarse(speeds, 0.0);
+    std::vector<double> spot_force(speeds, 0.0), spot_force_se(speeds, 0.0), spot_force_coarse(speeds, 0.0), film_area(speeds, 0.0);
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
         if (!wedge.wetted(i, j)) continue;
@@ -115,6 +121,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
           spot_force[k] += w * ar(hk) * tau[k](hk);
           spot_force_se[k] += w * ar(hk) * tau_se[k](hk);
           spot_force_coarse[k] += w * ar_coarse(hk) * tau_coarse[k](hk);
+          film_area[k] += w * ar(hk) * separated[k](hk);
         }
         rug += w * lift(hk);
         // Central difference of the wedge pressure (ambient 0 beyond the rim).
@@ -138,14 +145,16 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     pin.shear_per_eta_u_m.push_back(shear);
     if (speeds > 0) {
       const auto per_area = [&](double force, double area) { return area > 0.0 ? force / area : o.interface_shear_strength_Pa; };
-      std::vector<double> tau_row, se_row, error_row, coarse_row;
+      std::vector<double> tau_row, se_row, error_row, coarse_row, film_row;
       for (std::size_t k = 0; k < speeds; ++k) {
         tau_row.push_back(per_area(spot_force[k], a));
         se_row.push_back(a > 0.0 ? spot_force_se[k] / a : 0.0);
         coarse_row.push_back(per_area(spot_force_coarse[k], a_coarse));
+        film_row.push_back(a > 0.0 ? film_area[k] / a : 0.0);
         error_row.push_back(error_from_refinement(coarse_row.back(), tau_row.back()));
       }
       pin.solid_shear_coarse_Pa.push_back(coarse_row);
+      pin.film_share.push_back(film_row);
       pin.solid_shear_Pa.push_back(tau_row);
       pin.solid_shear_standard_error_Pa.push_back(se_row);
       pin.solid_shear_discretisation_error_Pa.push_back(error_row);

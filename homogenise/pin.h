@@ -51,6 +51,7 @@ struct PinTable {
   std::vector<double> eta_u_Pa_m;
   std::vector<std::vector<double>> solid_shear_Pa, solid_shear_standard_error_Pa, solid_shear_discretisation_error_Pa;
   std::vector<std::vector<double>> solid_shear_coarse_Pa;  // the same from half the contact grid
+  std::vector<std::vector<double>> film_share;  // the real area the films separate, weighted alike (0 without contact)
   int reynolds_unconverged = 0;
   std::string messages;
 };

@@ -63,6 +63,7 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
     films.tip_roughness_m = o.micro_ehl->tip_roughness_m;
     films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
     r.spot_shear_Pa.assign(nodes, std::vector<double>(eta_u.size(), o.interface_shear_strength_Pa));
+    r.spot_film_share.assign(nodes, std::vector<double>(eta_u.size(), 0.0));
   }
   Eigen::ArrayXXd warm;
   for (std::size_t m = nodes; m-- > 0;) {  // from light to heavy contact, warm-started
@@ -74,12 +75,16 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
     if (!c.summary.converged) {
       failed("at h/σ = " + numerics::shortest(o.separation_ratios[m]), c);
       r.solid_pressure_Pa[m] = r.area_fraction[m] = kNaN;
-      if (o.micro_ehl) r.spot_shear_Pa[m].assign(eta_u.size(), kNaN);
+      if (o.micro_ehl) r.spot_shear_Pa[m].assign(eta_u.size(), kNaN), r.spot_film_share[m].assign(eta_u.size(), kNaN);
       continue;
     }
     if (o.micro_ehl) {
       const std::vector<contact::ContactSpot> spots = contact::contact_spots(c.pressure_Pa, grid, o.e_star_Pa);
-      for (std::size_t k = 0; k < eta_u.size(); ++k) r.spot_shear_Pa[m][k] = lubrication::mean_spot_shear_Pa(spots, eta_u[k], films);
+      for (std::size_t k = 0; k < eta_u.size(); ++k) {
+        const lubrication::SpotFilms f = lubrication::mean_spot_films(spots, eta_u[k], films);
+        r.spot_shear_Pa[m][k] = f.shear_Pa;
+        r.spot_film_share[m][k] = f.film_share;
+      }
     }
     r.solid_pressure_Pa[m] = c.normal_load_N / patch_area;
     r.area_fraction[m] = c.area_fraction;

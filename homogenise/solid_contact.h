@@ -40,6 +40,7 @@ struct SolidContact {
   // With options.micro_ehl: the contact spots' mean shear τ̄ (lubrication/micro_ehl.h) per table node
   // and ηU node (micro_ehl_eta_u_Pa_m); τ_i where a node has no contact, NaN where its solve failed.
   std::vector<std::vector<double>> spot_shear_Pa;
+  std::vector<std::vector<double>> spot_film_share;  // the spots' area the films separate (0 without contact)
   int bem_iterations = 0;  // CG iterations summed over the solves
   int unconverged = 0;
   std::string messages;    // why, for each unconverged solve

@@ -41,13 +41,15 @@ SpotFilm spot_film(const contact::ContactSpot& spot, double eta_u, const MicroEh
   return f;
 }
 
-double mean_spot_shear_Pa(const std::vector<contact::ContactSpot>& spots, double eta_u, const MicroEhlOptions& o) {
-  double area = 0.0, force = 0.0;
+SpotFilms mean_spot_films(const std::vector<contact::ContactSpot>& spots, double eta_u, const MicroEhlOptions& o) {
+  double area = 0.0, force = 0.0, separated = 0.0;
   for (const contact::ContactSpot& s : spots) {
+    const SpotFilm f = spot_film(s, eta_u, o);
     area += s.area_m2;
-    force += s.area_m2 * spot_film(s, eta_u, o).shear_Pa;
+    force += s.area_m2 * f.shear_Pa;
+    separated += s.area_m2 * (1.0 - f.boundary_share);
   }
-  return area > 0.0 ? force / area : o.interface_shear_strength_Pa;
+  return area > 0.0 ? SpotFilms{force / area, separated / area} : SpotFilms{o.interface_shear_strength_Pa, 0.0};
 }
 
 }  // namespace tribo::lubrication

@@ -55,7 +55,12 @@ struct SpotFilm {
 // Throws std::invalid_argument for a negative or non-finite ηU or a spot without positive load and area.
 SpotFilm spot_film(const contact::ContactSpot& spot, double eta_u_Pa_m, const MicroEhlOptions& options);
 
-// τ̄ over the spots, area-weighted; τ_i when there are none.
-double mean_spot_shear_Pa(const std::vector<contact::ContactSpot>& spots, double eta_u_Pa_m, const MicroEhlOptions& options);
+// Over the spots, area-weighted: the shear τ̄ (τ_i when there are none) and the share of the spots'
+// area the films separate, Σ A (1 − b) / Σ A (0 when there are none).
+struct SpotFilms {
+  double shear_Pa = 0.0;
+  double film_share = 0.0;
+};
+SpotFilms mean_spot_films(const std::vector<contact::ContactSpot>& spots, double eta_u_Pa_m, const MicroEhlOptions& options);
 
 }  // namespace tribo::lubrication

@@ -34,6 +34,7 @@ HomogenisedBase::HomogenisedBase(LawTable table, double normal_load_N)
                                 ": table.solid_load_N); the film's equilibrium N_s(h) = W must lie inside the table");
   }
   if (!table_.eta_u_Pa_m.empty()) solid_shear_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.solid_shear_Pa);
+  if (!table_.film_share.empty()) film_share_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.film_share);
   lubricant_.viscosity_Pa_s = table_.lubricant.viscosity_Pa_s;
   lubricant_.pressure_viscosity_per_Pa = 0.0;  // ambient pressure: the rig's film is not EHL
   lubricant_.temperature_viscosity_per_K = table_.lubricant.temperature_viscosity_per_K;
@@ -84,6 +85,8 @@ double HomogenisedBase::static_coefficient(const FrictionContext& c) const {
 double HomogenisedBase::solid_shear_Pa(double h, double eta_u) const {
   return solid_shear_ ? solid_shear_->value(h, eta_u) : table_.junction.interface_shear_strength_Pa;
 }
+
+double HomogenisedBase::film_share(double h, double eta_u) const { return film_share_ ? film_share_->value(h, eta_u) : 0.0; }
 
 double HomogenisedBase::solid_kinetic_coefficient(std::span<const double> state, double u) const {
   const double h = state[kSeparation], n_s = solid_load_N(h);

@@ -78,6 +78,8 @@ class HomogenisedBase {
   // τ̄ of the real contact area at h̄ and ηU (τ_i in a "tribo-law-1" table); std::out_of_range
   // outside the table's ηU axis.
   double solid_shear_Pa(double h_m, double eta_u_Pa_m) const;
+  // The share of A_r(h̄) the asperity-top films separate at ηU (0 without the column).
+  double film_share(double h_m, double eta_u_Pa_m) const;
   // τ̄ A_r(h̄) / N_s(h̄) at the sliding speed: the solid contact's kinetic coefficient (0 once N_s = 0).
   double solid_kinetic_coefficient(std::span<const double> state, double speed_m_per_s) const;
 
@@ -103,7 +105,7 @@ class HomogenisedBase {
   LawTable table_;
   double normal_load_N_;
   MonotoneTable solid_load_, real_area_, lift_, squeeze_, shear_;
-  std::optional<ShearTable> solid_shear_;  // "tribo-law-2" only
+  std::optional<EtaUTable> solid_shear_, film_share_;  // "tribo-law-2" only (the film share optional)
   lubrication::Lubricant lubricant_;
   lubrication::JaegerContact jaeger_;
   double h0_m_ = 0.0;

@@ -172,7 +172,34 @@ void validate(const LawTable& t) {
       fail(s, key, "has " + std::to_string(t.solid_shear_Pa[m].size()) + " entries but table.eta_u_Pa_m has " + std::to_string(e.size()));
     check_column(s, key, t.solid_shear_Pa[m], Sign::positive);
   }
+  if (t.film_share.empty()) return;
+  if (t.film_share.size() != n)
+    fail(s, "table.film_share", "has " + std::to_string(t.film_share.size()) + " rows but table.separation_m has " + std::to_string(n));
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::string key = "table.film_share[" + std::to_string(m) + "]";
+    if (t.film_share[m].size() != e.size())
+      fail(s, key, "has " + std::to_string(t.film_share[m].size()) + " entries but table.eta_u_Pa_m has " + std::to_string(e.size()));
+    check_column(s, key, t.film_share[m], Sign::non_negative);
+    for (std::size_t k = 0; k < e.size(); ++k)
+      if (t.film_share[m][k] > 1.0) fail(s, key + "[" + std::to_string(k) + "]", "must not exceed 1 (got " + exact_decimal(t.film_share[m][k]) + ")");
+  }
 }
+
+namespace {
+
+// A [separation][ηU] column of "table".
+std::vector<std::vector<double>> rows_of(const Reader& r, const json& tab, const std::string& source, const std::string& key) {
+  const json& rows = r.member(tab, "table", key);
+  if (!rows.is_array()) fail(source, "table." + key, "must be an array of arrays of numbers");
+  std::vector<std::vector<double>> out;
+  for (std::size_t m = 0; m < rows.size(); ++m) {
+    const json row{{std::to_string(m), rows[m]}};
+    out.push_back(r.column(row, "table." + key, std::to_string(m)));
+  }
+  return out;
+}
+
+}  // namespace
 
 LawTable read_law_table(const std::filesystem::path& path) {
   const std::string source = path.string();
@@ -235,12 +262,8 @@ LawTable law_table_from_json(const json& doc, const std::string& source) {
   t.shear_per_eta_u_m = r.column(tab, "table", "shear_per_eta_u_m");
   if (films) {
     t.eta_u_Pa_m = r.column(tab, "table", "eta_u_Pa_m");
-    const json& rows = r.member(tab, "table", "solid_shear_Pa");
-    if (!rows.is_array()) fail(source, "table.solid_shear_Pa", "must be an array of arrays of numbers");
-    for (std::size_t m = 0; m < rows.size(); ++m) {
-      const json row{{"row", rows[m]}};
-      t.solid_shear_Pa.push_back(r.column(row, "table.solid_shear_Pa", "row"));
-    }
+    t.solid_shear_Pa = rows_of(r, tab, source, "solid_shear_Pa");
+    if (tab.find("film_share") != tab.end()) t.film_share = rows_of(r, tab, source, "film_share");
   }
 
   validate(t);
@@ -338,24 +361,24 @@ double MonotoneTable::slope(double x) const {
   return g01 * (y_[k + 1] - y_[k]) / h + g10 * d_[k] + g11 * d_[k + 1];
 }
 
-// ---- ShearTable --------------------------------------------------------------------------------
+// ---- EtaUTable --------------------------------------------------------------------------------
 
-ShearTable::ShearTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m,
+EtaUTable::EtaUTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m,
                        const std::vector<std::vector<double>>& shear_Pa)
     : eta_u_(std::move(eta_u_Pa_m)) {
   if (eta_u_.size() < 2 || shear_Pa.size() != separation_m.size())
-    throw std::invalid_argument("ShearTable: needs two ηU nodes and one row per separation");
+    throw std::invalid_argument("EtaUTable: needs two ηU nodes and one row per separation");
   for (std::size_t k = 0; k < eta_u_.size(); ++k) {
     std::vector<double> column;
     for (const std::vector<double>& row : shear_Pa) {
-      if (row.size() != eta_u_.size()) throw std::invalid_argument("ShearTable: a row's length differs from the ηU axis");
+      if (row.size() != eta_u_.size()) throw std::invalid_argument("EtaUTable: a row's length differs from the ηU axis");
       column.push_back(row[k]);
     }
     at_eta_u_.emplace_back(separation_m, column, "separation_m");
   }
 }
 
-double ShearTable::value(double h_m, double eta_u) const {
+double EtaUTable::value(double h_m, double eta_u) const {
   if (!(eta_u >= eta_u_.front() && eta_u <= eta_u_.back()))
     throw std::out_of_range("law table: eta_u_Pa_m = " + exact_decimal(eta_u) + " lies outside the table's [" + exact_decimal(eta_u_.front()) +
                             ", " + exact_decimal(eta_u_.back()) + "]; homogenise with a larger [micro_ehl] max_speed_m_per_s");

@@ -12,6 +12,7 @@
 // temperature), for the shear of the real contact area:
 //
 //   τ̄(h̄, ηU)    table.solid_shear_Pa [h][ηU]  F_solid = τ̄ A_r (τ_i A_r in "tribo-law-1"), > 0
+//   s_f(h̄, ηU)   table.film_share [h][ηU]      share of A_r the films separate (optional), in [0, 1]
 //
 // plus the pin, the lubricant (η = η0 exp(−γ ΔT), lubrication/viscosity.h), the thermal constants
 // of Jaeger's flash temperature (thesis (5.2.1)) and the junction locus (thesis (3.1.24)) with the
@@ -23,7 +24,7 @@
 // SIAM J. Numer. Anal. 17 (1980) 238–246): C¹, exact at the nodes and on linear data, and
 // monotone on every interval where the data are, so a non-increasing, non-negative column (N_s,
 // A_r) stays non-increasing and non-negative between its nodes. It never extrapolates. Over ηU
-// (ShearTable) the columns are interpolated linearly in ln ηU between positive nodes and linearly
+// (EtaUTable) the columns are interpolated linearly in ln ηU between positive nodes and linearly
 // in ηU between 0 and the first, and never extrapolated either.
 #pragma once
 
@@ -78,6 +79,9 @@ struct LawTable {
   // asperity tops' EHL films (lubrication/micro_ehl.h), τ̄(h̄, ηU), per separation and ηU node.
   std::vector<double> eta_u_Pa_m;                 // ηU axis (Pa·m): starts at 0, strictly increasing
   std::vector<std::vector<double>> solid_shear_Pa;  // [separation][ηU], > 0
+  // Optional (informational: the rig reports it, its forces do not use it): the share of the real
+  // area the films separate, [separation][ηU] in [0, 1]; empty when absent.
+  std::vector<std::vector<double>> film_share;
 };
 
 // Reads law.json. Any defect (unreadable file, malformed JSON, wrong format, missing key, wrong
@@ -113,17 +117,18 @@ class MonotoneTable {
   std::string axis_;
 };
 
-// τ̄(h̄, ηU) of a "tribo-law-2" table: PCHIP over h̄ at each ηU node (MonotoneTable), linear between
-// ηU nodes (in ln ηU above the first positive node). Outside either axis std::out_of_range.
-class ShearTable {
+// A "tribo-law-2" column over h̄ and ηU (τ̄, the film share): PCHIP over h̄ at each ηU node
+// (MonotoneTable), linear between ηU nodes (in ln ηU above the first positive node). Outside either
+// axis std::out_of_range.
+class EtaUTable {
  public:
-  // The table's separation axis and its ηU axis and τ̄ rows; std::invalid_argument on a shape mismatch.
-  ShearTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m, const std::vector<std::vector<double>>& shear_Pa);
+  // The table's separation axis, its ηU axis and the column's rows; std::invalid_argument on a shape mismatch.
+  EtaUTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m, const std::vector<std::vector<double>>& shear_Pa);
   double value(double h_m, double eta_u_Pa_m) const;
 
  private:
   std::vector<double> eta_u_;
-  std::vector<MonotoneTable> at_eta_u_;  // τ̄(h̄) at each ηU node
+  std::vector<MonotoneTable> at_eta_u_;  // the column over h̄ at each ηU node
 };
 
 }  // namespace tribo::rig

@@ -26,6 +26,7 @@ SteadySliding steady_sliding(const HomogenisedBase& b, double u) {
     s.solid_load_N = b.solid_load_N(s.separation_m);
     s.lift_N = eta * u * b.lift_per_eta_u_m(s.separation_m);
     s.solid_shear_Pa = b.solid_shear_Pa(s.separation_m, eta * u);
+    s.film_share_of_contact = b.film_share(s.separation_m, eta * u);
     s.solid_friction_N = s.solid_shear_Pa * b.real_area_m2(s.separation_m);
     s.fluid_shear_N = eta * u * b.shear_per_eta_u_m(s.separation_m);
     const double target = b.jaeger_temperature_rise_K((s.solid_friction_N + s.fluid_shear_N) * u, s.separation_m, u);

@@ -26,6 +26,7 @@ struct SteadySliding {
   double temperature_rise_K = 0;
   double solid_load_N = 0, lift_N = 0, solid_friction_N = 0, fluid_shear_N = 0;
   double solid_shear_Pa = 0;          // τ̄ of the real contact area (τ_i without micro-EHL films)
+  double film_share_of_contact = 0;   // the share of the real area the films separate (0 without)
   double film_relaxation_time_s = 0;  // t_h of the film about this state (homogenised_law.h); it
                                       // settles over the slip distance U t_h
   double mu = 0;             // (solid + fluid shear) / W

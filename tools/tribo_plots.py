@@ -324,7 +324,8 @@ REGIME_SHADES = {"boundary": "tab:red", "mixed": "tab:orange", "full_film": "tab
 
 
 def plot_homogenise(d):
-    """Stribeck curve (mu and fluid share against U, regimes shaded) and the load-separation curve."""
+    """Stribeck curve (mu, the fluid's share of the load and, with asperity-top films, the share of the
+    real contact area they separate, against U; regimes shaded) and the load-separation curve."""
     import json
 
     with open(os.path.join(d, "law.json")) as f:
@@ -342,7 +343,10 @@ def plot_homogenise(d):
         ax.set_ylabel("$\\mu$")
         ax2 = ax.twinx()
         ax2.semilogx(u, [p["fluid_share"] for p in pts], "b--", label="share of W on the film")
-        ax2.set_ylabel("fluid load share", color="b")
+        if any(p.get("film_share_of_contact", 0) > 0 for p in pts):
+            ax2.semilogx(u, [p.get("film_share_of_contact", 0) for p in pts], "g:", label="share of $A_r$ the films separate")
+            ax2.legend(loc="center left", fontsize=8)
+        ax2.set_ylabel("fluid share (load; contact area)", color="b")
         ax2.set_ylim(0, 1.05)
         for name, colour in REGIME_SHADES.items():
             ax.axvspan(0, 0, color=colour, alpha=0.25, label=name.replace("_", " "))

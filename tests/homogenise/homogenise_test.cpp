@@ -246,6 +246,8 @@ TEST(SolidContact, ASingleAsperitysFilmIsThatOfItsHertzContact) {
     lowest = std::min(lowest, s.spot_shear_Pa[0][k]);
   }
   EXPECT_EQ(s.spot_shear_Pa[0][0], o.interface_shear_strength_Pa);
+  EXPECT_EQ(s.spot_film_share[0][0], 0.0);  // no film at rest
+  EXPECT_NEAR(s.spot_film_share[0].back(), 1.0 - lubrication::spot_film(hertz, eta_u.back(), films).boundary_share, 0.02);
   EXPECT_LT(lowest, 0.7 * o.interface_shear_strength_Pa);  // the axis reaches films that carry the spot
 }
 

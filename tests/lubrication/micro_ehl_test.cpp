@@ -84,7 +84,8 @@ TEST(MicroEhl, ThickFilmsShearAsFluid) {
   EXPECT_NEAR(f.shear_Pa, f.fluid_shear_Pa, 1e-5 * o.interface_shear_strength_Pa);
 }
 
-// Over several spots the shear is area-weighted; with none, the interface strength.
+// Over several spots the shear and the separated share are area-weighted; with none, the
+// interface strength and no film.
 TEST(MicroEhl, MeanShearIsAreaWeightedAndTauIWithoutSpots) {
   const MicroEhlOptions o;
   contact::ContactSpot small = hard_spot(), large = hard_spot();
@@ -92,8 +93,15 @@ TEST(MicroEhl, MeanShearIsAreaWeightedAndTauIWithoutSpots) {
   const double eta_u = 0.021 * 0.1;
   const double expected = (small.area_m2 * spot_film(small, eta_u, o).shear_Pa + large.area_m2 * spot_film(large, eta_u, o).shear_Pa) /
                           (small.area_m2 + large.area_m2);
-  EXPECT_NEAR(mean_spot_shear_Pa({small, large}, eta_u, o), expected, 1e-6);
-  EXPECT_EQ(mean_spot_shear_Pa({}, eta_u, o), o.interface_shear_strength_Pa);
+  const double separated = (small.area_m2 * (1.0 - spot_film(small, eta_u, o).boundary_share) +
+                            large.area_m2 * (1.0 - spot_film(large, eta_u, o).boundary_share)) /
+                           (small.area_m2 + large.area_m2);
+  const SpotFilms both = mean_spot_films({small, large}, eta_u, o);
+  EXPECT_NEAR(both.shear_Pa, expected, 1e-6);
+  EXPECT_NEAR(both.film_share, separated, 1e-15);
+  EXPECT_GT(both.film_share, 0.0);
+  EXPECT_EQ(mean_spot_films({}, eta_u, o).shear_Pa, o.interface_shear_strength_Pa);
+  EXPECT_EQ(mean_spot_films({}, eta_u, o).film_share, 0.0);
 }
 
 TEST(MicroEhl, NegativeSpeedsAndEmptySpotsAreRefused) {

@@ -586,6 +586,7 @@ LawTable filmed_table() {
   t.eta_u_Pa_m = {0.0, 1e-4, 1e-2};
   const double tau = t.junction.interface_shear_strength_Pa;
   t.solid_shear_Pa.assign(t.separation_m.size(), {tau, 0.9 * tau, 0.6 * tau});
+  t.film_share.assign(t.separation_m.size(), {0.0, 0.1, 0.4});
   return t;
 }
 
@@ -594,6 +595,7 @@ nlohmann::json filmed_json(const LawTable& t) {
   j["format"] = "tribo-law-2";
   j["table"]["eta_u_Pa_m"] = t.eta_u_Pa_m;
   j["table"]["solid_shear_Pa"] = t.solid_shear_Pa;
+  j["table"]["film_share"] = t.film_share;
   return j;
 }
 
@@ -602,6 +604,7 @@ TEST(LawTableReader, ReadsBothFormatsAndTheShearTableOfTheSecond) {
   const LawTable r = read_law_table(write_json("filmed.json", filmed_json(t).dump()));
   EXPECT_EQ(r.eta_u_Pa_m, t.eta_u_Pa_m);
   EXPECT_EQ(r.solid_shear_Pa, t.solid_shear_Pa);
+  EXPECT_EQ(r.film_share, t.film_share);
   EXPECT_TRUE(read_law_table(write_json("plain.json", to_json(t).dump())).eta_u_Pa_m.empty());  // "tribo-law-1"
 }
 
@@ -621,6 +624,11 @@ TEST(LawTableReader, AMalformedShearTableNamesTheKeyAndTheReason) {
     nlohmann::json d = good;
     d["table"].erase("solid_shear_Pa");
     expect_rejected("no_shear.json", d, {"table.solid_shear_Pa", "missing"});
+  }
+  {
+    nlohmann::json d = good;
+    d["table"]["film_share"][2][1] = 1.5;
+    expect_rejected("film_share.json", d, {"table.film_share[2][1]", "must not exceed 1"});
   }
   {
     nlohmann::json d = good;
@@ -645,6 +653,7 @@ TEST(HomogenisedLaw, FilmedShearScalesTheSolidKineticForceAndIsNeverExtrapolated
         << eta_u;
   }
   EXPECT_DOUBLE_EQ(base.solid_shear_Pa(h, 0.0), tau);
+  EXPECT_NEAR(base.film_share(h, 1e-3), 0.25, 1e-12);  // the same rule: halfway in ln ηU
   EXPECT_NEAR(base.solid_kinetic_coefficient(state, 1e-3 / eta), 0.75 * tau * base.real_area_m2(h) / base.solid_load_N(h), 1e-12);
   try {
     law.kinetic_force_N(context_at(state, 2e-2 / eta, 93.857));
