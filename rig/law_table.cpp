@@ -109,6 +109,18 @@ void check_non_increasing_to_zero(const std::string& source, const std::string& 
   if (c.back() != 0.0) fail(source, key, "last entry must be 0 (the contact vanishes at the largest separation), got " + exact_decimal(c.back()));
 }
 
+// A [separation][ηU] column: one row per separation, one entry per ηU node, each of `sign`.
+void check_rows(const std::string& source, const std::string& key, const std::vector<std::vector<double>>& rows, std::size_t n,
+                std::size_t eta_u_nodes, Sign sign) {
+  if (rows.size() != n) fail(source, key, "has " + std::to_string(rows.size()) + " rows but table.separation_m has " + std::to_string(n));
+  for (std::size_t m = 0; m < n; ++m) {
+    const std::string row = key + "[" + std::to_string(m) + "]";
+    if (rows[m].size() != eta_u_nodes)
+      fail(source, row, "has " + std::to_string(rows[m].size()) + " entries but table.eta_u_Pa_m has " + std::to_string(eta_u_nodes));
+    check_column(source, row, rows[m], sign);
+  }
+}
+
 }  // namespace
 
 void validate(const LawTable& t) {
@@ -164,25 +176,13 @@ void validate(const LawTable& t) {
     if (!(e[i] > e[i - 1]))
       fail(s, "table.eta_u_Pa_m[" + std::to_string(i) + "]", "must be strictly increasing (" + exact_decimal(e[i - 1]) + " then " + exact_decimal(e[i]) + ")");
   }
-  if (t.solid_shear_Pa.size() != n)
-    fail(s, "table.solid_shear_Pa", "has " + std::to_string(t.solid_shear_Pa.size()) + " rows but table.separation_m has " + std::to_string(n));
-  for (std::size_t m = 0; m < n; ++m) {
-    const std::string key = "table.solid_shear_Pa[" + std::to_string(m) + "]";
-    if (t.solid_shear_Pa[m].size() != e.size())
-      fail(s, key, "has " + std::to_string(t.solid_shear_Pa[m].size()) + " entries but table.eta_u_Pa_m has " + std::to_string(e.size()));
-    check_column(s, key, t.solid_shear_Pa[m], Sign::positive);
-  }
+  check_rows(s, "table.solid_shear_Pa", t.solid_shear_Pa, n, e.size(), Sign::positive);
   if (t.film_share.empty()) return;
-  if (t.film_share.size() != n)
-    fail(s, "table.film_share", "has " + std::to_string(t.film_share.size()) + " rows but table.separation_m has " + std::to_string(n));
-  for (std::size_t m = 0; m < n; ++m) {
-    const std::string key = "table.film_share[" + std::to_string(m) + "]";
-    if (t.film_share[m].size() != e.size())
-      fail(s, key, "has " + std::to_string(t.film_share[m].size()) + " entries but table.eta_u_Pa_m has " + std::to_string(e.size()));
-    check_column(s, key, t.film_share[m], Sign::non_negative);
+  check_rows(s, "table.film_share", t.film_share, n, e.size(), Sign::non_negative);
+  for (std::size_t m = 0; m < n; ++m)
     for (std::size_t k = 0; k < e.size(); ++k)
-      if (t.film_share[m][k] > 1.0) fail(s, key + "[" + std::to_string(k) + "]", "must not exceed 1 (got " + exact_decimal(t.film_share[m][k]) + ")");
-  }
+      if (t.film_share[m][k] > 1.0)
+        fail(s, "table.film_share[" + std::to_string(m) + "][" + std::to_string(k) + "]", "must not exceed 1 (got " + exact_decimal(t.film_share[m][k]) + ")");
 }
 
 namespace {
