@@ -58,9 +58,7 @@ void BM_SpotFilms(benchmark::State& state) {
   std::nth_element(sorted.begin(), sorted.begin() + k, sorted.end());
   const Eigen::ArrayXXd p = (z <= sorted[static_cast<std::size_t>(k)]).cast<double>() * o.hardness_Pa;
   const auto grid = tribo::contact::Grid::patch(z.rows(), z.cols(), o.surface.size_m, o.surface.size_m);
-  tribo::lubrication::MicroEhlOptions films;
-  films.e_star_Pa = o.e_star_Pa;
-  films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
+  const tribo::lubrication::MicroEhlOptions films = tribo::homogenise::micro_ehl_options(o);
   const std::vector<double> eta_u = tribo::homogenise::micro_ehl_eta_u_Pa_m(o);
   std::size_t spots = 0;
   for (auto _ : state) {

@@ -26,6 +26,14 @@ std::string inadmissible_reason(const rig::FrictionModel& model, const std::stri
   return "";
 }
 
+// The baseline's fits: few parameters, so converged fully, so that no candidate wins by mere
+// recalibration.
+DiagnosisOptions calibration_options(const DiagnosisOptions& o) {
+  DiagnosisOptions calibration = o;
+  calibration.max_iterations = std::max(50, 2 * o.max_iterations);
+  return calibration;
+}
+
 double median_speed(const std::vector<Item>& items) {
   std::vector<double> v;
   for (const Item& it : items) v.push_back(it.v_m_per_s);
@@ -115,9 +123,7 @@ Calibration calibrate(const FitProblem& p) {
     if (calibrates(o, "stiffness_N_per_m") && std::isfinite(k_read)) guess.rig.stiffness_N_per_m = k_read;
     if (calibrates(o, "damping_ratio")) set_damping_ratio(guess.rig, 0.5);
   }
-  DiagnosisOptions calibration = o;
-  calibration.max_iterations = std::max(50, 2 * o.max_iterations);  // few parameters: converge fully, so no
-                                                                    // candidate wins by mere recalibration
+  const DiagnosisOptions calibration = calibration_options(o);
   // Multi-start, each start searched, and the best refined (central differences, tighter stop)
   // to where its gradient vanishes: the search's forward 1 % step stops short on the kinks of
   // event-based observables (a foreign Coulomb control: CONVERGENCE after 2 iterations, μs 2 %
@@ -192,8 +198,7 @@ Baseline baseline_at(const FitProblem& p, const FitResult& f) {
 
 std::optional<FitResult> recalibrate(const FitProblem& p, const Calibration& cal, const Baseline& b,
                                      const std::vector<Candidate>& ranked) {
-  DiagnosisOptions calibration = p.options;
-  calibration.max_iterations = std::max(50, 2 * p.options.max_iterations);  // as calibrate()
+  const DiagnosisOptions calibration = calibration_options(p.options);
   std::vector<FitResult> from_leader(std::min<std::size_t>(ranked.size(), 3));
   parallel_for(from_leader.size(), [&](std::size_t k) {
     FitSetup from{ranked[k].rig, p.model};

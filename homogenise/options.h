@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "contact/surface.h"
+#include "lubrication/micro_ehl.h"
 #include "lubrication/viscosity.h"
 
 namespace tribo::homogenise {
@@ -34,8 +35,8 @@ struct Pin {
 // The axis: ηU = 0, then η0 U at speeds from min to max, speeds_per_decade a decade (log-spaced);
 // a rig whose η(ΔT)|U| leaves it is refused, never extrapolated.
 struct MicroEhl {
-  double eyring_stress_Pa = 5.0e6;   // lubrication::MicroEhlOptions
-  double tip_roughness_m = 40e-9;    // lubrication::MicroEhlOptions (hand-set: thesis Appendix V)
+  double eyring_stress_Pa = lubrication::MicroEhlOptions{}.eyring_stress_Pa;
+  double tip_roughness_m = lubrication::MicroEhlOptions{}.tip_roughness_m;  // hand-set: thesis Appendix V
   double min_speed_m_per_s = 1e-6;
   double max_speed_m_per_s = 10.0;
   int speeds_per_decade = 2;
@@ -97,5 +98,8 @@ int contact_refinement(const HomogeniseOptions& options);
 
 // The ηU axis of the micro-EHL columns (Pa·m): 0, then η0 U over the MicroEhl speeds; empty without them.
 std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& options);
+// The films' constants: options.micro_ehl's with the pair's E*, τ_i and the lubricant's α
+// (options.micro_ehl must be set).
+lubrication::MicroEhlOptions micro_ehl_options(const HomogeniseOptions& options);
 
 }  // namespace tribo::homogenise

@@ -96,6 +96,16 @@ std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& o) {
   return axis;
 }
 
+lubrication::MicroEhlOptions micro_ehl_options(const HomogeniseOptions& o) {
+  lubrication::MicroEhlOptions films;
+  films.e_star_Pa = o.e_star_Pa;
+  films.pressure_viscosity_per_Pa = o.lubricant.pressure_viscosity_per_Pa;
+  films.eyring_stress_Pa = o.micro_ehl.value().eyring_stress_Pa;
+  films.tip_roughness_m = o.micro_ehl.value().tip_roughness_m;
+  films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
+  return films;
+}
+
 int contact_refinement(const HomogeniseOptions& o) {
   int f = 2;
   while (f * o.surface.grid < o.min_contact_grid) f *= 2;

@@ -48,25 +48,22 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   const auto mean_film = [&](double h) { return h > t.separation_m.back() ? h : film(h); };
   const auto film_slope = [&](double h) { return h > t.separation_m.back() ? 1.0 : film.slope(h); };
 
-  // The spots' shear per ηU node, its standard error and its value on half the contact grid.
+  // Per ηU node, a column over h: the spots' shear (τ_i above the last node), its standard error,
+  // its value on half the contact grid, and the share the films separate (0 above the last node).
   pin.eta_u_Pa_m = micro_ehl_eta_u_Pa_m(o);
-  const auto shear_columns = [&](const std::vector<std::vector<Estimate>>& cells, bool error) {
+  const auto per_eta_u = [&](const std::vector<std::vector<Estimate>>& cells, double smooth, bool error) {
     std::vector<Column> out;
     for (std::size_t k = 0; k < pin.eta_u_Pa_m.size(); ++k) {
       std::vector<Estimate> c;
       for (const auto& row : cells) c.push_back(error ? Estimate{row[k].standard_error, 0} : row[k]);
-      out.emplace_back(t, c, error ? 0.0 : o.interface_shear_strength_Pa);
+      out.emplace_back(t, c, smooth);
     }
     return out;
   };
-  const std::vector<Column> tau = shear_columns(t.spot_shear_Pa, false), tau_se = shear_columns(t.spot_shear_Pa, true),
-                            tau_coarse = shear_columns(t.spot_shear_coarse_Pa, false);
-  std::vector<Column> separated;
-  for (std::size_t k = 0; k < pin.eta_u_Pa_m.size(); ++k) {
-    std::vector<Estimate> c;
-    for (const auto& row : t.spot_film_share) c.push_back(row[k]);
-    separated.emplace_back(t, c, 0.0);
-  }
+  const double tau_i = o.interface_shear_strength_Pa;
+  const std::vector<Column> tau = per_eta_u(t.spot_shear_Pa, tau_i, false), tau_se = per_eta_u(t.spot_shear_Pa, 0.0, true),
+                            tau_coarse = per_eta_u(t.spot_shear_coarse_Pa, tau_i, false),
+                            separated = per_eta_u(t.spot_film_share, 0.0, false);
 
   const int n = o.pin_grid;
   lubrication::ReynoldsSolver solver;
@@ -144,7 +141,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     pin.squeeze_per_eta_m.push_back(squeeze.load_N);
     pin.shear_per_eta_u_m.push_back(shear);
     if (speeds > 0) {
-      const auto per_area = [&](double force, double area) { return area > 0.0 ? force / area : o.interface_shear_strength_Pa; };
+      const auto per_area = [&](double force, double area) { return area > 0.0 ? force / area : tau_i; };
       std::vector<double> tau_row, se_row, error_row, coarse_row, film_row;
       for (std::size_t k = 0; k < speeds; ++k) {
         tau_row.push_back(per_area(spot_force[k], a));

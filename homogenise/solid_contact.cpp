@@ -55,13 +55,8 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
   r.solid_pressure_Pa.assign(nodes, 0.0);
   r.area_fraction.assign(nodes, 0.0);
   const std::vector<double> eta_u = micro_ehl_eta_u_Pa_m(o);
-  lubrication::MicroEhlOptions films;
+  const lubrication::MicroEhlOptions films = o.micro_ehl ? micro_ehl_options(o) : lubrication::MicroEhlOptions{};
   if (o.micro_ehl) {
-    films.e_star_Pa = o.e_star_Pa;
-    films.pressure_viscosity_per_Pa = o.lubricant.pressure_viscosity_per_Pa;
-    films.eyring_stress_Pa = o.micro_ehl->eyring_stress_Pa;
-    films.tip_roughness_m = o.micro_ehl->tip_roughness_m;
-    films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
     r.spot_shear_Pa.assign(nodes, std::vector<double>(eta_u.size(), o.interface_shear_strength_Pa));
     r.spot_film_share.assign(nodes, std::vector<double>(eta_u.size(), 0.0));
   }

@@ -109,6 +109,13 @@ void check_non_increasing_to_zero(const std::string& source, const std::string& 
   if (c.back() != 0.0) fail(source, key, "last entry must be 0 (the contact vanishes at the largest separation), got " + exact_decimal(c.back()));
 }
 
+// An axis whose entries strictly increase.
+void check_strictly_increasing(const std::string& source, const std::string& key, const std::vector<double>& c) {
+  for (std::size_t i = 1; i < c.size(); ++i)
+    if (!(c[i] > c[i - 1]))
+      fail(source, key + "[" + std::to_string(i) + "]", "must be strictly increasing (" + exact_decimal(c[i - 1]) + " then " + exact_decimal(c[i]) + ")");
+}
+
 // A [separation][ηU] column: one row per separation, one entry per ηU node, each of `sign`.
 void check_rows(const std::string& source, const std::string& key, const std::vector<std::vector<double>>& rows, std::size_t n,
                 std::size_t eta_u_nodes, Sign sign) {
@@ -155,27 +162,19 @@ void validate(const LawTable& t) {
     }
   }
   check_column(s, "table.separation_m", t.separation_m, Sign::positive);
-  for (std::size_t i = 1; i < n; ++i) {
-    if (!(t.separation_m[i] > t.separation_m[i - 1])) {
-      fail(s, "table.separation_m[" + std::to_string(i) + "]",
-           "must be strictly increasing (" + exact_decimal(t.separation_m[i - 1]) + " then " + exact_decimal(t.separation_m[i]) + ")");
-    }
-  }
+  check_strictly_increasing(s, "table.separation_m", t.separation_m);
   check_non_increasing_to_zero(s, "table.solid_load_N", t.solid_load_N);
   check_non_increasing_to_zero(s, "table.real_area_m2", t.real_area_m2);
   if (!(t.solid_load_N.front() > 0.0)) fail(s, "table.solid_load_N[0]", "must be > 0 (the closest separation must carry load)");
   check_column(s, "table.lift_per_eta_u_m", t.lift_per_eta_u_m, Sign::non_negative);
   check_column(s, "table.squeeze_per_eta_m", t.squeeze_per_eta_m, Sign::positive);
   check_column(s, "table.shear_per_eta_u_m", t.shear_per_eta_u_m, Sign::positive);
-  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty()) return;  // "tribo-law-1"
+  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty() && t.film_share.empty()) return;  // "tribo-law-1"
   const std::vector<double>& e = t.eta_u_Pa_m;
   if (e.size() < 2) fail(s, "table.eta_u_Pa_m", "needs at least 2 entries (got " + std::to_string(e.size()) + ")");
   if (e.front() != 0.0) fail(s, "table.eta_u_Pa_m[0]", "must be 0 (the law must answer at rest), got " + exact_decimal(e.front()));
-  for (std::size_t i = 1; i < e.size(); ++i) {
-    require_finite(s, "table.eta_u_Pa_m[" + std::to_string(i) + "]", e[i]);
-    if (!(e[i] > e[i - 1]))
-      fail(s, "table.eta_u_Pa_m[" + std::to_string(i) + "]", "must be strictly increasing (" + exact_decimal(e[i - 1]) + " then " + exact_decimal(e[i]) + ")");
-  }
+  check_column(s, "table.eta_u_Pa_m", e, Sign::non_negative);
+  check_strictly_increasing(s, "table.eta_u_Pa_m", e);
   check_rows(s, "table.solid_shear_Pa", t.solid_shear_Pa, n, e.size(), Sign::positive);
   if (t.film_share.empty()) return;
   check_rows(s, "table.film_share", t.film_share, n, e.size(), Sign::non_negative);
@@ -364,13 +363,13 @@ double MonotoneTable::slope(double x) const {
 // ---- EtaUTable --------------------------------------------------------------------------------
 
 EtaUTable::EtaUTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m,
-                       const std::vector<std::vector<double>>& shear_Pa)
+                     const std::vector<std::vector<double>>& rows)
     : eta_u_(std::move(eta_u_Pa_m)) {
-  if (eta_u_.size() < 2 || shear_Pa.size() != separation_m.size())
+  if (eta_u_.size() < 2 || rows.size() != separation_m.size())
     throw std::invalid_argument("EtaUTable: needs two ηU nodes and one row per separation");
   for (std::size_t k = 0; k < eta_u_.size(); ++k) {
     std::vector<double> column;
-    for (const std::vector<double>& row : shear_Pa) {
+    for (const std::vector<double>& row : rows) {
       if (row.size() != eta_u_.size()) throw std::invalid_argument("EtaUTable: a row's length differs from the ηU axis");
       column.push_back(row[k]);
     }

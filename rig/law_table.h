@@ -123,7 +123,7 @@ class MonotoneTable {
 class EtaUTable {
  public:
   // The table's separation axis, its ηU axis and the column's rows; std::invalid_argument on a shape mismatch.
-  EtaUTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m, const std::vector<std::vector<double>>& shear_Pa);
+  EtaUTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m, const std::vector<std::vector<double>>& rows);
   double value(double h_m, double eta_u_Pa_m) const;
 
  private:

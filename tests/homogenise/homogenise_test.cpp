@@ -233,9 +233,7 @@ TEST(SolidContact, ASingleAsperitysFilmIsThatOfItsHertzContact) {
   hertz.load_N = load;
   hertz.mean_pressure_Pa = load / hertz.area_m2;
   hertz.equivalent_radius_m = radius;
-  lubrication::MicroEhlOptions films;
-  films.e_star_Pa = o.e_star_Pa;
-  films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;
+  const lubrication::MicroEhlOptions films = micro_ehl_options(o);
   const std::vector<double> eta_u = micro_ehl_eta_u_Pa_m(o);
   ASSERT_EQ(s.spot_shear_Pa.size(), 3u);
   double lowest = o.interface_shear_strength_Pa;

@@ -626,6 +626,12 @@ TEST(LawTableReader, AMalformedShearTableNamesTheKeyAndTheReason) {
     expect_rejected("no_shear.json", d, {"table.solid_shear_Pa", "missing"});
   }
   {
+    LawTable no_axis = filmed_table();  // a film share built in code without its ηU axis
+    no_axis.eta_u_Pa_m.clear();
+    no_axis.solid_shear_Pa.clear();
+    EXPECT_THROW(validate(no_axis), std::invalid_argument);
+  }
+  {
     nlohmann::json d = good;
     d["table"]["film_share"][2][1] = 1.5;
     expect_rejected("film_share.json", d, {"table.film_share[2][1]", "must not exceed 1"});
