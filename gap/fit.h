@@ -19,6 +19,8 @@ namespace tribo::gap {
 
 // One fitted quantity, mapped to u ∈ [1, 2] for the optimiser (so a relative numeric-difference
 // step is about 1 % of the range for every parameter); log-spaced when the range spans decades.
+// The μs coordinate is the static level as read: g μs on a model with an instrument of gain g
+// (fit.cpp, reading_gain), μs itself otherwise; reports give μs.
 struct FitParameter {
   enum class Target { mu_s, mu_k_ratio, rig, effect } target;
   std::string effect, name;

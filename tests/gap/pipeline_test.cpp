@@ -61,6 +61,30 @@ TEST(Pipeline, TheProblemRefusesBadOptionsBeforeAnyWork) {
   }
 }
 
+// With an instrument of gain g every friction reading is g times the contact's, so the μs
+// coordinate is the reading g μs (fit.h): moving the gain's coordinate alone holds the reading —
+// g μs 0.8 × 0.3 = 0.24 at g = 0.6 too, and μk/μs — and coordinates() inverts apply() exactly.
+TEST(Pipeline, WithAnInstrumentTheStaticCoordinateIsTheReadingSoTheGainMovesOnlyTheDynamics) {
+  std::vector<FitParameter> space = baseline_space(rig::coulomb(0.3, 0.2), rig::RigParameters{}, DiagnosisOptions{}, {});
+  const std::vector<FitParameter> gain = effect_parameters("instrument");
+  space.insert(space.end(), gain.begin(), gain.end());
+  FitSetup s{rig::RigParameters{}, rig::coulomb(0.3, 0.2)};
+  s.model.add("instrument");
+  s.model.set("instrument", "gain", 0.8);
+  std::vector<double> u = coordinates(space, s, false);
+  FitSetup back{rig::RigParameters{}, rig::coulomb(0.5, 0.1)};
+  back.model.add("instrument");
+  apply(space, u, back);
+  EXPECT_NEAR(back.model.baseline.mu_s, 0.3, 1e-12);
+  EXPECT_NEAR(back.model.baseline.mu_k, 0.2, 1e-12);
+  const auto g = std::find_if(space.begin(), space.end(), [](const FitParameter& q) { return q.name == "gain"; });
+  u[static_cast<std::size_t>(g - space.begin())] = g->coordinate(0.6);
+  apply(space, u, back);
+  EXPECT_NEAR(back.model.get("instrument", "gain"), 0.6, 1e-12);
+  EXPECT_NEAR(0.6 * back.model.baseline.mu_s, 0.24, 1e-12);
+  EXPECT_NEAR(back.model.baseline.mu_k / back.model.baseline.mu_s, 0.2 / 0.3, 1e-12);
+}
+
 // Calibration alone: μs recovered from static points to 1 % (each point's noise is 1 % of μk W,
 // averaged over the points), and the calibrated baseline fits the training points at least as
 // well as the truth does (within 1 %: the truth lies in the model's family, so a calibration that
