@@ -16,6 +16,7 @@
 #include "apps/provenance.h"
 #include "apps/rig_config.h"
 #include "apps/rig_output.h"
+#include "apps/selftest_journal.h"
 #include "gap/bundle.h"
 #include "gap/diagnosis.h"
 #include "gap/report.h"
@@ -249,49 +250,6 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
   j["indistinguishable_from"] = row.indistinguishable_from;
   j["git_commit"] = row.git_commit.empty() ? build : row.git_commit;
   return j;
-}
-
-// Rows of an earlier run of the same set (quick or full) from OUT/cases.jsonl, one JSON object a
-// line, appended as each case finishes. A line cut short by a kill is skipped.
-std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, bool quick) {
-  std::vector<gap::SelftestRow> rows;
-  std::ifstream in(file);
-  std::string line;
-  while (std::getline(in, line)) {
-    const nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
-    if (j.is_discarded() || !j.is_object() || j.value("quick", !quick) != quick) continue;
-    try {
-      gap::SelftestRow r;
-      r.c.true_effect = j.at("true_effect").get<std::string>();
-      r.c.model_effects = j.at("model_effects").get<std::vector<std::string>>();
-      r.c.seed = j.at("seed").get<std::uint64_t>();
-      r.c.generator = j.value("generator", std::string(gap::kRigGenerator));  // journals before issue 15: the rig's
-      r.form = j.value("form", std::string());
-      r.verdict = j.at("verdict").get<std::string>();
-      r.heldout_gap_before = j.at("heldout_gap_before").get<double>();
-      r.heldout_gap_after = j.at("heldout_gap_after").get<double>();
-      r.confidence = j.at("confidence").is_null() ? std::nan("") : j.at("confidence").get<double>();  // null: not estimable
-      r.wall_s = j.value("wall_s", 0.0);  // journals before it was recorded: 0
-      // A number the row may lack (older journals) or hold as null (not estimable): NaN then.
-      const auto number = [](const nlohmann::json& o, const char* key) {
-        return o.contains(key) && o.at(key).is_number() ? o.at(key).get<double>() : std::nan("");
-      };
-      r.test_gap_before = number(j, "test_gap_before");
-      r.test_gap_after = number(j, "test_gap_after");
-      r.confidence_fixed_fits = number(j, "confidence_fixed_fits");
-      r.noise_floor = number(j, "noise_floor");
-      r.correct = r.verdict == r.c.true_effect;
-      r.git_commit = j.value("git_commit", std::string());
-      r.indistinguishable_from = j.value("indistinguishable_from", std::vector<std::string>{});
-      for (const nlohmann::json& c : j.value("candidates", nlohmann::json::array()))
-        r.candidates.push_back({c.at("effect").get<std::string>(), number(c, "evidence_nats"), number(c, "evidence_se_nats"),
-                                number(c, "heldout_gap"), c.value("earns", false)});
-      rows.push_back(r);
-    } catch (const nlohmann::json::exception&) {
-      continue;
-    }
-  }
-  return rows;
 }
 
 void run_selftest(const SelftestArgs& args) {

@@ -44,6 +44,7 @@
 #include "apps/provenance.h"
 #include "apps/sweep_point.h"
 #include "apps/sweep_spec.h"
+#include "apps/sweep_state.h"
 #include "apps/sweep_workers.h"
 
 extern char** environ;
@@ -79,28 +80,6 @@ std::string header(const SweepSpec& spec) {
   return h;
 }
 
-// The rows already in results.csv by point id (complete lines only: a kill mid-write leaves a torn
-// last line, which is dropped). A header that differs from `expected` is refused.
-std::map<int, std::string> finished_rows(const std::filesystem::path& file, const std::string& expected) {
-  std::map<int, std::string> rows;
-  std::ifstream in(file, std::ios::binary);
-  if (!in) return rows;
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::size_t start = 0;
-  bool first = true;
-  for (std::size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1) {
-    const std::string line = text.substr(start, nl - start);
-    if (first && line.rfind('#', 0) == 0) continue;  // provenance lines of a results.csv from before 2026-11-27
-    if (first) {
-      if (line != expected) throw InputError(file.string() + ": its columns differ from this spec's; use another --out");
-      first = false;
-      continue;
-    }
-    rows[std::stoi(line.substr(0, line.find(',')))] = line;
-  }
-  return rows;
-}
-
 // `head`: the column header (the provenance is beside the file: claim_output).
 void write_rows(const std::filesystem::path& file, const std::string& head, const std::map<int, std::string>& rows) {
   std::string text = head + "\n";
@@ -119,12 +98,8 @@ void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::
   const std::string rig_hash = spec.steps.size() > 1 ? config_hash(spec.steps[1].config) : "";
   const auto file = dir / "sweep.json";
   nlohmann::json j;
-  if (std::ifstream in(file); in) {
-    j = nlohmann::json::parse(in, nullptr, false);
-    if (j.is_discarded() || j.value("spec_hash", "") != spec_hash || j.value("base_config_hash", "") != base_hash ||
-        j.value("rig_config_hash", "") != rig_hash)
-      throw InputError(dir.string() + ": holds a sweep of a different spec or base config (sweep.json); "
-                       "resume only with the same files, or use another --out");
+  if (std::optional<nlohmann::json> claimed = read_sweep_json(dir, spec_hash, base_hash, rig_hash)) {
+    j = std::move(*claimed);
   } else {
     InputFiles step_configs;  // the base config and, for a chain, the rig's
     for (const SweepStep& s : spec.steps) step_configs.push_back(s.config);
@@ -600,7 +575,7 @@ void run_serial(const SweepArgs& args) {
   make_output_dir(dir);
   claim_output(dir, spec, points.size(), 1, jobs);
   const std::string head = header(spec);
-  std::map<int, std::string> rows = finished_rows(results, head);
+  std::map<int, std::string> rows = finished_sweep_rows(results, head);
   write_rows(results, head, rows);  // drops a torn line before appending
 
   std::vector<int> pending;
@@ -638,7 +613,7 @@ void run_mpi(const SweepArgs& args) {
       make_output_dir(dir);
       claim_output(dir, *spec, points.size(), mpi.size, local_jobs(*spec));
       head = header(*spec);
-      rows = finished_rows(results, head);
+      rows = finished_sweep_rows(results, head);
       write_rows(results, head, rows);  // drops a torn line before appending
     } catch (...) {
       ok = 0;

@@ -6,7 +6,7 @@
 # Configures a clang build in build-fuzz/ (-DTRIBO_FUZZ=ON: ASan + UBSan + coverage), builds the
 # fuzzers and runs each for SECONDS (default 60), one after another in one process each (one core, nice).
 # Targets: surface bundle rig_config homogenise_config sweep_spec law_table drive_table ehl_config
-# contact_config reynolds_config gap_model (default: all).
+# contact_config reynolds_config gap_model selftest_journal sweep_state (default: all).
 # Each run starts from the committed corpus fuzz/corpus/<target>/ plus the inputs of earlier runs
 # (build-fuzz/work/<target>/); findings are written to build-fuzz/artifacts/<target>/ and the
 # script exits non-zero if any target found something. To keep a new interesting input:
@@ -17,7 +17,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(surface bundle rig_config homogenise_config sweep_spec law_table drive_table ehl_config contact_config reynolds_config gap_model)
+[ ${#targets[@]} -gt 0 ] || targets=(surface bundle rig_config homogenise_config sweep_spec law_table drive_table ehl_config contact_config reynolds_config gap_model selftest_journal sweep_state)
 
 command -v clang++ >/dev/null || { echo "fuzz.sh: needs clang++ (Debian: apt-get install clang)" >&2; exit 2; }
 export CCACHE_BASEDIR=$PWD

@@ -1,14 +1,18 @@
 // Config loaders on hostile input (issue 18, fuzz/): counts that size allocations are bounded,
-// files a config names must be regular files, and TOML parsed from memory reports the source.
-// Inputs also in fuzz/corpus/{rig_config,homogenise_config}/.
+// files a config names must be regular files, and TOML parsed from memory reports the source; the
+// state a resumed run reads (selftest journal, sweep results). Inputs also in
+// fuzz/corpus/{rig_config,homogenise_config,selftest_journal,sweep_state}/.
 #include <gtest/gtest.h>
 
 #include <initializer_list>
 #include <string>
+#include <vector>
 
 #include "apps/config.h"
 #include "apps/homogenise_config.h"
 #include "apps/rig_config.h"
+#include "apps/selftest_journal.h"
+#include "apps/sweep_state.h"
 #include "apps/sweep_spec.h"
 #include "tests/apps/expect_message.h"
 
@@ -105,6 +109,53 @@ TEST(ConfigHostile, SweepSizeIsBounded) {
     three += std::string("[[axis]]\nkey = \"") + k + "\"\nfrom = 1\nto = 2\ncount = 1000\n";
   expect_all(error(three), {"key 'axis'", "more than 1000000 points"});
   EXPECT_EQ(error("[[axis]]\nkey = \"rig.mass_kg\"\nfrom = 1\nto = 2\ncount = 1000\n"), "");
+  std::filesystem::remove_all(dir);
+}
+
+// A selftest journal line whose `quick` is not a boolean, or whose seed is a float, is not a row
+// (a JSON type error escaped the resume; 1e300 was converted to an integer out of range); the
+// valid row beside them is kept.
+TEST(ConfigHostile, AJournalRowOfTheWrongTypesIsSkippedAndTheValidOneKept) {
+  const auto file = std::filesystem::temp_directory_path() / "tribo-hostile-cases.jsonl";
+  const std::string row = R"("true_effect":"none","model_effects":[],"verdict":"none","heldout_gap_before":0.1,"heldout_gap_after":0.1,"confidence":0.5)";
+  std::ofstream(file) << "{\"quick\":1,\"seed\":3," << row << "}\n"
+                      << "{\"quick\":true,\"seed\":1e300," << row << "}\n"
+                      << "{\"quick\":true,\"seed\":7," << row << "}\n";
+  const std::vector<gap::SelftestRow> rows = finished_rows(file, true);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].c.seed, 7u);
+  EXPECT_TRUE(rows[0].correct);
+  EXPECT_TRUE(finished_rows(file, false).empty());
+  std::filesystem::remove(file);
+}
+
+// A resumed sweep's results.csv: a point id that is not a non-negative integer, or a point twice,
+// is refused naming the file and line (it ended as "stoi" with no file, or exit status 1, or was
+// taken silently); a sweep.json that is JSON but not an object is another sweep's.
+TEST(ConfigHostile, ASweepsResultsWithABadOrRepeatedPointIdAreRefusedWithFileAndLine) {
+  const auto dir = std::filesystem::temp_directory_path() / "tribo-hostile-sweep";
+  std::filesystem::create_directories(dir);
+  const auto rows_error = [&](const std::string& body) {
+    std::ofstream(dir / "results.csv") << "point_id,x\n" << body;
+    try {
+      finished_sweep_rows(dir / "results.csv", "point_id,x");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  expect_all(rows_error("0,1\nabc,2\n"), {"results.csv: line 3", "'abc'", "not a non-negative integer"});
+  expect_all(rows_error("99999999999999999999,1\n"), {"results.csv: line 2", "not a non-negative integer"});
+  expect_all(rows_error("-1,1\n"), {"line 2", "not a non-negative integer"});
+  expect_all(rows_error("0,1\n0,2\n"), {"results.csv: line 3", "point 0 is there twice"});
+  EXPECT_EQ(rows_error("0,1\n1,2\n2,3"), "");  // the torn last line dropped, not refused
+  std::ofstream(dir / "sweep.json") << "[1]\n";
+  try {
+    read_sweep_json(dir, "a", "b", "");
+    ADD_FAILURE() << "a sweep.json holding [1] was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sweep.json"), std::string::npos) << e.what();
+  }
   std::filesystem::remove_all(dir);
 }
 
