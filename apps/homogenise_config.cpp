@@ -124,12 +124,15 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
     m.min_speed_m_per_s = e->number("min_speed_m_per_s", m.min_speed_m_per_s, Range::positive);
     m.max_speed_m_per_s = e->number("max_speed_m_per_s", m.max_speed_m_per_s, Range::positive);
     m.speeds_per_decade = static_cast<int>(e->integer("speeds_per_decade", m.speeds_per_decade, 1, 100));
+    m.pressure_viscosity_law = e->choice("pressure_viscosity_law", "roelands", {"roelands", "barus"}) == "barus"
+                                   ? lubrication::PressureViscosityLaw::barus
+                                   : lubrication::PressureViscosityLaw::roelands;
     if (!(m.max_speed_m_per_s > m.min_speed_m_per_s)) e->fail("max_speed_m_per_s", "must exceed min_speed_m_per_s");
     if (m.max_speed_m_per_s < u_max)
       e->fail("max_speed_m_per_s", "must reach the Stribeck curve's [speeds] max_m_per_s = " + numerics::shortest(u_max) +
                                        " (the law is never extrapolated)");
-    if (!(o.lubricant.pressure_viscosity_per_Pa > 0.0))
-      e->fail("eyring_stress_Pa", "the films need the lubricant's pressure_viscosity_per_Pa > 0");
+    if (auto l = root.table("lubricant"); l && !(o.lubricant.pressure_viscosity_per_Pa > 0.0))  // only [lubricant] sets α
+      l->fail("pressure_viscosity_per_Pa", "must be positive with [micro_ehl] (the films' thickness and shear need it)");
     o.micro_ehl = m;
     e->finish();
   }

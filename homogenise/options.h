@@ -37,6 +37,7 @@ struct Pin {
 struct MicroEhl {
   double eyring_stress_Pa = lubrication::MicroEhlOptions{}.eyring_stress_Pa;
   double tip_roughness_m = lubrication::MicroEhlOptions{}.tip_roughness_m;  // hand-set: thesis Appendix V
+  lubrication::PressureViscosityLaw pressure_viscosity_law = lubrication::MicroEhlOptions{}.law;  // of the films' shear
   double min_speed_m_per_s = 1e-6;
   double max_speed_m_per_s = 10.0;
   int speeds_per_decade = 2;
@@ -98,7 +99,7 @@ int contact_refinement(const HomogeniseOptions& options);
 
 // The ηU axis of the micro-EHL columns (Pa·m): 0, then η0 U over the MicroEhl speeds; empty without them.
 std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& options);
-// The films' constants: options.micro_ehl's with the pair's E*, τ_i and the lubricant's α
+// The films' constants: options.micro_ehl's with the pair's E*, τ_i and the lubricant's η0 and α
 // (options.micro_ehl must be set).
 lubrication::MicroEhlOptions micro_ehl_options(const HomogeniseOptions& options);
 

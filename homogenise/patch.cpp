@@ -100,6 +100,8 @@ lubrication::MicroEhlOptions micro_ehl_options(const HomogeniseOptions& o) {
   lubrication::MicroEhlOptions films;
   films.e_star_Pa = o.e_star_Pa;
   films.pressure_viscosity_per_Pa = o.lubricant.pressure_viscosity_per_Pa;
+  films.viscosity_Pa_s = o.lubricant.viscosity_Pa_s;
+  films.law = o.micro_ehl.value().pressure_viscosity_law;
   films.eyring_stress_Pa = o.micro_ehl.value().eyring_stress_Pa;
   films.tip_roughness_m = o.micro_ehl.value().tip_roughness_m;
   films.interface_shear_strength_Pa = o.interface_shear_strength_Pa;

@@ -18,7 +18,23 @@ void validate(const MicroEhlOptions& o) {
   positive(o.eyring_stress_Pa, "eyring_stress_Pa");
   positive(o.tip_roughness_m, "tip_roughness_m");
   positive(o.interface_shear_strength_Pa, "interface_shear_strength_Pa");
+  positive(o.viscosity_Pa_s, "viscosity_Pa_s");
 }
+
+namespace {
+
+// ln(η(p)/η0): Barus α p, or Roelands' (ln η0 + 9.67)[(1 + p/p_r)^z − 1] (piezoviscous.h) — in
+// logarithms, since Barus' ratio overflows a double above α p ≈ 709.
+double log_viscosity_ratio(const MicroEhlOptions& o, double p) {
+  if (o.law == PressureViscosityLaw::barus) return o.pressure_viscosity_per_Pa * p;
+  PiezoviscousLubricant oil;
+  oil.viscosity_Pa_s = o.viscosity_Pa_s;
+  oil.pressure_viscosity_per_Pa = o.pressure_viscosity_per_Pa;
+  oil.law = PressureViscosityLaw::roelands;
+  return std::log(viscosity_ratio(oil, p).ratio);
+}
+
+}  // namespace
 
 SpotFilm spot_film(const contact::ContactSpot& spot, double eta_u, const MicroEhlOptions& o) {
   if (!(std::isfinite(eta_u) && eta_u >= 0.0)) throw std::invalid_argument("micro-EHL: ηU must be finite and not negative");
@@ -34,8 +50,8 @@ SpotFilm spot_film(const contact::ContactSpot& spot, double eta_u, const MicroEh
   using contact::SummitDistribution;
   f.boundary_share = contact::gw_integral(SummitDistribution::gaussian, 1.0, f.central_film_m / o.tip_roughness_m) /
                      contact::gw_integral(SummitDistribution::gaussian, 1.0, 0.0);
-  // asinh(x) with ln x = ln ηU + α p̄ − ln(τ0 h_c): e^{α p̄} alone reaches 1e10 at the hardness.
-  const double ln_x = std::log(eta_u) + o.pressure_viscosity_per_Pa * spot.mean_pressure_Pa - std::log(o.eyring_stress_Pa * f.central_film_m);
+  // asinh(x) with ln x = ln ηU + ln R(p̄) − ln(τ0 h_c): R alone reaches 1e7–1e10 at the hardness.
+  const double ln_x = std::log(eta_u) + log_viscosity_ratio(o, spot.mean_pressure_Pa) - std::log(o.eyring_stress_Pa * f.central_film_m);
   f.fluid_shear_Pa = o.eyring_stress_Pa * (ln_x > 20.0 ? std::log(2.0) + ln_x : std::asinh(std::exp(ln_x)));
   f.shear_Pa = f.boundary_share * o.interface_shear_strength_Pa + (1.0 - f.boundary_share) * f.fluid_shear_Pa;
   return f;

@@ -12,13 +12,20 @@
 //             share of the spot is the Greenwood–Williamson real-area ratio at the film's height,
 //               b = F_1(h_c/σ_tip) / F_1(0)   (Gaussian summits; 1 at h_c = 0, e^{−Λ²/2}-fast beyond);
 //   fluid     Eyring shear of the Couette film at the spot's mean pressure p̄ (ehl_traction.h's
-//             form, Barus viscosity, isothermal): τ_f = τ0 asinh(η e^{α p̄} U / (τ0 h_c));
+//             form, isothermal): τ_f = τ0 asinh(η(p̄) U / (τ0 h_c)), η(p̄) = η R(p̄) with Roelands'
+//             pressure ratio R (piezoviscous.h; the default, as in the EHL solvers) or Barus' e^{α p̄}.
+//             At a steel spot's pressure, the hardness 1.18 GPa, Barus gives e^{23.6} and Roelands
+//             (thesis oil) e^{15.9}: Barus overstates η by 2000× there, and τ_f by 7.7 τ0;
 //   spot      τ = b τ_i + (1 − b) τ_f, and over the spots the area-weighted mean τ̄ = Σ A τ / Σ A,
 //             which replaces τ_i in the kinetic force τ_i A_r of the homogenised law.
 //
 // Everything depends on η and U through ηU alone (h_c ∝ (ηU)^0.67, τ_f's argument ∝ (ηU)^0.33), so
 // a table over ηU (law.json "tribo-law-2") serves a rig whose η changes with its flash temperature
-// (thesis (5.2.1)): that is how frictional heat thins these films. The film's own shear heating
+// (thesis (5.2.1)): that is how frictional heat thins these films. Roelands' ratio depends on η0
+// apart from U (through ln η0), so it is taken at the oil's η0 at its reference temperature
+// (MicroEhlOptions::viscosity_Pa_s): for a hotter oil the ratio is too high — the thesis oil 68 K
+// hotter, with Roelands' index held, has e^{10.3} at the hardness against e^{15.9} — still closer
+// than Barus' e^{23.6}. The film's own shear heating
 // (ehl_traction.h FilmHeating) is left out — it depends on U apart from η and would need another
 // axis. The fluid pressure of a spot's film equals the spot's contact pressure (the Hertz limit of
 // heavily loaded EHL), so the films change the spots' shear, not the load balance.
@@ -27,12 +34,16 @@
 #include <vector>
 
 #include "contact/contact_spots.h"
+#include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
 
 struct MicroEhlOptions {
   double e_star_Pa = 1.137e11;                  // composite modulus (E' = 2 E*)
-  double pressure_viscosity_per_Pa = 2.0e-8;    // Barus α (mineral oils 1–3e-8, Hamrock's tables)
+  double pressure_viscosity_per_Pa = 2.0e-8;    // α (mineral oils 1–3e-8, Hamrock's tables): Barus, or Roelands' initial slope
+  // The pressure–viscosity law of the film's shear (the film thickness is Hamrock–Dowson's, a fit in α).
+  PressureViscosityLaw law = PressureViscosityLaw::roelands;
+  double viscosity_Pa_s = Lubricant{}.viscosity_Pa_s;  // η0, for Roelands' index z (piezoviscous.h)
   // Eyring stress τ0 (a few MPa for mineral oils: Johnson & Tevaarwerk 1977; Evans & Johnson 1986).
   double eyring_stress_Pa = 5.0e6;
   // σ_tip: roughness of the tips below the contact grid. Hand-set: default the thesis slider's

@@ -86,6 +86,11 @@ TEST(ConfigHostile, MicroEhlAxisMustReachTheStribeckSpeeds) {
   expect_all(homogenise_error(surface + "[micro_ehl]\ntip_roughness_m = -1e-9\n"), {"key 'micro_ehl.tip_roughness_m'"});
   expect_all(homogenise_error(surface + "[micro_ehl]\nspeeds_per_decade = 1000\n"), {"key 'micro_ehl.speeds_per_decade'", "at most"});
   EXPECT_EQ(homogenise_error(surface + "[micro_ehl]\n"), "");
+  expect_all(homogenise_error(surface + "[micro_ehl]\npressure_viscosity_law = \"free_volume\"\n"),
+             {"key 'micro_ehl.pressure_viscosity_law'", "roelands", "barus"});
+  // The films need α: the error names the key that set it to 0, not one of [micro_ehl]'s.
+  expect_all(homogenise_error(surface + "[lubricant]\npressure_viscosity_per_Pa = 0.0\n[micro_ehl]\n"),
+             {"key 'lubricant.pressure_viscosity_per_Pa'", "[micro_ehl]"});
 }
 
 TEST(ConfigHostile, SweepSizeIsBounded) {
