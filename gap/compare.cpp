@@ -272,6 +272,7 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
   for (std::size_t p : peaks) peak.push_back(locate(p, true));
   for (std::size_t q : troughs) trough.push_back(locate(q, false));
   std::vector<double> mp, mt, rise, fall, period;
+  std::vector<double> bottom;  // per peak: the next minimum's value (the window's lowest without one)
   for (const Extremum& e : peak) mp.push_back(e.value);
   for (const Extremum& e : trough) mt.push_back(e.value);
   for (std::size_t i = 1; i < peak.size(); ++i) period.push_back(peak[i].t - peak[i - 1].t);
@@ -286,6 +287,7 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
     const std::size_t n = static_cast<std::size_t>(next - troughs.begin());
     if (next != troughs.end()) fall.push_back(trough[n].t - peak[i].t);
     if (next != troughs.begin()) rise.push_back(peak[i].t - trough[n - 1].t);
+    bottom.push_back(next != troughs.end() ? trough[n].value : lo_v);
   }
   f["mu_peak"] = mean(mp);
   if (!mt.empty()) f["mu_trough"] = mean(mt);
@@ -317,9 +319,7 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
     };
     std::vector<double> fall_start;
     for (std::size_t i = 0; i < peak.size(); ++i) {
-      const auto next = std::upper_bound(troughs.begin(), troughs.end(), peaks[i]);
-      const double bottom = next != troughs.end() ? trough[static_cast<std::size_t>(next - troughs.begin())].value : lo_v;
-      const double depth = peak[i].value - bottom;
+      const double depth = peak[i].value - bottom[i];
       const double t1 = crossing(peaks[i], peak[i].t, peak[i].value - kFallLevels[0] * depth);
       const double t2 = std::isfinite(t1) ? crossing(peaks[i], t1, peak[i].value - kFallLevels[1] * depth) : kNaN;
       const double back = (t2 - t1) * kFallLevels[0] / (kFallLevels[1] - kFallLevels[0]);
