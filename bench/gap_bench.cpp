@@ -12,6 +12,7 @@
 #include "gap/bundle.h"
 #include "gap/compare.h"
 #include "gap/diagnosis.h"
+#include "gap/fit.h"
 #include "rig/friction_model.h"
 
 namespace {
@@ -32,6 +33,31 @@ void BM_PredictForeignControl(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
 }
 BENCHMARK(BM_PredictForeignControl)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
+
+// A measured record's prediction: the paper-on-paper stick-slip at k = 2254 N/m
+// (../shared/data/real, beside the checkout; skipped without it), three runs of 375, 14 and 3.8 s,
+// at the calibrated Coulomb baseline of docs/gap-paper (μs 0.504, μk 0.348, ζ 0.043). Arg: the
+// run's index, −1 for the whole bundle.
+void BM_PredictPaperK2254(benchmark::State& state) {
+  using namespace tribo;
+  const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/stickslip-paper-k2254";
+  if (!std::filesystem::exists(dir)) {
+    state.SkipWithError("../shared/data/real/stickslip-paper-k2254 not found");
+    return;
+  }
+  gap::ExperimentBundle bundle = gap::read_bundle(dir);
+  if (const auto run = state.range(0); run >= 0) {
+    bundle.runs = {bundle.runs.at(static_cast<std::size_t>(run))};
+    bundle.static_points.clear();
+  }
+  rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
+  gap::set_damping_ratio(rig, 0.04281);
+  const gap::Comparison comparison(bundle, rig);
+  const rig::FrictionModel model = rig::coulomb(0.5039, 0.3481);
+  state.SetLabel(state.range(0) < 0 ? "all runs" : "run " + std::to_string(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+BENCHMARK(BM_PredictPaperK2254)->DenseRange(-1, 2)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -89,20 +89,19 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // 2. Candidates: the singles searched, the baseline re-calibrated from the leaders' baseline
   // parameters (so that no effect wins only because its fit also found better μs, μk than the
   // calibration), the leaders refined, nested candidates judged at their best, then a pair.
+  // The re-calibration runs again once the leaders are refined (pipeline.h rebase).
   int comparisons = static_cast<int>(p.candidates.size());
   std::vector<Candidate> singles = search_singles(p, baseline);
   d.stage_times.candidates_s = lap();
-  if (const std::optional<FitResult> better = recalibrate(p, cal, baseline, singles)) {
-    baseline = baseline_at(p, *better);
-    for (Candidate& c : singles) judge(p, baseline, comparisons, c);
-    rank(singles);
-  }
+  rebase(p, cal, baseline, singles, comparisons);
   d.stage_times.recalibration_s = lap();
   singles = nest(p, baseline, refine_leaders(p, baseline, std::move(singles), comparisons), comparisons);
   Paired paired = pair(p, baseline, std::move(singles), comparisons);
   d.candidates = std::move(paired.candidates);
   comparisons = paired.comparisons;
   d.stage_times.refinement_s = lap();
+  rebase(p, cal, baseline, d.candidates, comparisons);
+  d.stage_times.recalibration_s += lap();
 
   d.calibrated = baseline.setup.model;
   d.rig = baseline.setup.rig;

@@ -1,6 +1,6 @@
 // The diagnosis as a pipeline (diagnosis.h describes the procedure):
 //   make_fit_problem → calibrate → baseline_at → search_singles → recalibrate → refine_leaders
-//   → nest → pair → choose → confidence
+//   → nest → pair → recalibrate → choose → confidence
 // Each stage is a plain function of the immutable FitProblem and of what the stages before it
 // returned; none keeps state, so each can be run and tested alone (tests/gap/pipeline_test.cpp).
 // diagnose() (diagnosis.cpp) runs them in that order and assembles the Diagnosis.
@@ -95,10 +95,19 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
 std::vector<Candidate> search_singles(const FitProblem& p, const Baseline& b);
 
 // A fair baseline: re-calibrated from the baseline parameters the three leading `ranked` candidates
-// settled on, with the calibration's weights; the best of those fits when it fits train better
-// than the baseline, else nothing.
+// settled on, with the calibration's weights, to convergence (Resolution::refine, as the leaders'
+// refinements); the best of those fits when it fits train better than the baseline, else nothing.
 std::optional<FitResult> recalibrate(const FitProblem& p, const Calibration& cal, const Baseline& b,
                                      const std::vector<Candidate>& ranked);
+
+// The baseline moved to recalibrate()'s fit from the leaders of `ranked` when there is one, and
+// every candidate judged against it again among `comparisons` and ranked; returns whether it
+// moved. Run after the search and again once the leaders are refined: the refinements free the
+// rig and run to convergence, so the baseline parameters they settle on can fit train better than
+// the first re-calibration found — a gain that every candidate shares, and that would otherwise be
+// credited to each (a Coulomb control of the validation set of 2026-11-28: all nine candidates
+// 5–9 nats over the baseline, one of them named).
+bool rebase(const FitProblem& p, const Calibration& cal, Baseline& b, std::vector<Candidate>& ranked, int comparisons);
 
 // A candidate's fit continued to convergence from where it stopped, the rig free again.
 Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int comparisons);

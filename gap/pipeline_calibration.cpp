@@ -203,7 +203,8 @@ std::optional<FitResult> recalibrate(const FitProblem& p, const Calibration& cal
   parallel_for(from_leader.size(), [&](std::size_t k) {
     FitSetup from{ranked[k].rig, p.model};
     from.model.baseline = ranked[k].model.baseline;
-    from_leader[k] = fit(*p.comparison, p.base_space, from, cal.weights, calibration, p.options.seed, 1, p.base_space.size());
+    from_leader[k] = fit(*p.comparison, p.base_space, from, cal.weights, calibration, p.options.seed, 1, p.base_space.size(),
+                         Resolution::refine);
   });
   std::optional<FitResult> better;
   double cost = b.fit.cost;

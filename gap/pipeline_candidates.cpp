@@ -145,6 +145,15 @@ std::vector<Candidate> search_singles(const FitProblem& p, const Baseline& b) {
   return singles;
 }
 
+bool rebase(const FitProblem& p, const Calibration& cal, Baseline& b, std::vector<Candidate>& ranked, int comparisons) {
+  const std::optional<FitResult> better = recalibrate(p, cal, b, ranked);
+  if (!better) return false;
+  b = baseline_at(p, *better);
+  for (Candidate& c : ranked) judge(p, b, comparisons, c);
+  rank(ranked);
+  return true;
+}
+
 // The leading candidates are compared at convergence: continue their fits from where the
 // search stopped, so that a nested effect (thermal thinning with a large U_T is viscous
 // friction) does not win over a simpler one only because its search ran further.

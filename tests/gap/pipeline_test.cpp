@@ -117,6 +117,32 @@ TEST(Pipeline, RecalibrationFromALeaderReplacesABaselineLeftOff) {
   EXPECT_NEAR(better->setup.model.baseline.mu_s, 0.3, 0.003);
 }
 
+// A candidate that gained only through the baseline's parameters: against a baseline left 10 % off
+// in μs, the truth's Coulomb model carrying a viscous term too small to act (c = 1e-6 N s/m) has
+// decisive evidence; rebased on it, the baseline is the calibration again (μs within 1 %, the
+// noise's reach as above) and the candidate's evidence is below the strong ratio — what it
+// gained was the baseline's, so it earns nothing.
+TEST(Pipeline, ACandidateThatOnlyMovedTheBaselineEarnsNothingOnceTheBaselineIsRebased) {
+  const FitProblem p = make_fit_problem(static_points_bundle(), rig::RigParameters{}, rig::coulomb(0.36, 0.2), static_options());
+  const Calibration cal = calibrate(p);
+  Baseline b = baseline_at(p, fit(*p.comparison, {}, FitSetup{p.model_rig, rig::coulomb(0.33, 0.2)}, cal.weights, p.options,
+                                  p.options.seed, 1, 0));
+  Candidate leader;
+  leader.effects = {"viscous_friction"};
+  leader.extra_parameters = 1;
+  leader.rig = p.model_rig;
+  leader.model = rig::coulomb(0.3, 0.2);
+  leader.model.set("viscous_friction", "coefficient_N_s_per_m", 1e-6);
+  leader.residuals = p.comparison->residuals(p.comparison->predict(leader.rig, leader.model, p.options.seed));
+  std::vector<Candidate> ranked{leader};
+  judge(p, b, 1, ranked[0]);
+  ASSERT_TRUE(ranked[0].earns) << ranked[0].evidence_nats << " nats";
+  ASSERT_TRUE(rebase(p, cal, b, ranked, 1));
+  EXPECT_NEAR(b.setup.model.baseline.mu_s, 0.3, 0.003);
+  EXPECT_LT(std::abs(ranked[0].evidence_nats), Evidence::kStrong);
+  EXPECT_FALSE(ranked[0].earns);
+}
+
 // Traces of a rig with viscous friction (c = 60 N s/m) withheld, against a Coulomb model: the
 // problem, calibration and baseline computed once for the stages after them.
 class ViscousPipeline : public ::testing::Test {
