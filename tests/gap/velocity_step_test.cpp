@@ -64,21 +64,20 @@ TEST(Diagnosis, VelocityStepCalibratesStiffnessAndDampingAndNamesTheSlipTransien
   o.candidates = {"slip_transient", "viscous_friction", "strain_rate_hardening"};
   const Diagnosis d = diagnose(b, rig::RigParameters{}, rig::coulomb(0.62, 0.6), o);
   ASSERT_EQ(verdict_name(d.verdict.effects), "slip_transient") << report_json(d)["candidates"].dump(1);
-  // The calibrated Coulomb baseline needs μs > μk for a peak after the step, and then stick-slips at
-  // 10 µm/s where the truth slides steadily: its misses all lie after the step — the transient's
-  // bins and the steady window's scatter, each a share of them — none before it. (Since the
-  // calibration weighs by the likelihood it keeps the level and stick-slips: 77 % scatter, 18 %
-  // transient on 2026-11-27; with equal observable weights it was about half each.)
-  double after_step = 0.0, transient = 0.0, scatter = 0.0;
+  // The baseline's misses all lie after the step, none before it, and most in the transient's
+  // bins: since the re-calibration from the refined leaders (pipeline.h rebase) the Coulomb
+  // baseline that fits train best slides at the steady level and misses the transient (99.97 % of
+  // the squared residual in its bins, 2026-11-28). The baselines before it kept μs > μk and
+  // stick-slipped where the truth slides: 77 % of the misses in the steady window's scatter with
+  // the likelihood weights, about half with equal weights.
+  double after_step = 0.0, transient = 0.0;
   for (const auto& l : d.localization) {
     if (l.where.find("high v") != std::string::npos) after_step += l.share;
     if (l.observable == "mu_after_step" && l.where.find("slip transient after step") != std::string::npos) transient += l.share;
-    if (l.observable == "steady_scatter") scatter += l.share;
   }
   const std::string where = report_json(d)["localization"].dump(1);
   EXPECT_GT(after_step, 0.99) << where;
-  EXPECT_GT(transient, 0.1) << where;
-  EXPECT_GT(scatter, 0.1) << where;
+  EXPECT_GT(transient, 0.5) << where;
   EXPECT_LT(d.verdict.heldout_gap_after, 0.5 * d.verdict.heldout_gap_before);
   // D_c within a factor 1.5 of the truth: noise 3e-4 on a 0.011 peak, eight LM iterations.
   const double dc = d.candidates.front().params.at("slip_transient.decay_distance_m");
