@@ -209,6 +209,10 @@ LawTable read_law_table(const std::filesystem::path& path) {
     doc = json::parse(in);
   } catch (const json::parse_error& e) {
     throw std::invalid_argument(where(source) + ": malformed JSON at byte " + std::to_string(e.byte) + ": " + e.what());
+  } catch (const json::exception& e) {
+    // Not a syntax error but a value JSON can write and a double cannot hold (a number beyond
+    // ±1.8e308: out_of_range.406, found by the law_table fuzzer).
+    throw std::invalid_argument(where(source) + ": malformed JSON: " + e.what());
   }
   return law_table_from_json(doc, source);
 }

@@ -281,6 +281,16 @@ TEST(LawTableReader, MalformedFilesNameTheKeyAndTheReason) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("malformed JSON"), std::string::npos) << e.what();
   }
+  // A number no double holds is valid JSON syntax that nlohmann reports as out_of_range, not as a
+  // parse error: it must end as the same named error (the law_table fuzzer, 2026-11-28).
+  const auto overflow = write_json("overflow.json", "{\"format\": \"tribo-law-1\", \"pin\": {\"radius_m\": 3.7e1111}}");
+  try {
+    read_law_table(overflow);
+    ADD_FAILURE() << "accepted a number beyond a double";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("overflow.json: malformed JSON"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("number overflow"), std::string::npos) << e.what();
+  }
   EXPECT_THROW(read_law_table(std::filesystem::temp_directory_path() / "tribo_rig_law_tests" / "does_not_exist.json"),
                std::invalid_argument);
 }
