@@ -1,6 +1,6 @@
 // The diagnosis as a pipeline (diagnosis.h describes the procedure):
-//   make_fit_problem → calibrate → baseline_at → search_singles → recalibrate → refine_leaders
-//   → nest → pair → recalibrate → choose → confidence
+//   make_fit_problem → calibrate → baseline_at → search_singles → rebase → refine_leaders
+//   → nest → pair → rebase → choose → confidence
 // Each stage is a plain function of the immutable FitProblem and of what the stages before it
 // returned; none keeps state, so each can be run and tested alone (tests/gap/pipeline_test.cpp).
 // diagnose() (diagnosis.cpp) runs them in that order and assembles the Diagnosis.
