@@ -31,6 +31,12 @@ constexpr int kBinsPerBlock = 3;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
 constexpr int kNoiseBlocks = 4;        // repeats a run's window is cut into for its items' noise
 constexpr double kSimulatedCycles = 4.0;  // cycles a simulated constant-speed window holds at least (RunPlan::simulated_extra_s)
+// ... and at most about a quarter of this many events later (a stick-slip cycle is a breakaway and
+// a re-attachment): a constant-speed simulation ends at this event, its window the second half of
+// what it simulated (predict_plan). A deterministic rig's limit cycle says in 50 cycles what it says
+// in 750 — the paper record at 42 µm/s and k = 2254 N/m (375 s, a 0.5-s simulated cycle) was two
+// thirds of every prediction of that bundle.
+constexpr long kWindowEvents = 200;
 constexpr long kStaticPointEvents = 40;  // a static point's run stops after this many events (20 stick-slip cycles or more)
 constexpr double kStaticPointCycles_s = 10.0;  // and simulates at most this long after loading the contact
 // Shortest drive segment, in samples: its steady level is the mean of its last 30 % in four
@@ -49,13 +55,23 @@ struct Signal {
   std::vector<double> t, mu, x, x_drive;  // x, x_drive may be empty
 };
 
+// Linear between the samples either side of `at` (i the first sample after it).
+double interp_at(const std::vector<double>& t, const std::vector<double>& y, double at, std::size_t i) {
+  const double w = (at - t[i - 1]) / (t[i] - t[i - 1]);
+  return y[i - 1] + w * (y[i] - y[i - 1]);
+}
+
 double interp(const std::vector<double>& t, const std::vector<double>& y, double at) {
   if (at <= t.front()) return y.front();
   if (at >= t.back()) return kNaN;
-  const auto it = std::upper_bound(t.begin(), t.end(), at);
-  const std::size_t i = static_cast<std::size_t>(it - t.begin());
-  const double w = (at - t[i - 1]) / (t[i] - t[i - 1]);
-  return y[i - 1] + w * (y[i] - y[i - 1]);
+  return interp_at(t, y, at, static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), at) - t.begin()));
+}
+
+// The first sample after `at`, searched forward from `i` (which must not lie past it): one walk
+// over a record for instants that increase, where a search per instant costs a log each.
+std::size_t advance_past(const std::vector<double>& t, double at, std::size_t i) {
+  while (i < t.size() && t[i] <= at) ++i;
+  return i;
 }
 
 // The same, with the last sample's value at and past the record's end (a simulation read at
@@ -80,13 +96,30 @@ class SmoothedSignal {
   double back() const { return t_.back(); }
   double at(double t) const {
     const double a = std::max(t_.front(), t - h_), b = std::min(t_.back(), t + h_);
-    return b > a ? (integral_to(b) - integral_to(a)) / (b - a) : interp(t_, y_, t);
+    return b > a ? (integral_to(b, first_after(b)) - integral_to(a, first_after(a))) / (b - a) : interp(t_, y_, t);
+  }
+  // S at increasing instants: the same values as at(), by one walk over the samples.
+  std::vector<double> at_increasing(const std::vector<double>& times) const {
+    std::vector<double> out;
+    out.reserve(times.size());
+    std::size_t ia = 0, ib = 0;
+    for (double t : times) {
+      const double a = std::max(t_.front(), t - h_), b = std::min(t_.back(), t + h_);
+      if (!(b > a)) {
+        out.push_back(interp(t_, y_, t));
+        continue;
+      }
+      ia = advance_past(t_, a, ia), ib = advance_past(t_, b, ib);
+      out.push_back((integral_to(b, ib) - integral_to(a, ia)) / (b - a));
+    }
+    return out;
   }
 
  private:
-  // Integral of the interpolant from the first sample to `at` (inside the record).
-  double integral_to(double at) const {
-    const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), at) - t_.begin());
+  std::size_t first_after(double at) const { return static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), at) - t_.begin()); }
+  // Integral of the interpolant from the first sample to `at` (inside the record; i its first
+  // sample after it).
+  double integral_to(double at, std::size_t i) const {
     if (i == 0) return 0.0;
     if (i == t_.size()) return cum_.back();
     const double dt = at - t_[i - 1], w = dt / (t_[i] - t_[i - 1]);
@@ -211,9 +244,10 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
   if (idx.size() < 3) return f;
   // Half-width two spacings: five samples of a uniform record.
   const SmoothedSignal S(s.t, s.mu, 2.0 * spacing_s);
-  std::vector<double> tw, muw;
-  for (double t = t0; t <= s.t.back(); t += spacing_s) tw.push_back(t), muw.push_back(S.at(t));
+  std::vector<double> tw;
+  for (double t = t0; t <= s.t.back(); t += spacing_s) tw.push_back(t);
   if (tw.size() < 3) return f;
+  const std::vector<double> muw = S.at_increasing(tw);
   const auto [lo_it, hi_it] = std::minmax_element(muw.begin(), muw.end());
   const double lo_v = *lo_it, hi_v = *hi_it;
   f["mean_mu"] = mean(muw);
@@ -224,11 +258,19 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
   // scatter: its range 4 % above the truth's amplitude).
   const auto x_range = [&](double from, double to) {
     std::vector<double> xs;
-    for (double t : tw)
-      if (t >= from && t <= to) xs.push_back(interp_to_end(s.t, s.x, t));
-    std::sort(xs.begin(), xs.end());
-    const auto at = [&](double q) { return xs[static_cast<std::size_t>(q * static_cast<double>(xs.size() - 1))]; };
-    return xs.empty() ? kNaN : at(0.95) - at(0.05);
+    std::size_t i = 0;
+    for (double t : tw) {
+      if (t < from || t > to) continue;
+      i = advance_past(s.t, t, i);  // as interp_to_end(s.t, s.x, t), without a search per instant
+      xs.push_back(t >= s.t.back() ? s.x.back() : t <= s.t.front() ? s.x.front() : interp_at(s.t, s.x, t, i));
+    }
+    if (xs.empty()) return kNaN;
+    // The order statistics alone (nth_element, not a sort: this runs in every prediction).
+    const auto rank = [&](double q) { return xs.begin() + static_cast<long>(q * static_cast<double>(xs.size() - 1)); };
+    std::nth_element(xs.begin(), rank(0.95), xs.end());
+    const double upper = *rank(0.95);
+    std::nth_element(xs.begin(), rank(0.05), rank(0.95));
+    return upper - *rank(0.05);
   };
   if (!s.x.empty()) f["peak_to_peak_m"] = x_range(tw.front(), tw.back());
   const double range = hi_v - lo_v;
@@ -748,7 +790,14 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         const bool history = plan.kind == RunPlan::Kind::drive_history;
         options.duration_s = plan.duration_s + plan.simulated_extra_s;
         options.max_events = Comparison::event_budget(rig, options.duration_s);
+        // A trace for the report spans the record; its features are read off the same prefix.
+        if (!history && !trace) options.stop_after_events = kWindowEvents;
         options.samples_per_period = kSamplesPerPeriod;
+        // In stick no coarser than the record: the friction jumps at a re-attachment, and the
+        // interpolant from the event's sample to the next one spreads the jump over that spacing
+        // (the rig's default, duration / 4000, made a Coulomb model's own trough read 0.016 high).
+        const double stick_samples = std::ceil(options.duration_s / plan.sample_spacing_s);
+        if (std::isfinite(stick_samples)) options.stick_samples_per_run = static_cast<int>(std::clamp(stick_samples, 4000.0, 1e8));
         // A drive history is read at the measured instants: the simulation outputs there (and τ
         // earlier, where a lagging instrument reads the acceleration), not on a grid of its natural
         // period — 4 samples per period of a 1e6 N/m machine were 13 times the record's 5850.
@@ -762,6 +811,12 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), law, model, seed, options);
         }
         if (!sim.summary.completed || sim.samples.size() < 3) break;
+        // Where the features' simulation ends: at the record's end (and its extra cycles), or at
+        // the kWindowEvents-th event — a run stopped there has every sample up to it, a trace's
+        // run is cut there.
+        const double t_read = !history && static_cast<long>(sim.events.size()) >= kWindowEvents
+                                  ? sim.events[static_cast<std::size_t>(kWindowEvents - 1)].t_s
+                                  : std::numeric_limits<double>::infinity();
         Signal s;
         std::vector<bool> slipping;
         for (auto* v : {&s.t, &s.mu, &s.x, &s.x_drive}) v->reserve(sim.samples.size());
@@ -774,7 +829,6 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           s.x_drive.push_back(sim.samples[i].drive_displacement_m);
           slipping.push_back(sim.samples[i].phase != rig::Phase::stick);
         }
-        if (!history && plan.slip_spacing_s > 0.0) s = sampled_as_recorded(s, slipping, plan);
         if (history) {
           // Sampled where the measurement was: a bin near the step holds one or two measured
           // samples, and the simulated bin must average the same instants, not the whole bin.
@@ -786,8 +840,19 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           }
           f = analyse_drive_history(at, plan, nullptr);
         } else {
+          Signal read = trace ? s : std::move(s);
+          std::vector<bool> read_slipping = trace ? slipping : std::move(slipping);
+          if (std::isfinite(t_read)) {
+            const std::size_t n = static_cast<std::size_t>(std::upper_bound(read.t.begin(), read.t.end(), t_read) - read.t.begin());
+            for (auto* v : {&read.t, &read.mu, &read.x, &read.x_drive}) v->resize(n);
+            read_slipping.resize(n);
+          }
+          if (plan.slip_spacing_s > 0.0) {
+            read = sampled_as_recorded(read, read_slipping, plan);
+            if (trace) s = sampled_as_recorded(s, slipping, plan);
+          }
           double step = plan.slip_step_s;
-          f = analyse_constant_speed(s, plan.sample_spacing_s, step, nullptr, rig::analysis_start_s(0.0, plan.duration_s));
+          f = analyse_constant_speed(read, plan.sample_spacing_s, step, nullptr, rig::analysis_start_s(0.0, std::min(t_read, plan.duration_s)));
         }
         if (trace) {  // over the record's span (a slow run is simulated past it, RunPlan::simulated_extra_s)
           SimulatedRun run{plan.label, {}, {}, {}};

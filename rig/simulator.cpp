@@ -311,6 +311,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   double next_sample = 0.0;
   settle();
   while (t < t_end) {
+    if (options.stop_after_events > 0 && summary.events >= options.stop_after_events) break;
     if (summary.events > options.max_events) {
       summary.message = "stopped after " + std::to_string(summary.events) + " events at t = " + numerics::shortest(t) +
                         " s (max_events reached: chattering between stick and slip?)";
@@ -384,7 +385,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   }
   summary.completed = true;
   summary.end_time_s = t;
-  summary.message = "completed";
+  summary.message = t < t_end ? "completed: stopped after " + std::to_string(summary.events) + " events (stop_after_events)" : "completed";
   return summary;
 }
 

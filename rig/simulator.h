@@ -37,6 +37,9 @@ struct SimulationOptions {
   std::vector<double> output_times_s;
   // A run with more events than this stops and says so (e.g. chattering at a velocity match).
   long max_events = 2'000'000;
+  // When > 0: the run ends, completed, at the first phase boundary after this many events — a
+  // caller that reads a periodic response needs a number of cycles, not the whole duration.
+  long stop_after_events = 0;
   double initial_displacement_m = 0.0;  // slider displacement at t = 0
   // By default the slider starts stuck (ẋ = v). With start_slipping it starts at
   // initial_velocity_m_per_s, which must differ from v(0); the slip direction follows from U.
@@ -86,7 +89,7 @@ struct Sample {
 };
 
 struct SimulationSummary {
-  bool completed = false;        // reached duration_s
+  bool completed = false;        // reached duration_s, or stop_after_events
   std::string message;
   double end_time_s = 0.0;
   long integrator_steps = 0;

@@ -97,6 +97,39 @@ TEST(StickSlip, FrictionWorkEqualsDampingDissipationOverACycle) {
   EXPECT_GT(damping_work, 1e-3 * gross);
 }
 
+// SimulationOptions::stop_after_events ends a run, completed, at its tenth event — the fifth
+// re-attachment, one slip time after the fifth breakaway: the first breakaway when spring and
+// damper, stuck at ẋ = v from x = 0, reach μs W (k v t + c v = μs W), then one closed-form period
+// per cycle — and what it
+// simulated is the whole run's prefix to the bit (the integration is causal).
+TEST(StickSlip, ARunStoppedAfterItsEventsIsThePrefixOfTheWholeRun) {
+  const RigParameters rig;
+  const double v = 5e-3, mu_s = 0.3, mu_k = 0.2;
+  const auto ref = reference::coulomb_stick_slip(rig, mu_s, mu_k, v);
+  auto law = make_coulomb(mu_s, mu_k);
+  SimulationOptions whole;
+  whole.duration_s = 20.0 * ref.period_s;
+  SimulationOptions stopped = whole;
+  stopped.stop_after_events = 10;
+  const SimulationResult full = simulate(rig, Drive::constant(v), *law, whole);
+  const SimulationResult part = simulate(rig, Drive::constant(v), *law, stopped);
+  ASSERT_TRUE(full.summary.completed) << full.summary.message;
+  ASSERT_TRUE(part.summary.completed) << part.summary.message;
+  ASSERT_EQ(part.events.size(), 10u);
+  EXPECT_EQ(part.events.back().kind, EventKind::reattach);
+  const double t_first = (mu_s * rig.normal_load_N - rig.damping_N_s_per_m * v) / (rig.stiffness_N_per_m * v);
+  // Events are located to CVODE's root tolerance, ≈ 1e-9 of a period (the closed-form test above).
+  EXPECT_NEAR(part.summary.end_time_s, t_first + 4.0 * ref.period_s + ref.slip_time_s, 1e-6 * ref.period_s);
+  EXPECT_EQ(part.summary.end_time_s, part.events.back().t_s);
+  ASSERT_LT(part.samples.size(), full.samples.size());
+  for (std::size_t i = 0; i < part.samples.size(); ++i) {
+    ASSERT_EQ(part.samples[i].t_s, full.samples[i].t_s) << "sample " << i;
+    ASSERT_EQ(part.samples[i].x_m, full.samples[i].x_m) << "sample " << i;
+    ASSERT_EQ(part.samples[i].friction_N, full.samples[i].friction_N) << "sample " << i;
+  }
+  EXPECT_GT(full.samples[part.samples.size()].t_s, part.summary.end_time_s);
+}
+
 // A recorder's instants (SimulationOptions::output_times_s) replace the output grid and leave the
 // solution alone: samples only at listed instants and events; in every stick the slider rides
 // the surface, x = x_reattach + v (t − t_reattach) exactly; and listing more instants moves no
