@@ -150,10 +150,10 @@ Calibration calibrate(const FitProblem& p) {
     double searched_s = 0.0;
     for (const FitResult& f : from_start) {
       searched_s += f.termination.wall_s;
-      if (f.cost < best.cost) best = f;
+      if (better_fit(f, best)) best = f;
     }
     if (FitResult refined = fit(comparison, p.base_space, best.setup, w, calibration, o.seed, 1, dims, Resolution::refine);
-        refined.cost <= best.cost)
+        !better_fit(best, refined))
       best = refined;
     best.termination.wall_s += searched_s;
     return best;
@@ -207,9 +207,9 @@ std::optional<FitResult> recalibrate(const FitProblem& p, const Calibration& cal
                          Resolution::refine);
   });
   std::optional<FitResult> better;
-  double cost = b.fit.cost;
+  const FitResult* best = &b.fit;
   for (const FitResult& f : from_leader)  // in the leaders' order, as a serial loop would take them
-    if (f.cost < cost) better = f, cost = f.cost;
+    if (better_fit(f, *best)) better = f, best = &f;
   return better;
 }
 

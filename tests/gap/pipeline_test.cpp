@@ -244,6 +244,33 @@ TEST_F(ViscousPipeline, NoPairIsTriedWhenTheBestSingleClosesMostOfTheGap) {
   EXPECT_EQ(out.comparisons, 2);
 }
 
+// A qualitative miss outranks any cost (fit.h better_fit): from a leader that slides steadily
+// through the stick-slip runs (μs = μk, every extremum, period and drop missing, residual 1 each),
+// the re-calibration reaches a lower cost than a baseline left far off (μs 0.38 against a
+// calibrated ≈ 0.3, every feature there, the worst residuals above 1) — and does not replace it.
+TEST_F(ViscousPipeline, ABaselineThatSlidesSteadilyNeverReplacesOneThatStickSlips) {
+  const FitProblem& p = *problem_;
+  const Baseline off = baseline_at(p, fit(*p.comparison, {}, FitSetup{baseline_->setup.rig, rig::coulomb(0.38, 0.18)}, calibration_->weights,
+                                          p.options, p.options.seed, 1, 0));
+  ASSERT_EQ(off.fit.missing_items, 0);
+  Candidate steady;
+  steady.effects = {"viscous_friction"};
+  steady.rig = baseline_->setup.rig;
+  steady.model = rig::coulomb(0.2, 0.2);
+  const FitResult from_steady = fit(*p.comparison, p.base_space, FitSetup{steady.rig, steady.model}, calibration_->weights, p.options,
+                                    p.options.seed, 1, p.base_space.size(), Resolution::refine);
+  ASSERT_GT(from_steady.missing_items, 0);
+  ASSERT_LT(from_steady.cost, off.fit.cost);  // by cost alone it would win
+  EXPECT_FALSE(recalibrate(p, *calibration_, off, {steady}).has_value());
+  // A leader that stick-slips still moves it: the truth's levels re-calibrate below the far-off cost.
+  Candidate near = steady;
+  near.model = rig::coulomb(0.32, 0.18);
+  const auto moved = recalibrate(p, *calibration_, off, {near});
+  ASSERT_TRUE(moved.has_value());
+  EXPECT_EQ(moved->missing_items, 0);
+  EXPECT_LT(moved->cost, off.fit.cost);
+}
+
 // The choice and its confidence: the earning candidate is chosen (not unexplained), and with the
 // baseline and the verdict's candidate refitted on redrawn training data, the resamples agree with
 // the verdict at least 80 % of the time (a cut of more than half the gap on four speeds).
