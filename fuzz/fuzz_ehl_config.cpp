@@ -23,12 +23,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const auto& o = run.point_options;
       TRIBO_FUZZ_CHECK(o.nodes_x >= 11 && o.nodes_y >= 11 && o.nodes_x <= 129 && o.nodes_y <= 129);
       TRIBO_FUZZ_CHECK(o.inlet_over_radius < -1.0 && o.outlet_over_radius > 1.0 && o.side_over_radius > 1.0);
-      TRIBO_FUZZ_CHECK(!run.roughness);
     } else {
       const auto& c = run.contact;
       for (double v : {c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s})
         TRIBO_FUZZ_CHECK(std::isfinite(v) && v > 0.0);
       TRIBO_FUZZ_CHECK(run.options.nodes >= 11 && run.options.inlet_over_half_width < -1.0 && run.options.outlet_over_half_width > 1.0);
+    }
+    if (run.roughness) {  // either geometry (a rough ball since a5e6aa4): summits the GW model accepts
+      const auto& r = *run.roughness;
+      for (double v : {r.summits.summit_density_per_m2, r.summits.summit_radius_m, r.summits.summit_std_m, r.summits.e_star_Pa})
+        TRIBO_FUZZ_CHECK(std::isfinite(v) && v > 0.0);
+      TRIBO_FUZZ_CHECK(std::isfinite(r.summit_height_m) && r.summit_height_m >= 0.0);
+      TRIBO_FUZZ_CHECK(std::isfinite(r.boundary_friction_coefficient) && r.boundary_friction_coefficient >= 0.0);
     }
     TRIBO_FUZZ_CHECK(std::isfinite(run.sliding_speed_m_per_s));
     TRIBO_FUZZ_CHECK(run.eyring_stress_Pa > 0.0);
