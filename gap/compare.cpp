@@ -793,11 +793,6 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         // A trace for the report spans the record; its features are read off the same prefix.
         if (!history && !trace) options.stop_after_events = kWindowEvents;
         options.samples_per_period = kSamplesPerPeriod;
-        // In stick no coarser than the record: the friction jumps at a re-attachment, and the
-        // interpolant from the event's sample to the next one spreads the jump over that spacing
-        // (the rig's default, duration / 4000, made a Coulomb model's own trough read 0.016 high).
-        const double stick_samples = std::ceil(options.duration_s / plan.sample_spacing_s);
-        if (std::isfinite(stick_samples)) options.stick_samples_per_run = static_cast<int>(std::clamp(stick_samples, 4000.0, 1e8));
         // A drive history is read at the measured instants: the simulation outputs there (and τ
         // earlier, where a lagging instrument reads the acceleration), not on a grid of its natural
         // period — 4 samples per period of a 1e6 N/m machine were 13 times the record's 5850.

@@ -2,9 +2,9 @@
 // (gap/compare.cpp): a deterministic rig's limit cycle, read over ~50 cycles, gives what the whole
 // record gives. The record here is the model's own response over 300 cycles, read as a 1-kHz
 // recorder would, so every item's prediction must match its measurement. Before 2026-11-28 the
-// simulation sampled a stick every duration/4000 (29 ms here) and the friction's jump at each
-// re-attachment was spread over that: the model's own trough read 0.016 high, its rise time 8 %
-// short.
+// first stick sample came a stick spacing (duration / 4000, 29 ms here) after each re-attachment
+// and the friction's drop there was spread over it: the model's own trough read 0.016 high, its
+// rise time 8 % short (rig/simulator.cpp now samples a slip spacing after the event).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -50,7 +50,7 @@ TEST(LongRecord, ThreeHundredCyclesArePredictedFromTheirFirstFifty) {
   for (std::size_t i = 0; i < predicted.size(); ++i) {
     const Item& it = c.items()[i];
     // Both sides are smoothed over ±2 ms, the record sampled every 1 ms and the simulation at 50
-    // samples a natural period in slip (≈ 0.2 ms) and at the record's spacing in stick: levels
+    // samples a natural period in slip (≈ 0.3 ms) and at its first stick sample: levels
     // agree to 5e-4 in μ (0.25 % of μk), times to half a sample, the period — the mean of ~150
     // peak-to-peak spans — to 1e-5 of itself; a slip drop, read a slip step (a fifth of the ≈ 5-ms
     // fall) after the fall's start, to 2e-3 in μ (2 % of the drop).

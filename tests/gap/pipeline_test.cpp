@@ -246,8 +246,8 @@ TEST_F(ViscousPipeline, NoPairIsTriedWhenTheBestSingleClosesMostOfTheGap) {
 
 // A qualitative miss outranks any cost (fit.h better_fit): from a leader that slides steadily
 // through the stick-slip runs (μs = μk, every extremum, period and drop missing, residual 1 each),
-// the re-calibration reaches a lower cost than a baseline left far off (μs 0.38 against a
-// calibrated ≈ 0.3, every feature there, the worst residuals above 1) — and does not replace it.
+// the re-calibration reaches a lower cost than a baseline left far off (μs 0.38, μk 0.18 against
+// the truth's 0.32 and 0.18; every feature there) — and does not replace it.
 TEST_F(ViscousPipeline, ABaselineThatSlidesSteadilyNeverReplacesOneThatStickSlips) {
   const FitProblem& p = *problem_;
   const Baseline off = baseline_at(p, fit(*p.comparison, {}, FitSetup{baseline_->setup.rig, rig::coulomb(0.38, 0.18)}, calibration_->weights,

@@ -130,6 +130,39 @@ TEST(StickSlip, ARunStoppedAfterItsEventsIsThePrefixOfTheWholeRun) {
   EXPECT_GT(full.samples[part.samples.size()].t_s, part.summary.end_time_s);
 }
 
+// At a re-attachment the friction drops from μk W to the spring's pull, (2μk − μs) W undamped
+// (the slider swings symmetrically about μk W/k), and rises at k v in the stick that follows. The
+// first stick sample comes one slip spacing (2π/ω_n / samples_per_period) after the event, so the
+// sampled trough is that pull to within k v times the spacing — before, the interpolant from the
+// event's own sample (μk W) spread the drop over a whole stick spacing (duration / stick samples:
+// here 20 periods / 400, about 60 slip spacings).
+TEST(StickSlip, TheFirstStickSampleReadsTheSpringsPullAtTheReattachment) {
+  RigParameters rig;
+  rig.damping_N_s_per_m = 0.0;
+  const double v = 5e-3, mu_s = 0.3, mu_k = 0.2, W = rig.normal_load_N, k = rig.stiffness_N_per_m;
+  const auto ref = reference::coulomb_stick_slip(rig, mu_s, mu_k, v);
+  SimulationOptions opt;
+  opt.duration_s = 20.0 * ref.period_s;
+  opt.stick_samples_per_run = 400;
+  auto law = make_coulomb(mu_s, mu_k);
+  const SimulationResult r = simulate(rig, Drive::constant(v), *law, opt);
+  ASSERT_TRUE(r.summary.completed) << r.summary.message;
+  const double dt_slip = 2.0 * M_PI / rig.natural_frequency_rad_per_s() / opt.samples_per_period;
+  ASSERT_GT(opt.duration_s / opt.stick_samples_per_run, 50.0 * dt_slip);  // a stick spacing far coarser
+  int reattachments = 0;
+  for (const Event& e : r.events) {
+    if (e.kind != EventKind::reattach) continue;
+    const auto next = std::upper_bound(r.samples.begin(), r.samples.end(), e.t_s, [](double t, const Sample& s) { return t < s.t_s; });
+    ASSERT_NE(next, r.samples.end());
+    EXPECT_NEAR(next->t_s - e.t_s, dt_slip, 1e-9 * ref.period_s);
+    EXPECT_EQ(next->phase, Phase::stick);
+    // The pull at the event, plus k v over the spacing; CVODE's error ≈ 1e-10 of W here.
+    EXPECT_NEAR(next->friction_N, (2.0 * mu_k - mu_s) * W + k * v * dt_slip, 1e-6 * W) << "t = " << e.t_s;
+    ++reattachments;
+  }
+  EXPECT_GE(reattachments, 19);
+}
+
 // A recorder's instants (SimulationOptions::output_times_s) replace the output grid and leave the
 // solution alone: samples only at listed instants and events; in every stick the slider rides
 // the surface, x = x_reattach + v (t − t_reattach) exactly; and listing more instants moves no
