@@ -8,6 +8,8 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "gap/bundle.h"
 #include "gap/compare.h"
@@ -17,6 +19,9 @@
 
 namespace {
 
+const std::vector<std::string> kEffects{"none",          "slip_transient", "viscous_friction",     "thermal_thinning",
+                                        "hydrodynamic_lift", "squeeze_film", "rate_dependent_static"};
+
 const std::filesystem::path kBundle = std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/gap/data/foreign-coulomb-control";
 
 void BM_PredictForeignControl(benchmark::State& state) {
@@ -25,9 +30,7 @@ void BM_PredictForeignControl(benchmark::State& state) {
   const rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
   const gap::Comparison comparison(bundle, rig);
   rig::FrictionModel model = rig::coulomb(0.362, 0.190);  // the calibrated baseline (docs/gap.md)
-  const std::vector<std::string> effects{"none", "slip_transient", "viscous_friction", "thermal_thinning", "hydrodynamic_lift",
-                                         "squeeze_film", "rate_dependent_static"};
-  const std::string& effect = effects.at(static_cast<std::size_t>(state.range(0)));
+  const std::string& effect = kEffects.at(static_cast<std::size_t>(state.range(0)));
   if (effect != "none") model.add(effect);
   state.SetLabel(effect);
   for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
@@ -58,6 +61,27 @@ void BM_PredictPaperK2254(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
 }
 BENCHMARK(BM_PredictPaperK2254)->DenseRange(-1, 2)->Unit(benchmark::kMillisecond);
+
+// The same record's whole bundle with each catalogue effect added at its default parameters (arg
+// as BM_PredictForeignControl's): what one evaluation of a candidate's fit costs there.
+void BM_PredictPaperK2254Effect(benchmark::State& state) {
+  using namespace tribo;
+  const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/stickslip-paper-k2254";
+  if (!std::filesystem::exists(dir)) {
+    state.SkipWithError("../shared/data/real/stickslip-paper-k2254 not found");
+    return;
+  }
+  const gap::ExperimentBundle bundle = gap::read_bundle(dir);
+  rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
+  gap::set_damping_ratio(rig, 0.04281);
+  const gap::Comparison comparison(bundle, rig);
+  rig::FrictionModel model = rig::coulomb(0.5039, 0.3481);
+  const std::string& effect = kEffects.at(static_cast<std::size_t>(state.range(0)));
+  if (effect != "none") model.add(effect);
+  state.SetLabel(effect);
+  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+BENCHMARK(BM_PredictPaperK2254Effect)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

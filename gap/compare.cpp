@@ -37,6 +37,11 @@ constexpr double kSimulatedCycles = 4.0;  // cycles a simulated constant-speed w
 // in 750 — the paper record at 42 µm/s and k = 2254 N/m (375 s, a 0.5-s simulated cycle) was two
 // thirds of every prediction of that bundle.
 constexpr long kWindowEvents = 200;
+// A constant-speed run that slides without an event ends once two consecutive windows of this many
+// natural periods agree in mean friction to 1e-4 W (rig::SimulationOptions::settle_window_periods):
+// steady sliding gives no event to count, and the paper record's 375-s run at 42 µm/s, sliding
+// steadily under a candidate, took 0.6 s (1.2 M samples) against 6 ms stick-slipping.
+constexpr double kSettleWindowPeriods = 250.0;
 constexpr long kStaticPointEvents = 40;  // a static point's run stops after this many events (20 stick-slip cycles or more)
 constexpr double kStaticPointCycles_s = 10.0;  // and simulates at most this long after loading the contact
 // Shortest drive segment, in samples: its steady level is the mean of its last 30 % in four
@@ -792,6 +797,11 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         options.max_events = Comparison::event_budget(rig, options.duration_s);
         // A trace for the report spans the record; its features are read off the same prefix.
         if (!history && !trace) options.stop_after_events = kWindowEvents;
+        // ... or, sliding without an event, once it has settled (a trace's run says where).
+        if (!history) {
+          options.settle_window_periods = kSettleWindowPeriods;
+          options.stop_when_settled = !trace;
+        }
         options.samples_per_period = kSamplesPerPeriod;
         // A drive history is read at the measured instants: the simulation outputs there (and τ
         // earlier, where a lagging instrument reads the acceleration), not on a grid of its natural
@@ -806,12 +816,13 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), law, model, seed, options);
         }
         if (!sim.summary.completed || sim.samples.size() < 3) break;
-        // Where the features' simulation ends: at the record's end (and its extra cycles), or at
-        // the kWindowEvents-th event — a run stopped there has every sample up to it, a trace's
-        // run is cut there.
-        const double t_read = !history && static_cast<long>(sim.events.size()) >= kWindowEvents
-                                  ? sim.events[static_cast<std::size_t>(kWindowEvents - 1)].t_s
-                                  : std::numeric_limits<double>::infinity();
+        // Where the features' simulation ends: at the record's end (and its extra cycles), at the
+        // kWindowEvents-th event, or where it settled into steady sliding — a run stopped there
+        // has every sample up to it, a trace's run is cut there.
+        double t_read = !history && static_cast<long>(sim.events.size()) >= kWindowEvents
+                            ? sim.events[static_cast<std::size_t>(kWindowEvents - 1)].t_s
+                            : std::numeric_limits<double>::infinity();
+        if (!history && std::isfinite(sim.summary.settled_at_s)) t_read = std::min(t_read, sim.summary.settled_at_s);
         Signal s;
         std::vector<bool> slipping;
         for (auto* v : {&s.t, &s.mu, &s.x, &s.x_drive}) v->reserve(sim.samples.size());

@@ -141,6 +141,44 @@ int root_callback(sunrealtype t, N_Vector y, sunrealtype* g, void* data) {
   }
 }
 
+// Steady-sliding detection (SimulationOptions::settle_window_periods): the friction's time mean
+// (trapezoidal, so listed output instants serve as well as the slip grid) over consecutive windows
+// of slip without an event, each compared with the one before.
+class SettleDetector {
+ public:
+  SettleDetector(double window_s, double tolerance_N) : window_s_(window_s), tolerance_N_(tolerance_N) {}
+  void restart() {
+    open_ = false;
+    previous_mean_ = std::numeric_limits<double>::quiet_NaN();
+  }
+  // A slip sample; true when the window it closes matches the previous one.
+  bool add(double t, double friction_N) {
+    if (!open_) {
+      open_ = true;
+      start_s_ = last_t_ = t;
+      last_f_ = friction_N;
+      integral_ = 0.0;
+      return false;
+    }
+    integral_ += 0.5 * (friction_N + last_f_) * (t - last_t_);
+    last_t_ = t;
+    last_f_ = friction_N;
+    if (t - start_s_ < window_s_) return false;
+    const double mean = integral_ / (t - start_s_);
+    const bool settled = std::isfinite(previous_mean_) && std::abs(mean - previous_mean_) <= tolerance_N_;
+    previous_mean_ = mean;
+    start_s_ = t;
+    integral_ = 0.0;
+    return settled;
+  }
+
+ private:
+  double window_s_, tolerance_N_;
+  bool open_ = false;
+  double start_s_ = 0.0, last_t_ = 0.0, last_f_ = 0.0, integral_ = 0.0;
+  double previous_mean_ = std::numeric_limits<double>::quiet_NaN();
+};
+
 void validate(const SimulationOptions& o) {
   auto bad = [](const std::string& what) { throw std::invalid_argument("simulation options: " + what); };
   if (!std::isfinite(o.duration_s) || !(o.duration_s > 0.0)) bad("duration_s must be positive");
@@ -148,6 +186,9 @@ void validate(const SimulationOptions& o) {
   if (!(o.displacement_tolerance_fraction > 0.0)) bad("displacement_tolerance_fraction must be positive");
   if (o.samples_per_period < 4) bad("samples_per_period must be at least 4");
   if (o.stick_samples_per_run < 1) bad("stick_samples_per_run must be at least 1");
+  if (!(o.settle_window_periods >= 0.0) || !std::isfinite(o.settle_window_periods)) bad("settle_window_periods must be finite and >= 0");
+  if (!(o.settle_tolerance_fraction > 0.0) || !std::isfinite(o.settle_tolerance_fraction)) bad("settle_tolerance_fraction must be finite and positive");
+  if (o.stop_when_settled && !(o.settle_window_periods > 0.0)) bad("stop_when_settled needs settle_window_periods > 0");
   if (!std::isfinite(o.initial_displacement_m)) bad("initial_displacement_m must be finite");
   for (std::size_t i = 0; i < o.output_times_s.size(); ++i) {
     const double t = o.output_times_s[i];
@@ -307,10 +348,25 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     return listed < options.output_times_s.size() ? options.output_times_s[listed] : t_end;
   };
 
+  SettleDetector settling(options.settle_window_periods * 2.0 * std::numbers::pi / wn,
+                          options.settle_tolerance_fraction * rig.normal_load_N);
+  bool settled_stop = false;
+  // After a regular sample: feed the detector while slipping; true when the run is to end here.
+  auto settled_here = [&]() {
+    if (!(options.settle_window_periods > 0.0)) return false;
+    if (m.phase != Phase::slip) {
+      settling.restart();
+      return false;
+    }
+    if (!settling.add(t, m.friction(t, y.data()))) return false;
+    if (std::isnan(summary.settled_at_s)) summary.settled_at_s = t;
+    return options.stop_when_settled;
+  };
+
   emit_sample();
   double next_sample = 0.0;
   settle();
-  while (t < t_end) {
+  while (t < t_end && !settled_stop) {
     if (options.stop_after_events > 0 && summary.events >= options.stop_after_events) break;
     if (summary.events > options.max_events) {
       summary.message = "stopped after " + std::to_string(summary.events) + " events at t = " + numerics::shortest(t) +
@@ -345,6 +401,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
       std::copy(cv.state().begin(), cv.state().end(), y.begin());
       if (flag == CV_ROOT_RETURN) {
         emit_sample();  // the state at the event, before the switch: times stay strictly increasing
+        settling.restart();
         if (m.phase == Phase::stick) {
           const auto found = cv.roots_found();
           breakaway(found[0] != 0 ? +1 : -1);
@@ -378,17 +435,26 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
         if (m.phase == Phase::stick) y[kXdot] = drive.speed_m_per_s(t);  // follow a drive step
         settle();
         emit_sample();
+        settling.restart();
         next_sample = next_output_after(t);
         break;
       }
       emit_sample();
       next_sample = next_output_after(t);
+      if (settled_here()) {
+        settled_stop = true;
+        break;
+      }
     }
     summary.integrator_steps += cv.steps();
   }
   summary.completed = true;
   summary.end_time_s = t;
-  summary.message = t < t_end ? "completed: stopped after " + std::to_string(summary.events) + " events (stop_after_events)" : "completed";
+  if (settled_stop) {
+    summary.message = "completed: settled into steady sliding at t = " + numerics::shortest(t) + " s (stop_when_settled)";
+  } else {
+    summary.message = t < t_end ? "completed: stopped after " + std::to_string(summary.events) + " events (stop_after_events)" : "completed";
+  }
   return summary;
 }
 

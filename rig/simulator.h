@@ -12,6 +12,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,17 @@ struct SimulationOptions {
   // When > 0: the run ends, completed, at the first phase boundary after this many events — a
   // caller that reads a periodic response needs a number of cycles, not the whole duration.
   long stop_after_events = 0;
+  // When > 0: steady sliding is detected — the slider slips, with no event and no drive step,
+  // through two consecutive windows of this many natural periods whose time-mean friction differs
+  // by at most settle_tolerance_fraction × W. The summary says when (settled_at_s); with
+  // stop_when_settled the run ends there, completed. A caller reading a stationary response needs
+  // a window of it, not the duration: a slider that slides steadily at 42 µm/s for 375 s gives no
+  // event for stop_after_events to count. Every event restarts the windows, so stick-slip,
+  // however slow its stick, never counts as settled; a sustained oscillation without sticking
+  // settles once its cycles average out over a window.
+  double settle_window_periods = 0.0;
+  double settle_tolerance_fraction = 1e-4;
+  bool stop_when_settled = false;
   double initial_displacement_m = 0.0;  // slider displacement at t = 0
   // By default the slider starts stuck (ẋ = v). With start_slipping it starts at
   // initial_velocity_m_per_s, which must differ from v(0); the slip direction follows from U.
@@ -89,7 +101,8 @@ struct Sample {
 };
 
 struct SimulationSummary {
-  bool completed = false;        // reached duration_s, or stop_after_events
+  bool completed = false;        // reached duration_s, stop_after_events, or stop_when_settled
+  double settled_at_s = std::numeric_limits<double>::quiet_NaN();  // steady sliding detected (settle_window_periods)
   std::string message;
   double end_time_s = 0.0;
   long integrator_steps = 0;

@@ -67,5 +67,59 @@ TEST(LongRecord, ThreeHundredCyclesArePredictedFromTheirFirstFifty) {
   EXPECT_EQ(periods, 1);
 }
 
+// A record that slides steadily gives no event to count: its prediction ends once the simulation
+// has settled — two windows of kSettleWindowPeriods natural periods (15 s here) whose mean friction
+// agrees to 1e-4 W — instead of at the record's end, 120 s (1950 periods) later. The record is the
+// model's own slide read at 1 kHz, so every item's prediction must match its measurement: the
+// viscous slope c = 40 N s/m damps the breakaway's swing at (r + c)/2M ≈ 21 1/s, so the settled
+// level is μk + c v / W to round-off. The report's trace path simulates the whole record and reads
+// the same prefix: its predictions are the stopped run's.
+TEST(LongRecord, ASteadySlideIsPredictedFromItsSettledStart) {
+  const rig::RigParameters rig;
+  const double v = 0.05, mu_s = 0.3, mu_k = 0.15, c = 40.0;
+  rig::FrictionModel model = rig::coulomb(mu_s, mu_k);
+  model.set("viscous_friction", "coefficient_N_s_per_m", c);
+  rig::SimulationOptions o;
+  o.duration_s = 120.0;
+  o.relative_tolerance = o.displacement_tolerance_fraction = 1e-10;
+  for (double t = 0.0; t <= o.duration_s; t += 1e-3) o.output_times_s.push_back(t);
+  const auto law = rig::make_friction_law(model);
+  const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(v), *law, o);
+  ASSERT_TRUE(r.summary.completed) << r.summary.message;
+  ASSERT_EQ(r.events.size(), 1u);  // the breakaway, then sliding
+  ExperimentBundle bundle;
+  gap::Run run;
+  run.run_id = "slide";
+  run.v_m_per_s = v;
+  for (const rig::Sample& s : r.samples) {
+    if (!std::binary_search(o.output_times_s.begin(), o.output_times_s.end(), s.t_s)) continue;
+    if (!run.trace.t_s.empty() && !(s.t_s > run.trace.t_s.back())) continue;
+    run.trace.t_s.push_back(s.t_s);
+    run.trace.mu.push_back(s.friction_N / rig.normal_load_N);
+  }
+  bundle.runs.push_back(run);
+  Comparison cmp(bundle, rig);
+  cmp.set_integration_tolerance(Comparison::kFinestTolerance);
+  const std::vector<double> predicted = cmp.predict(rig, model, 1);
+  std::vector<SimulatedRun> traces;
+  const std::vector<double> traced = cmp.predict(rig, model, 1, &traces);
+  ASSERT_EQ(predicted.size(), cmp.items().size());
+  ASSERT_EQ(traced.size(), predicted.size());
+  ASSERT_EQ(traces.size(), 1u);
+  EXPECT_GT(traces[0].t_s.back(), 0.99 * o.duration_s);  // the trace spans the record
+  int levels = 0;
+  for (std::size_t i = 0; i < predicted.size(); ++i) {
+    const Item& it = cmp.items()[i];
+    // Levels: the steady μ to round-off on both sides, smoothed alike; 1e-6 in μ.
+    EXPECT_NEAR(predicted[i], it.measured, 1e-6) << it.observable << " " << it.where;
+    EXPECT_EQ(traced[i], predicted[i]) << it.observable << " " << it.where;
+    if (it.observable == "mean_mu") {
+      ++levels;
+      EXPECT_NEAR(predicted[i], mu_k + c * v / rig.normal_load_N, 1e-6);
+    }
+  }
+  EXPECT_EQ(levels, 1);
+}
+
 }  // namespace
 }  // namespace tribo::gap

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
+#include "rig/friction_model.h"
 #include "rig/kinetic_laws.h"
 #include "rig/observables.h"
 #include "rig/reference/closed_forms.h"
@@ -128,6 +130,75 @@ TEST(StickSlip, ARunStoppedAfterItsEventsIsThePrefixOfTheWholeRun) {
     ASSERT_EQ(part.samples[i].friction_N, full.samples[i].friction_N) << "sample " << i;
   }
   EXPECT_GT(full.samples[part.samples.size()].t_s, part.summary.end_time_s);
+}
+
+// SimulationOptions::settle_window_periods: after the breakaway a viscous slope c damps the swing
+// at (r + c)/2M ≈ 21 1/s; the first window of 20 natural periods (1.2 s) still holds it (its mean
+// friction is c Δx / window ≈ 0.04 N off the steady level, Δx the spring's relaxation), the second
+// and third agree to e^{−25}, so the run settles when the third window closes: three windows after
+// the first slip sample, on the slip grid. Stopped there, the run is the whole run's prefix to the
+// bit, and the whole run reports the same instant; the level is the steady μk W + c v.
+TEST(SteadySliding, ARunEndsWhereItSettledAndIsThePrefixOfTheWholeRun) {
+  const RigParameters rig;
+  const double v = 0.05, c = 40.0;
+  FrictionModel model = coulomb(0.3, 0.15);
+  model.set("viscous_friction", "coefficient_N_s_per_m", c);
+  const auto law = make_friction_law(model);
+  SimulationOptions whole;
+  whole.duration_s = 20.0;
+  whole.settle_window_periods = 20.0;
+  SimulationOptions stopped = whole;
+  stopped.stop_when_settled = true;
+  const SimulationResult full = simulate(rig, Drive::constant(v), *law, whole);
+  const SimulationResult part = simulate(rig, Drive::constant(v), *law, stopped);
+  ASSERT_TRUE(full.summary.completed) << full.summary.message;
+  ASSERT_TRUE(part.summary.completed) << part.summary.message;
+  ASSERT_EQ(full.events.size(), 1u);
+  const double period = 2.0 * std::numbers::pi / rig.natural_frequency_rad_per_s();
+  const double dt = period / whole.samples_per_period, window = 20.0 * period;
+  const double first_slip_sample = full.events[0].t_s + dt;
+  EXPECT_GE(part.summary.settled_at_s, first_slip_sample + 3.0 * window - 1e-9);
+  EXPECT_LE(part.summary.settled_at_s, first_slip_sample + 3.0 * window + 3.0 * dt);  // a window closes on a sample
+  EXPECT_EQ(full.summary.settled_at_s, part.summary.settled_at_s);
+  EXPECT_EQ(part.summary.end_time_s, part.summary.settled_at_s);
+  EXPECT_NE(part.summary.message.find("settled"), std::string::npos) << part.summary.message;
+  ASSERT_LT(part.samples.size(), full.samples.size());
+  for (std::size_t i = 0; i < part.samples.size(); ++i) {
+    ASSERT_EQ(part.samples[i].t_s, full.samples[i].t_s) << "sample " << i;
+    ASSERT_EQ(part.samples[i].friction_N, full.samples[i].friction_N) << "sample " << i;
+  }
+  // The swing is e^{−21 × 3.6} of its 12-N start by then: the steady level to CVODE's tolerance.
+  EXPECT_NEAR(part.samples.back().friction_N, 0.15 * rig.normal_load_N + c * v, 1e-6 * rig.normal_load_N);
+}
+
+// Stick-slip never settles, however long its stick: here 18 s of stick (2(μs − μk)W/(k v)) against
+// a 1.2-s window, and slips of half a period. A run asked to stop when settled runs its duration.
+TEST(SteadySliding, SlowStickSlipNeverCountsAsSettled) {
+  const RigParameters rig;
+  const double v = 1e-4, mu_s = 0.3, mu_k = 0.2;
+  auto law = make_coulomb(mu_s, mu_k);
+  SimulationOptions o;
+  o.duration_s = 100.0;
+  o.settle_window_periods = 20.0;
+  o.stop_when_settled = true;
+  const SimulationResult r = simulate(rig, Drive::constant(v), *law, o);
+  ASSERT_TRUE(r.summary.completed) << r.summary.message;
+  EXPECT_GE(r.events.size(), 8u);  // 5 cycles of ≈ 18 s after the first breakaway at ≈ 27 s
+  EXPECT_TRUE(std::isnan(r.summary.settled_at_s));
+  EXPECT_EQ(r.summary.end_time_s, o.duration_s);
+}
+
+TEST(SteadySliding, SettleOptionsAreChecked) {
+  const RigParameters rig;
+  auto law = make_coulomb(0.3, 0.2);
+  SimulationOptions o;
+  o.stop_when_settled = true;  // without a window
+  EXPECT_THROW(simulate(rig, Drive::constant(1e-3), *law, o), std::invalid_argument);
+  o.settle_window_periods = -1.0;
+  EXPECT_THROW(simulate(rig, Drive::constant(1e-3), *law, o), std::invalid_argument);
+  o.settle_window_periods = 10.0;
+  o.settle_tolerance_fraction = 0.0;
+  EXPECT_THROW(simulate(rig, Drive::constant(1e-3), *law, o), std::invalid_argument);
 }
 
 // At a re-attachment the friction drops from μk W to the spring's pull, (2μk − μs) W undamped
