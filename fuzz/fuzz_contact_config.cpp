@@ -22,7 +22,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string path = "/nonexistent/tribo-fuzz/contact.toml";
   try {
     const toml::table doc = tribo::cli::parse_toml_text(std::string_view(reinterpret_cast<const char*>(data) + 1, size - 1), path);
-    if (const auto grid = doc["domain"]["grid"].value<std::int64_t>(); grid && *grid > 512) return 0;
+    // value_exact, as the loader reads it: toml++'s value<int64_t> converts a float such as 1e42
+    // with a cast whose overflow is undefined (its first libFuzzer run, 2026-11-28).
+    if (const auto grid = doc["domain"]["grid"].value_exact<std::int64_t>(); grid && *grid > 512) return 0;
     const tribo::cli::ContactRun run = tribo::cli::load_contact_run(doc, path, junction);
     TRIBO_FUZZ_CHECK(run.grid.nx >= 1 && run.grid.ny >= 1 && run.grid.dx_m > 0.0 && run.grid.dy_m > 0.0);
     TRIBO_FUZZ_CHECK(run.gap0_m.rows() == run.grid.nx && run.gap0_m.cols() == run.grid.ny && run.gap0_m.allFinite());
