@@ -39,9 +39,9 @@ BENCHMARK(BM_PredictForeignControl)->DenseRange(0, 6)->Unit(benchmark::kMillisec
 
 // A measured record's prediction: the paper-on-paper stick-slip at k = 2254 N/m
 // (../shared/data/real, beside the checkout; skipped without it), three runs of 375, 14 and 3.8 s,
-// at the calibrated Coulomb baseline of docs/gap-paper (μs 0.504, μk 0.348, ζ 0.043). Arg: the
-// run's index, −1 for the whole bundle.
-void BM_PredictPaperK2254(benchmark::State& state) {
+// at the calibrated Coulomb baseline of docs/gap-paper (μs 0.504, μk 0.348, ζ 0.043), one effect
+// added (an index into kEffects) — the bundle, or one run of it (run ≥ 0, no static points).
+void predict_paper_k2254(benchmark::State& state, long run, std::size_t effect) {
   using namespace tribo;
   const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/stickslip-paper-k2254";
   if (!std::filesystem::exists(dir)) {
@@ -49,37 +49,31 @@ void BM_PredictPaperK2254(benchmark::State& state) {
     return;
   }
   gap::ExperimentBundle bundle = gap::read_bundle(dir);
-  if (const auto run = state.range(0); run >= 0) {
+  if (run >= 0) {
     bundle.runs = {bundle.runs.at(static_cast<std::size_t>(run))};
     bundle.static_points.clear();
   }
   rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
   gap::set_damping_ratio(rig, 0.04281);
   const gap::Comparison comparison(bundle, rig);
-  const rig::FrictionModel model = rig::coulomb(0.5039, 0.3481);
-  state.SetLabel(state.range(0) < 0 ? "all runs" : "run " + std::to_string(state.range(0)));
+  rig::FrictionModel model = rig::coulomb(0.5039, 0.3481);
+  if (effect > 0) model.add(kEffects.at(effect));
   for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+
+// Arg: the run's index, −1 for the whole bundle; the Coulomb baseline alone.
+void BM_PredictPaperK2254(benchmark::State& state) {
+  state.SetLabel(state.range(0) < 0 ? "all runs" : "run " + std::to_string(state.range(0)));
+  predict_paper_k2254(state, state.range(0), 0);
 }
 BENCHMARK(BM_PredictPaperK2254)->DenseRange(-1, 2)->Unit(benchmark::kMillisecond);
 
-// The same record's whole bundle with each catalogue effect added at its default parameters (arg
-// as BM_PredictForeignControl's): what one evaluation of a candidate's fit costs there.
+// The whole bundle with each catalogue effect at its default parameters (arg as
+// BM_PredictForeignControl's): what one evaluation of a candidate's fit costs there.
 void BM_PredictPaperK2254Effect(benchmark::State& state) {
-  using namespace tribo;
-  const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/stickslip-paper-k2254";
-  if (!std::filesystem::exists(dir)) {
-    state.SkipWithError("../shared/data/real/stickslip-paper-k2254 not found");
-    return;
-  }
-  const gap::ExperimentBundle bundle = gap::read_bundle(dir);
-  rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
-  gap::set_damping_ratio(rig, 0.04281);
-  const gap::Comparison comparison(bundle, rig);
-  rig::FrictionModel model = rig::coulomb(0.5039, 0.3481);
-  const std::string& effect = kEffects.at(static_cast<std::size_t>(state.range(0)));
-  if (effect != "none") model.add(effect);
-  state.SetLabel(effect);
-  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+  const auto effect = static_cast<std::size_t>(state.range(0));
+  state.SetLabel(kEffects.at(effect));
+  predict_paper_k2254(state, -1, effect);
 }
 BENCHMARK(BM_PredictPaperK2254Effect)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 

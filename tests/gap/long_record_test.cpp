@@ -19,6 +19,21 @@
 namespace tribo::gap {
 namespace {
 
+// A simulated run as a recorder reads it: μ at the listed output instants, not at the events.
+gap::Run as_recorded(const rig::SimulationResult& r, const rig::SimulationOptions& o, const rig::RigParameters& rig,
+                     double v, const char* id) {
+  gap::Run run;
+  run.run_id = id;
+  run.v_m_per_s = v;
+  for (const rig::Sample& s : r.samples) {
+    if (!std::binary_search(o.output_times_s.begin(), o.output_times_s.end(), s.t_s)) continue;
+    if (!run.trace.t_s.empty() && !(s.t_s > run.trace.t_s.back())) continue;
+    run.trace.t_s.push_back(s.t_s);
+    run.trace.mu.push_back(s.friction_N / rig.normal_load_N);
+  }
+  return run;
+}
+
 TEST(LongRecord, ThreeHundredCyclesArePredictedFromTheirFirstFifty) {
   const rig::RigParameters rig;
   const double v = 5e-3, mu_s = 0.3, mu_k = 0.2;
@@ -32,16 +47,7 @@ TEST(LongRecord, ThreeHundredCyclesArePredictedFromTheirFirstFifty) {
   ASSERT_TRUE(r.summary.completed) << r.summary.message;
   ASSERT_GT(r.events.size(), 590u);
   ExperimentBundle bundle;
-  gap::Run run;
-  run.run_id = "long";
-  run.v_m_per_s = v;
-  for (const rig::Sample& s : r.samples) {  // as a recorder reads it: the listed instants, not the events
-    if (!std::binary_search(o.output_times_s.begin(), o.output_times_s.end(), s.t_s)) continue;
-    if (!run.trace.t_s.empty() && !(s.t_s > run.trace.t_s.back())) continue;
-    run.trace.t_s.push_back(s.t_s);
-    run.trace.mu.push_back(s.friction_N / rig.normal_load_N);
-  }
-  bundle.runs.push_back(run);
+  bundle.runs.push_back(as_recorded(r, o, rig, v, "long"));
   Comparison c(bundle, rig);
   c.set_integration_tolerance(Comparison::kFinestTolerance);
   const std::vector<double> predicted = c.predict(rig, rig::coulomb(mu_s, mu_k), 1);
@@ -88,16 +94,7 @@ TEST(LongRecord, ASteadySlideIsPredictedFromItsSettledStart) {
   ASSERT_TRUE(r.summary.completed) << r.summary.message;
   ASSERT_EQ(r.events.size(), 1u);  // the breakaway, then sliding
   ExperimentBundle bundle;
-  gap::Run run;
-  run.run_id = "slide";
-  run.v_m_per_s = v;
-  for (const rig::Sample& s : r.samples) {
-    if (!std::binary_search(o.output_times_s.begin(), o.output_times_s.end(), s.t_s)) continue;
-    if (!run.trace.t_s.empty() && !(s.t_s > run.trace.t_s.back())) continue;
-    run.trace.t_s.push_back(s.t_s);
-    run.trace.mu.push_back(s.friction_N / rig.normal_load_N);
-  }
-  bundle.runs.push_back(run);
+  bundle.runs.push_back(as_recorded(r, o, rig, v, "slide"));
   Comparison cmp(bundle, rig);
   cmp.set_integration_tolerance(Comparison::kFinestTolerance);
   const std::vector<double> predicted = cmp.predict(rig, model, 1);
