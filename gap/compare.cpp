@@ -795,10 +795,11 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         const bool history = plan.kind == RunPlan::Kind::drive_history;
         options.duration_s = plan.duration_s + plan.simulated_extra_s;
         options.max_events = Comparison::event_budget(rig, options.duration_s);
-        // A trace for the report spans the record; its features are read off the same prefix.
-        if (!history && !trace) options.stop_after_events = kWindowEvents;
-        // ... or, sliding without an event, once it has settled (a trace's run says where).
+        // A constant-speed run ends at its kWindowEvents-th event or, sliding without an event,
+        // where it settles; a trace for the report spans the record, its features read off the
+        // same prefix (its run reports where it settled).
         if (!history) {
+          if (!trace) options.stop_after_events = kWindowEvents;
           options.settle_window_periods = kSettleWindowPeriods;
           options.stop_when_settled = !trace;
         }
@@ -822,7 +823,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         double t_read = !history && static_cast<long>(sim.events.size()) >= kWindowEvents
                             ? sim.events[static_cast<std::size_t>(kWindowEvents - 1)].t_s
                             : std::numeric_limits<double>::infinity();
-        if (!history && std::isfinite(sim.summary.settled_at_s)) t_read = std::min(t_read, sim.summary.settled_at_s);
+        if (std::isfinite(sim.summary.settled_at_s)) t_read = std::min(t_read, sim.summary.settled_at_s);  // never for a history
         Signal s;
         std::vector<bool> slipping;
         for (auto* v : {&s.t, &s.mu, &s.x, &s.x_drive}) v->reserve(sim.samples.size());
