@@ -1,7 +1,6 @@
 #include "gap/fit.h"
 
 #include <ceres/ceres.h>
-#include <ceres/dynamic_numeric_diff_cost_function.h>
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +9,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "gap/parallel_numeric_diff.h"
 #include "numerics/format.h"
 
 namespace tribo::gap {
@@ -185,13 +185,11 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     const bool refine = resolution == Resolution::refine;
     ceres::NumericDiffOptions nd;
     nd.relative_step_size = refine ? 0.002 : kSearchStep;
-    Cost* functor = new Cost{&c, &space, &start, train, w, o.seed, train_mask, tail};
-    ceres::DynamicCostFunction* cost =
-        refine ? static_cast<ceres::DynamicCostFunction*>(
-                     new ceres::DynamicNumericDiffCostFunction<Cost, ceres::CENTRAL>(functor, ceres::TAKE_OWNERSHIP, nd))
-               : new ceres::DynamicNumericDiffCostFunction<Cost, ceres::FORWARD>(functor, ceres::TAKE_OWNERSHIP, nd);
-    cost->AddParameterBlock(static_cast<int>(u.size()));
-    cost->SetNumResiduals(static_cast<int>(train.size()));
+    auto functor = std::make_unique<const Cost>(Cost{&c, &space, &start, train, w, o.seed, train_mask, tail});
+    const int n = static_cast<int>(u.size()), m = static_cast<int>(train.size());
+    ceres::CostFunction* cost =
+        refine ? static_cast<ceres::CostFunction*>(new ParallelNumericDiffCostFunction<Cost, ceres::CENTRAL>(std::move(functor), n, m, nd))
+               : new ParallelNumericDiffCostFunction<Cost, ceres::FORWARD>(std::move(functor), n, m, nd);
     ceres::Problem problem;
     problem.AddResidualBlock(cost, nullptr, u.data());
     for (int i = 0; i < static_cast<int>(u.size()); ++i) {
