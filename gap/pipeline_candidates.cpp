@@ -214,26 +214,6 @@ std::vector<Candidate> nest(const FitProblem& p, const Baseline& b, std::vector<
   return singles;
 }
 
-namespace {
-
-// The pair starts where its two singles ended: the better one's fit (baseline, rig and effect), the
-// other's effect added with the parameters its own fit gave it. Both effects' basins are known
-// from their singles' searches, so the pair is refined from there (the rig free, to convergence)
-// without a grid of its own: a searched pair cost most of a control's diagnosis (independent
-// validation seed 14528, 2026-11-29: 192 s of 351 s) and was never the right verdict in the
-// 160 validation cases of seeds 9001–9010 (fitted in 54 of them, the verdict in 2, both wrong).
-Candidate pair_start(const Candidate& best, const Candidate& second) {
-  Candidate start;
-  start.effects = {best.effects.front(), second.effects.front()};
-  start.rig = best.rig;
-  start.model = best.model;
-  for (const auto& [name, values] : second.model.effects) start.model.effects.emplace(name, values);
-  if (second.model.instrument && !start.model.instrument) start.model.instrument = second.model.instrument;
-  return start;
-}
-
-}  // namespace
-
 Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons) {
   Paired out{std::move(singles), comparisons};
   if (out.candidates.size() < 2) return out;
@@ -243,7 +223,8 @@ Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singl
   // Against the singles it must have decisive evidence over the simpler one (verdict_index()).
   out.comparisons = static_cast<int>(out.candidates.size()) + 1;
   for (Candidate& c : out.candidates) judge(p, b, out.comparisons, c);
-  out.candidates.push_back(refine(p, b, pair_start(out.candidates[0], out.candidates[1]), out.comparisons));
+  const std::vector<std::string> both{out.candidates[0].effects[0], out.candidates[1].effects[0]};
+  out.candidates.push_back(refine(p, b, search(p, b, both, p.options.seed * 7919 + 104729, out.comparisons), out.comparisons));
   rank(out.candidates);
   return out;
 }
