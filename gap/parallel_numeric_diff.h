@@ -46,34 +46,31 @@ class ParallelNumericDiffCostFunction final : public ceres::CostFunction {
   bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
     if (!(*functor_)(parameters, residuals)) return false;
     if (jacobians == nullptr || jacobians[0] == nullptr) return true;
-    const int n = parameter_block_sizes()[0], m = num_residuals();
+    const auto n = static_cast<std::size_t>(parameter_block_sizes()[0]), m = static_cast<std::size_t>(num_residuals());
     const double* x = parameters[0];
     const double min_step_size = std::sqrt(std::numeric_limits<double>::epsilon());
-    std::vector<char> ok(static_cast<std::size_t>(n), 1);
-    parallel_for(static_cast<std::size_t>(n), [&](std::size_t j) {
+    std::vector<char> ok(n, 1);
+    parallel_for(n, [&](std::size_t j) {
       omp_set_num_threads(1);  // the column's prediction in this thread: the columns are the parallel work
-      std::vector<double> shifted(x, x + n), plus(static_cast<std::size_t>(m)), minus;
+      std::vector<double> shifted(x, x + n), plus(m), minus(m);
       const double* block = shifted.data();
+      const auto at = [&](double xj, std::vector<double>& r) {
+        shifted[j] = xj;
+        return (*functor_)(&block, r.data());
+      };
       const double delta = std::max(min_step_size, std::abs(x[j]) * relative_step_size_);
-      shifted[j] = x[j] + delta;
-      if (!(*functor_)(&block, plus.data())) {
+      double one_over_delta = 1.0 / delta;
+      if (!at(x[j] + delta, plus) || (kMethod == ceres::CENTRAL && !at(x[j] - delta, minus))) {
         ok[j] = 0;
         return;
       }
-      double one_over_delta = 1.0 / delta;
       if constexpr (kMethod == ceres::CENTRAL) {
-        minus.resize(static_cast<std::size_t>(m));
-        shifted[j] = x[j] - delta;
-        if (!(*functor_)(&block, minus.data())) {
-          ok[j] = 0;
-          return;
-        }
-        for (int i = 0; i < m; ++i) plus[static_cast<std::size_t>(i)] -= minus[static_cast<std::size_t>(i)];
+        for (std::size_t i = 0; i < m; ++i) plus[i] -= minus[i];
         one_over_delta /= 2;
       } else {
-        for (int i = 0; i < m; ++i) plus[static_cast<std::size_t>(i)] -= residuals[i];
+        for (std::size_t i = 0; i < m; ++i) plus[i] -= residuals[i];
       }
-      for (int i = 0; i < m; ++i) jacobians[0][static_cast<std::size_t>(i) * static_cast<std::size_t>(n) + j] = plus[static_cast<std::size_t>(i)] * one_over_delta;
+      for (std::size_t i = 0; i < m; ++i) jacobians[0][i * n + j] = plus[i] * one_over_delta;
     });
     return std::all_of(ok.begin(), ok.end(), [](char c) { return c != 0; });
   }

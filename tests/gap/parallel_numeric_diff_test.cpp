@@ -26,7 +26,7 @@ struct Curved {
   }
 };
 
-// Refuses points with x[2] above 1.5: a column whose step crosses it fails the whole evaluation.
+// Refuses points with x[1] above 1.5: a column whose step crosses it fails the whole evaluation.
 struct Bounded {
   bool operator()(double const* const* p, double* r) const {
     r[0] = p[0][0] + p[0][1];
