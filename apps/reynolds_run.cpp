@@ -128,6 +128,10 @@ ReynoldsRun load_reynolds_run(const toml::table& doc, const std::filesystem::pat
     p.rms_height_m = g->number("lower_rms_height_m", kDiscRq_m, Range::positive);
     read_spectrum(*g, p);
     input_guard(*g, "spectrum", [&] { contact::validate(p); return 0; });
+    // Every key is read: an unknown one is refused before the surfaces are generated and the
+    // contact solved, which takes seconds at large grids (found by fuzz_reynolds_config).
+    g->finish();
+    root.finish();
     const Eigen::ArrayXXd lower = contact::gaussian_surface(p);
     run.seed = p.seed;
     Eigen::ArrayXXd upper = Eigen::ArrayXXd::Zero(lower.rows(), lower.cols());

@@ -40,6 +40,10 @@ function(tribo_test_pch)
   target_precompile_headers(tribo_test_pch PRIVATE <gtest/gtest.h>)
 endfunction()
 
+# Open MPI's start-up leaks by design: its tests run under the sanitizers with every check but
+# leaks (set per test, so that one ctest run takes them beside the others).
+set(TRIBO_MPI_ASAN_OPTIONS "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
+
 # tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s] [COST c] [PROCESSORS n]):
 # one GoogleTest executable registered with CTest. Label `slow` marks tests the sanitizer build
 # skips (ctest -LE slow), `mpi` those that start Open MPI (sanitized without leak detection);
@@ -72,6 +76,9 @@ function(tribo_add_test name)
   # tests that start it take turns, beside the others.
   if(label STREQUAL "mpi")
     list(APPEND properties RESOURCE_LOCK open_mpi_session)
+    if(TRIBO_SANITIZE)
+      list(APPEND properties ENVIRONMENT "${TRIBO_MPI_ASAN_OPTIONS}")
+    endif()
   endif()
   if(ARG_TIMEOUT)
     list(APPEND properties TIMEOUT ${ARG_TIMEOUT})

@@ -74,6 +74,15 @@ TEST(RenamedKeys, RoughPairContactLoadIsNormalLoad) {
              {old.string(), "key 'geometry.contact_load_N'", "use 'geometry.normal_load_N'"});
 }
 
+// An unknown table is refused before the rough pair's two 8192² surfaces (0.5 GB each) are
+// generated and pressed together: were the keys checked after the work, this test would run for
+// minutes or exhaust memory instead of returning the error at once.
+TEST(UnknownKeys, RoughPairRefusesThemBeforeGeneratingItsSurfaces) {
+  const auto bad = write_file("rough-unknown.toml", "[geometry]\nkind = \"rough_pair\"\nnormal_load_N = 0.5\n"
+                                                    "correlation_length_m = 6.25e-5\n[grid]\nn = 8192\n[nxid]\nn = 128\n");
+  expect_all(error_of([&] { load_reynolds_run(bad); }), {bad.string(), "'nxid'", "unknown key"});
+}
+
 TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {
   const std::string surface = "[surface]\nrms_height_m = 4.35e-7\ncorrelation_length_m = 6.25e-5\n";
   const auto size = write_file("ff-size.toml", surface + "size_m = 1e-3\n");

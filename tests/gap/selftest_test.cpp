@@ -1,20 +1,25 @@
-// The quick withheld-effect selftest (issues 6, 15 and 35), one test per case so that CTest spreads
-// the eight full diagnoses over the cores beside the other tests. First generator (the rig's own
-// simulator): every withheld effect named — the quick set's four are the ≥ 90 % of issue 6, with
-// no miss allowed but a coin's (confidence under one half, the truth among the effects the report
-// says the data do not tell apart) — with the gap shrinking by ≥ 50 % on the held-out blocks and on a test block at
-// speeds neither the fits nor the verdict saw (gap/test_block.h); every control answers "none".
-// Independent generator (gap/independent/: another integrator, a measuring chain with filter,
-// drift, coloured noise and quantisation, rig constants a few per cent off): its control answers
-// "none" and its Kato-ageing case is read as a static friction on the junction locus (with or
-// without the hardening that implies it). These are the development
-// set's cases (what the diagnosis was tuned on): the validation set's figures are in the README.
+// The quick withheld-effect selftest (issues 6, 15 and 35) in CI: one test per case, so that CTest
+// spreads the full diagnoses over the cores beside the other tests. Each case is a whole diagnosis
+// with every default candidate (2–3 min on 2 cores), so CI runs the two of the quick set's cases
+// that no dedicated test covers: the first generator's (the rig's own simulator) slip transient —
+// named, the gap shrinking by ≥ 50 % on the held-out blocks and on a test block at speeds neither
+// the fits nor the verdict saw (gap/test_block.h) — and the independent generator's (gap/independent/:
+// another integrator, a measuring chain with filter, drift, coloured noise and quantisation, rig
+// constants a few per cent off) Kato-ageing case, read as a static friction on the junction locus
+// (with or without the hardening that implies it). Left to other tests: viscous friction
+// (Diagnosis.TracesOnlyNameViscousFrictionDeterministically, ViscousPipeline.*), the rate-dependent
+// static friction and its hardening (RateHardening.*), the controls (ForeignControl: a control from
+// a simulator written outside the project, with every default — harder than either generator's;
+// Diagnosis.StaticPointsOnlyCalibrateMuSAndAnswerNone), and the lift, whose quick case holds a fifth
+// of a noise floor — a coin, not a check. The whole quick set is `tribo gap selftest --quick`.
+// These are the development set's cases (what the diagnosis was tuned on): the validation set's
+// figures are in the README.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "gap/selftest.h"
 
@@ -27,7 +32,7 @@ namespace {
 
 class QuickSelftest : public ::testing::TestWithParam<SelftestCase> {};
 
-TEST_P(QuickSelftest, NamesTheWithheldEffectOrNoneAndShrinksTheGap) {
+TEST_P(QuickSelftest, NamesTheWithheldEffectAndShrinksTheGap) {
   const SelftestCase& sc = GetParam();
   DiagnosisOptions o;
   o.max_iterations = 8;
@@ -45,20 +50,12 @@ TEST_P(QuickSelftest, NamesTheWithheldEffectOrNoneAndShrinksTheGap) {
     // the likelihood, 2026-11-27: 51 ± 4 against 43 ± 5 nats on seed 301; the selftest itself
     // still counts only the locus as right).
     EXPECT_TRUE(row.verdict == "rate_dependent_static" || row.verdict == "strain_rate_hardening") << "read as " << row.verdict;
-  } else if (!row.correct && row.confidence < 0.5 &&
-             std::count(row.indistinguishable_from.begin(), row.indistinguishable_from.end(), sc.true_effect)) {
-    // Wrong only as a coin is: at a confidence under one half, with the report saying the held-out
-    // data do not tell the verdict from the truth. The lift of seed 3 is such a case since the slow
-    // runs are simulated for whole cycles (2026-11-27): a held-out gap of 0.0047, a fifth of the
-    // noise floor, closed about equally by thermal thinning, lift, squeeze film and slip transient.
-    std::printf("  %s, indistinguishable from %s at confidence %.2f\n", row.verdict.c_str(), sc.true_effect.c_str(), row.confidence);
-    return;
   } else {
     EXPECT_TRUE(row.correct) << sc.true_effect << " read as " << row.verdict << " at confidence " << row.confidence;
   }
-  if (sc.true_effect == "none" || sc.generator != kRigGenerator) return;
-  // Half the gap closed where the effect is named (2026-11-26: held-out 68–99 %; test block slip
-  // 99 %, viscous 96 %, lift 68 %, rate-dependent μs 99 %).
+  if (sc.generator != kRigGenerator) return;
+  // Half the gap closed where the effect is named (2026-11-26: held-out 68–99 % over the quick set;
+  // test block of the slip transient 99 %).
   EXPECT_GE(1.0 - row.heldout_gap_after / row.heldout_gap_before, 0.5);
   EXPECT_GE(1.0 - row.test_gap_after / row.test_gap_before, 0.5);
 }
@@ -67,7 +64,15 @@ std::string case_name(const ::testing::TestParamInfo<SelftestCase>& info) {
   return info.param.generator + "_" + info.param.true_effect + "_seed" + std::to_string(info.param.seed);
 }
 
-INSTANTIATE_TEST_SUITE_P(Development, QuickSelftest, ::testing::ValuesIn(selftest_cases(true, 1)), case_name);
+// The quick set's cases that no dedicated test covers (the header says which cover the others).
+std::vector<SelftestCase> cases_no_other_test_covers() {
+  std::vector<SelftestCase> kept;
+  for (const SelftestCase& c : selftest_cases(true, 1))
+    if (c.generator == kRigGenerator ? c.true_effect == "slip_transient" : c.true_effect != "none") kept.push_back(c);
+  return kept;
+}
+
+INSTANTIATE_TEST_SUITE_P(Development, QuickSelftest, ::testing::ValuesIn(cases_no_other_test_covers()), case_name);
 
 }  // namespace
 }  // namespace tribo::gap
