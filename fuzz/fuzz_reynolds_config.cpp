@@ -2,6 +2,9 @@
 // TOML text, parsed in memory as /nonexistent/tribo-fuzz/reynolds.toml (a gap file named in it then
 // names nothing). Bad input must end as InputError or std::invalid_argument (exit status 2); a
 // config that loads must hold a film the solver accepts; anything else is a finding.
+// A rough pair pressed by a load on more than 64² nodes (the default grid is 256²) is skipped:
+// loading solves its contact by the BEM — seconds under the sanitizers, past the fuzzer's timeout
+// when the cores are shared — and the fuzzer is here for the parser, which smaller grids exercise.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +19,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string path = "/nonexistent/tribo-fuzz/reynolds.toml";
   try {
     const toml::table doc = tribo::cli::parse_toml_text(std::string_view(reinterpret_cast<const char*>(data), size), path);
+    if (doc["geometry"]["kind"].value_or(std::string_view{}) == "rough_pair" && doc["geometry"]["normal_load_N"]) {
+      const auto n = doc["grid"]["n"];
+      if (!n || n.value_exact<std::int64_t>().value_or(0) > 64) return 0;
+    }
     const tribo::cli::ReynoldsRun run = tribo::cli::load_reynolds_run(doc, path);
     const auto& pr = run.problem;
     TRIBO_FUZZ_CHECK(pr.grid.nx >= 1 && pr.grid.ny >= 1 && pr.grid.dx_m > 0.0 && pr.grid.dy_m > 0.0);
