@@ -21,6 +21,7 @@
 #include <numbers>
 
 #include "lubrication/ehl_line.h"
+#include "lubrication/ehl_point.h"
 #include "lubrication/flow_factors.h"
 #include "lubrication/reynolds.h"
 
@@ -169,6 +170,29 @@ void BM_EhlLine(benchmark::State& state) {
 }
 BENCHMARK(BM_EhlLine)->Args({201, 300000})->Args({401, 300000})->Args({401, 3000000})->Args({801, 3000000})
     ->Unit(benchmark::kSecond)->Iterations(1);
+
+// EHL point contact (lubrication/ehl_point.h): the ball on a disc of tests/lubrication/ball_on_disc.h
+// (R = 9.525 mm, E' = 2.31e11 Pa, η0 = 0.04 Pa·s, α = 2e-8 1/Pa, Roelands and Dowson–Higginson,
+// u_m = 0.5 m/s) at W newtons on N × N nodes; counters: Newton iterations, continuation steps and
+// the unknowns. Each Newton step factorises the dense Jacobian of (N − 2)² + 1 unknowns by LAPACK
+// (numerics/dense_solve.h): O(N⁶) a step.
+void BM_EhlPoint(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const double load_N = static_cast<double>(state.range(1));
+  lub::PiezoviscousLubricant oil;
+  oil.viscosity_Pa_s = 0.04;
+  oil.pressure_viscosity_per_Pa = 2e-8;
+  lub::EhlPointOptions o;
+  o.nodes_x = o.nodes_y = n;
+  lub::EhlPointResult r;
+  for (auto _ : state) r = lub::solve_ehl_point({load_N, 9.525e-3, 2.1e11 / (1.0 - 0.3 * 0.3), 0.5}, oil, o);
+  if (!r.converged) state.SkipWithError(r.message.c_str());
+  state.counters["newton_iterations"] = r.iterations;
+  state.counters["continuation_steps"] = r.continuation_steps;
+  state.counters["unknowns"] = (n - 2) * (n - 2) + 1;
+}
+BENCHMARK(BM_EhlPoint)->Args({31, 10})->Args({41, 10})->Args({51, 10})->Args({61, 10})->Args({41, 20})->Args({61, 20})
+    ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 }  // namespace
 

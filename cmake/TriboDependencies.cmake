@@ -6,8 +6,8 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 QUIET)
 find_package(SUNDIALS 6 REQUIRED COMPONENTS cvode nvecserial sunmatrixdense sunlinsoldense)
 
-# FFTW, SuiteSparse and hypre (+ Open MPI): tribo::fftw, tribo::suitesparse, tribo::hypre, found
-# by the file the installed package config uses too. The old names stay as aliases.
+# FFTW, SuiteSparse, hypre (+ Open MPI) and LAPACK: tribo::fftw, tribo::suitesparse, tribo::hypre,
+# tribo::lapack, found by the file the installed package config uses too. The old names stay as aliases.
 include(${CMAKE_CURRENT_LIST_DIR}/TriboSystemLibraries.cmake)
 add_library(tribo_fftw ALIAS tribo::fftw)
 add_library(tribo_suitesparse ALIAS tribo::suitesparse)

@@ -1,10 +1,11 @@
 # The system libraries Debian 12 ships without a usable CMake package — FFTW (pkg-config, plus its
-# OpenMP threads library), SuiteSparse 5 and hypre (neither a pkg-config nor a CMake file) — as
-# imported targets tribo::fftw, tribo::suitesparse and tribo::hypre. One file for both uses: the
+# OpenMP threads library), SuiteSparse 5 and hypre (neither a pkg-config nor a CMake file) — and
+# LAPACK (CMake's FindLAPACK), as imported targets tribo::fftw, tribo::suitesparse, tribo::hypre
+# and tribo::lapack. One file for both uses: the
 # build includes it from TriboDependencies.cmake, and the installed triboConfig.cmake includes it
 # so that a consumer's find_package(tribo) re-finds them on its own machine instead of trusting
 # paths recorded at tribo's build. Expects OpenMP::OpenMP_CXX to exist (found before).
-if(TARGET tribo::fftw AND TARGET tribo::suitesparse AND TARGET tribo::hypre)
+if(TARGET tribo::fftw AND TARGET tribo::suitesparse AND TARGET tribo::hypre AND TARGET tribo::lapack)
   return()
 endif()
 
@@ -36,3 +37,10 @@ add_library(tribo::hypre INTERFACE IMPORTED)
 target_include_directories(tribo::hypre INTERFACE ${HYPRE_INCLUDE_DIR} ${MPI_CXX_INCLUDE_DIRS})
 target_compile_definitions(tribo::hypre INTERFACE ${MPI_CXX_COMPILE_DEFINITIONS})
 target_link_libraries(tribo::hypre INTERFACE ${HYPRE_LIBRARY} ${MPI_CXX_LIBRARIES})
+
+# LAPACK (numerics/dense_solve.h): the liblapack.so.3 Debian's alternatives select — OpenBLAS's
+# once libopenblas-openmp-dev is installed (tools/install-deps.sh), which SuiteSparse's BLAS calls
+# then use too; the reference LAPACK otherwise (correct, several times slower).
+find_package(LAPACK REQUIRED)
+add_library(tribo::lapack INTERFACE IMPORTED)
+target_link_libraries(tribo::lapack INTERFACE LAPACK::LAPACK)

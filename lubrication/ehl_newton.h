@@ -1,7 +1,8 @@
 // The nonlinear method shared by the EHL solvers (ehl_line.h, ehl_point.h): Newton's method on the
 // coupled system of pressures and the rigid-body film constant H0, with the dense Jacobian of the
-// elastic integral, a step limit that keeps every film positive, a backtracking line search on
-// ‖F‖₂, and continuation in the speed parameter λ when Newton does not converge from the start.
+// elastic integral (its LU by LAPACK, numerics/dense_solve.h), a step limit that keeps every film
+// positive, a backtracking line search on ‖F‖₂, and continuation in the speed parameter λ when
+// Newton does not converge from the start.
 // Internal to lubrication/: a Problem provides
 //   Nodal nodal(u, λ)                      the state at every node (its member h: the film)
 //   VectorXd row_scales(const Nodal&)      c_i, frozen over a step
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <string>
 
+#include "numerics/dense_solve.h"
 #include "numerics/format.h"
 
 namespace tribo::lubrication::ehl {
@@ -40,8 +42,8 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
   double norm = f.norm();
   const int np = problem.pressure_unknowns();
   for (int it = 0; it < o.max_newton_iterations; ++it) {
-    const Eigen::VectorXd step = jac.partialPivLu().solve(-f);
-    if (!step.allFinite()) {
+    Eigen::VectorXd step;
+    if (!numerics::dense_solve(jac, -f, step) || !step.allFinite()) {
       out.why = "the Newton system is singular";
       break;
     }
