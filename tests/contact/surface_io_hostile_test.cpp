@@ -97,6 +97,19 @@ TEST(SurfaceHostile, XyzDuplicatePointIsNamedAsSuch) {
   EXPECT_NE(error_of("0 0 1\n0 0 2\n1 0 3\n1 1 4\n", xyz_reader).find("two points fall on the grid node"), std::string::npos);
 }
 
+TEST(SurfaceHostile, HeaderCountsMustBeWholeNumbersWithinTheLimit) {
+  // A header claiming 2.8e62 columns reached the mismatch message as a cast to long: undefined
+  // behaviour (UBSan, fuzz_surface, 2026-11-29). A count is a whole number up to the height limit.
+  const auto topography = [](std::istream& in) { return read_ascii_topography(in, "h.txt"); };
+  const std::string huge = error_of("h=3 w=2.8e62\n1 2\n", topography);
+  EXPECT_NE(huge.find("h.txt"), std::string::npos);
+  EXPECT_NE(huge.find("header w"), std::string::npos);
+  EXPECT_NE(huge.find("whole number"), std::string::npos);
+  EXPECT_NE(error_of("h=1.5 w=2\n1 2\n", topography).find("header h"), std::string::npos);
+  // A whole claim that disagrees with the data is still the mismatch, with both shapes.
+  EXPECT_NE(error_of("h=3 w=2\n1 2\n", topography).find("header says 3 x 2 heights, the file holds 1 x 2"), std::string::npos);
+}
+
 TEST(SurfaceHostile, AsciiTokensMustBeWholeNumbers) {
   // A NUL byte ended the token for strtod, so "1\0x" read as 1.
   EXPECT_NE(error_of(std::string("1 2\n3 4\0x\n", 10), ascii_reader).find("is not a number"), std::string::npos);
