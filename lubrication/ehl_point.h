@@ -22,8 +22,9 @@
 // Method: ehl_newton.h — Newton on pressures and H0 together with the dense Jacobian of the
 // elastic integral, step limits, line search and continuation in λ, as the line contact. Cost:
 // the dense LU (LAPACK) of an (nx−2)(ny−2) + 1 system per step, O(N³) — 41 × 41 nodes ≈ 0.1 s a
-// step, 61 × 61 ≈ 0.7 s on 2 cores (BM_EhlPoint, bench/README.md): the grids of a design calculation and of the tests, not of a converged map of
-// the film's side lobes (Venner & Lubrecht's multilevel methods are what reaches 10⁶ nodes).
+// step, 61 × 61 ≈ 0.6 s on 2 cores (BM_EhlPoint, bench/README.md): the grids of a design
+// calculation and of the tests, not of a converged map of the film's side lobes (Venner &
+// Lubrecht's multilevel methods are what reaches 10⁶ nodes).
 // At high loads a coarse grid may not resolve the outlet constriction at all: at 20 N on the
 // tests' ball (Moes M ≈ 100) 25² and 27 × 23 nodes drive the film to zero there and end
 // `not converged`, while 31 × 25 converges in 18 steps — refine when it says so.
