@@ -61,13 +61,23 @@ void check_traction_inputs(const PiezoviscousLubricant& lubricant, double slidin
                                 numerics::shortest(heating.temperature_viscosity_per_K) + " 1/K");
 }
 
-// τ at one node of pressure p and film h (0 where the film is cavitated, p ≤ 0), its sign Δu's;
+// The pressure at and below which a node counts as cavitated: 1e-9 of the peak, the EHL solvers'
+// default tolerance on P in units of p_H. Their pressures in the cavitated zone are 0 only to
+// round-off (±1e-11 Pa at 41², 10 N), and the sign of such a value must not decide whether the
+// node's film shears — it moved μ by 5e-6 between two LU implementations.
+double cavitation_floor_Pa(const std::vector<double>& pressure_Pa) {
+  double peak = 0.0;
+  for (double p : pressure_Pa) peak = std::max(peak, p);
+  return 1e-9 * peak;
+}
+
+// τ at one node of pressure p and film h (0 where the film is cavitated, p ≤ floor), its sign Δu's;
 // where() names the node in the error (formatted only then).
 template <class Where>
-double node_stress_Pa(const PiezoviscousLubricant& lubricant, double p, double h, double du, double tau0, const FilmHeating& heating,
-                      double* rise_K, const Where& where) {
+double node_stress_Pa(const PiezoviscousLubricant& lubricant, double p, double floor_Pa, double h, double du, double tau0,
+                      const FilmHeating& heating, double* rise_K, const Where& where) {
   *rise_K = 0.0;
-  if (!(p > 0.0)) return 0.0;  // cavitated (or at the domain's edge)
+  if (!(p > floor_Pa)) return 0.0;  // cavitated (or at the domain's edge)
   if (!(h > 0.0)) throw std::invalid_argument("EHL traction: non-positive film " + numerics::shortest(h) + " m at " + where());
   const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, p).ratio;
   return (du < 0.0 ? -1.0 : 1.0) * shear_stress_Pa(eta, std::abs(du), h, tau0, heating, rise_K);
@@ -83,9 +93,10 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
     throw std::invalid_argument("EHL traction: the film needs at least two nodes with x, pressure and film thickness each");
   EhlTraction out;
   std::vector<double> tau(n, 0.0);
+  const double floor_Pa = cavitation_floor_Pa(film.pressure_Pa);
   for (std::size_t i = 0; i < n; ++i) {
     double rise_K = 0.0;
-    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating, &rise_K,
+    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], floor_Pa, film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating, &rise_K,
                             [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
     out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau[i]));
     out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
@@ -104,11 +115,12 @@ EhlPointTraction ehl_point_traction(const EhlPointResult& film, const Piezovisco
                                 " values each, got " + std::to_string(film.pressure_Pa.size()) + " and " + std::to_string(film.film_m.size()));
   const double cell = (film.x_m[1] - film.x_m[0]) * (film.y_m[1] - film.y_m[0]);
   EhlPointTraction out;
+  const double floor_Pa = cavitation_floor_Pa(film.pressure_Pa);
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) {
       double rise_K = 0.0;
       const std::size_t k = i + nx * j;
-      const double tau = node_stress_Pa(lubricant, film.pressure_Pa[k], film.film_m[k], sliding_speed_m_per_s, eyring_stress_Pa, heating,
+      const double tau = node_stress_Pa(lubricant, film.pressure_Pa[k], floor_Pa, film.film_m[k], sliding_speed_m_per_s, eyring_stress_Pa, heating,
                                         &rise_K, [&] {
                                           return "x = " + numerics::shortest(film.x_m[i]) + " m, y = " + numerics::shortest(film.y_m[j]) + " m";
                                         });

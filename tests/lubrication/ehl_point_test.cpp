@@ -66,6 +66,11 @@ TEST(EhlPoint, TractionIsTheEyringStressOverThePressurisedCells) {
   EXPECT_NEAR(t.friction_coefficient, t.force_N / load, 1e-15);
   EXPECT_NEAR(t.max_shear_stress_Pa, tau, 1e-9 * tau);
   EXPECT_NEAR(ehl_point_traction(film, ball_oil(), -du, tau0, load).force_N, -t.force_N, 1e-12 * t.force_N);
+  // The solver leaves the cavitated zone at 0 only to round-off: ±1e-11 Pa there must not make
+  // those nodes shear (their film would add 16 cells' worth of τ).
+  for (std::size_t k = 0; k < film.pressure_Pa.size(); ++k)
+    if (film.pressure_Pa[k] == 0.0) film.pressure_Pa[k] = k % 2 ? 1e-11 : -1e-11;
+  EXPECT_EQ(ehl_point_traction(film, ball_oil(), du, tau0, load).force_N, t.force_N);
   film.film_m.pop_back();
   EXPECT_THROW(ehl_point_traction(film, ball_oil(), du, tau0, load), std::invalid_argument);
 }
