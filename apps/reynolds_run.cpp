@@ -60,7 +60,9 @@ ReynoldsRun load_reynolds_run(const toml::table& doc, const std::filesystem::pat
   const double speed = read_speed(root);
   int n = 256;
   if (auto g = sub(root, "grid")) {
-    n = static_cast<int>(g->integer("n", n, 3));
+    // At most 8192 nodes a side: 8192² is 0.5 GiB a field, and a Reynolds problem holds several
+    // (a grid of 15226 asked for 1.8 GB at load, found by fuzz_reynolds_config).
+    n = static_cast<int>(g->integer("n", n, 3, 8192));
     g->finish();
   }
   lub::Cavitation cavitation = lub::Cavitation::mass_conserving;

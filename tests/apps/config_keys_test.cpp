@@ -83,6 +83,13 @@ TEST(UnknownKeys, RoughPairRefusesThemBeforeGeneratingItsSurfaces) {
   expect_all(error_of([&] { load_reynolds_run(bad); }), {bad.string(), "'nxid'", "unknown key"});
 }
 
+// The grid's node count has an upper bound (8192 a side), so a typo does not allocate gigabytes
+// while loading: 15226 asked for 1.8 GB (fuzz_reynolds_config, 2026-11-29).
+TEST(UnknownKeys, ReynoldsGridAboveItsBoundIsRefusedWithTheKey) {
+  const auto big = write_file("reynolds-big.toml", "[geometry]\ngap_m = 1e-6\n[grid]\nn = 15226\n");
+  expect_all(error_of([&] { load_reynolds_run(big); }), {big.string(), "grid.n", "8192"});
+}
+
 TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {
   const std::string surface = "[surface]\nrms_height_m = 4.35e-7\ncorrelation_length_m = 6.25e-5\n";
   const auto size = write_file("ff-size.toml", surface + "size_m = 1e-3\n");
