@@ -101,8 +101,8 @@ ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path&
 
   if (auto s = root.table("solver")) {
     run.solver.tolerance = s->number("tolerance", run.solver.tolerance, Range::positive);
-    run.solver.max_iterations = static_cast<int>(s->integer("max_iterations", 0, 0));
-    run.threads = static_cast<int>(s->integer("threads", 0, 0));
+    run.solver.max_iterations = static_cast<int>(s->integer("max_iterations", 0, 0, 1'000'000'000));
+    run.threads = static_cast<int>(s->integer("threads", 0, 0, 1'000'000));
     std::string why;
     if (!run.solver.is_valid(&why)) s->fail("tolerance", why);
     s->finish();
@@ -115,7 +115,7 @@ ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path&
     double mu_s_max = 0.55;  // thesis, steel on steel (DESIGN §5)
     if (j) {
       run.f_over_w_max = j->number("f_over_w_max", run.f_over_w_max, Range::positive);
-      run.junction_points = static_cast<int>(j->integer("points", run.junction_points, 2));
+      run.junction_points = static_cast<int>(j->integer("points", run.junction_points, 2, 10'000));  // a BEM solve each
       run.locus.n = j->number("n", run.locus.n, Range::non_negative);
       mu_s_max = j->number("mu_s_max", mu_s_max, Range::positive);
       run.locus.location_per_s = j->number("location_per_s", run.locus.location_per_s, Range::positive);

@@ -72,7 +72,7 @@ ReynoldsRun load_reynolds_run(const toml::table& doc, const std::filesystem::pat
                      : lub::Cavitation::mass_conserving;
     run.options.newton_tolerance = s->number("newton_tolerance", run.options.newton_tolerance, Range::positive);
     run.options.max_newton_iterations =
-        static_cast<int>(s->integer("max_newton_iterations", run.options.max_newton_iterations, 1));
+        static_cast<int>(s->integer("max_newton_iterations", run.options.max_newton_iterations, 1, 100'000));
     s->finish();
   }
   auto g = sub(root, "geometry");

@@ -21,12 +21,11 @@ namespace tribo::cli {
 namespace {
 
 // Files of one test folder, beside each other: a config names its data files relative to itself.
+// One folder per test: ctest runs each test as its own process, two at once under -j2.
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() / "tribo_config_keys_tests";
-    std::filesystem::create_directories(d);
-    return d;
-  }();
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tribo_config_keys_tests" /
+                                    ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  std::filesystem::create_directories(dir);
   std::ofstream(dir / name) << text;
   return dir / name;
 }
@@ -88,6 +87,15 @@ TEST(UnknownKeys, RoughPairRefusesThemBeforeGeneratingItsSurfaces) {
 TEST(UnknownKeys, ReynoldsGridAboveItsBoundIsRefusedWithTheKey) {
   const auto big = write_file("reynolds-big.toml", "[geometry]\ngap_m = 1e-6\n[grid]\nn = 15226\n");
   expect_all(error_of([&] { load_reynolds_run(big); }), {big.string(), "grid.n", "8192"});
+}
+
+// Counts narrowed to int have an upper bound: 4294967298 junction points wrapped to 2 and the
+// curve came out with two points, silently.
+TEST(UnknownKeys, CountsBeyondAnIntAreRefusedNotWrapped) {
+  const auto points = write_file("contact-points.toml", kSphere + "[load]\nnormal_load_N = 1.0\n[junction]\npoints = 4294967298\n");
+  expect_all(error_of([&] { load_contact_run(points, true); }), {points.string(), "junction.points", "10000"});
+  const auto threads = write_file("contact-threads.toml", kSphere + "[load]\nnormal_load_N = 1.0\n[solver]\nthreads = 4294967297\n");
+  expect_all(error_of([&] { load_contact_run(threads, false); }), {threads.string(), "solver.threads"});
 }
 
 TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {

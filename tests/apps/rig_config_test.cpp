@@ -14,8 +14,11 @@
 namespace tribo::cli {
 namespace {
 
+// One folder per test: ctest runs each test as its own process, two at once under -j2, and two
+// tests writing the same bad.toml read each other's (a failure seen once, 2026-11-29).
 std::filesystem::path write_config(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "tribo_cli_tests";
+  const auto dir = std::filesystem::temp_directory_path() / "tribo_cli_tests" /
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::filesystem::create_directories(dir);
   const auto path = dir / name;
   std::ofstream(path) << text;
