@@ -1,5 +1,6 @@
 #include "numerics/dense_solve.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
