@@ -96,8 +96,8 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
   const double floor_Pa = cavitation_floor_Pa(film.pressure_Pa);
   for (std::size_t i = 0; i < n; ++i) {
     double rise_K = 0.0;
-    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], floor_Pa, film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating, &rise_K,
-                            [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
+    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], floor_Pa, film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating,
+                            &rise_K, [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
     out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau[i]));
     out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
   }
@@ -120,8 +120,8 @@ EhlPointTraction ehl_point_traction(const EhlPointResult& film, const Piezovisco
     for (std::size_t i = 0; i < nx; ++i) {
       double rise_K = 0.0;
       const std::size_t k = i + nx * j;
-      const double tau = node_stress_Pa(lubricant, film.pressure_Pa[k], floor_Pa, film.film_m[k], sliding_speed_m_per_s, eyring_stress_Pa, heating,
-                                        &rise_K, [&] {
+      const double tau = node_stress_Pa(lubricant, film.pressure_Pa[k], floor_Pa, film.film_m[k], sliding_speed_m_per_s, eyring_stress_Pa,
+                                        heating, &rise_K, [&] {
                                           return "x = " + numerics::shortest(film.x_m[i]) + " m, y = " + numerics::shortest(film.y_m[j]) + " m";
                                         });
       out.force_N += tau * cell;

@@ -21,11 +21,8 @@ namespace tribo::cli {
 namespace {
 
 // Files of one test folder, beside each other: a config names its data files relative to itself.
-// One folder per test: ctest runs each test as its own process, two at once under -j2.
 std::filesystem::path write_file(const std::string& name, const std::string& text) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tribo_config_keys_tests" /
-                                    ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = fixture::test_folder("tribo_config_keys_tests");
   std::ofstream(dir / name) << text;
   return dir / name;
 }

@@ -10,17 +10,13 @@
 #include "apps/rig_config.h"
 #include "rig/observables.h"
 #include "rig/reference/closed_forms.h"
+#include "tests/apps/expect_message.h"
 
 namespace tribo::cli {
 namespace {
 
-// One folder per test: ctest runs each test as its own process, two at once under -j2, and two
-// tests writing the same bad.toml read each other's (a failure seen once, 2026-11-29).
 std::filesystem::path write_config(const std::string& name, const std::string& text) {
-  const auto dir = std::filesystem::temp_directory_path() / "tribo_cli_tests" /
-                   ::testing::UnitTest::GetInstance()->current_test_info()->name();
-  std::filesystem::create_directories(dir);
-  const auto path = dir / name;
+  const auto path = fixture::test_folder("tribo_cli_tests") / name;
   std::ofstream(path) << text;
   return path;
 }

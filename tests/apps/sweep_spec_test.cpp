@@ -10,14 +10,13 @@
 
 #include "apps/config.h"
 #include "apps/sweep_spec.h"
+#include "tests/apps/expect_message.h"
 
 namespace tribo::cli {
 namespace {
 
 std::filesystem::path folder() {
-  const auto dir = std::filesystem::temp_directory_path() / "tribo_sweep_spec_tests" /
-                   ::testing::UnitTest::GetInstance()->current_test_info()->name();  // one per test: ctest -j2 runs two
-  std::filesystem::create_directories(dir);
+  const auto dir = fixture::test_folder("tribo_sweep_spec_tests");
   std::ofstream(dir / "base.toml") << "[rig]\nmass_kg = 1.0\n[friction]\nlaw = \"homogenised\"\ntable = \"law.json\"\n";
   std::ofstream(dir / "law.json") << "{}\n";
   return dir;
