@@ -83,8 +83,14 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   if (auto s = root.table("solver")) {
     if (run.point) {
       lub::EhlPointOptions& o = run.point_options;
-      o.nodes_x = static_cast<int>(s->integer("nodes_x", o.nodes_x, 11, 129));  // a dense (n_x n_y)² Jacobian: 129² is ≈ 2 GB
-      o.nodes_y = static_cast<int>(s->integer("nodes_y", o.nodes_y, 11, 129));
+      // Beyond 61² Newton–Krylov (ehl_point.h): 257² takes ≈ 40 s and ≈ 0.5 GB; 513² the limit.
+      o.nodes_x = static_cast<int>(s->integer("nodes_x", o.nodes_x, 11, 513));
+      o.nodes_y = static_cast<int>(s->integer("nodes_y", o.nodes_y, 11, 513));
+      const std::string method = s->choice("linear_solver", "automatic", {"automatic", "dense_lu", "newton_krylov"});
+      o.linear_solver = method == "dense_lu"        ? lub::EhlPointLinearSolver::dense_lu
+                        : method == "newton_krylov" ? lub::EhlPointLinearSolver::newton_krylov
+                                                    : lub::EhlPointLinearSolver::automatic;
+      o.preconditioner_reach = static_cast<int>(s->integer("preconditioner_reach", o.preconditioner_reach, 0, 16));
       o.inlet_over_radius = s->number("inlet_over_radius", o.inlet_over_radius);
       o.outlet_over_radius = s->number("outlet_over_radius", o.outlet_over_radius);
       o.side_over_radius = s->number("side_over_radius", o.side_over_radius, Range::positive);
@@ -234,6 +240,8 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
   const lub::EhlPointTraction& t = out.point_traction;
   j["geometry"] = "point";
   j["hertz_radius_m"] = f.hertz_radius_m;
+  j["linear_solver"] = f.linear_solver;
+  j["krylov_iterations"] = f.krylov_iterations;
   film_summary(j, f, out.converged, out.mixed_point ? &*out.mixed_point : nullptr,
                {t.friction_coefficient, t.force_N, t.max_shear_stress_Pa, t.max_film_temperature_rise_K}, "traction_N");
   const auto g = lub::reference::point_contact_groups(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s,

@@ -4,7 +4,7 @@ find_package(OpenMP REQUIRED COMPONENTS CXX)
 find_package(tomlplusplus REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 QUIET)
-find_package(SUNDIALS 6 REQUIRED COMPONENTS cvode nvecserial sunmatrixdense sunlinsoldense)
+find_package(SUNDIALS 6 REQUIRED COMPONENTS cvode nvecserial sunmatrixdense sunlinsoldense sunlinsolspgmr)
 
 # FFTW, SuiteSparse, hypre (+ Open MPI) and LAPACK: tribo::fftw, tribo::suitesparse, tribo::hypre,
 # tribo::lapack, found by the file the installed package config uses too. The old names stay as aliases.

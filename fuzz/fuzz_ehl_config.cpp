@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const auto& p = *run.point;
       for (double v : {p.load_N, p.reduced_radius_m, p.reduced_modulus_Pa, p.mean_speed_m_per_s}) TRIBO_FUZZ_CHECK(std::isfinite(v) && v > 0.0);
       const auto& o = run.point_options;
-      TRIBO_FUZZ_CHECK(o.nodes_x >= 11 && o.nodes_y >= 11 && o.nodes_x <= 129 && o.nodes_y <= 129);
+      TRIBO_FUZZ_CHECK(o.nodes_x >= 11 && o.nodes_y >= 11 && o.nodes_x <= 513 && o.nodes_y <= 513 && o.preconditioner_reach >= 0 && o.preconditioner_reach <= 16);
       TRIBO_FUZZ_CHECK(o.inlet_over_radius < -1.0 && o.outlet_over_radius > 1.0 && o.side_over_radius > 1.0);
     } else {
       const auto& c = run.contact;

@@ -99,6 +99,10 @@ class LineProblem {
 
   // F at the nodal state s and, when `jacobian` is given, its (generalised) Jacobian, with the row
   // scales c. λ as in the header.
+  using Jacobian = Eigen::MatrixXd;
+  bool solve_step(Jacobian& jacobian, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const {
+    return ehl::dense_step(jacobian, rhs, step, why);
+  }
   Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
     const Eigen::VectorXd &p = s.p, &h = s.h, &rho = s.rho, &drho = s.drho, &eps = s.eps, &dlog_eps = s.dlog_eps, &w = s.w;
     const int m = unknowns(), np = n_ - 2;

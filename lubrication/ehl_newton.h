@@ -1,12 +1,15 @@
 // The nonlinear method shared by the EHL solvers (ehl_line.h, ehl_point.h): Newton's method on the
-// coupled system of pressures and the rigid-body film constant H0, with the dense Jacobian of the
-// elastic integral (its LU by LAPACK, numerics/dense_solve.h), a step limit that keeps every film
-// positive, a backtracking line search on ‖F‖₂, and continuation in the speed parameter λ when
-// Newton does not converge from the start.
+// coupled system of pressures and the rigid-body film constant H0, a step limit that keeps every
+// film positive, a backtracking line search on ‖F‖₂, and continuation in the speed parameter λ when
+// Newton does not converge from the start. The Newton step's linear solve is the Problem's: the
+// dense Jacobian of the elastic integral by LU (dense_step, LAPACK) or, for the point contact on
+// large grids, GMRES on the applied Jacobian (ehl_point.cpp).
 // Internal to lubrication/: a Problem provides
 //   Nodal nodal(u, λ)                      the state at every node (its member h: the film)
 //   VectorXd row_scales(const Nodal&)      c_i, frozen over a step
-//   VectorXd residual(const Nodal&, c, MatrixXd* jacobian)
+//   type Jacobian                          what residual() linearises into
+//   VectorXd residual(const Nodal&, c, Jacobian*)
+//   bool solve_step(Jacobian&, rhs, step, std::string& why)   step = J⁻¹ rhs, or false and why
 //   VectorXd film_change(du)               the film's (linear) change for a step du
 //   int pressure_unknowns()                the pressures among the unknowns (first), then H0
 // and Options the fields tolerance, max_newton_iterations and max_continuation_steps.
@@ -23,6 +26,13 @@
 
 namespace tribo::lubrication::ehl {
 
+// The dense step: LU of the Jacobian (overwritten by its factors).
+inline bool dense_step(Eigen::MatrixXd& jacobian, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) {
+  if (numerics::dense_solve(jacobian, rhs, step)) return true;
+  why = "the Newton system is singular";
+  return false;
+}
+
 struct NewtonOutcome {
   bool converged = false;
   int iterations = 0;
@@ -35,7 +45,7 @@ struct NewtonOutcome {
 template <class Problem, class Options>
 NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, const Options& o) {
   NewtonOutcome out;
-  Eigen::MatrixXd jac;
+  typename Problem::Jacobian jac;
   auto state = problem.nodal(u, lambda);
   Eigen::VectorXd scales = problem.row_scales(state);
   Eigen::VectorXd f = problem.residual(state, scales, &jac);
@@ -43,8 +53,9 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
   const int np = problem.pressure_unknowns();
   for (int it = 0; it < o.max_newton_iterations; ++it) {
     Eigen::VectorXd step;
-    if (!numerics::dense_solve(jac, -f, step) || !step.allFinite()) {
-      out.why = "the Newton system is singular";
+    if (!problem.solve_step(jac, -f, step, out.why)) break;
+    if (!step.allFinite()) {
+      out.why = "the Newton step is not finite";
       break;
     }
     // The step may change no film by more than half of itself: a full Newton step from a start far

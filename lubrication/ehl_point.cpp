@@ -8,9 +8,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "contact/grid.h"
+#include "contact/halfspace.h"
 #include "lubrication/ehl_newton.h"
+#include "lubrication/linear_solver.h"
 #include "lubrication/reference/ehl_point_film.h"
 #include "numerics/format.h"
+#include "numerics/gmres.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -26,8 +30,8 @@ double inverse_distance_antiderivative(double s, double t) {
 // The discrete problem in Hertz units (header): unknowns P at the interior nodes, then H0.
 class PointProblem {
  public:
-  PointProblem(const EhlPointContact& c, const PiezoviscousLubricant& l, const EhlPointOptions& o)
-      : lub_(l), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
+  PointProblem(const EhlPointContact& c, const PiezoviscousLubricant& l, const EhlPointOptions& o, bool dense)
+      : lub_(l), dense_(dense), krylov_(o.krylov), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
         dy_(2.0 * o.side_over_radius / (o.nodes_y - 1)) {
     a_ = reference::hertz_point_radius_m(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
     ph_ = reference::hertz_point_peak_pressure_Pa(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
@@ -47,11 +51,27 @@ class PointProblem {
                          (inverse_distance_antiderivative(s + hx, t + hy) - inverse_distance_antiderivative(s + hx, t - hy) -
                           inverse_distance_antiderivative(s - hx, t + hy) + inverse_distance_antiderivative(s - hx, t - hy));
       }
-    kernel_.resize(nx_ * ny_, interior());
-    for (int j = 0; j < ny_; ++j)
-      for (int i = 0; i < nx_; ++i)
-        for (int l = 1; l <= ny_ - 2; ++l)
-          for (int k = 1; k <= nx_ - 2; ++k) kernel_(node(i, j), unknown(k, l)) = offset(std::abs(i - k), std::abs(j - l));
+    if (dense_) {
+      kernel_.resize(nx_ * ny_, interior());
+      for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i)
+          for (int l = 1; l <= ny_ - 2; ++l)
+            for (int k = 1; k <= nx_ - 2; ++k) kernel_(node(i, j), unknown(k, l)) = offset(std::abs(i - k), std::abs(j - l));
+    } else {
+      // The same operator by FFT: contact/'s non-periodic half-space is Love's cell integral times
+      // 1/(π E*), so E* = π/2 gives the (2/π²) ∫∫ 1/r here. The preconditioner keeps its near field.
+      halfspace_ = std::make_unique<contact::ElasticHalfSpace>(contact::Grid::patch(nx_, ny_, nx_ * dx_, ny_ * dy_),
+                                                               0.5 * std::numbers::pi, false, 1);
+      const int reach = o.preconditioner_reach;
+      std::vector<Eigen::Triplet<double>> near;
+      for (int l = 1; l <= ny_ - 2; ++l)
+        for (int k = 1; k <= nx_ - 2; ++k)
+          for (int j = std::max(0, l - reach); j <= std::min(ny_ - 1, l + reach); ++j)
+            for (int i = std::max(0, k - reach); i <= std::min(nx_ - 1, k + reach); ++i)
+              near.emplace_back(node(i, j), unknown(k, l), offset(std::abs(i - k), std::abs(j - l)));
+      near_kernel_.resize(nx_ * ny_, interior());
+      near_kernel_.setFromTriplets(near.begin(), near.end());
+    }
     self_ = offset(0, 0);
     rigid_.resize(nx_ * ny_);
     for (int j = 0; j < ny_; ++j)
@@ -88,11 +108,20 @@ class PointProblem {
     return (1 - s) * (1 - t) * v(node(i, j)) + s * (1 - t) * v(node(i + 1, j)) + (1 - s) * t * v(node(i, j + 1)) +
            s * t * v(node(i + 1, j + 1));
   }
+  // The elastic part of the film at every node for interior pressures P (the kernel's product).
+  Eigen::VectorXd deflection(const Eigen::VectorXd& interior_p) const {
+    if (dense_) return kernel_ * interior_p;
+    Eigen::ArrayXXd p = Eigen::ArrayXXd::Zero(nx_, ny_), d(nx_, ny_);
+    for (int l = 1; l <= ny_ - 2; ++l)
+      for (int k = 1; k <= nx_ - 2; ++k) p(k, l) = interior_p(unknown(k, l));
+    halfspace_->displacement(p, d);
+    return d.reshaped();  // column-major: node (i, j) at i + nx j
+  }
   Eigen::VectorXd film_change(const Eigen::VectorXd& du) const {
-    return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + kernel_ * du.head(interior());
+    return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + deflection(du.head(interior()));
   }
   Eigen::VectorXd film(const Eigen::VectorXd& u) const {
-    return (Eigen::VectorXd::Constant(nx_ * ny_, u(interior())) + rigid_) + kernel_ * u.head(interior());
+    return (Eigen::VectorXd::Constant(nx_ * ny_, u(interior())) + rigid_) + deflection(u.head(interior()));
   }
 
   struct Nodal {
@@ -127,17 +156,25 @@ class PointProblem {
     return c;
   }
 
-  Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
+  // The Newton matrix J = [S + D K, b; ΔXΔY 1ᵀ, 0]: S the stencil's direct dependence on the
+  // pressures, D (≤ 5 coefficients a row) that on the films at the stencil's nodes, K the elastic
+  // kernel, b the H0 column. Dense: assembled (D K as one sparse × dense product, which reads K
+  // column by column; adding scaled rows of the column-major K strode through memory and took half
+  // of a solve). Krylov: applied, with K by FFT.
+  struct Jacobian {
+    Eigen::MatrixXd dense;
+    Eigen::SparseMatrix<double, Eigen::RowMajor> stencil, through_film;
+    Eigen::VectorXd h0_column;
+  };
+
+  Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Jacobian* jacobian) const {
     const int np = interior();
     Eigen::VectorXd f(np + 1);
-    // The film's part of the Jacobian is D K: row r of D holds the ≤ 5 coefficients of ∂H_k at the
-    // stencil's nodes k, and K's rows are dense. One sparse × dense product reads K column by
-    // column; adding scaled rows of the column-major K row by row strode through memory and took
-    // half of a solve.
-    std::vector<Eigen::Triplet<double>> through_film;
+    std::vector<Eigen::Triplet<double>> through_film, stencil;
     if (jacobian) {
-      jacobian->setZero(np + 1, np + 1);
+      jacobian->h0_column.setZero(np);
       through_film.reserve(static_cast<std::size_t>(5 * np));
+      stencil.reserve(static_cast<std::size_t>(11 * np));
     }
     for (int j = 1; j <= ny_ - 2; ++j)
       for (int i = 1; i <= nx_ - 2; ++i) {
@@ -173,7 +210,6 @@ class PointProblem {
                          {i, j - 1, -0.5 * gmy / (dy_ * dy_), 0.0},
                          {i - 2, j, 0.0, second_order ? wx : 0.0},
                          {-1, -1, 0.0, 0.0}};
-        auto jrow = jacobian->row(row);
         double d_h0 = 0.0;
         for (const Term& t : terms) {
           if (t.i < 0 || (t.through_eps == 0.0 && t.through_mass == 0.0)) continue;
@@ -182,24 +218,26 @@ class PointProblem {
           through_film.emplace_back(row, k, -scale * db * dh);
           d_h0 += dh;
           if (inside(t.i, t.j))
-            jrow(unknown(t.i, t.j)) += -scale * db * (t.through_eps * s.eps(k) * s.dlog_eps(k) - t.through_mass * s.drho(k) * s.h(k));
+            stencil.emplace_back(row, unknown(t.i, t.j),
+                                 -scale * db * (t.through_eps * s.eps(k) * s.dlog_eps(k) - t.through_mass * s.drho(k) * s.h(k)));
         }
         // The pressures of the stencil.
         const auto pressure_term = [&](int ii, int jj, double coefficient) {
-          if (inside(ii, jj)) jrow(unknown(ii, jj)) += -scale * db * coefficient;
+          if (inside(ii, jj)) stencil.emplace_back(row, unknown(ii, jj), -scale * db * coefficient);
         };
         pressure_term(i + 1, j, epx / (dx_ * dx_));
         pressure_term(i - 1, j, emx / (dx_ * dx_));
         pressure_term(i, j + 1, epy / (dy_ * dy_));
         pressure_term(i, j - 1, emy / (dy_ * dy_));
         pressure_term(i, j, -(epx + emx) / (dx_ * dx_) - (epy + emy) / (dy_ * dy_));
-        jrow(row) += da;
-        (*jacobian)(row, np) = -scale * db * d_h0;
+        stencil.emplace_back(row, row, da);
+        jacobian->h0_column(row) = -scale * db * d_h0;
       }
     if (jacobian) {
-      Eigen::SparseMatrix<double, Eigen::RowMajor> d(np, nx_ * ny_);
-      d.setFromTriplets(through_film.begin(), through_film.end());
-      jacobian->topLeftCorner(np, np).noalias() += d * kernel_;
+      jacobian->stencil.resize(np, np);
+      jacobian->stencil.setFromTriplets(stencil.begin(), stencil.end());
+      jacobian->through_film.resize(np, nx_ * ny_);
+      jacobian->through_film.setFromTriplets(through_film.begin(), through_film.end());
     }
     // Load balance: ΔX ΔY Σ P = 2π/3 (P = 0 on the boundary).
     const double cell = dx_ * dy_;
@@ -207,17 +245,102 @@ class PointProblem {
     for (int j = 1; j <= ny_ - 2; ++j)
       for (int i = 1; i <= nx_ - 2; ++i) sum += s.p(node(i, j));
     f(np) = cell * sum - 2.0 * std::numbers::pi / 3.0;
-    if (jacobian) jacobian->row(np).head(np).setConstant(cell);
+    if (jacobian && dense_) {
+      Eigen::MatrixXd& m = jacobian->dense;
+      m.setZero(np + 1, np + 1);
+      m.topLeftCorner(np, np) = jacobian->stencil;
+      m.topLeftCorner(np, np).noalias() += jacobian->through_film * kernel_;
+      m.col(np).head(np) = jacobian->h0_column;
+      m.row(np).head(np).setConstant(cell);
+    }
     return f;
   }
 
+  bool solve_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const {
+    if (dense_) return ehl::dense_step(jac.dense, rhs, step, why);
+    return krylov_step(jac, rhs, step, why);
+  }
+
  private:
+  // GMRES on J applied (K by FFT), right-preconditioned by the sparse LU (UMFPACK) of J with K
+  // cut to its near field.
+  bool krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const;
+
   PiezoviscousLubricant lub_;
+  bool dense_;
+  EhlPointKrylovOptions krylov_;
   int nx_, ny_;
   double dx_, dy_, a_ = 0.0, ph_ = 0.0, radius_ = 0.0, self_ = 0.0;
   Eigen::VectorXd x_, y_, rigid_;
-  Eigen::MatrixXd kernel_;  // all nodes × interior nodes
+  Eigen::MatrixXd kernel_;  // all nodes × interior nodes (dense method)
+  Eigen::SparseMatrix<double, Eigen::RowMajor> near_kernel_;  // its entries within the reach (Krylov)
+  std::unique_ptr<contact::ElasticHalfSpace> halfspace_;  // K by FFT (Krylov); its buffers make products non-const
+  mutable int krylov_iterations_ = 0;
+
+ public:
+  int krylov_iterations() const { return krylov_iterations_; }
 };
+
+bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const {
+  const int np = interior();
+  const double cell = dx_ * dy_;
+  // Preconditioner matrix: [S + D K_near, b; ΔXΔY 1ᵀ, 0].
+  Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * near_kernel_;
+  local += jac.stencil;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<std::size_t>(local.nonZeros() + 2 * np));
+  for (int r = 0; r < np; ++r)
+    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(local, r); it; ++it) entries.emplace_back(r, static_cast<int>(it.col()), it.value());
+  for (int r = 0; r < np; ++r) {
+    entries.emplace_back(r, np, jac.h0_column(r));
+    entries.emplace_back(np, r, cell);
+  }
+  SparseMatrix m(np + 1, np + 1);
+  m.setFromTriplets(entries.begin(), entries.end());
+  const std::unique_ptr<SparseLinearSolver> lu = make_linear_solver(LinearSolverKind::umfpack, {}, DirectSolveOptions{0});
+  for (const LinearSolveStatus& status : {lu->analyze(m), lu->factorize(m)})
+    if (!status.ok) {
+      why = "the preconditioner's factorisation failed: " + status.message;
+      return false;
+    }
+  std::string failure;
+  const numerics::LinearMap apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) {
+    const Eigen::VectorXd film = deflection(v.head(np));
+    y.resize(np + 1);
+    y.head(np) = jac.stencil * v.head(np) + jac.through_film * film + jac.h0_column * v(np);
+    y(np) = cell * v.head(np).sum();
+    return true;
+  };
+  const numerics::LinearMap precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
+    const LinearSolveStatus status = lu->solve(r, z);
+    if (!status.ok) failure = status.message;
+    return status.ok;
+  };
+  numerics::GmresOptions g;
+  g.relative_tolerance = krylov_.relative_tolerance;
+  g.krylov_dimension = krylov_.krylov_dimension;
+  g.max_restarts = krylov_.max_restarts;
+  const numerics::GmresSummary summary = numerics::gmres(apply, precondition, rhs, step, g);
+  krylov_iterations_ += summary.iterations;
+  if (summary.converged) return true;
+  why = "GMRES did not solve the Newton system: " + summary.message + (failure.empty() ? "" : " (" + failure + ")");
+  return false;
+}
+
+// A coarser solve's pressure bilinearly interpolated at (x, y) (m); 0 outside its domain.
+double interpolate(const EhlPointResult& c, double x, double y) {
+  const int nx = static_cast<int>(c.x_m.size()), ny = static_cast<int>(c.y_m.size());
+  const double dx = c.x_m[1] - c.x_m[0], dy = c.y_m[1] - c.y_m[0];
+  const double fi = (x - c.x_m[0]) / dx, fj = (y - c.y_m[0]) / dy;
+  if (fi < 0.0 || fj < 0.0 || fi > nx - 1 || fj > ny - 1) return 0.0;
+  const int i = std::min(static_cast<int>(fi), nx - 2), j = std::min(static_cast<int>(fj), ny - 2);
+  const double s = fi - i, t = fj - j;
+  const auto p = [&](int ii, int jj) { return c.pressure_Pa[static_cast<std::size_t>(ii + nx * jj)]; };
+  return (1 - s) * (1 - t) * p(i, j) + s * (1 - t) * p(i + 1, j) + (1 - s) * t * p(i, j + 1) + s * t * p(i + 1, j + 1);
+}
+
+// automatic: the dense LU up to 61 × 61 nodes (≈ 0.6 s a step), GMRES beyond.
+constexpr int kLargestDenseSystem = 59 * 59;
 
 void validate(const EhlPointContact& c, const EhlPointOptions& o) {
   auto positive = [](double v, const char* name) {
@@ -237,6 +360,10 @@ void validate(const EhlPointContact& c, const EhlPointOptions& o) {
     throw std::invalid_argument("EHL point contact: nodes must be ≥ 11 a side, got " + std::to_string(o.nodes_x) + " × " +
                                 std::to_string(o.nodes_y));
   if (!(o.tolerance > 0.0)) throw std::invalid_argument("EHL point contact: tolerance must be positive, got " + shortest(o.tolerance));
+  if (o.preconditioner_reach < 0 || o.preconditioner_reach > 16)
+    throw std::invalid_argument("EHL point contact: preconditioner_reach must be 0–16 nodes, got " + std::to_string(o.preconditioner_reach));
+  if (!(o.krylov.relative_tolerance > 0.0 && o.krylov.relative_tolerance < 1.0) || o.krylov.krylov_dimension < 1 || o.krylov.max_restarts < 0)
+    throw std::invalid_argument("EHL point contact: the Krylov tolerance must lie in (0, 1), the dimension ≥ 1, the restarts ≥ 0");
 }
 
 }  // namespace
@@ -244,7 +371,10 @@ void validate(const EhlPointContact& c, const EhlPointOptions& o) {
 EhlPointResult solve_ehl_point(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant, const EhlPointOptions& options) {
   validate(contact, options);
   validate(lubricant);
-  const PointProblem problem(contact, lubricant, options);
+  const int interior = (options.nodes_x - 2) * (options.nodes_y - 2);
+  const bool dense = options.linear_solver == EhlPointLinearSolver::dense_lu ||
+                     (options.linear_solver == EhlPointLinearSolver::automatic && interior <= kLargestDenseSystem);
+  const PointProblem problem(contact, lubricant, options, dense);
   const double radius = contact.reduced_radius_m, a = problem.radius_m(), ph = problem.hertz_pressure_Pa();
   const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (a * a * a * ph);
 
@@ -267,6 +397,21 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   u(np) = 0.0;
   u(np) = h_start_m / problem.film_scale_m() - problem.at_centre(problem.film(u));
   if (const double lowest = problem.film(u).minCoeff(); lowest <= 0.0) u(np) += 0.5 * h_start_m / problem.film_scale_m() - lowest;
+  // Nested iteration (EhlPointOptions::start_from_coarser_grid).
+  EhlPointOptions coarser = options;
+  coarser.nodes_x = std::max(11, (options.nodes_x + 1) / 2);
+  coarser.nodes_y = std::max(11, (options.nodes_y + 1) / 2);
+  coarser.linear_solver = EhlPointLinearSolver::automatic;  // the dense LU once the grid is small
+  if (!dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y) {
+    if (const EhlPointResult c = solve_ehl_point(contact, lubricant, coarser); c.converged) {
+      for (int j = 1; j <= problem.ny() - 2; ++j)
+        for (int i = 1; i <= problem.nx() - 2; ++i)
+          u(problem.unknown(i, j)) = interpolate(c, problem.x()(i) * a, problem.y()(j) * a) / ph;
+      u(np) = 0.0;
+      u(np) = c.central_film_m / problem.film_scale_m() - problem.at_centre(problem.film(u));
+      if (const double lowest = problem.film(u).minCoeff(); lowest <= 0.0) u(np) += c.minimum_film_m / problem.film_scale_m() - lowest;
+    }
+  }
 
   const Eigen::VectorXd start = u;
   const ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
@@ -291,6 +436,8 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   result.iterations = solved.iterations;
   result.continuation_steps = solved.continuation_steps;
   result.residual = solved.newton.residual;
+  result.linear_solver = dense ? "dense LU" : "GMRES, sparse LU preconditioner";
+  result.krylov_iterations = problem.krylov_iterations();
   result.message = result.converged ? "converged: ‖F‖∞ = " + shortest(result.residual) + " after " + std::to_string(result.iterations) +
                                           " Newton iterations"
                                     : "not converged: " + solved.newton.why + "; ‖F‖∞ = " + shortest(result.residual);

@@ -19,12 +19,19 @@
 // rectangle (Love 1929), so the elastic operator is a dense matrix with the Toeplitz structure of
 // the grid.
 //
-// Method: ehl_newton.h — Newton on pressures and H0 together with the dense Jacobian of the
-// elastic integral, step limits, line search and continuation in λ, as the line contact. Cost:
-// the dense LU (LAPACK) of an (nx−2)(ny−2) + 1 system per step, O(N³) — 41 × 41 nodes ≈ 0.1 s a
-// step, 61 × 61 ≈ 0.6 s on 2 cores (BM_EhlPoint, bench/README.md): the grids of a design
-// calculation and of the tests, not of a converged map of the film's side lobes (Venner &
-// Lubrecht's multilevel methods are what reaches 10⁶ nodes).
+// Method: ehl_newton.h — Newton on pressures and H0 together (step limits, line search and
+// continuation in λ, as the line contact), the Newton step solved one of two ways:
+//   dense LU    the Jacobian with the dense elastic kernel, LU by LAPACK: O(N³) for N unknowns —
+//               41 × 41 nodes ≈ 0.1 s a step, 61 × 61 ≈ 0.6 s (BM_EhlPoint, bench/README.md);
+//   Newton–Krylov  GMRES (numerics/gmres.h, SUNDIALS SPGMR) on the Jacobian applied, the elastic
+//               kernel by FFT (contact/halfspace.h: the same cell integrals, zero-padded), right-
+//               preconditioned by the sparse LU (UMFPACK) of the Jacobian with the kernel cut to
+//               the nodes within `preconditioner_reach` of each other: the near field carries the
+//               stiffness of the Hertz zone, where the film equation is the elastic integral
+//               equation (ε → 0); the far field is smooth and left to the Krylov iterations. Memory
+//               and cost grow like the preconditioner's fill, not N²: grids of 10⁴–10⁵ nodes.
+// `linear_solver = automatic` takes the dense LU up to 61 × 61 nodes and Newton–Krylov beyond.
+// Venner & Lubrecht's multilevel methods remain what reaches 10⁶ nodes in seconds.
 // At high loads a coarse grid may not resolve the outlet constriction at all: at 20 N on the
 // tests' ball (Moes M ≈ 100) 25² and 27 × 23 nodes drive the film to zero there and end
 // `not converged`, while 31 × 25 converges in 18 steps — refine when it says so.
@@ -44,6 +51,15 @@ struct EhlPointContact {
   double mean_speed_m_per_s = 0.0;  // u_m = (u1 + u2)/2 > 0 (entrainment, along x)
 };
 
+enum class EhlPointLinearSolver { automatic, dense_lu, newton_krylov };
+
+// The inexact Newton step of the Krylov method: GMRES stops at ‖J s + F‖₂ ≤ relative_tolerance ‖F‖₂.
+struct EhlPointKrylovOptions {
+  double relative_tolerance = 1e-6;
+  int krylov_dimension = 60;
+  int max_restarts = 4;
+};
+
 struct EhlPointOptions {
   double inlet_over_radius = -3.5;   // X_in = x_in / a (the inlet must not starve the film)
   double outlet_over_radius = 1.5;   // X_out = x_out / a (past the cavitation front)
@@ -54,6 +70,13 @@ struct EhlPointOptions {
   double tolerance = 1e-9;
   int max_newton_iterations = 30;   // per solve (the direct one and each continuation step)
   int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
+  EhlPointLinearSolver linear_solver = EhlPointLinearSolver::automatic;
+  int preconditioner_reach = 2;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
+  // Newton–Krylov: start from the solve on a grid about half as fine (recursively; the dense LU
+  // once it is small), interpolated — within Newton's reach where the Hertz start needs the
+  // continuation (129² on the tests' ball at 10 N: 11 Newton steps against 160).
+  bool start_from_coarser_grid = true;
+  EhlPointKrylovOptions krylov;
 };
 
 struct EhlPointResult {
@@ -68,6 +91,8 @@ struct EhlPointResult {
   int iterations = 0;             // Newton iterations, continuation steps included
   int continuation_steps = 0;
   double residual = 0.0;          // ‖F‖∞ at return
+  std::string linear_solver;      // "dense LU" or "GMRES, sparse LU preconditioner"
+  int krylov_iterations = 0;      // GMRES iterations over the solve (0 for the dense LU)
   std::string message;
 };
 

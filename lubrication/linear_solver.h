@@ -79,9 +79,17 @@ class SparseLinearSolver {
   virtual bool analyzed() const = 0;
 };
 
+// The direct LU (UMFPACK): iterative refinement steps per solve (UMFPACK_IRSTEP, its default 2).
+// 0 where the factor is a preconditioner, whose inexactness the Krylov iteration absorbs: each step
+// costs another pair of triangular solves.
+struct DirectSolveOptions {
+  int refinement_steps = 2;
+};
+
 // Any kind but pfmg_pcg, which needs its box (make_pfmg_solver; std::invalid_argument here).
 std::unique_ptr<SparseLinearSolver> make_linear_solver(LinearSolverKind kind,
-                                                       const IterativeSolveOptions& iterative = {});
+                                                       const IterativeSolveOptions& iterative = {},
+                                                       const DirectSolveOptions& direct = {});
 
 // One BoomerAMG V-cycle (x₀ = 0) as a fixed linear operator x ≈ A⁻¹ r, for block preconditioners
 // of GMRES that apply multigrid to one block of a larger system (lubrication/cavitation_krylov.h):

@@ -75,12 +75,45 @@ TEST(EhlPoint, TractionIsTheEyringStressOverThePressurisedCells) {
   EXPECT_THROW(ehl_point_traction(film, ball_oil(), du, tau0, load), std::invalid_argument);
 }
 
+// The two linear solvers of the Newton step solve the same discrete problem: Newton–Krylov applies
+// the elastic kernel by FFT (contact/'s zero-padded half-space, E* = π/2 to match the scaling) where
+// the dense LU multiplies the assembled kernel, and GMRES stops at 1e-6 of the residual. From the
+// same start (no coarser-grid start) both converge to ‖F‖∞ ≤ 1e-9, which bounds the difference of
+// the answers (≈ 1e-9 relative on the pressures): the films and the peak pressure to 1e-7, in the
+// same number of Newton steps. A kernel off by a factor or a transposed offset fails this by
+// orders. 25² is odd (a node on the centre line), 26² even.
+class EhlPointLinearSolvers : public ::testing::TestWithParam<int> {};
+
+TEST_P(EhlPointLinearSolvers, NewtonKrylovMatchesTheDenseLu) {
+  EhlPointOptions dense = ball_grid(GetParam()), krylov = dense;
+  dense.linear_solver = EhlPointLinearSolver::dense_lu;
+  krylov.linear_solver = EhlPointLinearSolver::newton_krylov;
+  krylov.start_from_coarser_grid = false;
+  const EhlPointResult d = solve_ehl_point(ball_contact(10.0, 0.5), ball_oil(), dense);
+  const EhlPointResult k = solve_ehl_point(ball_contact(10.0, 0.5), ball_oil(), krylov);
+  ASSERT_TRUE(d.converged) << d.message;
+  ASSERT_TRUE(k.converged) << k.message;
+  EXPECT_EQ(d.linear_solver, "dense LU");
+  EXPECT_EQ(k.linear_solver, "GMRES, sparse LU preconditioner");
+  EXPECT_EQ(d.krylov_iterations, 0);
+  EXPECT_GT(k.krylov_iterations, k.iterations);  // more than one GMRES iteration a step: the preconditioner is not exact
+  EXPECT_NEAR(k.central_film_m / d.central_film_m, 1.0, 1e-7);
+  EXPECT_NEAR(k.minimum_film_m / d.minimum_film_m, 1.0, 1e-7);
+  EXPECT_NEAR(k.max_pressure_Pa / d.max_pressure_Pa, 1.0, 1e-7);
+  EXPECT_EQ(k.iterations, d.iterations);
+}
+
+INSTANTIATE_TEST_SUITE_P(OddAndEvenGrids, EhlPointLinearSolvers, ::testing::Values(25, 26));
+
 TEST(EhlPoint, BadInputIsRejectedAndNonConvergenceIsReported) {
   EXPECT_THROW(solve_ehl_point(ball_contact(-1.0, 0.5), ball_oil(), ball_grid(21)), std::invalid_argument);
   EhlPointOptions narrow = ball_grid(21);
   narrow.side_over_radius = 0.8;  // the Hertz circle does not fit
   EXPECT_THROW(solve_ehl_point(ball_contact(2.0, 0.5), ball_oil(), narrow), std::invalid_argument);
   EXPECT_THROW(solve_ehl_point(ball_contact(2.0, 0.5), ball_oil(), ball_grid(9)), std::invalid_argument);
+  EhlPointOptions far_reach = ball_grid(21);
+  far_reach.preconditioner_reach = 17;
+  EXPECT_THROW(solve_ehl_point(ball_contact(2.0, 0.5), ball_oil(), far_reach), std::invalid_argument);
   EhlPointOptions starved = ball_grid(21);
   starved.max_newton_iterations = 1;
   starved.max_continuation_steps = 0;
