@@ -212,7 +212,7 @@ class PointProblem {
                          {-1, -1, 0.0, 0.0}};
         double d_h0 = 0.0;
         for (const Term& t : terms) {
-          if (t.i < 0 || (t.through_eps == 0.0 && t.through_mass == 0.0)) continue;
+          if (t.i < 0) continue;  // zero coefficients stay: a fixed pattern lets the Krylov preconditioner keep its analysis
           const int k = node(t.i, t.j);
           const double dh = t.through_eps * 3.0 * s.eps(k) / s.h(k) - t.through_mass * s.rho(k);  // per unit ∂H_k
           through_film.emplace_back(row, k, -scale * db * dh);
@@ -276,33 +276,54 @@ class PointProblem {
   Eigen::SparseMatrix<double, Eigen::RowMajor> near_kernel_;  // its entries within the reach (Krylov)
   std::unique_ptr<contact::ElasticHalfSpace> halfspace_;  // K by FFT (Krylov); its buffers make products non-const
   mutable int krylov_iterations_ = 0;
+  // The Krylov preconditioner: its matrix (UMFPACK's solve reads it), factors and their state.
+  mutable SparseMatrix factored_;
+  mutable std::unique_ptr<SparseLinearSolver> lu_;
+  mutable Eigen::Index analysed_nonzeros_ = 0;
+  mutable bool stale_ = true;
+  mutable int fresh_iterations_ = 0, factorisations_ = 0;
+  mutable double previous_norm_ = 0.0;  // ‖F‖₂ at the last step, for the forcing term
 
  public:
   int krylov_iterations() const { return krylov_iterations_; }
+  int factorisations() const { return factorisations_; }
 };
 
 bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const {
   const int np = interior();
   const double cell = dx_ * dy_;
-  // Preconditioner matrix: [S + D K_near, b; ΔXΔY 1ᵀ, 0].
-  Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * near_kernel_;
-  local += jac.stencil;
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<std::size_t>(local.nonZeros() + 2 * np));
-  for (int r = 0; r < np; ++r)
-    for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(local, r); it; ++it) entries.emplace_back(r, static_cast<int>(it.col()), it.value());
-  for (int r = 0; r < np; ++r) {
-    entries.emplace_back(r, np, jac.h0_column(r));
-    entries.emplace_back(np, r, cell);
-  }
-  SparseMatrix m(np + 1, np + 1);
-  m.setFromTriplets(entries.begin(), entries.end());
-  const std::unique_ptr<SparseLinearSolver> lu = make_linear_solver(LinearSolverKind::umfpack, {}, DirectSolveOptions{0});
-  for (const LinearSolveStatus& status : {lu->analyze(m), lu->factorize(m)})
-    if (!status.ok) {
+  // The preconditioner: the LU of [S + D K_near, b; ΔXΔY 1ᵀ, 0] at this step. Its pattern is the
+  // same at every step (residual() keeps zero coefficients), so UMFPACK's symbolic analysis (METIS
+  // ordering) runs once per grid.
+  const auto factorise = [&]() {
+    Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * near_kernel_;
+    local += jac.stencil;
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(static_cast<std::size_t>(local.nonZeros() + 2 * np));
+    for (int r = 0; r < np; ++r)
+      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(local, r); it; ++it)
+        entries.emplace_back(r, static_cast<int>(it.col()), it.value());
+    for (int r = 0; r < np; ++r) {
+      entries.emplace_back(r, np, jac.h0_column(r));
+      entries.emplace_back(np, r, cell);
+    }
+    factored_.resize(np + 1, np + 1);
+    factored_.setFromTriplets(entries.begin(), entries.end());
+    if (!lu_ || !lu_->analyzed() || factored_.nonZeros() != analysed_nonzeros_) {
+      lu_ = make_linear_solver(LinearSolverKind::umfpack, {}, DirectSolveOptions{0});
+      if (const LinearSolveStatus status = lu_->analyze(factored_); !status.ok) {
+        why = "the preconditioner's analysis failed: " + status.message;
+        return false;
+      }
+      analysed_nonzeros_ = factored_.nonZeros();
+    }
+    if (const LinearSolveStatus status = lu_->factorize(factored_); !status.ok) {
       why = "the preconditioner's factorisation failed: " + status.message;
       return false;
     }
+    ++factorisations_;
+    return true;
+  };
   std::string failure;
   const numerics::LinearMap apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) {
     const Eigen::VectorXd film = deflection(v.head(np));
@@ -312,17 +333,39 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
     return true;
   };
   const numerics::LinearMap precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    const LinearSolveStatus status = lu->solve(r, z);
+    const LinearSolveStatus status = lu_->solve(r, z);
     if (!status.ok) failure = status.message;
     return status.ok;
   };
+  // Inexact Newton (Eisenstat & Walker 1996, choice 2): solve no more exactly than Newton's progress
+  // can use — η = 0.9 (‖F_k‖/‖F_{k−1}‖)², at most 1e-2, at least the configured tolerance.
+  const double norm = rhs.norm();
+  const double forcing = previous_norm_ > 0.0 ? 0.9 * std::pow(norm / previous_norm_, 2) : 1e-2;
+  previous_norm_ = norm;
   numerics::GmresOptions g;
-  g.relative_tolerance = krylov_.relative_tolerance;
+  g.relative_tolerance = std::clamp(forcing, krylov_.relative_tolerance, 1e-2);
   g.krylov_dimension = krylov_.krylov_dimension;
   g.max_restarts = krylov_.max_restarts;
-  const numerics::GmresSummary summary = numerics::gmres(apply, precondition, rhs, step, g);
+  // A factorisation serves later steps while GMRES needs at most twice (+ 5) the iterations it
+  // needed when fresh: the Jacobian changes little between Newton steps near the answer, and the
+  // LU is most of a step. A stale one that does not converge is refreshed and the solve repeated.
+  bool fresh = false;
+  if (stale_) {
+    if (!factorise()) return false;
+    fresh = true;
+  }
+  numerics::GmresSummary summary = numerics::gmres(apply, precondition, rhs, step, g);
   krylov_iterations_ += summary.iterations;
+  if (!summary.converged && !fresh) {
+    if (!factorise()) return false;
+    fresh = true;
+    summary = numerics::gmres(apply, precondition, rhs, step, g);
+    krylov_iterations_ += summary.iterations;
+  }
+  if (fresh) fresh_iterations_ = summary.iterations;
+  stale_ = summary.iterations > 2 * fresh_iterations_ + 5;
   if (summary.converged) return true;
+  stale_ = true;
   why = "GMRES did not solve the Newton system: " + summary.message + (failure.empty() ? "" : " (" + failure + ")");
   return false;
 }
@@ -402,6 +445,7 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   coarser.nodes_x = std::max(11, (options.nodes_x + 1) / 2);
   coarser.nodes_y = std::max(11, (options.nodes_y + 1) / 2);
   coarser.linear_solver = EhlPointLinearSolver::automatic;  // the dense LU once the grid is small
+  coarser.tolerance = std::max(options.tolerance, 1e-6);     // a start: its grid's error is larger
   if (!dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y) {
     if (const EhlPointResult c = solve_ehl_point(contact, lubricant, coarser); c.converged) {
       for (int j = 1; j <= problem.ny() - 2; ++j)
@@ -438,6 +482,7 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   result.residual = solved.newton.residual;
   result.linear_solver = dense ? "dense LU" : "GMRES, sparse LU preconditioner";
   result.krylov_iterations = problem.krylov_iterations();
+  result.preconditioner_factorisations = problem.factorisations();
   result.message = result.converged ? "converged: ‖F‖∞ = " + shortest(result.residual) + " after " + std::to_string(result.iterations) +
                                           " Newton iterations"
                                     : "not converged: " + solved.newton.why + "; ‖F‖∞ = " + shortest(result.residual);

@@ -26,10 +26,13 @@
 //   Newton–Krylov  GMRES (numerics/gmres.h, SUNDIALS SPGMR) on the Jacobian applied, the elastic
 //               kernel by FFT (contact/halfspace.h: the same cell integrals, zero-padded), right-
 //               preconditioned by the sparse LU (UMFPACK) of the Jacobian with the kernel cut to
-//               the nodes within `preconditioner_reach` of each other: the near field carries the
-//               stiffness of the Hertz zone, where the film equation is the elastic integral
-//               equation (ε → 0); the far field is smooth and left to the Krylov iterations. Memory
-//               and cost grow like the preconditioner's fill, not N²: grids of 10⁴–10⁵ nodes.
+//               the nodes within `preconditioner_reach` of each other (0: each node's own cell —
+//               the fastest on 129² and 257²; the wider near fields of 1–2 cut GMRES iterations by
+//               a third but fill the LU more). The LU is analysed once per grid and refactorised
+//               only when GMRES slows down; GMRES solves no more exactly than Newton's progress
+//               can use (Eisenstat–Walker); the start is the solve on a grid half as fine. Memory
+//               and cost grow like N log N a GMRES iteration: 129² ≈ 2 s, 257² ≈ 8–10 s
+//               (BM_EhlPoint), 9–11 Newton steps on each grid.
 // `linear_solver = automatic` takes the dense LU up to 61 × 61 nodes and Newton–Krylov beyond.
 // Venner & Lubrecht's multilevel methods remain what reaches 10⁶ nodes in seconds.
 // At high loads a coarse grid may not resolve the outlet constriction at all: at 20 N on the
@@ -71,7 +74,7 @@ struct EhlPointOptions {
   int max_newton_iterations = 30;   // per solve (the direct one and each continuation step)
   int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
   EhlPointLinearSolver linear_solver = EhlPointLinearSolver::automatic;
-  int preconditioner_reach = 2;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
+  int preconditioner_reach = 0;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
   // Newton–Krylov: start from the solve on a grid about half as fine (recursively; the dense LU
   // once it is small), interpolated — within Newton's reach where the Hertz start needs the
   // continuation (129² on the tests' ball at 10 N: 11 Newton steps against 160).
@@ -93,6 +96,7 @@ struct EhlPointResult {
   double residual = 0.0;          // ‖F‖∞ at return
   std::string linear_solver;      // "dense LU" or "GMRES, sparse LU preconditioner"
   int krylov_iterations = 0;      // GMRES iterations over the solve (0 for the dense LU)
+  int preconditioner_factorisations = 0;  // sparse LUs of the Krylov preconditioner (reused while GMRES converges fast)
   std::string message;
 };
 

@@ -1,5 +1,5 @@
 // The EHL point contact's film (lubrication/ehl_point.h) against Hamrock & Dowson's fits, and its
-// grid convergence: dense Newton steps up to 41², Newton–Krylov on 65² and 129² (≈ 35 s in all in
+// grid convergence: dense Newton steps up to 41², Newton–Krylov on 65² and 129² (≈ 12 s in all in
 // Release).
 #include <gtest/gtest.h>
 

@@ -77,11 +77,12 @@ TEST(EhlPoint, TractionIsTheEyringStressOverThePressurisedCells) {
 
 // The two linear solvers of the Newton step solve the same discrete problem: Newton–Krylov applies
 // the elastic kernel by FFT (contact/'s zero-padded half-space, E* = π/2 to match the scaling) where
-// the dense LU multiplies the assembled kernel, and GMRES stops at 1e-6 of the residual. From the
-// same start (no coarser-grid start) both converge to ‖F‖∞ ≤ 1e-9, which bounds the difference of
-// the answers (≈ 1e-9 relative on the pressures): the films and the peak pressure to 1e-7, in the
-// same number of Newton steps. A kernel off by a factor or a transposed offset fails this by
-// orders. 25² is odd (a node on the centre line), 26² even.
+// the dense LU multiplies the assembled kernel. From the same start (no coarser-grid start) both
+// converge to ‖F‖∞ ≤ 1e-9, which bounds the difference of the answers (≈ 1e-9 relative on the
+// pressures): the films and the peak pressure to 1e-7. GMRES solves each step only as exactly as
+// Newton's progress can use (1e-2 … 1e-6), which may cost a Newton step or two more, not fewer.
+// A kernel off by a factor or a transposed offset fails this by orders. 25² is odd (a node on the
+// centre line), 26² even.
 class EhlPointLinearSolvers : public ::testing::TestWithParam<int> {};
 
 TEST_P(EhlPointLinearSolvers, NewtonKrylovMatchesTheDenseLu) {
@@ -100,7 +101,8 @@ TEST_P(EhlPointLinearSolvers, NewtonKrylovMatchesTheDenseLu) {
   EXPECT_NEAR(k.central_film_m / d.central_film_m, 1.0, 1e-7);
   EXPECT_NEAR(k.minimum_film_m / d.minimum_film_m, 1.0, 1e-7);
   EXPECT_NEAR(k.max_pressure_Pa / d.max_pressure_Pa, 1.0, 1e-7);
-  EXPECT_EQ(k.iterations, d.iterations);
+  EXPECT_GE(k.iterations, d.iterations);
+  EXPECT_LE(k.iterations, d.iterations + 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(OddAndEvenGrids, EhlPointLinearSolvers, ::testing::Values(25, 26));
