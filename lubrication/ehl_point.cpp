@@ -382,8 +382,8 @@ double interpolate(const EhlPointResult& c, double x, double y) {
   return (1 - s) * (1 - t) * p(i, j) + s * (1 - t) * p(i + 1, j) + (1 - s) * t * p(i, j + 1) + s * t * p(i + 1, j + 1);
 }
 
-// automatic: the dense LU up to 61 × 61 nodes (≈ 0.6 s a step), GMRES beyond.
-constexpr int kLargestDenseSystem = 59 * 59;
+// automatic: the dense LU up to 41 × 41 nodes, Newton–Krylov beyond (ehl_point.h).
+constexpr int kLargestDenseSystem = 39 * 39;
 
 void validate(const EhlPointContact& c, const EhlPointOptions& o) {
   auto positive = [](double v, const char* name) {

@@ -31,9 +31,11 @@
 //               a third but fill the LU more). The LU is analysed once per grid and refactorised
 //               only when GMRES slows down; GMRES solves no more exactly than Newton's progress
 //               can use (Eisenstat–Walker); the start is the solve on a grid half as fine. Memory
-//               and cost grow like N log N a GMRES iteration: 129² ≈ 2 s, 257² ≈ 8–10 s
+//               and cost grow like N log N a GMRES iteration: 129² ≈ 2–2.5 s, 257² ≈ 9.5–12 s
 //               (BM_EhlPoint), 9–11 Newton steps on each grid.
-// `linear_solver = automatic` takes the dense LU up to 61 × 61 nodes and Newton–Krylov beyond.
+// `linear_solver = automatic` takes the dense LU up to 41 × 41 nodes and Newton–Krylov beyond
+// (measured: 51² 0.22 s against 3.7–4.1 s dense, 61² 0.46–0.57 s against 11–16 s; at 41² a 20 N contact
+// whose 21² start does not converge takes 3 s by Krylov, 1.2 s dense).
 // Venner & Lubrecht's multilevel methods remain what reaches 10⁶ nodes in seconds.
 // At high loads a coarse grid may not resolve the outlet constriction at all: at 20 N on the
 // tests' ball (Moes M ≈ 100) 25² and 27 × 23 nodes drive the film to zero there and end
