@@ -11,6 +11,7 @@
 
 #include "apps/config.h"
 #include "apps/contact_run.h"
+#include "apps/ehl_run.h"
 #include "apps/homogenise_config.h"
 #include "apps/reynolds_run.h"
 #include "apps/rig_config.h"
@@ -93,6 +94,26 @@ TEST(UnknownKeys, CountsBeyondAnIntAreRefusedNotWrapped) {
   expect_all(error_of([&] { load_contact_run(points, true); }), {points.string(), "junction.points", "10000"});
   const auto threads = write_file("contact-threads.toml", kSphere + "[load]\nnormal_load_N = 1.0\n[solver]\nthreads = 4294967297\n");
   expect_all(error_of([&] { load_contact_run(threads, false); }), {threads.string(), "solver.threads"});
+}
+
+// The point contact's solver keys: the linear solver is one of three names, the preconditioner's
+// reach and the grid have bounds (513² is the largest grid Newton–Krylov is offered for), each
+// refused with the file and the key; a valid choice reaches the options.
+TEST(UnknownKeys, EhlPointSolverKeysAreCheckedAndReachTheOptions) {
+  const std::string ball = "[contact]\ngeometry = \"point\"\nload_N = 10.0\nreduced_radius_m = 9.525e-3\n"
+                           "reduced_modulus_Pa = 2.308e11\nmean_speed_m_per_s = 0.5\n"
+                           "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n[solver]\n";
+  const auto method = write_file("ehl-method.toml", ball + "linear_solver = \"lu\"\n");
+  expect_all(error_of([&] { load_ehl_run(method); }), {method.string(), "solver.linear_solver", "newton_krylov"});
+  const auto reach = write_file("ehl-reach.toml", ball + "preconditioner_reach = 17\n");
+  expect_all(error_of([&] { load_ehl_run(reach); }), {reach.string(), "solver.preconditioner_reach", "16"});
+  const auto grid = write_file("ehl-grid.toml", ball + "nodes_x = 514\n");
+  expect_all(error_of([&] { load_ehl_run(grid); }), {grid.string(), "solver.nodes_x", "513"});
+  const auto valid = write_file("ehl-krylov.toml", ball + "linear_solver = \"dense_lu\"\npreconditioner_reach = 3\nnodes_x = 257\n");
+  const EhlRun run = load_ehl_run(valid);
+  EXPECT_EQ(run.point_options.linear_solver, lubrication::EhlPointLinearSolver::dense_lu);
+  EXPECT_EQ(run.point_options.preconditioner_reach, 3);
+  EXPECT_EQ(run.point_options.nodes_x, 257);
 }
 
 TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {
