@@ -18,7 +18,7 @@ struct Operators {
 
 Eigen::Map<Eigen::VectorXd> view(N_Vector v) { return {N_VGetArrayPointer_Serial(v), N_VGetLength_Serial(v)}; }
 
-int call(const LinearMap& map, Operators& o, N_Vector in, N_Vector out) {
+int apply_map(const LinearMap& map, Operators& o, N_Vector in, N_Vector out) {
   o.in = view(in);
   if (!map(o.in, o.out) || o.out.size() != o.in.size()) return -1;  // unrecoverable: stops SPGMR
   view(out) = o.out;
@@ -27,12 +27,12 @@ int call(const LinearMap& map, Operators& o, N_Vector in, N_Vector out) {
 
 int atimes(void* data, N_Vector v, N_Vector z) {
   auto& o = *static_cast<Operators*>(data);
-  return call(*o.apply, o, v, z);
+  return apply_map(*o.apply, o, v, z);
 }
 
 int psolve(void* data, N_Vector r, N_Vector z, realtype /*tol*/, int /*side*/) {
   auto& o = *static_cast<Operators*>(data);
-  return call(*o.precondition, o, r, z);
+  return apply_map(*o.precondition, o, r, z);
 }
 
 struct ContextDeleter {
@@ -45,7 +45,7 @@ struct SolverDeleter {
   void operator()(SUNLinearSolver s) const { SUNLinSolFree(s); }
 };
 
-void check(int flag, const char* call) {
+void check_spgmr(int flag, const char* call) {
   if (flag != SUNLS_SUCCESS) throw std::runtime_error(std::string("SPGMR: ") + call + " failed with flag " + std::to_string(flag));
 }
 
@@ -76,11 +76,11 @@ GmresSummary gmres(const LinearMap& apply, const LinearMap& precondition, const 
       SUNLinSol_SPGMR(xv.get(), preconditioning, options.krylov_dimension, raw_context));
   if (!solver) throw std::runtime_error("SPGMR: SUNLinSol_SPGMR returned null");
   Operators operators{&apply, &precondition, {}, {}};
-  check(SUNLinSol_SPGMRSetMaxRestarts(solver.get(), options.max_restarts), "SUNLinSol_SPGMRSetMaxRestarts");
-  check(SUNLinSolSetATimes(solver.get(), &operators, atimes), "SUNLinSolSetATimes");
-  if (precondition) check(SUNLinSolSetPreconditioner(solver.get(), &operators, nullptr, psolve), "SUNLinSolSetPreconditioner");
-  check(SUNLinSolInitialize(solver.get()), "SUNLinSolInitialize");
-  check(SUNLinSolSetup(solver.get(), nullptr), "SUNLinSolSetup");
+  check_spgmr(SUNLinSol_SPGMRSetMaxRestarts(solver.get(), options.max_restarts), "SUNLinSol_SPGMRSetMaxRestarts");
+  check_spgmr(SUNLinSolSetATimes(solver.get(), &operators, atimes), "SUNLinSolSetATimes");
+  if (precondition) check_spgmr(SUNLinSolSetPreconditioner(solver.get(), &operators, nullptr, psolve), "SUNLinSolSetPreconditioner");
+  check_spgmr(SUNLinSolInitialize(solver.get()), "SUNLinSolInitialize");
+  check_spgmr(SUNLinSolSetup(solver.get(), nullptr), "SUNLinSolSetup");
   const int flag = SUNLinSolSolve(solver.get(), nullptr, xv.get(), bv.get(), options.relative_tolerance * b_norm);
   summary.iterations = SUNLinSolNumIters(solver.get());
   summary.relative_residual = SUNLinSolResNorm(solver.get()) / b_norm;
