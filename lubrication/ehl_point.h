@@ -78,8 +78,9 @@ struct EhlPointOptions {
   EhlPointLinearSolver linear_solver = EhlPointLinearSolver::automatic;
   int preconditioner_reach = 0;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
   // Newton–Krylov: start from the solve on a grid about half as fine (recursively; the dense LU
-  // once it is small), interpolated — within Newton's reach where the Hertz start needs the
-  // continuation (129² on the tests' ball at 10 N: 11 Newton steps against 160).
+  // once it is small; each to ‖F‖∞ ≤ max(tolerance, 1e-6), a start needing no more), interpolated —
+  // within Newton's reach where the Hertz start needs the continuation (129² on the tests' ball at
+  // 10 N: 11 Newton steps against 160). Where the coarser solve does not converge, the Hertz start.
   bool start_from_coarser_grid = true;
   EhlPointKrylovOptions krylov;
 };
