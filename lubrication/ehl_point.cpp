@@ -437,9 +437,14 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
       u(problem.unknown(i, j)) = std::sqrt(std::max(0.0, 1.0 - r2)) / (spread * spread);
     }
   const int np = problem.pressure_unknowns();
-  u(np) = 0.0;
-  u(np) = h_start_m / problem.film_scale_m() - problem.at_centre(problem.film(u));
-  if (const double lowest = problem.film(u).minCoeff(); lowest <= 0.0) u(np) += 0.5 * h_start_m / problem.film_scale_m() - lowest;
+  // H0 for the pressures in u: the central film at `central_m`, and where the pressures' deflection
+  // would close the film somewhere, raised until its lowest node is `lowest_m`.
+  const auto place_film = [&](double central_m, double lowest_m) {
+    u(np) = 0.0;
+    u(np) = central_m / problem.film_scale_m() - problem.at_centre(problem.film(u));
+    if (const double lowest = problem.film(u).minCoeff(); lowest <= 0.0) u(np) += lowest_m / problem.film_scale_m() - lowest;
+  };
+  place_film(h_start_m, 0.5 * h_start_m);
   // Nested iteration (EhlPointOptions::start_from_coarser_grid).
   EhlPointOptions coarser = options;
   coarser.nodes_x = std::max(11, (options.nodes_x + 1) / 2);
@@ -451,9 +456,7 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
       for (int j = 1; j <= problem.ny() - 2; ++j)
         for (int i = 1; i <= problem.nx() - 2; ++i)
           u(problem.unknown(i, j)) = interpolate(c, problem.x()(i) * a, problem.y()(j) * a) / ph;
-      u(np) = 0.0;
-      u(np) = c.central_film_m / problem.film_scale_m() - problem.at_centre(problem.film(u));
-      if (const double lowest = problem.film(u).minCoeff(); lowest <= 0.0) u(np) += c.minimum_film_m / problem.film_scale_m() - lowest;
+      place_film(c.central_film_m, c.minimum_film_m);
     }
   }
 
