@@ -81,6 +81,12 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     run.roughness = rough;
   }
   if (auto s = root.table("solver")) {
+    // The cavitation's NCP function (lubrication/complementarity.h); the default is each contact's.
+    const auto complementarity = [&](lub::Complementarity fallback) {
+      const std::string name = s->choice("complementarity", fallback == lub::Complementarity::minimum ? "minimum" : "fischer_burmeister",
+                                         {"minimum", "fischer_burmeister"});
+      return name == "minimum" ? lub::Complementarity::minimum : lub::Complementarity::fischer_burmeister;
+    };
     if (run.point) {
       lub::EhlPointOptions& o = run.point_options;
       // Beyond 61² Newton–Krylov (ehl_point.h): 257² takes ≈ 40 s and ≈ 0.5 GB; 513² the limit.
@@ -91,6 +97,7 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
                         : method == "newton_krylov" ? lub::EhlPointLinearSolver::newton_krylov
                                                     : lub::EhlPointLinearSolver::automatic;
       o.preconditioner_reach = static_cast<int>(s->integer("preconditioner_reach", o.preconditioner_reach, 0, 16));
+      o.complementarity = complementarity(o.complementarity);
       o.inlet_over_radius = s->number("inlet_over_radius", o.inlet_over_radius);
       o.outlet_over_radius = s->number("outlet_over_radius", o.outlet_over_radius);
       o.side_over_radius = s->number("side_over_radius", o.side_over_radius, Range::positive);
@@ -99,6 +106,7 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
       o.max_continuation_steps = static_cast<int>(s->integer("max_continuation_steps", o.max_continuation_steps, 0, 1000));
     } else {
       run.options.nodes = static_cast<int>(s->integer("nodes", run.options.nodes, 11, 20001));
+      run.options.complementarity = complementarity(run.options.complementarity);
       run.options.inlet_over_half_width = s->number("inlet_over_half_width", run.options.inlet_over_half_width);
       run.options.outlet_over_half_width = s->number("outlet_over_half_width", run.options.outlet_over_half_width);
       run.options.tolerance = s->number("tolerance", run.options.tolerance, Range::positive);

@@ -23,7 +23,7 @@ double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::
 class LineProblem {
  public:
   LineProblem(const EhlLineContact& c, const PiezoviscousLubricant& l, const EhlLineOptions& o)
-      : lub_(l), n_(o.nodes), dx_((o.outlet_over_half_width - o.inlet_over_half_width) / (o.nodes - 1)) {
+      : lub_(l), complementarity_(o.complementarity), n_(o.nodes), dx_((o.outlet_over_half_width - o.inlet_over_half_width) / (o.nodes - 1)) {
     b_ = reference::hertz_line_half_width_m(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
     ph_ = reference::hertz_line_peak_pressure_Pa(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
     radius_ = c.reduced_radius_m;
@@ -118,13 +118,11 @@ class LineProblem {
       const int row = i - 1;
       const double scale = c(row);
       const double r = -scale * (poiseuille - wedge);
-      // Cavitation: P ≥ 0, −c R ≥ 0, P R = 0, as the Fischer–Burmeister function φ(P, −c R) = 0,
-      // φ(a, b) = a + b − √(a² + b²) — smooth away from a = b = 0, so that the line search's
-      // merit ‖F‖² is too (the min function's kink stalls it where nodes change side).
-      const double a = p(i), root = std::hypot(a, r);
-      f(row) = a + r - root;
+      // Cavitation: P ≥ 0, −c R ≥ 0, P R = 0 as φ(P, −c R) = 0 (complementarity.h).
+      const Ncp phi = ncp(complementarity_, p(i), r);
+      f(row) = phi.value;
       if (!jacobian) continue;
-      const double da = root > 0.0 ? 1.0 - a / root : 1.0, db = root > 0.0 ? 1.0 - r / root : 0.0;
+      const double da = phi.da, db = phi.db;
       // ∂ε_k/∂P_j = ε_k (3 K_kj/H_k + δ_kj ∂ln ε_k/∂P_k); ∂(ρ̄H)_k/∂P_j = ρ̄_k K_kj + δ_kj ρ̄'_k H_k.
       auto d_eps = [&](int k) {
         Eigen::RowVectorXd d = (3.0 * eps(k) / h(k)) * kernel_.row(k).segment(1, np);
@@ -162,6 +160,7 @@ class LineProblem {
 
  private:
   PiezoviscousLubricant lub_;
+  Complementarity complementarity_;
   int n_;
   double dx_, b_ = 0.0, ph_ = 0.0, radius_ = 0.0;
   Eigen::VectorXd x_;

@@ -31,7 +31,7 @@ double inverse_distance_antiderivative(double s, double t) {
 class PointProblem {
  public:
   PointProblem(const EhlPointContact& c, const PiezoviscousLubricant& l, const EhlPointOptions& o, bool dense)
-      : lub_(l), dense_(dense), krylov_(o.krylov), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
+      : lub_(l), complementarity_(o.complementarity), dense_(dense), krylov_(o.krylov), tolerance_(o.tolerance), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
         dy_(2.0 * o.side_over_radius / (o.nodes_y - 1)) {
     a_ = reference::hertz_point_radius_m(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
     ph_ = reference::hertz_point_peak_pressure_Pa(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
@@ -190,11 +190,11 @@ class PointProblem {
                                           : (s.w(here) - s.w(west)) / dx_;
         const double scale = c(row);
         const double r = -scale * (poiseuille - wedge);
-        // Cavitation as the Fischer–Burmeister function φ(P, −c R) = 0 (ehl_line.cpp says why).
-        const double a = s.p(here), root = std::hypot(a, r);
-        f(row) = a + r - root;
+        // Cavitation: P ≥ 0, −c R ≥ 0, P R = 0 as φ(P, −c R) = 0 (complementarity.h).
+        const Ncp phi = ncp(complementarity_, s.p(here), r);
+        f(row) = phi.value;
         if (!jacobian) continue;
-        const double da = root > 0.0 ? 1.0 - a / root : 1.0, db = root > 0.0 ? 1.0 - r / root : 0.0;
+        const double da = phi.da, db = phi.db;
         // ∂(poiseuille − wedge)/∂u: through ε and ρ̄H at the stencil's nodes (each a dense row of the
         // kernel: ∂ε_k/∂P_q = ε_k (3 K_kq/H_k + δ_kq ∂ln ε_k/∂P_k), ∂(ρ̄H)_k/∂P_q = ρ̄_k K_kq +
         // δ_kq ρ̄'_k H_k), and through the pressures of the five-point stencil.
@@ -267,8 +267,10 @@ class PointProblem {
   bool krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const;
 
   PiezoviscousLubricant lub_;
+  Complementarity complementarity_;
   bool dense_;
   EhlPointKrylovOptions krylov_;
+  double tolerance_;  // Newton's, on ‖F‖∞
   int nx_, ny_;
   double dx_, dy_, a_ = 0.0, ph_ = 0.0, radius_ = 0.0, self_ = 0.0;
   Eigen::VectorXd x_, y_, rigid_;
@@ -278,6 +280,8 @@ class PointProblem {
   mutable int krylov_iterations_ = 0;
   // The Krylov preconditioner: its matrix (UMFPACK's solve reads it), factors and their state.
   mutable SparseMatrix factored_;
+  mutable Eigen::VectorXd border_;  // A⁻¹ b: the film constant's column through the factors
+  mutable double schur_ = 0.0;      // ΔXΔY Σ A⁻¹b: the load row's Schur complement (up to sign)
   mutable std::unique_ptr<SparseLinearSolver> lu_;
   mutable Eigen::Index analysed_nonzeros_ = 0;
   mutable bool stale_ = true;
@@ -292,23 +296,15 @@ class PointProblem {
 bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const {
   const int np = interior();
   const double cell = dx_ * dy_;
-  // The preconditioner: the LU of [S + D K_near, b; ΔXΔY 1ᵀ, 0] at this step. Its pattern is the
-  // same at every step (residual() keeps zero coefficients), so UMFPACK's symbolic analysis (METIS
-  // ordering) runs once per grid.
+  // The preconditioner: [A, b; ΔXΔY 1ᵀ, 0] with A = S + D K_near at this step, solved by the LU of
+  // A alone (the load row and the H0 column are dense: in the LU they made UMFPACK's symbolic
+  // analysis of 257² take 1 s) and the border by its scalar Schur complement, A⁻¹ b kept with
+  // the factors. A's pattern is the same at every step (residual() keeps zero coefficients), so the
+  // analysis runs once per grid.
   const auto factorise = [&]() {
     Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * near_kernel_;
     local += jac.stencil;
-    std::vector<Eigen::Triplet<double>> entries;
-    entries.reserve(static_cast<std::size_t>(local.nonZeros() + 2 * np));
-    for (int r = 0; r < np; ++r)
-      for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(local, r); it; ++it)
-        entries.emplace_back(r, static_cast<int>(it.col()), it.value());
-    for (int r = 0; r < np; ++r) {
-      entries.emplace_back(r, np, jac.h0_column(r));
-      entries.emplace_back(np, r, cell);
-    }
-    factored_.resize(np + 1, np + 1);
-    factored_.setFromTriplets(entries.begin(), entries.end());
+    factored_ = local;
     if (!lu_ || !lu_->analyzed() || factored_.nonZeros() != analysed_nonzeros_) {
       lu_ = make_linear_solver(LinearSolverKind::umfpack, {}, DirectSolveOptions{0});
       if (const LinearSolveStatus status = lu_->analyze(factored_); !status.ok) {
@@ -319,6 +315,15 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
     }
     if (const LinearSolveStatus status = lu_->factorize(factored_); !status.ok) {
       why = "the preconditioner's factorisation failed: " + status.message;
+      return false;
+    }
+    if (const LinearSolveStatus status = lu_->solve(jac.h0_column, border_); !status.ok) {
+      why = "the preconditioner's solve failed: " + status.message;
+      return false;
+    }
+    schur_ = cell * border_.sum();
+    if (!std::isfinite(schur_) || schur_ == 0.0) {
+      why = "the preconditioner is singular: the load does not depend on the film constant through it";
       return false;
     }
     ++factorisations_;
@@ -332,18 +337,27 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
     y(np) = cell * v.head(np).sum();
     return true;
   };
+  // z = M⁻¹ r: A z_p + b z_H0 = r_p and ΔXΔY Σ z_p = r_H0, so z_H0 = (ΔXΔY Σ A⁻¹r_p − r_H0) / (ΔXΔY Σ A⁻¹b).
   const numerics::LinearMap precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
-    const LinearSolveStatus status = lu_->solve(r, z);
-    if (!status.ok) failure = status.message;
-    return status.ok;
+    Eigen::VectorXd y;
+    const LinearSolveStatus status = lu_->solve(r.head(np), y);
+    if (!status.ok) {
+      failure = status.message;
+      return false;
+    }
+    z.resize(np + 1);
+    z(np) = (cell * y.sum() - r(np)) / schur_;
+    z.head(np) = y - border_ * z(np);
+    return true;
   };
   // Inexact Newton (Eisenstat & Walker 1996, choice 2): solve no more exactly than Newton's progress
-  // can use — η = 0.9 (‖F_k‖/‖F_{k−1}‖)², at most 1e-2, at least the configured tolerance.
+  // can use — η = 0.9 (‖F_k‖/‖F_{k−1}‖)², at most 1e-2, at least the configured tolerance — nor
+  // than the answer needs: a linear residual of a tenth of Newton's tolerance ends the solve.
   const double norm = rhs.norm();
   const double forcing = previous_norm_ > 0.0 ? 0.9 * std::pow(norm / previous_norm_, 2) : 1e-2;
   previous_norm_ = norm;
   numerics::GmresOptions g;
-  g.relative_tolerance = std::clamp(forcing, krylov_.relative_tolerance, 1e-2);
+  g.relative_tolerance = std::clamp(std::max(forcing, 0.1 * tolerance_ / norm), krylov_.relative_tolerance, 1e-2);
   g.krylov_dimension = krylov_.krylov_dimension;
   g.max_restarts = krylov_.max_restarts;
   // A factorisation serves later steps while GMRES needs at most twice (+ 5) the iterations it

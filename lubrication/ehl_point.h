@@ -20,7 +20,8 @@
 // the grid.
 //
 // Method: ehl_newton.h — Newton on pressures and H0 together (step limits, line search and
-// continuation in λ, as the line contact), the Newton step solved one of two ways:
+// continuation in λ, as the line contact; the cavitation by the minimum NCP function, a
+// primal–dual active-set step, by default), the Newton step solved one of two ways:
 //   dense LU    the Jacobian with the dense elastic kernel, LU by LAPACK: O(N³) for N unknowns —
 //               41 × 41 nodes ≈ 0.1 s a step, 61 × 61 ≈ 0.6 s (BM_EhlPoint, bench/README.md);
 //   Newton–Krylov  GMRES (numerics/gmres.h, SUNDIALS SPGMR) on the Jacobian applied, the elastic
@@ -28,23 +29,27 @@
 //               preconditioned by the sparse LU (UMFPACK) of the Jacobian with the kernel cut to
 //               the nodes within `preconditioner_reach` of each other (0: each node's own cell —
 //               the fastest on 129² and 257²; the wider near fields of 1–2 cut GMRES iterations by
-//               a third but fill the LU more). The LU is analysed once per grid and refactorised
-//               only when GMRES slows down; GMRES solves no more exactly than Newton's progress
-//               can use (Eisenstat–Walker); the start is the solve on a grid half as fine. Memory
-//               and cost grow like N log N a GMRES iteration: 129² ≈ 2–2.5 s, 257² ≈ 9.5–12 s
-//               (BM_EhlPoint), 9–11 Newton steps on each grid.
+//               a third but fill the LU more), its dense load row and H0 column by their Schur
+//               complement. The LU is analysed once per grid and refactorised only when GMRES
+//               slows down; GMRES solves no more exactly than Newton's progress can use
+//               (Eisenstat–Walker) or the tolerance needs; the start is the solve on a grid half
+//               as fine. Memory and cost grow like N log N a GMRES iteration: 129² ≈ 1 s, 257²
+//               ≈ 5 s (BM_EhlPoint), 5–6 Newton steps on each grid.
 // `linear_solver = automatic` takes the dense LU up to 41 × 41 nodes and Newton–Krylov beyond
 // (measured: 51² 0.22 s against 3.7–4.1 s dense, 61² 0.46–0.57 s against 11–16 s; at 41² a 20 N contact
 // whose 21² start does not converge takes 3 s by Krylov, 1.2 s dense).
 // Venner & Lubrecht's multilevel methods remain what reaches 10⁶ nodes in seconds.
-// At high loads a coarse grid may not resolve the outlet constriction at all: at 20 N on the
-// tests' ball (Moes M ≈ 100) 25² and 27 × 23 nodes drive the film to zero there and end
-// `not converged`, while 31 × 25 converges in 18 steps — refine when it says so.
+// At high loads a coarse grid may not resolve the contact at all: at 100 N on the tests' ball
+// (Moes M ≈ 540) 25² and 31² drive the film to zero at a node and end `not converged` (Newton
+// stalled), while 41² converges in 7 steps — refine when it says so. Where a coarse grid does
+// converge its error can be large (20 N, M ≈ 100: h_c 46 nm on 25², 80 nm on 31 × 25, 109 nm on
+// 41²): refine until the film settles.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "lubrication/complementarity.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
@@ -75,6 +80,11 @@ struct EhlPointOptions {
   double tolerance = 1e-9;
   int max_newton_iterations = 30;   // per solve (the direct one and each continuation step)
   int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
+  // The NCP function of the cavitation (complementarity.h). The minimum function: Newton stays
+  // quadratic to the end (6 steps on each grid of the tests' ball where Fischer–Burmeister took 11–14,
+  // linear near the cavitation front), full steps from the Hertz start (33² at 10 N: 6 steps against
+  // 14 damped ones) — 257² in 7 s instead of 9.5–12 (BM_EhlPoint).
+  Complementarity complementarity = Complementarity::minimum;
   EhlPointLinearSolver linear_solver = EhlPointLinearSolver::automatic;
   int preconditioner_reach = 0;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
   // Newton–Krylov: start from the solve on a grid about half as fine (recursively; the dense LU

@@ -233,23 +233,6 @@ Signature signature_of(const ReynoldsProblem& pr) {
   return s;
 }
 
-// NCP functions φ(a, b) = 0 ⇔ a ≥ 0, b ≥ 0, ab = 0, with a = p/p_s, b = 1 − ϑ, and an element
-// of their B-subdifferential.
-struct Ncp {
-  double value, da, db;
-};
-// Fischer–Burmeister φ = a + b − √(a² + b²); at the kink a = b = 0 the element
-// (1 − 1/√2, 1 − 1/√2) is used.
-Ncp fischer_burmeister(double a, double b) {
-  const double r = std::hypot(a, b);
-  if (r == 0.0) return {0.0, 1.0 - M_SQRT1_2, 1.0 - M_SQRT1_2};
-  return {a + b - r, 1.0 - a / r, 1.0 - b / r};
-}
-// Minimum φ = min(a, b): its Newton step is the primal–dual active-set step (Hintermüller, Ito &
-// Kunisch, SIAM J. Optim. 13, 2002) — the film is full where p/p_s < 1 − ϑ is false, cavitated
-// where it is true, and each step solves the mass balance exactly for that split.
-Ncp minimum_function(double a, double b) { return a < b ? Ncp{a, 1.0, 0.0} : Ncp{b, 0.0, 1.0}; }
-
 }  // namespace
 
 void validate(const ReynoldsProblem& pr) {
@@ -466,8 +449,7 @@ struct ReynoldsSolver::Impl {
         }
       }
       f[row] = mass / mass_scale;
-      const Ncp c = options.complementarity == Complementarity::minimum ? minimum_function(p / p_scale, 1.0 - th)
-                                                                        : fischer_burmeister(p / p_scale, 1.0 - th);
+      const Ncp c = ncp(options.complementarity, p / p_scale, 1.0 - th);
       f[row + 1] = c.value;
       if (mass_rows) (*mass_rows)[u] = jr;
       if (ncp_rows) (*ncp_rows)[u] = NcpRow{c.value, c.da / p_scale, -c.db};

@@ -65,6 +65,7 @@
 #pragma once
 
 #include "contact/grid.h"
+#include "lubrication/complementarity.h"
 #include "lubrication/linear_solver.h"
 
 #include <Eigen/Core>
@@ -77,8 +78,6 @@ namespace tribo::lubrication {
 
 enum class BoundaryY { ambient, periodic };
 enum class Cavitation { none, mass_conserving };
-// NCP function of the cavitation Newton solve (see above).
-enum class Complementarity { minimum, fischer_burmeister };
 // Backend of the full-film (SPD) pressure solve: CHOLMOD, BoomerAMG-preconditioned CG, or the
 // latter from ReynoldsOptions::multigrid_min_unknowns unknowns on (automatic).
 enum class PressureSolver { automatic, direct, multigrid };

@@ -109,11 +109,16 @@ TEST(UnknownKeys, EhlPointSolverKeysAreCheckedAndReachTheOptions) {
   expect_all(error_of([&] { load_ehl_run(reach); }), {reach.string(), "solver.preconditioner_reach", "16"});
   const auto grid = write_file("ehl-grid.toml", ball + "nodes_x = 514\n");
   expect_all(error_of([&] { load_ehl_run(grid); }), {grid.string(), "solver.nodes_x", "513"});
-  const auto valid = write_file("ehl-krylov.toml", ball + "linear_solver = \"dense_lu\"\npreconditioner_reach = 3\nnodes_x = 257\n");
+  const auto ncp = write_file("ehl-ncp.toml", ball + "complementarity = \"fb\"\n");
+  expect_all(error_of([&] { load_ehl_run(ncp); }), {ncp.string(), "solver.complementarity", "fischer_burmeister"});
+  const auto valid = write_file("ehl-krylov.toml", ball + "linear_solver = \"dense_lu\"\npreconditioner_reach = 3\nnodes_x = 257\n"
+                                                          "complementarity = \"fischer_burmeister\"\n");
   const EhlRun run = load_ehl_run(valid);
   EXPECT_EQ(run.point_options.linear_solver, lubrication::EhlPointLinearSolver::dense_lu);
   EXPECT_EQ(run.point_options.preconditioner_reach, 3);
   EXPECT_EQ(run.point_options.nodes_x, 257);
+  EXPECT_EQ(run.point_options.complementarity, lubrication::Complementarity::fischer_burmeister);
+  EXPECT_EQ(load_ehl_run(write_file("ehl-default.toml", ball)).point_options.complementarity, lubrication::Complementarity::minimum);
 }
 
 TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {

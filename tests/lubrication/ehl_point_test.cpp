@@ -107,6 +107,38 @@ TEST_P(EhlPointLinearSolvers, NewtonKrylovMatchesTheDenseLu) {
 
 INSTANTIATE_TEST_SUITE_P(OddAndEvenGrids, EhlPointLinearSolvers, ::testing::Values(25, 26));
 
+// The two NCP functions (complementarity.h) state the same cavitation conditions, so they pose the
+// same discrete problem: from the same start both converge to ‖F‖∞ ≤ 1e-9, and the films and the
+// peak pressure agree to 1e-7 (as the linear solvers above). The minimum function's Newton step is
+// a primal–dual active-set step, quadratic once the cavitated set has settled; Fischer–Burmeister
+// rounds the corner where P and the Reynolds residual are both small — at the cavitation front —
+// and converges only linearly there: the reason for the default (31² at 10 N: 6 steps against 15).
+TEST(EhlPoint, MinimumAndFischerBurmeisterSolveTheSameCavitationProblem) {
+  EhlPointOptions minimum = ball_grid(31), fischer = minimum;
+  fischer.complementarity = Complementarity::fischer_burmeister;
+  const EhlPointResult m = solve_ehl_point(ball_contact(10.0, 0.5), ball_oil(), minimum);
+  const EhlPointResult f = solve_ehl_point(ball_contact(10.0, 0.5), ball_oil(), fischer);
+  ASSERT_TRUE(m.converged) << m.message;
+  ASSERT_TRUE(f.converged) << f.message;
+  EXPECT_NEAR(m.central_film_m / f.central_film_m, 1.0, 1e-7);
+  EXPECT_NEAR(m.minimum_film_m / f.minimum_film_m, 1.0, 1e-7);
+  EXPECT_NEAR(m.max_pressure_Pa / f.max_pressure_Pa, 1.0, 1e-7);
+  EXPECT_LT(m.iterations, f.iterations);
+}
+
+// At 100 N (p_H 1.4 GPa, Moes M ≈ 540) 25² nodes do not resolve the contact: from the Hertz start
+// Newton drives the film to zero at a node, the step limit halves at every step and ‖F‖ stands
+// still. The solve says so and gives up early, not after its 30 steps (without the continuation,
+// which stalls the same way at every λ on this grid).
+TEST(EhlPoint, StalledSolveEndsEarlyAndSaysWhy) {
+  EhlPointOptions o = ball_grid(25);
+  o.max_continuation_steps = 0;
+  const EhlPointResult r = solve_ehl_point(ball_contact(100.0, 0.5), ball_oil(), o);
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("stalled"), std::string::npos) << r.message;
+  EXPECT_LT(r.iterations, o.max_newton_iterations / 2) << r.message;
+}
+
 TEST(EhlPoint, BadInputIsRejectedAndNonConvergenceIsReported) {
   EXPECT_THROW(solve_ehl_point(ball_contact(-1.0, 0.5), ball_oil(), ball_grid(21)), std::invalid_argument);
   EhlPointOptions narrow = ball_grid(21);
