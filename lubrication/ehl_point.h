@@ -33,8 +33,8 @@
 //               complement. The LU is analysed once per grid and refactorised only when GMRES
 //               slows down; GMRES solves no more exactly than Newton's progress can use
 //               (Eisenstat–Walker) or the tolerance needs; the start is the solve on a grid half
-//               as fine. Memory and cost grow like N log N a GMRES iteration: 129² ≈ 1 s, 257²
-//               ≈ 5 s (BM_EhlPoint), 5–6 Newton steps on each grid.
+//               as fine. Memory and cost grow like N log N a GMRES iteration: 129² ≈ 0.8 s, 257²
+//               ≈ 4–4.5 s (BM_EhlPoint), 5–6 Newton steps on each grid.
 // `linear_solver = automatic` takes the dense LU up to 41 × 41 nodes and Newton–Krylov beyond
 // (measured: 51² 0.22 s against 3.7–4.1 s dense, 61² 0.46–0.57 s against 11–16 s; at 41² a 20 N contact
 // whose 21² start does not converge takes 3 s by Krylov, 1.2 s dense).
