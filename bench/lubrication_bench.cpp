@@ -195,7 +195,7 @@ void BM_EhlPoint(benchmark::State& state) {
 // Up to 41² the dense LU; above, Newton–Krylov (its time includes the coarser grids' solves
 // that start it).
 BENCHMARK(BM_EhlPoint)->Args({31, 10})->Args({41, 10})->Args({51, 10})->Args({61, 10})->Args({41, 20})->Args({61, 20})
-    ->Args({65, 10})->Args({129, 10})->Args({257, 10})->Args({129, 20})->Args({257, 20})
+    ->Args({65, 10})->Args({129, 10})->Args({257, 10})->Args({129, 20})->Args({257, 20})->Args({513, 10})
     ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 }  // namespace
