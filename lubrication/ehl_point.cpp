@@ -465,6 +465,9 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   coarser.nodes_y = std::max(11, (options.nodes_y + 1) / 2);
   coarser.linear_solver = EhlPointLinearSolver::automatic;  // the dense LU once the grid is small
   coarser.tolerance = std::max(options.tolerance, 1e-6);     // a start: its grid's error is larger
+  // A coarse grid that cannot hold the contact (high M: no film-positive solution past a fold in λ)
+  // would spend the whole continuation finding that out; the Hertz start on this grid is then cheaper.
+  coarser.max_continuation_steps = std::min(options.max_continuation_steps, 4);
   if (!dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y) {
     if (const EhlPointResult c = solve_ehl_point(contact, lubricant, coarser); c.converged) {
       for (int j = 1; j <= problem.ny() - 2; ++j)

@@ -79,7 +79,7 @@ struct EhlPointOptions {
   // load balance ΔXΔY ΣP − 2π/3), and the last Newton step moved no P by more than 10·tolerance·max P.
   double tolerance = 1e-9;
   int max_newton_iterations = 30;   // per solve (the direct one and each continuation step)
-  int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
+  int max_continuation_steps = 24;  // solves in the continuation (an anchor a decade at a time on either side, then back)
   // The NCP function of the cavitation (complementarity.h). The minimum function: Newton stays
   // quadratic to the end (6 steps on each grid of the tests' ball where Fischer–Burmeister took 11–14,
   // linear near the cavitation front), full steps from the Hertz start (33² at 10 N: 6 steps against
@@ -90,7 +90,8 @@ struct EhlPointOptions {
   // Newton–Krylov: start from the solve on a grid about half as fine (recursively; the dense LU
   // once it is small; each to ‖F‖∞ ≤ max(tolerance, 1e-6), a start needing no more), interpolated —
   // within Newton's reach where the Hertz start needs the continuation (129² on the tests' ball at
-  // 10 N: 11 Newton steps against 160). Where the coarser solve does not converge, the Hertz start.
+  // 10 N: 11 Newton steps against 160). Where the coarser solve does not converge (its continuation
+  // limited to 4 solves), the Hertz start.
   bool start_from_coarser_grid = true;
   EhlPointKrylovOptions krylov;
 };
