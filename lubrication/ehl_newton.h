@@ -106,7 +106,8 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
       return out;
     }
     if (stalled == 3) {
-      out.why = "Newton stalled (‖F‖ fell by less than 0.1 % a step for 3 steps)";
+      out.why = "Newton stalled (‖F‖ fell by less than 0.1 % a step for 3 steps: the film is driven to zero at a node, "
+                "which at a high load usually means that the grid does not resolve the contact — refine it)";
       break;
     }
   }
