@@ -396,8 +396,8 @@ double interpolate(const EhlPointResult& c, double x, double y) {
   return (1 - s) * (1 - t) * p(i, j) + s * (1 - t) * p(i + 1, j) + (1 - s) * t * p(i, j + 1) + s * t * p(i + 1, j + 1);
 }
 
-// automatic: the dense LU up to 41 × 41 nodes, Newton–Krylov beyond (ehl_point.h).
-constexpr int kLargestDenseSystem = 39 * 39;
+// automatic: the dense LU up to 21 × 21 nodes, Newton–Krylov beyond (ehl_point.h).
+constexpr int kLargestDenseSystem = 19 * 19;
 
 void validate(const EhlPointContact& c, const EhlPointOptions& o) {
   auto positive = [](double v, const char* name) {

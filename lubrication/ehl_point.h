@@ -35,9 +35,9 @@
 //               (Eisenstat–Walker) or the tolerance needs; the start is the solve on a grid half
 //               as fine. Memory and cost grow like N log N a GMRES iteration: 129² ≈ 0.8 s, 257²
 //               ≈ 4–4.5 s (BM_EhlPoint), 5–6 Newton steps on each grid.
-// `linear_solver = automatic` takes the dense LU up to 41 × 41 nodes and Newton–Krylov beyond
-// (measured: 51² 0.22 s against 3.7–4.1 s dense, 61² 0.46–0.57 s against 11–16 s; at 41² a 20 N contact
-// whose 21² start does not converge takes 3 s by Krylov, 1.2 s dense).
+// `linear_solver = automatic` takes the dense LU up to 21 × 21 nodes and Newton–Krylov beyond
+// (measured with the minimum NCP function, 2–50 N: 25² 0.04–0.07 s against 0.09–0.10 s dense, 31²
+// 0.07–0.12 s against 0.18–0.21 s, 41² 0.07–0.38 s against 0.56–0.65 s; 17²–21² the same to 0.01 s).
 // Venner & Lubrecht's multilevel methods remain what reaches 10⁶ nodes in seconds.
 // At high loads a coarse grid may not resolve the contact at all: at 100 N on the tests' ball
 // (Moes M ≈ 540) 25² and 31² drive the film to zero at a node and end `not converged` (Newton
