@@ -52,7 +52,8 @@ struct EhlLineOptions {
   double outlet_over_half_width = 1.5;  // X_out = x_out / b (past the cavitation front)
   int nodes = 401;                      // N ≥ 11
   // Converged when the scaled residual ‖F‖∞ ≤ tolerance, F = (φ(P, −c R_Reynolds) in units of p_H,
-  // load balance ΔX ΣP − π/2), and the last Newton step moved no P by more than 10·tolerance·max P.
+  // load balance ΔX ΣP − π/2), and the pressures' error left is at most 10·tolerance·max(1, max P)
+  // (the last step, or after a full step that step times the residual's contraction: ehl_newton.h).
   double tolerance = 1e-10;
   int max_newton_iterations = 30;  // per solve (the direct one and each continuation step)
   int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)

@@ -40,11 +40,12 @@ struct NewtonOutcome {
   std::string why;
 };
 
-// Newton from u (updated in place). Converged when ‖F‖∞ ≤ tolerance and the pressures' error left
-// after the last step, estimated as the step times the residual's contraction rate over it
-// (CVODE's Newton test, Hindmarsh et al., ACM TOMS 31, 2005: del · min(1, crate)), is at most
-// 10·tolerance·max(1, max P) — a quadratic step that cut ‖F‖∞ by 10⁶ needs no further step to
-// show that it has settled.
+// Newton from u (updated in place). Converged when ‖F‖∞ ≤ tolerance and the last step moved no
+// pressure by more than 10·tolerance·max(1, max P) — or, after a full step, when that step times
+// the residual's contraction rate over it (the pressures' error left, as CVODE's Newton test,
+// Hindmarsh et al., ACM TOMS 31, 2005: del · min(1, crate)) is: a quadratic step that cut ‖F‖∞
+// by 10⁶ needs no further step to show that it has settled. Stalled when three steps in a row,
+// each cut short by the film limit (below), lowered ‖F‖₂ by less than 0.1 %.
 template <class Problem, class Options>
 NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, const Options& o) {
   NewtonOutcome out;
@@ -69,6 +70,7 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
     double t = 1.0;
     for (int i = 0; i < dh.size(); ++i)
       if (std::abs(dh(i)) > 0.5 * state.h(i)) t = std::min(t, 0.5 * state.h(i) / std::abs(dh(i)));
+    const bool film_limited = t < 1.0;
     Eigen::VectorXd trial;
     auto trial_state = state;
     bool accepted = false;
@@ -89,8 +91,9 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
       break;
     }
     // A film driven to zero at a node halves the step limit at every step and ‖F‖ stands still:
-    // the continuation (or the caller) is what can help, not the remaining iterations.
-    stalled = trial_norm > (1.0 - 1e-3) * norm ? stalled + 1 : 0;
+    // the continuation (or the caller) is what can help, not the remaining iterations. (Steps cut
+    // short by the line search alone — the minimum function's kinks — do not count.)
+    stalled = film_limited && trial_norm > (1.0 - 1e-3) * norm ? stalled + 1 : 0;
     const double moved = (t * step.head(np)).template lpNorm<Eigen::Infinity>();
     const double before = f.template lpNorm<Eigen::Infinity>();
     u = trial;
@@ -99,7 +102,7 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
     f = problem.residual(state, scales, &jac);
     norm = f.norm();
     out.residual = f.template lpNorm<Eigen::Infinity>();
-    const double rate = before > 0.0 ? std::min(1.0, out.residual / before) : 1.0;
+    const double rate = t == 1.0 && before > 0.0 ? std::min(1.0, out.residual / before) : 1.0;
     if (out.residual <= o.tolerance &&
         moved * rate <= 10.0 * o.tolerance * std::max(1.0, u.head(np).template lpNorm<Eigen::Infinity>())) {
       out.converged = true;

@@ -302,6 +302,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
   // the factors. A's pattern is the same at every step (residual() keeps zero coefficients), so the
   // analysis runs once per grid.
   const auto factorise = [&]() {
+    stale_ = true;  // until a factorisation succeeds
     Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * near_kernel_;
     local += jac.stencil;
     factored_ = local;
@@ -357,7 +358,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
   const double forcing = previous_norm_ > 0.0 ? 0.9 * std::pow(norm / previous_norm_, 2) : 1e-2;
   previous_norm_ = norm;
   numerics::GmresOptions g;
-  g.relative_tolerance = std::clamp(std::max(forcing, 0.1 * tolerance_ / norm), krylov_.relative_tolerance, 1e-2);
+  g.relative_tolerance = std::clamp(std::max(forcing, 0.1 * tolerance_ / norm), std::min(krylov_.relative_tolerance, 1e-2), 1e-2);
   g.krylov_dimension = krylov_.krylov_dimension;
   g.max_restarts = krylov_.max_restarts;
   // A factorisation serves later steps while GMRES needs at most twice (+ 5) the iterations it

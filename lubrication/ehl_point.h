@@ -78,22 +78,25 @@ struct EhlPointOptions {
   // (second order, 2–20 N), ≈ 1 s by Newton–Krylov; 41², the default before 2026-11-29, was 12 % low.
   int nodes_x = 129, nodes_y = 129;
   // Converged when the scaled residual ‖F‖∞ ≤ tolerance, F = (φ(P, −c R_Reynolds) in units of p_H,
-  // load balance ΔXΔY ΣP − 2π/3), and the last Newton step moved no P by more than 10·tolerance·max P.
+  // load balance ΔXΔY ΣP − 2π/3), and the pressures' error left is at most 10·tolerance·max(1, max P)
+  // (the last step, or after a full step that step times the residual's contraction: ehl_newton.h).
   double tolerance = 1e-9;
   int max_newton_iterations = 30;   // per solve (the direct one and each continuation step)
-  int max_continuation_steps = 24;  // solves in the continuation (an anchor a decade at a time on either side, then back)
+  int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
   // The NCP function of the cavitation (complementarity.h). The minimum function: Newton stays
   // quadratic to the end (6 steps on each grid of the tests' ball where Fischer–Burmeister took 11–14,
   // linear near the cavitation front), full steps from the Hertz start (33² at 10 N: 6 steps against
-  // 14 damped ones) — 257² in 7 s instead of 9.5–12 (BM_EhlPoint).
+  // 14 damped ones) — with the other changes of 2026-11-29, 257² in 4–4.5 s instead of 9.5–12
+  // (BM_EhlPoint).
   Complementarity complementarity = Complementarity::minimum;
   EhlPointLinearSolver linear_solver = EhlPointLinearSolver::automatic;
   int preconditioner_reach = 0;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
   // Newton–Krylov: start from the solve on a grid about half as fine (recursively; the dense LU
   // once it is small; each to ‖F‖∞ ≤ max(tolerance, 1e-6), a start needing no more), interpolated —
   // within Newton's reach where the Hertz start needs the continuation (129² on the tests' ball at
-  // 10 N: 11 Newton steps against 160). Where the coarser solve does not converge (its continuation
-  // limited to 4 solves), the Hertz start.
+  // 10 N: 5 Newton steps; with Fischer–Burmeister 11, and 160 through the continuation from the
+  // Hertz start). Where the coarser solve does not converge (its continuation limited to 4 solves),
+  // the Hertz start.
   bool start_from_coarser_grid = true;
   EhlPointKrylovOptions krylov;
 };
