@@ -174,8 +174,8 @@ BENCHMARK(BM_EhlLine)->Args({201, 300000})->Args({401, 300000})->Args({401, 3000
 // EHL point contact (lubrication/ehl_point.h): the ball on a disc of tests/lubrication/ball_on_disc.h
 // (R = 9.525 mm, E' = 2.31e11 Pa, η0 = 0.04 Pa·s, α = 2e-8 1/Pa, Roelands and Dowson–Higginson,
 // u_m = 0.5 m/s) at W newtons on N × N nodes; counters: Newton iterations, continuation steps and
-// the unknowns. Each Newton step factorises the dense Jacobian of (N − 2)² + 1 unknowns by LAPACK
-// (numerics/dense_solve.h): O(N⁶) a step.
+// the unknowns. The solver as `automatic` picks it: every row here by Newton–Krylov (above 21²),
+// each grid started from the solve on one half as fine.
 void BM_EhlPoint(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   const double load_N = static_cast<double>(state.range(1));
@@ -189,11 +189,10 @@ void BM_EhlPoint(benchmark::State& state) {
   if (!r.converged) state.SkipWithError(r.message.c_str());
   state.counters["newton_iterations"] = r.iterations;
   state.counters["continuation_steps"] = r.continuation_steps;
-  state.counters["krylov_iterations"] = r.krylov_iterations;  // 0: the dense LU (automatic up to 41²)
+  state.counters["krylov_iterations"] = r.krylov_iterations;  // 0: the dense LU (automatic up to 21²)
   state.counters["unknowns"] = (n - 2) * (n - 2) + 1;
 }
-// Up to 41² the dense LU; above, Newton–Krylov (its time includes the coarser grids' solves
-// that start it).
+// Times include the coarser grids' solves that start each grid.
 BENCHMARK(BM_EhlPoint)->Args({31, 10})->Args({41, 10})->Args({51, 10})->Args({61, 10})->Args({41, 20})->Args({61, 20})
     ->Args({65, 10})->Args({129, 10})->Args({257, 10})->Args({129, 20})->Args({257, 20})->Args({513, 10})
     ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();

@@ -1,5 +1,5 @@
 // The EHL point contact's film (lubrication/ehl_point.h) against Hamrock & Dowson's fits, and its
-// grid convergence on 25²–41² and on 33², 65², 129² by Newton–Krylov (≈ 5 s in all in
+// grid convergence on 25²–41² and on 33², 65², 129² (Newton–Krylov above 21²; ≈ 5 s in all in
 // Release).
 #include <gtest/gtest.h>
 
