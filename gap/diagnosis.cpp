@@ -96,7 +96,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   rebase(p, cal, baseline, singles, comparisons);
   d.stage_times.recalibration_s = lap();
   singles = nest(p, baseline, refine_leaders(p, baseline, std::move(singles), comparisons), comparisons);
-  Paired paired = pair(p, baseline, std::move(singles), comparisons);
+  Paired paired = pair(p, baseline, std::move(singles), comparisons, d.verdict.noise_floor);
   d.candidates = std::move(paired.candidates);
   comparisons = paired.comparisons;
   d.stage_times.refinement_s = lap();

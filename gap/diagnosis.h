@@ -32,8 +32,8 @@
 //     candidate earns its parameters when its held-out log predictive density beats the
 //     calibrated baseline's decisively — by more than 3 nats (a likelihood ratio of 20), and by two
 //     standard errors of the difference or, where the evidence rests on a few items, with the
-//     held-out gap halved. If the best single closes less than `pair_threshold` of the gap, the
-//     two best singles are fitted together.
+//     held-out gap halved. If the best single closes less than `pair_threshold` of the gap and
+//     leaves more than `unexplained_floors` noise floors, the two best singles are fitted together.
 //     A nested pair is judged with each at its best: when thermal thinning (which is viscous
 //     friction as U_T → ∞) fits train better, viscous friction is refined again from its projection.
 //  4. Verdict: the simplest earning candidate, unless one with more parameters has decisive

@@ -214,12 +214,14 @@ std::vector<Candidate> nest(const FitProblem& p, const Baseline& b, std::vector<
   return singles;
 }
 
-Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons) {
+Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons, double noise_floor) {
   Paired out{std::move(singles), comparisons};
   if (out.candidates.size() < 2) return out;
   const Candidate& best = out.candidates.front();
   const double closed = best.heldout_gap_before > 0.0 ? 1.0 - best.heldout_gap_after / best.heldout_gap_before : 1.0;
   if (!(closed < p.options.pair_threshold && b.heldout.gap > 0.0)) return out;
+  // Without a noise estimate (floor 0) every gap is above the floor, as in decide().
+  if (!(best.heldout_gap_after > p.options.unexplained_floors * noise_floor)) return out;
   // Against the singles it must have decisive evidence over the simpler one (verdict_index()).
   out.comparisons = static_cast<int>(out.candidates.size()) + 1;
   for (Candidate& c : out.candidates) judge(p, b, out.comparisons, c);

@@ -239,9 +239,24 @@ TEST_F(ViscousPipeline, NoPairIsTriedWhenTheBestSingleClosesMostOfTheGap) {
   ASSERT_LT(viscous_->heldout_gap_after, 0.5 * viscous_->heldout_gap_before);
   Candidate other = *viscous_;
   other.effects = {"thermal_thinning"};
-  const Paired out = pair(*problem_, *baseline_, {*viscous_, other}, 2);
+  const Paired out = pair(*problem_, *baseline_, {*viscous_, other}, 2, 0.0);
   EXPECT_EQ(out.candidates.size(), 2u);
   EXPECT_EQ(out.comparisons, 2);
+}
+
+// No pair either when no single closes anything but the gap lies within unexplained_floors (5)
+// noise floors: here 4 floors. A pair would compete only with `none` on a gap the noise nearly
+// covers; the candidates come back as they were, among as many comparisons.
+TEST_F(ViscousPipeline, NoPairIsTriedWhenTheGapLiesWithinTheUnexplainedFloors) {
+  Candidate flat = *viscous_, other = *viscous_;
+  flat.heldout_gap_after = flat.heldout_gap_before;  // closes nothing
+  other.effects = {"thermal_thinning"};
+  other.heldout_gap_after = other.heldout_gap_before;
+  ASSERT_GT(baseline_->heldout.gap, 0.0);
+  const Paired out = pair(*problem_, *baseline_, {flat, other}, 2, flat.heldout_gap_before / 4.0);
+  EXPECT_EQ(out.candidates.size(), 2u);
+  EXPECT_EQ(out.comparisons, 2);
+  EXPECT_EQ(problem_->options.unexplained_floors, 5.0);  // the 4 floors above lie below it
 }
 
 // A qualitative miss outranks any cost (fit.h better_fit): from a leader that slides steadily
