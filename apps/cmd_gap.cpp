@@ -240,7 +240,8 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
           {"confidence", gap::finite_or_null(row.confidence)},
           {"confidence_fixed_fits", gap::finite_or_null(row.confidence_fixed_fits)},
           {"test_gap_before", gap::finite_or_null(row.test_gap_before)}, {"test_gap_after", gap::finite_or_null(row.test_gap_after)},
-          {"correct", row.correct},           {"wall_s", row.wall_s}};
+          {"correct", row.correct},           {"wall_s", row.wall_s},
+          {"stage_wall_s", gap::stage_times_json(row.stage_times)}};
   nlohmann::json candidates = nlohmann::json::array();
   for (const gap::CandidateFigures& c : row.candidates)
     candidates.push_back({{"effect", c.effect}, {"evidence_nats", gap::finite_or_null(c.evidence_nats)},

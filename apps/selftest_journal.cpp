@@ -42,6 +42,10 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.test_gap_after = number(j, "test_gap_after");
       r.confidence_fixed_fits = number(j, "confidence_fixed_fits");
       r.noise_floor = number(j, "noise_floor");
+      if (const auto t = j.find("stage_wall_s"); t != j.end() && t->is_object()) {
+        const auto s = [&](const char* key) { return t->contains(key) && t->at(key).is_number() ? t->at(key).get<double>() : 0.0; };
+        r.stage_times = {s("calibration"), s("candidates"), s("recalibration"), s("refinement"), s("confidence")};
+      }
       r.correct = r.verdict == r.c.true_effect;
       r.git_commit = j.value("git_commit", std::string());
       r.indistinguishable_from = j.value("indistinguishable_from", std::vector<std::string>{});

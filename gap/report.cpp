@@ -83,6 +83,14 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
   return buf;
 }
 
+nlohmann::json stage_times_json(const StageTimes& t) {
+  return {{"calibration", t.calibration_s},
+          {"candidates", t.candidates_s},
+          {"recalibration", t.recalibration_s},
+          {"refinement", t.refinement_s},
+          {"confidence", t.confidence_s}};
+}
+
 nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
 
 nlohmann::json report_json(const Diagnosis& d) {
@@ -101,11 +109,7 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"]["calibrated"] = d.calibrated_params;
   j["baseline"]["rig_relative_uncertainty"] = d.rig_relative_uncertainty;  // refined within ± u of the bundle's value
   j["baseline"]["fit"] = fit_json(d.calibration_fit);
-  j["stage_wall_s"] = {{"calibration", d.stage_times.calibration_s},
-                       {"candidates", d.stage_times.candidates_s},
-                       {"recalibration", d.stage_times.recalibration_s},
-                       {"refinement", d.stage_times.refinement_s},
-                       {"confidence", d.stage_times.confidence_s}};
+  j["stage_wall_s"] = stage_times_json(d.stage_times);
   j["baseline"]["calibration"] = {{"starts", d.calibration.starts},
                                   {"train_gap", d.calibration.train_gap},
                                   {"train_noise_floor", d.calibration.train_noise_floor},

@@ -232,6 +232,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   const Diagnosis d = diagnose(c.bundle, rig, c.model, diagnosis);
   SelftestRow row;
   row.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  row.stage_times = d.stage_times;
   row.c = sc;
   row.form = c.form;
   row.verdict = verdict_name(d.verdict);

@@ -97,6 +97,7 @@ struct SelftestRow {
   double test_gap_before = std::numeric_limits<double>::quiet_NaN(), test_gap_after = std::numeric_limits<double>::quiet_NaN();
   bool correct = false;
   double wall_s = 0.0;  // the diagnosis' wall time (the speed target is per bundle); 0: not recorded
+  StageTimes stage_times;  // where that time went (Diagnosis::stage_times); zeros: not recorded
   std::vector<CandidateFigures> candidates;  // in the diagnosis' ranking; empty in journals from before
   std::vector<std::string> indistinguishable_from;  // earning candidates the held-out data do not tell from the verdict
   std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
