@@ -6,6 +6,7 @@
 #include "gap/calibration.h"
 #include "gap/parallel.h"
 #include "gap/pipeline.h"
+#include "gap/verdict.h"
 
 namespace tribo::gap {
 namespace {
@@ -220,8 +221,8 @@ Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singl
   const Candidate& best = out.candidates.front();
   const double closed = best.heldout_gap_before > 0.0 ? 1.0 - best.heldout_gap_after / best.heldout_gap_before : 1.0;
   if (!(closed < p.options.pair_threshold && b.heldout.gap > 0.0)) return out;
-  // Without a noise estimate (floor 0) every gap is above the floor, as in decide().
-  if (!(best.heldout_gap_after > p.options.unexplained_floors * noise_floor)) return out;
+  // Without a noise estimate (floor 0) every gap passes, so the pair is tried as it was before the gate.
+  if (!beyond_noise(best.heldout_gap_after, noise_floor, p.options)) return out;
   // Against the singles it must have decisive evidence over the simpler one (verdict_index()).
   out.comparisons = static_cast<int>(out.candidates.size()) + 1;
   for (Candidate& c : out.candidates) judge(p, b, out.comparisons, c);

@@ -198,7 +198,7 @@ Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& s
   const int k = verdict_index(cs, st, m);
   if (!(floor > 0.0)) return {k, false};
   const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
-  const auto real = [&](double g) { return g > o.unexplained_floors * floor; };
+  const auto real = [&](double g) { return beyond_noise(g, floor, o); };
   if (k >= 0 && (!real(st[static_cast<std::size_t>(k)].heldout_gap) ||
                  excess(st[static_cast<std::size_t>(k)].heldout_gap) <= 0.5 * excess(gap_before)))
     return {k, false};

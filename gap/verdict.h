@@ -113,6 +113,11 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
 // mechanisms at 38 ± 15 and 40 ± 5 nats) reads as one and a reader knows what test would decide.
 std::vector<int> indistinguishable(const std::vector<Standing>& st, int chosen, const Multiplicity& m);
 
+// A held-out gap the data's noise cannot account for: above unexplained_floors noise floors. The
+// verdict calls such a gap `unexplained` when no earning candidate halves it (decide), and only
+// such a gap is worth a pair (pipeline.h pair).
+inline bool beyond_noise(double gap, double noise_floor, const DiagnosisOptions& o) { return gap > o.unexplained_floors * noise_floor; }
+
 // The verdict rule with the open world: `index` ≥ 0 names a candidate; else `unexplained` when
 // the held-out gap lies above unexplained_floors noise floors and no earning candidate halves its
 // excess over the floor, else "none". Without a floor nothing is called unexplained.
