@@ -238,9 +238,15 @@ Extremum locate_extremum(const SmoothedSignal& S, double ta, double tb, bool max
 // Friction maxima and minima of a constant-speed run, with hysteresis at 30 % / 70 % of the range,
 // on μ smoothed and read every `spacing_s` (the measured record's median spacing, on both sides).
 // `slip_step_s` ≤ 0 asks for the measured Δ (returned through it). The window starts at
-// `window_start_s`, by default after the start-up part of what `s` holds.
+// `window_start_s`, by default after the start-up part of what `s` holds. Whether the run
+// oscillates at all is read off the slider's displacement where the record has one (`x_regime`,
+// rig::classify_regime of it: anything but steady sliding), else off μ's span (more than 5 % of
+// its mean). The span is a cliff that sensor noise decides near it — a weak stick-slip whose μ
+// spans 3.9 % read as oscillating on the noisy record and as steady on its noise-free prediction
+// (validation seed 14011's test block, docs/gap.md) — while the displacement's regime is read alike
+// on both sides (RunPlan::regime_from_x) and its noise floor is the record's.
 Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_step_s, std::string* regime,
-                                double window_start_s = kNaN) {
+                                double window_start_s = kNaN, const std::string* x_regime = nullptr) {
   Features f;
   const double t0 = std::isfinite(window_start_s) ? window_start_s : rig::analysis_start_s(s.t.front(), s.t.back());
   std::vector<std::size_t> idx;
@@ -279,7 +285,8 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
   };
   if (!s.x.empty()) f["peak_to_peak_m"] = x_range(tw.front(), tw.back());
   const double range = hi_v - lo_v;
-  if (!(range > 0.05 * std::abs(f["mean_mu"]))) {
+  const bool oscillates = x_regime ? *x_regime != "steady_sliding" : range > 0.05 * std::abs(f["mean_mu"]);
+  if (!oscillates || !(range > 0.0)) {
     if (regime) *regime = "steady_sliding";
     return f;
   }
@@ -388,7 +395,7 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
 // The noise of a constant-speed run's features: its analysis window cut into kNoiseBlocks
 // contiguous blocks, each analysed as a run of its own (same sampling, same slip-drop Δ); the
 // blocks' scatter / √blocks is the standard error of the whole window's feature.
-Features block_noise(const Signal& s, double spacing_s, double slip_step_s) {
+Features block_noise(const Signal& s, double spacing_s, double slip_step_s, const std::string* x_regime) {
   const double t0 = rig::analysis_start_s(s.t.front(), s.t.back());
   const double block = (s.t.back() - t0) / kNoiseBlocks;
   // The analysis skips the start-up window of what it is given: each block's signal starts that
@@ -406,7 +413,7 @@ Features block_noise(const Signal& s, double spacing_s, double slip_step_s) {
     }
     if (part.t.size() < 3) continue;
     double step = slip_step_s;
-    for (const auto& [key, value] : analyse_constant_speed(part, spacing_s, step, nullptr))
+    for (const auto& [key, value] : analyse_constant_speed(part, spacing_s, step, nullptr, kNaN, x_regime))
       if (std::isfinite(value)) values[key].push_back(value);
   }
   Features out;
@@ -859,7 +866,11 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
             if (trace) s = sampled_as_recorded(s, slipping, plan);
           }
           double step = plan.slip_step_s;
-          f = analyse_constant_speed(read, plan.sample_spacing_s, step, nullptr, rig::analysis_start_s(0.0, std::min(t_read, plan.duration_s)));
+          const double from = rig::analysis_start_s(0.0, std::min(t_read, plan.duration_s));
+          std::string x_regime;
+          if (plan.regime_from_x)
+            x_regime = rig::classify_regime(rig, rig::recorded_regime_evidence(rig, read.t, read.x, plan.v_m_per_s, from));
+          f = analyse_constant_speed(read, plan.sample_spacing_s, step, nullptr, from, plan.regime_from_x ? &x_regime : nullptr);
         }
         if (trace) {  // over the record's span (a slow run is simulated past it, RunPlan::simulated_extra_s)
           SimulatedRun run{plan.label, {}, {}, {}};
@@ -1077,18 +1088,22 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       if (!(run.v_m_per_s > 0.0)) throw std::invalid_argument("run " + run.run_id + ": constant-speed trace needs v_m_per_s > 0");
       std::string regime;
       double step = 0.0;
-      const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime);
       // With the slider's displacement recorded, its regime is read as the rig reads a simulated
-      // run's (rig::classify_regime), quasi-harmonic oscillation included. μ alone cannot give
-      // that evidence: friction does not say whether the slider moves with the disc, so a μ
-      // oscillation with sticks and one in continuous slip look alike, and the friction extrema
-      // above can only say stick-slip (it oscillates) or steady sliding (it does not).
-      if (!s.x.empty())
-        regime = rig::classify_regime(
+      // run's (rig::classify_regime), quasi-harmonic oscillation included, and it decides whether
+      // the friction extrema are read at all. μ alone cannot give that evidence: friction does not
+      // say whether the slider moves with the disc, so a μ oscillation with sticks and one in
+      // continuous slip look alike, and the friction extrema can only say stick-slip (it
+      // oscillates) or steady sliding (it does not).
+      std::string x_regime;
+      plan.regime_from_x = !s.x.empty();
+      if (plan.regime_from_x)
+        x_regime = rig::classify_regime(
             rig, rig::recorded_regime_evidence(rig, s.t, s.x, run.v_m_per_s, rig::analysis_start_s(s.t.front(), s.t.back())));
+      const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime, kNaN, plan.regime_from_x ? &x_regime : nullptr);
+      if (plan.regime_from_x) regime = x_regime;
       plan.slip_step_s = step;
       plan.simulated_extra_s = simulated_extra_s(f, step, plan.duration_s);
-      const Features noise = block_noise(s, plan.sample_spacing_s, step);
+      const Features noise = block_noise(s, plan.sample_spacing_s, step, plan.regime_from_x ? &x_regime : nullptr);
       plans_.push_back(plan);
       const std::string where = "v = " + numerics::fmt(run.v_m_per_s, "%.3g") + " m/s";
       const int unit = new_unit(UnitKey::at_speed(run.v_m_per_s));

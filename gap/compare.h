@@ -92,6 +92,10 @@ struct RunPlan {
   // simulation is read the same way (compare.cpp, sampled_as_recorded).
   double stick_spacing_s = 0.0, slip_spacing_s = 0.0;
   double slip_step_s = 0.0;                               // Δ of slip_drop (from the measured run)
+  // The record has the slider's displacement: whether a constant-speed run oscillates is read off
+  // it (rig::classify_regime), for the record and for its simulation alike (compare.cpp
+  // analyse_constant_speed); else off μ's span.
+  bool regime_from_x = false;
   // A constant-speed run is simulated this much past the measured record, its window starting
   // where the measured one does, so that it holds at least four of the measured cycles: a feature
   // the measured window shows in one or two cycles (a slow run's period) would otherwise be there

@@ -126,7 +126,7 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
   const std::size_t n = std::min(t.size(), x.size());
   if (n < 3 || !(v_drive != 0.0)) return e;
   const double V = std::abs(v_drive);
-  const double half_span_s = std::numbers::pi / (20.0 * rig.damped_frequency_rad_per_s());  // T_d / 40
+  const double period_d = 2.0 * std::numbers::pi / rig.damped_frequency_rad_per_s();
   const double t_mid = window_start_s + 0.5 * (t[n - 1] - window_start_s);
   auto peak_to_peak_between = [&](double t0, double t1) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -152,16 +152,47 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
   }
   e.amplitude_floor_m = std::max(1e-6 * rig.normal_load_N / rig.stiffness_N_per_m, 12.0 * sigma);
 
+  // The half span h of the slope: T_d/40, widened until the slope's noise is at most
+  // kLeaveStick/5 of the drive speed — a stuck slider then leaves the stick band by noise alone
+  // less than once in a million samples — but not beyond T_d/8, a quarter of a slip. The least-
+  // squares slope of N samples spaced Δt has the standard error σ √(12 / (N (N² − 1))) / Δt.
+  double spacing = 0.0;
+  {
+    std::vector<double> dt;
+    for (std::size_t i = 1; i < n; ++i)
+      if (t[i] >= window_start_s && t[i] > t[i - 1]) dt.push_back(t[i] - t[i - 1]);
+    if (!dt.empty()) {
+      auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
+      std::nth_element(dt.begin(), mid, dt.end());
+      spacing = *mid;
+    }
+  }
+  double half_span_s = period_d / 40.0;
+  if (sigma > 0.0 && spacing > 0.0) {
+    const double slope_sd_max = kLeaveStick / 5.0 * V;
+    for (double h = half_span_s; h <= period_d / 8.0; h += spacing) {
+      half_span_s = h;
+      const double N = 2.0 * std::floor(h / spacing) + 1.0;
+      if (sigma * std::sqrt(12.0 / (N * (N * N - 1.0))) / spacing <= slope_sd_max) break;
+    }
+  }
+
   enum class State { unknown, stuck, forward, backward } state = State::unknown;
   double slip_start = t[0];
   std::size_t j0 = 0, j1 = 0;
   for (std::size_t i = 0; i < n; ++i) {
-    // ẋ over [t − h, t + h], at least one sample either side.
-    while (j0 + 1 < i && t[j0 + 1] <= t[i] - half_span_s) ++j0;
+    // ẋ over [t − h, t + h], at least one sample either side: the least-squares slope.
+    while (j0 < i && t[j0] < t[i] - half_span_s) ++j0;
+    if (j0 == i && i > 0) j0 = i - 1;
     j1 = std::max(j1, std::min(i + 1, n - 1));
     while (j1 + 1 < n && t[j1 + 1] <= t[i] + half_span_s) ++j1;
     if (i == 0 || i + 1 == n) continue;
-    const double u = v_drive - (x[j1] - x[j0]) / (t[j1] - t[j0]);
+    double tm = 0.0, xm = 0.0;
+    for (std::size_t j = j0; j <= j1; ++j) tm += t[j], xm += x[j];
+    tm /= static_cast<double>(j1 - j0 + 1), xm /= static_cast<double>(j1 - j0 + 1);
+    double stt = 0.0, stx = 0.0;
+    for (std::size_t j = j0; j <= j1; ++j) stt += (t[j] - tm) * (t[j] - tm), stx += (t[j] - tm) * (x[j] - xm);
+    const double u = v_drive - stx / stt;
     const bool in_window = t[i] >= window_start_s;
     State next = state;
     if (std::abs(u) < kEnterStick * V) {

@@ -71,9 +71,11 @@ std::string classify_regime(const RigParameters& rig, const RegimeEvidence& evid
 
 // Regime evidence of a recorded slider displacement x (m) at times t (s, increasing, any spacing)
 // driven at the constant speed v_drive_m_per_s, from window_start_s on. The sliding speed
-// u = v_drive − ẋ (ẋ equals the drive speed while stuck) takes ẋ as the chord over ±T_d/40 of
-// `rig`'s damped period (at least one sample each side): short against a slip (≈ T_d/2), long
-// enough to average sensor noise. The slider counts as stuck when |u| falls below 5 % of the drive
+// u = v_drive − ẋ (ẋ equals the drive speed while stuck) takes ẋ as the least-squares slope over
+// ±h (at least one sample each side): h = T_d/40 of `rig`'s damped period, short against a slip
+// (≈ T_d/2), widened up to T_d/8 until the slope's noise (from σ below) is at most 4 % of the drive
+// speed — a slow run's sensor noise over ±T_d/40 can exceed the stick band itself and read a
+// stick-slip as reversals without a stick. The slider counts as stuck when |u| falls below 5 % of the drive
 // speed and as slipping again when it exceeds 20 % — the hysteresis keeps noise near either
 // threshold from adding events. A reversal is a slip whose u changes sign beyond ±20 %.
 // The amplitude floor is 12 σ of the noise on x (σ from the median deviation of each sample from

@@ -81,6 +81,31 @@ TEST(RecordedRegime, SawtoothIsStickSlipAndLongSlipsAreMultiCycle) {
   EXPECT_EQ(regime_of(rig, sample(sawtooth(0.3, 0.2), 10.0, 1e-3)), "multi_cycle_slip");
 }
 
+// The same sawtooth recorded with white noise on x whose speed error over the ±T_d/40 chord of one
+// sample each side at 1 kHz is 35 % of the drive speed (σ = 0.35 V Δt √2 = 0.49 µm at 1 mm/s; the
+// independent generator's slowest run of seed 301 records as much): the chord would flicker
+// across the ±20 % stick band and read reversals, with no stick at all. The least-squares slope
+// over the span the noise needs (here ±6 ms ≈ T_d/10) reads the ten cycles as recorded; the slip
+// reads longer by up to the span at each end.
+TEST(RecordedRegime, NoisySlowSawtoothIsStickSlipWithOneBreakawayPerCycle) {
+  RigParameters rig;
+  const double stick_s = 0.3, slip_s = 0.02, rise = kV * stick_s, period = stick_s + slip_s;
+  std::mt19937_64 gen(7);
+  std::normal_distribution<double> noise(0.0, 0.35 * kV * 1e-3 * std::sqrt(2.0));
+  const Trace tr = sample(
+      [&](double t) {
+        const double p = std::fmod(t, period);
+        return (p < stick_s ? kV * p : rise * (1.0 - (p - stick_s) / slip_s)) + noise(gen);
+      },
+      6.4, 1e-3);
+  const RegimeEvidence e = recorded_regime_evidence(rig, tr.t, tr.x, kV, 3.2);
+  EXPECT_NEAR(e.breakaways, 10, 1);
+  EXPECT_NEAR(e.reattachments, 10, 1);
+  EXPECT_EQ(e.reversals, 0);
+  EXPECT_NEAR(e.longest_slip_s, 0.02, 0.013);  // ± the ±6 ms span at each end and a sample
+  EXPECT_EQ(classify_regime(rig, e), "stick_slip");
+}
+
 // Held still while the drive moves (u = V): slipping, not stuck. Moving with the drive throughout
 // (ẋ = V, u = 0): stuck, no events.
 TEST(RecordedRegime, MovingWithTheDriveIsStuck) {
