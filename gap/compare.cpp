@@ -1099,11 +1099,12 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
       if (plan.regime_from_x)
         x_regime = rig::classify_regime(
             rig, rig::recorded_regime_evidence(rig, s.t, s.x, run.v_m_per_s, rig::analysis_start_s(s.t.front(), s.t.back())));
-      const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime, kNaN, plan.regime_from_x ? &x_regime : nullptr);
+      const std::string* oscillation_from = plan.regime_from_x ? &x_regime : nullptr;
+      const Features f = analyse_constant_speed(s, plan.sample_spacing_s, step, &regime, kNaN, oscillation_from);
       if (plan.regime_from_x) regime = x_regime;
       plan.slip_step_s = step;
       plan.simulated_extra_s = simulated_extra_s(f, step, plan.duration_s);
-      const Features noise = block_noise(s, plan.sample_spacing_s, step, plan.regime_from_x ? &x_regime : nullptr);
+      const Features noise = block_noise(s, plan.sample_spacing_s, step, oscillation_from);
       plans_.push_back(plan);
       const std::string where = "v = " + numerics::fmt(run.v_m_per_s, "%.3g") + " m/s";
       const int unit = new_unit(UnitKey::at_speed(run.v_m_per_s));

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 namespace tribo::rig {
 namespace {
@@ -14,6 +15,14 @@ double mean(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x;
   return s / static_cast<double>(v.size());
+}
+
+// The median (upper of the two middle values), 0 for an empty vector.
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  return *mid;
 }
 
 // Peak-to-peak of x over samples with t in [t0, t1).
@@ -144,29 +153,17 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
     const double w = (t[i + 1] - t[i]) / (t[i + 1] - t[i - 1]);
     deviation.push_back(std::abs(x[i] - (w * x[i - 1] + (1.0 - w) * x[i + 1])));
   }
-  double sigma = 0.0;
-  if (!deviation.empty()) {
-    auto mid = deviation.begin() + static_cast<std::ptrdiff_t>(deviation.size() / 2);
-    std::nth_element(deviation.begin(), mid, deviation.end());
-    sigma = *mid / (0.6745 * std::sqrt(1.5));
-  }
+  const double sigma = median(std::move(deviation)) / (0.6745 * std::sqrt(1.5));
   e.amplitude_floor_m = std::max(1e-6 * rig.normal_load_N / rig.stiffness_N_per_m, 12.0 * sigma);
 
   // The half span h of the slope: T_d/40, widened until the slope's noise is at most
   // kLeaveStick/5 of the drive speed — a stuck slider then leaves the stick band by noise alone
   // less than once in a million samples — but not beyond T_d/8, a quarter of a slip. The least-
   // squares slope of N samples spaced Δt has the standard error σ √(12 / (N (N² − 1))) / Δt.
-  double spacing = 0.0;
-  {
-    std::vector<double> dt;
-    for (std::size_t i = 1; i < n; ++i)
-      if (t[i] >= window_start_s && t[i] > t[i - 1]) dt.push_back(t[i] - t[i - 1]);
-    if (!dt.empty()) {
-      auto mid = dt.begin() + static_cast<std::ptrdiff_t>(dt.size() / 2);
-      std::nth_element(dt.begin(), mid, dt.end());
-      spacing = *mid;
-    }
-  }
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < n; ++i)
+    if (t[i] >= window_start_s && t[i] > t[i - 1]) steps.push_back(t[i] - t[i - 1]);
+  const double spacing = median(std::move(steps));
   double half_span_s = period_d / 40.0;
   if (sigma > 0.0 && spacing > 0.0) {
     const double slope_sd_max = kLeaveStick / 5.0 * V;

@@ -61,15 +61,15 @@ TEST(RecordedRegime, PersistentOscillationWithoutStickIsQuasiHarmonic) {
 // A hand-built sawtooth: 0.3 s stuck (x rises with the drive, ẋ = V), then a 0.02 s slip back at
 // 16 V. Every cycle is one breakaway and one re-attachment, the slip far shorter than the rig's
 // damped period (0.062 s): stick-slip; a 0.2 s slip lasts over 1.5 periods: multi-cycle slip.
+// x of a sawtooth: `stick_s` moving with the drive (ẋ = V), then a linear slip back to 0 in `slip_s`.
+double sawtooth_x(double t, double stick_s, double slip_s) {
+  const double p = std::fmod(t, stick_s + slip_s);
+  return p < stick_s ? kV * p : kV * stick_s * (1.0 - (p - stick_s) / slip_s);
+}
+
 TEST(RecordedRegime, SawtoothIsStickSlipAndLongSlipsAreMultiCycle) {
   RigParameters rig;
-  auto sawtooth = [](double stick_s, double slip_s) {
-    const double rise = kV * stick_s, period = stick_s + slip_s;
-    return [=](double t) {
-      const double p = std::fmod(t, period);
-      return p < stick_s ? kV * p : rise * (1.0 - (p - stick_s) / slip_s);
-    };
-  };
+  auto sawtooth = [](double stick_s, double slip_s) { return [=](double t) { return sawtooth_x(t, stick_s, slip_s); }; };
   const Trace tr = sample(sawtooth(0.3, 0.02), 6.4, 1e-3);
   const RegimeEvidence e = recorded_regime_evidence(rig, tr.t, tr.x, kV, 3.2);
   // 3.2 s of window at 0.32 s per cycle: 10 cycles (± one cut by the window's edges).
@@ -89,15 +89,9 @@ TEST(RecordedRegime, SawtoothIsStickSlipAndLongSlipsAreMultiCycle) {
 // reads longer by up to the span at each end.
 TEST(RecordedRegime, NoisySlowSawtoothIsStickSlipWithOneBreakawayPerCycle) {
   RigParameters rig;
-  const double stick_s = 0.3, slip_s = 0.02, rise = kV * stick_s, period = stick_s + slip_s;
   std::mt19937_64 gen(7);
   std::normal_distribution<double> noise(0.0, 0.35 * kV * 1e-3 * std::sqrt(2.0));
-  const Trace tr = sample(
-      [&](double t) {
-        const double p = std::fmod(t, period);
-        return (p < stick_s ? kV * p : rise * (1.0 - (p - stick_s) / slip_s)) + noise(gen);
-      },
-      6.4, 1e-3);
+  const Trace tr = sample([&](double t) { return sawtooth_x(t, 0.3, 0.02) + noise(gen); }, 6.4, 1e-3);
   const RegimeEvidence e = recorded_regime_evidence(rig, tr.t, tr.x, kV, 3.2);
   EXPECT_NEAR(e.breakaways, 10, 1);
   EXPECT_NEAR(e.reattachments, 10, 1);
