@@ -153,7 +153,22 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
     const double w = (t[i + 1] - t[i]) / (t[i + 1] - t[i - 1]);
     deviation.push_back(std::abs(x[i] - (w * x[i - 1] + (1.0 - w) * x[i + 1])));
   }
-  const double sigma = median(std::move(deviation)) / (0.6745 * std::sqrt(1.5));
+  double sigma = median(deviation) / (0.6745 * std::sqrt(1.5));
+  // A record quantised more coarsely than its noise (an encoder, a fixed-point logger) lies on the
+  // chord at most samples, so the median sees no noise, yet its rounding still flickers a short
+  // chord. Quantised: every step between samples is a whole multiple of the smallest nonzero one,
+  // q (to 1 % of q, for decimals written to a file); a smooth record's steps are not. The rounding
+  // is then the deviations up to q, whose rms over all samples is σ √1.5 as above; the corners of
+  // the motion deviate by more and are left out.
+  std::vector<double> moves;
+  for (std::size_t i = 1; i < n; ++i)
+    if (t[i] >= window_start_s && x[i] != x[i - 1]) moves.push_back(std::abs(x[i] - x[i - 1]));
+  const double q = moves.empty() ? 0.0 : *std::min_element(moves.begin(), moves.end());
+  if (q > 0.0 && std::all_of(moves.begin(), moves.end(), [q](double d) { return std::abs(d / q - std::round(d / q)) <= 0.01; })) {
+    double rounding_sq = 0.0;
+    for (const double d : deviation) rounding_sq += d <= q ? d * d : 0.0;
+    sigma = std::max(sigma, std::sqrt(rounding_sq / static_cast<double>(deviation.size()) / 1.5));
+  }
   e.amplitude_floor_m = std::max(1e-6 * rig.normal_load_N / rig.stiffness_N_per_m, 12.0 * sigma);
 
   // The half span h of the slope: T_d/40, widened until the slope's noise is at most
