@@ -329,6 +329,8 @@ void run_selftest(const SelftestArgs& args) {
                             {"effect_cases", sum.effect_cases}, {"controls", sum.controls},
                             {"visible_effect_cases", sum.visible_effect_cases},
                             {"visible_identified_fraction", gap::finite_or_null(sum.visible_identified_fraction)},
+                            {"named_or_indistinguishable_fraction", gap::finite_or_null(sum.named_or_indistinguishable_fraction)},
+                            {"mean_names_per_verdict", gap::finite_or_null(sum.mean_names_per_verdict)},
                             {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
                             {"confusion", sum.confusion}};
   j["reliability"] = nlohmann::json::array();
@@ -354,6 +356,9 @@ void run_selftest(const SelftestArgs& args) {
     if (sum.visible_effect_cases)
       std::printf("  of the %d effects visible in their data (baseline held-out gap >= %g noise floors): identified %.0f %%\n",
                   sum.visible_effect_cases, gap::kVisibleSignalFloors, 100.0 * sum.visible_identified_fraction);
+    if (sum.effect_cases)
+      std::printf("  the verdict or a candidate the held-out data cannot tell from it: %.0f %% (%.1f names a verdict on average)\n",
+                  100.0 * sum.named_or_indistinguishable_fraction, sum.mean_names_per_verdict);
     for (const auto& [e, s] : sum.mean_shrink) {
       std::printf("  mean gap shrink, %s: held-out %.0f %%", e.c_str(), 100.0 * s);
       if (const auto t = sum.mean_test_shrink.find(e); t != sum.mean_test_shrink.end()) std::printf(", test block %.0f %%", 100.0 * t->second);

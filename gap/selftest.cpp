@@ -257,7 +257,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
 
 SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
   SelftestSummary out;
-  int effect_right = 0, controls_none = 0, visible_right = 0;
+  int effect_right = 0, controls_none = 0, visible_right = 0, among_named = 0, names = 0;
   std::map<std::string, std::pair<double, int>> shrink, test_shrink;
   for (const SelftestRow& row : rows) {
     ++out.confusion[row.c.true_effect][row.verdict];
@@ -265,6 +265,9 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
       ++out.controls, controls_none += row.correct;
     } else {
       ++out.effect_cases, effect_right += row.correct;
+      const std::vector<std::string>& others = row.indistinguishable_from;
+      among_named += row.correct || std::find(others.begin(), others.end(), row.c.true_effect) != others.end();
+      names += 1 + static_cast<int>(others.size());
       if (row.signal_floors() >= kVisibleSignalFloors) ++out.visible_effect_cases, visible_right += row.correct;
       // Journals from before the test block carry NaN there: such a row counts for the held-out shrink only.
       auto add = [&](std::map<std::string, std::pair<double, int>>& to, double before, double after) {
@@ -279,6 +282,10 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
   out.identified_fraction = out.effect_cases ? static_cast<double>(effect_right) / out.effect_cases : 1.0;
   out.controls_none_fraction = out.controls ? static_cast<double>(controls_none) / out.controls : 1.0;
   if (out.visible_effect_cases) out.visible_identified_fraction = static_cast<double>(visible_right) / out.visible_effect_cases;
+  if (out.effect_cases) {
+    out.named_or_indistinguishable_fraction = static_cast<double>(among_named) / out.effect_cases;
+    out.mean_names_per_verdict = static_cast<double>(names) / out.effect_cases;
+  }
   for (const auto& [e, sh] : shrink) out.mean_shrink[e] = sh.first / sh.second;
   for (const auto& [e, sh] : test_shrink) out.mean_test_shrink[e] = sh.first / sh.second;
   return out;

@@ -120,6 +120,12 @@ struct SelftestSummary {
   // when none is visible or the rows carry no floor).
   int visible_effect_cases = 0;
   double visible_identified_fraction = std::numeric_limits<double>::quiet_NaN();
+  // Effect cases whose true effect is the verdict or among the earning candidates the held-out data
+  // do not tell from it (SelftestRow::indistinguishable_from), and how many names those verdicts
+  // give on average (1 + the indistinguishable ones): what a reader is told to test next, not the
+  // bar — identified_fraction counts the verdict alone. NaN without effect cases.
+  double named_or_indistinguishable_fraction = std::numeric_limits<double>::quiet_NaN();
+  double mean_names_per_verdict = std::numeric_limits<double>::quiet_NaN();
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink;  // per true effect, of correctly identified cases: 1 − after/before
   std::map<std::string, double> mean_test_shrink;  // the same on the test block (cases that have one)

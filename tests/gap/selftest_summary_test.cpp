@@ -57,6 +57,26 @@ TEST(SelftestSummary, EffectsAreSplitByTheSignalTheirDataHold) {
   EXPECT_TRUE(std::isnan(summarise(rows).visible_identified_fraction));  // none visible: not a score of 0
 }
 
+// Beside the score, not in it: the truth among the verdict and the earning candidates the held-out
+// data cannot tell from it (a hardening named rate-dependent static with hardening beside it), and
+// how many names those verdicts give; controls are not counted.
+TEST(SelftestSummary, TruthBesideTheVerdictIsCountedApartWithTheNamesGiven) {
+  std::vector<SelftestRow> rows{row("strain_rate_hardening", "rate_dependent_static", 0.5, kIndependentGenerator),
+                                row("thermal_thinning", "hydrodynamic_lift", 0.3, kIndependentGenerator),
+                                row("squeeze_film", "strain_rate_hardening", 0.1, kIndependentGenerator),
+                                row("slip_transient", "slip_transient", 0.9, kIndependentGenerator),
+                                row("none", "none", 0.9, kIndependentGenerator)};
+  rows[0].indistinguishable_from = {"strain_rate_hardening"};
+  rows[1].indistinguishable_from = {"squeeze_film", "slip_transient", "thermal_thinning"};
+  rows[2].indistinguishable_from = {"rate_dependent_static"};
+  rows[4].indistinguishable_from = {"squeeze_film"};
+  const SelftestSummary s = summarise(rows);
+  EXPECT_DOUBLE_EQ(s.identified_fraction, 0.25);
+  EXPECT_DOUBLE_EQ(s.named_or_indistinguishable_fraction, 0.75);  // all but the squeeze film
+  EXPECT_DOUBLE_EQ(s.mean_names_per_verdict, (2.0 + 4.0 + 2.0 + 1.0) / 4.0);
+  EXPECT_TRUE(std::isnan(summarise({rows[4]}).named_or_indistinguishable_fraction));  // controls only
+}
+
 TEST(SelftestSummary, ReliabilityBinsCoverZeroToOneInclusive) {
   const std::vector<SelftestRow> rows{row("a", "a", 0.0, kRigGenerator), row("a", "b", 0.5, kRigGenerator), row("a", "a", 0.89, kRigGenerator),
                                       row("a", "a", 0.9, kRigGenerator), row("a", "b", 1.0, kIndependentGenerator)};
