@@ -100,13 +100,14 @@ TEST(RecordedRegime, NoisySlowSawtoothIsStickSlipWithOneBreakawayPerCycle) {
   EXPECT_EQ(classify_regime(rig, e), "stick_slip");
 }
 
-// The same sawtooth recorded by an encoder of step q = 0.87 V Δt (the independent generator's
-// slowest runs: 3.9 µm steps at 4.5 mm/s and 1 kHz). Most chord deviations are then exactly 0, so
-// the median sees no noise, but the rounding flickers the ±1-sample chord by up to q/(2Δt) = 44 %
-// of V, across the ±20 % stick band. The rounding's std q/√12 widens the slope as noise would.
+// The same sawtooth recorded by an encoder of step q = 1.085 V Δt (the independent generator's
+// slowest runs: ±10 mm over 12 bits, 4.9 µm, at 4.5 mm/s and 1 kHz). Most chord deviations are
+// then exactly 0, so the median sees no noise, but the rounding flickers the ±1-sample chord by up
+// to q/(2Δt) = 54 % of V, across the ±20 % stick band. The rounding counted as noise widens the
+// slope as noise would.
 TEST(RecordedRegime, QuantisedSlowSawtoothIsStickSlipWithOneBreakawayPerCycle) {
   RigParameters rig;
-  const double q = 0.87 * kV * 1e-3;
+  const double q = 1.085 * kV * 1e-3;
   const Trace tr = sample([&](double t) { return q * std::round(sawtooth_x(t, 0.3, 0.02) / q); }, 6.4, 1e-3);
   const RegimeEvidence e = recorded_regime_evidence(rig, tr.t, tr.x, kV, 3.2);
   EXPECT_NEAR(e.breakaways, 10, 1);
