@@ -164,7 +164,8 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
   for (std::size_t i = 1; i < n; ++i)
     if (t[i] >= window_start_s && x[i] != x[i - 1]) moves.push_back(std::abs(x[i] - x[i - 1]));
   const double q = moves.empty() ? 0.0 : *std::min_element(moves.begin(), moves.end());
-  if (q > 0.0 && std::all_of(moves.begin(), moves.end(), [q](double d) { return std::abs(d / q - std::round(d / q)) <= 0.01; })) {
+  if (q > 0.0 && !deviation.empty() &&
+      std::all_of(moves.begin(), moves.end(), [q](double d) { return std::abs(d / q - std::round(d / q)) <= 0.01; })) {
     double rounding_sq = 0.0;
     for (const double d : deviation) rounding_sq += d <= q ? d * d : 0.0;
     sigma = std::max(sigma, std::sqrt(rounding_sq / static_cast<double>(deviation.size()) / 1.5));
