@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "numerics/format.h"
+#include "numerics/median.h"
 #include "rig/drive.h"
 #include "rig/instrument.h"
 #include "rig/observables.h"
@@ -160,9 +161,7 @@ double three_sample_mean(const std::vector<double>& y, std::size_t i) { return (
 double high_pass_noise(const std::vector<double>& y) {
   std::vector<double> d;
   for (std::size_t i = 1; i + 1 < y.size(); ++i) d.push_back(std::abs(y[i + 1] - 2.0 * y[i] + y[i - 1]));
-  if (d.empty()) return 0.0;
-  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
-  return d[d.size() / 2] / (0.6745 * std::sqrt(6.0));
+  return d.empty() ? 0.0 : numerics::median(std::move(d)) / (0.6745 * std::sqrt(6.0));
 }
 
 // Time average of y over [t_a, t_b] from the samples inside it.
@@ -453,9 +452,7 @@ DriveSegments drive_segments(const std::vector<double>& t, const std::vector<dou
     if (std::abs(v[i] - v[i - 1]) > threshold) starts.push_back(i);
   starts.push_back(v.size());
   auto median_speed = [&](std::size_t a, std::size_t b) {
-    std::vector<double> part(v.begin() + static_cast<long>(a), v.begin() + static_cast<long>(b));
-    std::nth_element(part.begin(), part.begin() + static_cast<long>(part.size() / 2), part.end());
-    const double m = part[part.size() / 2];
+    const double m = numerics::median({v.begin() + static_cast<long>(a), v.begin() + static_cast<long>(b)});
     return std::abs(m) <= threshold ? 0.0 : m;
   };
   std::vector<std::size_t> kept{0};
@@ -705,8 +702,7 @@ double simulated_extra_s(const Features& measured, double slip_step_s, double du
 double median_spacing(const std::vector<double>& t) {
   std::vector<double> d;
   for (std::size_t i = 1; i < t.size(); ++i) d.push_back(t[i] - t[i - 1]);
-  std::nth_element(d.begin(), d.begin() + static_cast<long>(d.size() / 2), d.end());
-  return d[d.size() / 2];
+  return numerics::median(std::move(d));
 }
 
 // How a constant-speed record was sampled: uniformly, or (a logger that samples on change, an
@@ -1222,10 +1218,7 @@ std::vector<double> Comparison::relative_noise() const {
 double Comparison::median_relative_noise() const {
   std::vector<double> relative = relative_noise();
   std::erase_if(relative, [](double r) { return !(r > 0.0); });
-  if (relative.empty()) return 0.0;
-  const auto middle = relative.begin() + static_cast<long>(relative.size() / 2);
-  std::nth_element(relative.begin(), middle, relative.end());
-  return *middle;
+  return relative.empty() ? 0.0 : numerics::median(std::move(relative));
 }
 
 void Comparison::set_integration_tolerance(double relative_tolerance) {

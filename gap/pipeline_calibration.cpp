@@ -8,6 +8,7 @@
 #include "gap/calibration.h"
 #include "gap/parallel.h"
 #include "gap/pipeline.h"
+#include "numerics/median.h"
 
 namespace tribo::gap {
 namespace {
@@ -37,8 +38,7 @@ DiagnosisOptions calibration_options(const DiagnosisOptions& o) {
 double median_speed(const std::vector<Item>& items) {
   std::vector<double> v;
   for (const Item& it : items) v.push_back(it.v_m_per_s);
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-  return v[v.size() / 2];
+  return numerics::median(std::move(v));
 }
 
 }  // namespace

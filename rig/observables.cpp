@@ -6,6 +6,8 @@
 #include <numbers>
 #include <utility>
 
+#include "numerics/median.h"
+
 namespace tribo::rig {
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -15,14 +17,6 @@ double mean(const std::vector<double>& v) {
   double s = 0.0;
   for (double x : v) s += x;
   return s / static_cast<double>(v.size());
-}
-
-// The median (upper of the two middle values), 0 for an empty vector.
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
 }
 
 // Peak-to-peak of x over samples with t in [t0, t1).
@@ -153,7 +147,7 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
     const double w = (t[i + 1] - t[i]) / (t[i + 1] - t[i - 1]);
     deviation.push_back(std::abs(x[i] - (w * x[i - 1] + (1.0 - w) * x[i + 1])));
   }
-  double sigma = median(deviation) / (0.6745 * std::sqrt(1.5));
+  double sigma = deviation.empty() ? 0.0 : numerics::median(deviation) / (0.6745 * std::sqrt(1.5));
   // A record quantised more coarsely than its noise (an encoder, a fixed-point logger) lies on the
   // chord at most samples, so the median sees no noise, yet its rounding still flickers a short
   // chord. Quantised: every step between samples is a whole multiple of the smallest nonzero one,
@@ -179,7 +173,7 @@ RegimeEvidence recorded_regime_evidence(const RigParameters& rig, const std::vec
   std::vector<double> steps;
   for (std::size_t i = 1; i < n; ++i)
     if (t[i] >= window_start_s && t[i] > t[i - 1]) steps.push_back(t[i] - t[i - 1]);
-  const double spacing = median(std::move(steps));
+  const double spacing = steps.empty() ? 0.0 : numerics::median(std::move(steps));
   double half_span_s = period_d / 40.0;
   if (sigma > 0.0 && spacing > 0.0) {
     const double slope_sd_max = kLeaveStick / 5.0 * V;
