@@ -134,6 +134,17 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     md << " (refitted in every resample: " << refitted << "; with every fit held: " << gap::confidence_text(d.verdict.confidence_fixed_fits) << ")";
   }
   md << ".\n\n";
+  if (!d.proposed_tests.empty()) {
+    md << "## Tests that would decide\n\nThe held-out data do not tell `" << gap::verdict_name(d.verdict) << "` from "
+       << "the candidates below. Each test is simulated with the verdict's model as the record (the rig's simulator, 1 % friction noise), "
+          "analysed as a bundle and predicted with both fitted models; the separation is the gap between the predictions over the test's "
+          "items in that test's noise floors (two or more: the test decides).\n\n| against | test | what to run | separation (gap) | "
+          "noise floor | separation (floors) |\n|---|---|---|---|---|---|\n";
+    for (const auto& t : d.proposed_tests)
+      md << "| " << t.other << " | " << t.test << " | " << t.description << " | " << fmt(t.gap, "%.3g") << " | " << fmt(t.noise_floor, "%.3g") << " | "
+         << fmt(t.floors, "%.1f") << " |\n";
+    md << "\n";
+  }
   if (test)
     md << "On the test block `" << args.test << "` (" << test->items << " items, neither fitted nor used to choose the verdict): gap "
        << fmt(test->gap_before, "%.4g") << " -> " << fmt(test->gap_after, "%.4g") << ", shrink " << fmt(100.0 * test->shrink(), "%.0f %%")

@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
+#include "gap/discriminate.h"
 #include "gap/pipeline.h"
 #include "gap/report.h"
 #include "numerics/format.h"
+#include "numerics/median.h"
 
 namespace tribo::gap {
 namespace {
@@ -27,6 +30,34 @@ class NestedParallelism {
  private:
   int levels_;
 };
+
+// The tests that would tell the verdict's candidate from each one the held-out data do not
+// (discriminate.h), around the bundle's constant-speed runs: their driven speeds and median length
+// (1–5 s), at the rig generator's friction noise of 1 % of μk W. Drive histories are left out.
+std::vector<ProposedSeparation> propose_tests(const ExperimentBundle& bundle, const Candidate& chosen, const std::vector<Candidate>& candidates,
+                                              const std::vector<std::string>& others, std::uint64_t seed) {
+  std::vector<ProposedSeparation> out;
+  if (others.empty() || bundle.kind != "pin_on_disc") return out;
+  std::vector<double> speeds, spans;
+  for (const Run& r : bundle.runs)
+    if (r.trace.t_s.size() > 1) speeds.push_back(r.v_m_per_s), spans.push_back(r.trace.t_s.back() - r.trace.t_s.front());
+  if (speeds.empty()) return out;
+  std::sort(speeds.begin(), speeds.end());
+  const std::vector<ProposedTest> tests = proposed_tests(speeds, std::clamp(numerics::median(spans), 1.0, 5.0), 0.01);
+  for (const std::string& name : others) {
+    const auto other = std::find_if(candidates.begin(), candidates.end(), [&](const Candidate& c) { return verdict_name(c.effects) == name; });
+    if (other == candidates.end()) continue;
+    std::vector<ProposedSeparation> rows;
+    for (const ProposedTest& t : tests) {
+      const Separation s = separation(t, chosen.rig, chosen.model, other->rig, other->model, seed);
+      rows.push_back({name, s.test, s.description, s.gap, s.noise_floor, s.floors()});
+    }
+    const auto key = [](const ProposedSeparation& r) { return std::isnan(r.floors) ? -1.0 : r.floors; };  // no floor: last
+    std::stable_sort(rows.begin(), rows.end(), [&](const auto& a, const auto& b) { return key(a) > key(b); });
+    out.insert(out.end(), rows.begin(), rows.end());
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -134,6 +165,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
     if (const std::vector<Localization> l = localize(d.items, held); !l.empty())
       d.verdict.remaining_where = l.front().observable + " (" + l.front().where + ", worst " + l.front().worst_item + ")";
   }
+
+  if (chosen) d.proposed_tests = propose_tests(bundle, *chosen, d.candidates, d.verdict.indistinguishable, o.seed);
 
   // 4. Confidence.
   const ConfidenceStage conf = confidence(p, cal, baseline, d.candidates, choice.index, verdict_name(d.verdict));

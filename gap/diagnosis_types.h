@@ -126,6 +126,13 @@ struct StageTimes {
   double confidence_s = 0.0;     // the leaders' linearised refits and the bootstrap
 };
 
+// A test that would tell the verdict from a candidate the held-out data do not (discriminate.h).
+struct ProposedSeparation {
+  std::string other;        // verdict_name of the indistinguishable candidate
+  std::string test, description;
+  double gap = 0.0, noise_floor = 0.0, floors = 0.0;  // floors NaN when the test's items carry no noise
+};
+
 struct Diagnosis {
   std::vector<Item> items;
   std::vector<bool> heldout;          // per item
@@ -142,6 +149,10 @@ struct Diagnosis {
   std::vector<Localization> localization;
   std::vector<Candidate> candidates;  // best first
   Verdict verdict;
+  // For each candidate in verdict.indistinguishable, every proposed test (discriminate.h) with the
+  // verdict's model as the record, largest separation first per candidate; empty when there is
+  // none to tell apart or the bundle is not of constant-speed runs.
+  std::vector<ProposedSeparation> proposed_tests;
   double integration_tolerance = 0.0;  // CVODE's relative tolerance of the predictions (Comparison)
 };
 

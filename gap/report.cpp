@@ -25,6 +25,26 @@ std::string baseline_text(const rig::FrictionModel& m) {
   return buf;
 }
 
+// What the conclusion says of each candidate the held-out data do not tell from the verdict: the
+// proposed test (discriminate.h) that separates their predictions most, if by two noise floors.
+std::string deciding_tests_text(const Diagnosis& d) {
+  std::string text;
+  for (const std::string& other : d.verdict.indistinguishable) {
+    const auto best = std::find_if(d.proposed_tests.begin(), d.proposed_tests.end(), [&](const auto& t) { return t.other == other; });
+    char b[512];
+    if (best == d.proposed_tests.end() || !std::isfinite(best->floors))
+      std::snprintf(b, sizeof b, "against %s no test was proposed (constant-speed runs are needed to start from)", other.c_str());
+    else if (best->floors >= 2.0)
+      std::snprintf(b, sizeof b, "to decide against %s: %s (%s), where their predictions differ by %.1f noise floors", other.c_str(),
+                    best->description.c_str(), best->test.c_str(), best->floors);
+    else
+      std::snprintf(b, sizeof b, "against %s none of the proposed tests decides (the best, %s, separates them by %.1f noise floors)",
+                    other.c_str(), best->test.c_str(), best->floors);
+    text += (text.empty() ? "" : "; ") + std::string(b);
+  }
+  return text;
+}
+
 }  // namespace
 
 std::string verdict_name(const std::vector<std::string>& effects) { return effects.empty() ? "none" : join(effects, "+"); }
@@ -63,8 +83,8 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   confidence_text(d.verdict.confidence).c_str(), top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
                   top ? 100.0 * top->share : 0.0);
     if (!d.verdict.indistinguishable.empty())
-      return std::string(buf) + " The held-out data do not tell it from " + join(d.verdict.indistinguishable, ", ") +
-             ": a test where they differ would decide.";
+      return std::string(buf) + " The held-out data do not tell it from " + join(d.verdict.indistinguishable, ", ") + ": " +
+             deciding_tests_text(d) + ".";
   } else if (d.verdict.unexplained) {
     std::snprintf(buf, sizeof buf,
                   "Unexplained: %s leaves a held-out gap of %.3g%s, and no catalogue "
@@ -147,6 +167,10 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"remaining_gap_in_floors", finite_or_null(d.verdict.remaining_floors)},
                   {"remaining_where", d.verdict.remaining_where},
                   {"conclusion", d.verdict.conclusion}};
+  j["proposed_tests"] = json::array();
+  for (const auto& t : d.proposed_tests)
+    j["proposed_tests"].push_back({{"against", t.other}, {"test", t.test}, {"description", t.description}, {"separation_gap", t.gap},
+                                   {"noise_floor", t.noise_floor}, {"separation_floors", finite_or_null(t.floors)}});
   j["noise_floor_definition"] =
       "gap of the items' standard errors read off the data (blocks of each run analysed as repeats; a step bin's high-pass noise / "
       "sqrt(samples)): the held-out gap a model right in every mechanism would still leave";

@@ -21,26 +21,11 @@
 
 #include "gap/bundle.h"
 #include "gap/diagnosis.h"
+#include "gap/synthesize.h"
 #include "rig/friction_model.h"
 #include "rig/parameters.h"
 
 namespace tribo::gap {
-
-struct SyntheticOptions {
-  // Driven speeds of the stick-slip traces on the thesis rig (φ̇ = k v / W ≈ 0.7 … 5 1/s).
-  std::vector<double> speeds_m_per_s{6e-3, 1e-2, 1.7e-2, 2.8e-2, 4.5e-2};
-  double duration_s = 2.0;
-  int samples_per_period = 50;    // trace density while slipping (rig/simulator.h)
-  // rms noise of the friction sensor as a fraction of μk W (thesis strain-gauge channel ≈ 1 %).
-  double noise_fraction = 0.01;
-  // The test block (gap/test_block.h): runs of the same truth at speeds between the diagnosed
-  // ones (their geometric means), with noise drawn afresh — data neither the fits nor the
-  // verdict saw, on which the reported shrink is measured.
-  std::vector<double> test_speeds_m_per_s{7.7e-3, 1.3e-2, 2.2e-2, 3.55e-2};
-  // Effect strength: the first generator's drawn effect parameters scaled away from no effect by
-  // a factor drawn from [lower, upper] per case (1, 1: the development draws).
-  double strength_lower = 1.0, strength_upper = 1.0;
-};
 
 // The development set is what the diagnosis was tuned on (seeds, speeds and strengths of
 // SyntheticOptions' defaults); the validation set is drawn afresh and only reported: other seeds
@@ -48,11 +33,6 @@ struct SyntheticOptions {
 // strengths scaled by 0.5–1.5 on the first generator.
 enum class SelftestSet { development, validation };
 SyntheticOptions synthetic_options(SelftestSet set);
-
-// "Measured" bundle: the truth simulated at every speed, measured through its instrument plus
-// noise; static_friction.csv with one point per run, the mean of its measured breakaways.
-ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::FrictionModel& truth, const SyntheticOptions& options,
-                                   std::uint64_t seed);
 
 struct SyntheticCase {
   std::string true_effect;                 // "none" for a control

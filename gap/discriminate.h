@@ -1,0 +1,57 @@
+// Which further test would tell apart two models the present data cannot (verdict.h
+// indistinguishable: earning candidates neither of which has decisive held-out evidence over the
+// other). Each proposed test is simulated with the first model as the truth (synthesize.h: the
+// rig's simulator, its instrument, sensor noise), analysed by the same comparison as any bundle
+// (compare.h), and predicted with both models as fitted; the separation is the gap between the
+// two predictions over the test's items, in units of that test's own noise floor (the gap its
+// items' standard errors leave, as for the held-out data). A separation of a few floors is a test
+// that decides; one below a floor is a test the two models pass alike.
+//
+// The tests an experimentalist can run on the same pin-on-disc rig without new specimens:
+//   slide_hold_slide   slide at the middle driven speed, hold 1, 3, 10 s, slide after each — static
+//                      friction that grows with time at rest (a squeeze film, contact ageing) heals
+//                      in a hold; one that reads the load rate at slip (thesis (3.1.24)) does not
+//   wider_speeds       the driven speeds of the present runs extended by a factor 3 each way —
+//                      forms that agree inside the measured range part outside it
+//   stiffer_spring     the present speeds with the spring twice as stiff: the load rate at slip
+//                      doubles at each speed, the natural period shortens by √2
+//   heavier_load       the present speeds at twice the normal load: films that carry a fixed
+//                      force or follow W with a time constant separate from solid friction ∝ W
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gap/synthesize.h"
+#include "rig/friction_model.h"
+#include "rig/parameters.h"
+
+namespace tribo::gap {
+
+struct ProposedTest {
+  std::string name;         // slide_hold_slide, wider_speeds, stiffer_spring, heavier_load
+  std::string description;  // what to run, in the lab's words
+  SyntheticOptions runs;    // speeds, durations, holds
+  double stiffness_factor = 1.0, load_factor = 1.0;  // on the rig of each model
+};
+
+// The four tests around the present constant-speed runs (their driven speeds, each `duration_s`
+// long), at a friction-sensor noise of `noise_fraction` of μk W.
+std::vector<ProposedTest> proposed_tests(const std::vector<double>& speeds_m_per_s, double duration_s, double noise_fraction);
+
+struct Separation {
+  std::string test, description;
+  int items = 0;
+  double gap = 0.0;          // between the two models' predictions, gap units of the test's items
+  double noise_floor = 0.0;  // the test's own noise floor (0: its items carry no noise)
+  double floors() const;     // gap / noise_floor (NaN without a floor)
+};
+
+// The separation of models a and b (each on its own fitted rig, scaled by the test's factors) by
+// test t, with a's simulation as the record. Throws std::invalid_argument when the test's record
+// gives no item to compare.
+Separation separation(const ProposedTest& t, const rig::RigParameters& rig_a, const rig::FrictionModel& a, const rig::RigParameters& rig_b,
+                      const rig::FrictionModel& b, std::uint64_t seed);
+
+}  // namespace tribo::gap
