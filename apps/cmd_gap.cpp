@@ -138,7 +138,7 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     md << "## Tests that would decide\n\nThe held-out data do not tell `" << gap::verdict_name(d.verdict) << "` from "
        << "the candidates below. Each test is simulated with the verdict's model as the record (the rig's simulator, 1 % friction noise), "
           "analysed as a bundle and predicted with both fitted models; the separation is the gap between the predictions over the test's "
-          "items in that test's noise floors (two or more: the test decides).\n\n| against | test | what to run | separation (gap) | "
+          "items in that test's floors — its noise, or what the verdict's model misses on its own record when that is more (two or more: the test decides).\n\n| against | test | what to run | separation (gap) | "
           "noise floor | separation (floors) |\n|---|---|---|---|---|---|\n";
     for (const auto& t : d.proposed_tests)
       md << "| " << t.other << " | " << t.test << " | " << t.description << " | " << fmt(t.gap, "%.3g") << " | " << fmt(t.noise_floor, "%.3g") << " | "

@@ -3,9 +3,11 @@
 // other). Each proposed test is simulated with the first model as the truth (synthesize.h: the
 // rig's simulator, its instrument, sensor noise), analysed by the same comparison as any bundle
 // (compare.h), and predicted with both models as fitted; the separation is the gap between the
-// two predictions over the test's items, in units of that test's own noise floor (the gap its
-// items' standard errors leave, as for the held-out data). A separation of a few floors is a test
-// that decides; one below a floor is a test the two models pass alike.
+// two predictions over the test's items, in units of that test's own floor: the gap its items'
+// standard errors leave (as for the held-out data), or the gap the first model leaves on its own
+// record when that is more (the analysis' reproducibility, which a slide-hold-slide on a
+// stick-slipping rig lacks). A separation of a few floors is a test that decides; one below a
+// floor is a test the two models pass alike.
 //
 // The tests an experimentalist can run on the same pin-on-disc rig without new specimens:
 //   slide_hold_slide   slide at the middle driven speed, hold 1, 3, 10 s, slide after each — static
@@ -44,7 +46,7 @@ struct Separation {
   std::string test, description;
   int items = 0;
   double gap = 0.0;          // between the two models' predictions, gap units of the test's items
-  double noise_floor = 0.0;  // the test's own noise floor (0: its items carry no noise)
+  double noise_floor = 0.0;  // the test's own floor (above; 0: its items carry no noise and its model meets its record)
   double floors() const;     // gap / noise_floor (NaN without a floor)
 };
 
