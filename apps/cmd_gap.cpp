@@ -145,13 +145,20 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
          << fmt(t.floors, "%.1f") << " |\n";
     md << "\n";
   }
-  if (test)
+  if (test) {
     md << "On the test block `" << args.test << "` (" << test->items << " items, neither fitted nor used to choose the verdict): gap "
        << fmt(test->gap_before, "%.4g") << " -> " << fmt(test->gap_after, "%.4g") << ", shrink " << fmt(100.0 * test->shrink(), "%.0f %%")
-       << ", its noise floor " << fmt(test->noise_floor, "%.2g") << ".\n\n";
-  else
+       << ", its noise floor " << fmt(test->noise_floor, "%.2g") << ".";
+    if (!test->gap_indistinguishable.empty()) {
+      md << " The candidates the held-out data did not tell from the verdict, on it:";
+      for (const auto& [name, g] : test->gap_indistinguishable) md << " " << name << " " << fmt(g, "%.4g") << ";";
+      md << " the one nearest the record is the one this test decides for.";
+    }
+    md << "\n\n";
+  } else {
     md << "The held-out shrink is measured on the blocks that chose the verdict, so it is the winner's number; `--test DIR` measures it on a "
           "bundle of its own.\n\n";
+  }
   md << "Plots: `gap_by_observable.png` (bar chart), `items.png` (measured vs simulated, before / after), `overlay.png` (traces).\n";
   return md.str();
 }
@@ -173,7 +180,8 @@ void run_diagnose(const DiagnoseArgs& args) {
   std::optional<gap::ExperimentBundle> test;
   if (!args.test.empty()) {
     test = read_bundle_or_exit(args.test);
-    if (test->kind != bundle.kind)
+    // A constant-speed diagnosis may be tested on the slide-hold-slide it proposes (gap/discriminate.h).
+    if (test->kind != bundle.kind && !(bundle.kind == "pin_on_disc" && test->kind == "slide_hold_slide"))
       throw InputError(args.test + "/experiment.toml: [rig] kind '" + test->kind + "' is not the diagnosed bundle's '" + bundle.kind + "'");
   }
   const GapModel model = load_gap_model(args.model);
@@ -215,14 +223,14 @@ void run_diagnose(const DiagnoseArgs& args) {
   std::optional<gap::TestBlockGap> tb;
   if (test) {
     try {
-      tb = gap::test_block_gap(*test, gap::apply_bundle_rig(*test, model.rig), d, args.seed);
+      tb = gap::test_block_gap(*test, gap::apply_bundle_rig(*test, model.rig), d, args.seed, gap::apply_bundle_rig(bundle, model.rig));
     } catch (const std::invalid_argument& e) {
       throw InputError(args.test + ": " + e.what());
     }
     provenance["test"] = std::filesystem::absolute(args.test).string();
     j["provenance"] = provenance;
     j["test_block"] = {{"bundle", args.test}, {"items", tb->items}, {"gap_before", tb->gap_before}, {"gap_after", tb->gap_after},
-                       {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}};
+                       {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}, {"gap_indistinguishable", tb->gap_indistinguishable}};
   }
   write_file_atomically(dir / "gap_report.json", j.dump(2) + "\n");
   write_file_atomically(dir / "report.md", markdown_report(d, args, j, tb));
@@ -236,7 +244,11 @@ void run_diagnose(const DiagnoseArgs& args) {
   std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %s) -> %s\n", d.verdict.conclusion.c_str(),
               gap::verdict_name(d.verdict).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
               gap::confidence_text(d.verdict.confidence).c_str(), args.out.c_str());
-  if (tb) std::printf("test block %s: gap %.4g -> %.4g (shrink %.0f %%)\n", args.test.c_str(), tb->gap_before, tb->gap_after, 100.0 * tb->shrink());
+  if (tb) {
+    std::printf("test block %s: gap %.4g -> %.4g (shrink %.0f %%)", args.test.c_str(), tb->gap_before, tb->gap_after, 100.0 * tb->shrink());
+    for (const auto& [name, g] : tb->gap_indistinguishable) std::printf("; %s %.4g", name.c_str(), g);
+    std::printf("\n");
+  }
   if (args.plot && run_plot_script("gap", args.out) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }

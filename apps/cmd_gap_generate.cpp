@@ -5,6 +5,9 @@
 //   DIR/bundle/      the experiment bundle (gap/bundle.h; experiment.toml, runs.csv, traces/)
 //   DIR/test/        pin-on-disc: the test block (the same truth at the set's test speeds, noise
 //                    drawn afresh), for `tribo gap diagnose --test`
+//   DIR/proposed/T/  pin-on-disc: the same truth under each test T the diagnosis may propose to
+//                    tell two candidates apart (gap/discriminate.h: wider_speeds, stiffer_spring,
+//                    heavier_load; slide_hold_slide from the rig generator), for `--test` likewise
 //   DIR/model.toml   the model the diagnosis starts from: the rig as told, a Coulomb baseline
 //                    miscalibrated as the selftest's is, and no effect
 //   DIR/truth.json   the withheld effect with its parameters (the rig generator's in catalogue
@@ -34,6 +37,7 @@ struct GenerateArgs {
 
 struct GeneratedCase {
   gap::ExperimentBundle bundle, test;  // test: empty for the drive-history kinds
+  std::map<std::string, gap::ExperimentBundle> proposed;  // by test name; empty for the drive-history kinds
   rig::RigParameters rig;  // as the model is told it
   double mu_s = 0.0, mu_k = 0.0;
   std::string form;
@@ -46,6 +50,7 @@ GeneratedCase generate(const GenerateArgs& a) {
     const gap::SyntheticOptions options =
         gap::synthetic_options(a.set == "validation" ? gap::SelftestSet::validation : gap::SelftestSet::development);
     gap::CaseBundles c = gap::make_case_bundles({a.effect, {}, a.seed, a.generator}, options);
+    g.proposed = gap::make_proposed_test_bundles({a.effect, {}, a.seed, a.generator}, options);
     g.bundle = std::move(c.bundle), g.test = std::move(c.test);
     g.mu_s = c.model.baseline.mu_s, g.mu_k = c.model.baseline.mu_k;
     g.form = c.form;
@@ -92,6 +97,7 @@ void run_generate(const GenerateArgs& a) {
   const std::filesystem::path dir(a.out);
   gap::write_bundle(g.bundle, dir / "bundle");
   if (!g.test.runs.empty()) gap::write_bundle(g.test, dir / "test");
+  for (const auto& [name, bundle] : g.proposed) gap::write_bundle(bundle, dir / "proposed" / name);
   write_file_atomically(dir / "model.toml", model_toml(g, a));
   nlohmann::json truth{{"true_effect", a.effect}, {"form", g.form},           {"generator", a.generator},
                        {"kind", a.kind},          {"seed", a.seed},           {"set", a.set},
@@ -100,7 +106,7 @@ void run_generate(const GenerateArgs& a) {
   write_file_atomically(dir / "truth.json", truth.dump(2) + "\n");
   const bool test = !g.test.runs.empty();
   std::printf("%s case, %s (%s, %s set), seed %llu -> %s/{bundle/,%smodel.toml,truth.json}\n", a.generator.c_str(), a.effect.c_str(),
-              a.kind.c_str(), a.set.c_str(), static_cast<unsigned long long>(a.seed), a.out.c_str(), test ? "test/," : "");
+              a.kind.c_str(), a.set.c_str(), static_cast<unsigned long long>(a.seed), a.out.c_str(), test ? "test/,proposed/," : "");
   std::printf("diagnose it: tribo gap diagnose --experiment %s/bundle --model %s/model.toml%s%s --out %s/diagnosis\n", a.out.c_str(),
               a.out.c_str(), test ? " --test " : "", test ? (a.out + "/test").c_str() : "", a.out.c_str());
 }

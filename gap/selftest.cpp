@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "contact/junction_locus.h"
+#include "gap/discriminate.h"
 #include "gap/independent/generator.h"
 #include "gap/test_block.h"
 #include "rig/drive.h"
@@ -172,6 +173,37 @@ CaseBundles make_case_bundles(const SelftestCase& sc, const SyntheticOptions& sy
     throw std::invalid_argument("selftest: unknown generator '" + sc.generator + "'");
   }
   return c;
+}
+
+std::map<std::string, ExperimentBundle> make_proposed_test_bundles(const SelftestCase& sc, const SyntheticOptions& synthetic) {
+  const std::uint64_t seed = sc.seed + 2'000'003;
+  std::map<std::string, ExperimentBundle> out;
+  const std::vector<ProposedTest> tests = proposed_tests(synthetic.speeds_m_per_s, synthetic.duration_s, synthetic.noise_fraction);
+  if (sc.generator == kIndependentGenerator) {
+    independent::GeneratorOptions go;
+    go.duration_s = synthetic.duration_s;
+    go.noise_fraction = synthetic.noise_fraction;
+    go.speeds_m_per_s = synthetic.speeds_m_per_s;
+    const independent::IndependentCase ic = independent::make_independent_case(sc.true_effect, sc.seed, go);
+    for (const ProposedTest& t : tests) {
+      if (!t.runs.hold_times_s.empty()) continue;
+      go.speeds_m_per_s = t.runs.speeds_m_per_s;
+      independent::RigConstants actual = ic.actual, told = ic.told;
+      actual.stiffness_N_per_m *= t.stiffness_factor, told.stiffness_N_per_m *= t.stiffness_factor;
+      actual.normal_load_N *= t.load_factor, told.normal_load_N *= t.load_factor;
+      out[t.name] = independent::record_bundle(ic.truth, actual, told, ic.friction_chain, ic.displacement_chain, ic.velocity_chain, go, seed);
+    }
+  } else if (sc.generator == kRigGenerator) {
+    const SyntheticCase s = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
+    for (const ProposedTest& t : tests) {
+      rig::RigParameters rig;
+      rig.stiffness_N_per_m *= t.stiffness_factor, rig.normal_load_N *= t.load_factor;
+      out[t.name] = synthesize_bundle(rig, s.truth, t.runs, seed);
+    }
+  } else {
+    throw std::invalid_argument("selftest: unknown generator '" + sc.generator + "'");
+  }
+  return out;
 }
 
 namespace {

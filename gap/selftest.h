@@ -159,4 +159,11 @@ struct CaseBundles {
 };
 CaseBundles make_case_bundles(const SelftestCase& c, const SyntheticOptions& synthetic);
 
+// The case's truth recorded under each test the diagnosis may propose (discriminate.h, around the
+// case's speeds and run length), by test name, noise seeded apart from the bundle's: the rig
+// generator every test, the independent one the constant-speed tests (its slide-hold-slide is a
+// machine of its own). So that a proposal can be run on a case whose answer is known
+// (`tribo gap generate`, then `tribo gap diagnose --test`).
+std::map<std::string, ExperimentBundle> make_proposed_test_bundles(const SelftestCase& c, const SyntheticOptions& synthetic);
+
 }  // namespace tribo::gap

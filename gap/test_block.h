@@ -8,6 +8,9 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
 
 #include "gap/bundle.h"
 #include "gap/diagnosis.h"
@@ -20,14 +23,20 @@ struct TestBlockGap {
   double gap_before = 0.0;   // the calibrated baseline's gap over all the test bundle's items
   double gap_after = 0.0;    // the verdict candidate's (= gap_before for "none" and "unexplained")
   double noise_floor = 0.0;  // the gap of the test items' own standard errors (Item::noise)
+  // The gap of each candidate the held-out data did not tell from the verdict
+  // (Verdict::indistinguishable), by name: on a test the diagnosis proposed (discriminate.h), the
+  // one nearest the record is the one the test decides for.
+  std::map<std::string, double> gap_indistinguishable;
   double shrink() const { return gap_before > 0.0 ? 1.0 - gap_after / gap_before : 0.0; }
 };
 
 // `model_rig` as for diagnose(): the model's rig with the test bundle's [rig] keys applied (the
 // comparison takes the normal load and what the bundle leaves out from it); the predictions use
-// the rig the diagnosis calibrated. Throws std::invalid_argument when the test bundle gives no
-// item to compare.
+// the rig the diagnosis calibrated. A test run on a changed rig (a stiffer spring, another load)
+// gives `diagnosed_rig`, the model's rig with the diagnosed bundle's keys applied: each calibrated
+// rig constant is then scaled by the test's stated value over the diagnosed one's. Throws
+// std::invalid_argument when the test bundle gives no item to compare.
 TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParameters& model_rig, const Diagnosis& d,
-                            std::uint64_t seed);
+                            std::uint64_t seed, const std::optional<rig::RigParameters>& diagnosed_rig = std::nullopt);
 
 }  // namespace tribo::gap

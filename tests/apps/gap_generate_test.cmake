@@ -51,6 +51,18 @@ p = truth['parameters']
 g = p['instrument.gain']
 assert 1.075 - 1e-12 <= max(g, 1 / g) <= 1.45 + 1e-12, p  # 1 + (0.15 ... 0.3) x strength 0.5 ... 1.5, or its inverse
 assert 0.5e-3 <= p['instrument.lag_s'] <= 4.5e-3, p
+# The truth under each test the diagnosis may propose (gap/discriminate.h), for --test: speeds a
+# factor 3 beyond, the spring twice as stiff, twice the load, a slide-hold-slide at the middle speed.
+import tomllib
+rig = lambda b: tomllib.load(open(d + '/' + b + '/experiment.toml', 'rb'))['rig']
+w = speeds('proposed/wider_speeds')
+assert len(w) == 2 and abs(w[0] - 1.5e-3) < 1e-12 and abs(w[1] - 0.114) < 1e-12, w
+assert speeds('proposed/stiffer_spring') == speeds('bundle') and speeds('proposed/heavier_load') == speeds('bundle')
+assert abs(rig('proposed/stiffer_spring')['stiffness_N_per_m'] / rig('bundle')['stiffness_N_per_m'] - 2) < 1e-12
+assert abs(rig('proposed/heavier_load')['normal_load_N'] / rig('bundle')['normal_load_N'] - 2) < 1e-12
+assert rig('proposed/slide_hold_slide')['kind'] == 'slide_hold_slide'
+v = [float(r['v_drive_m_per_s']) for r in csv.DictReader(open(d + '/proposed/slide_hold_slide/traces/run_0.csv'))]
+assert v.count(0.0) > 0 and max(v) == 1.4e-2, (v.count(0.0), max(v))
 " ${WORK}-validation RESULT_VARIABLE check ERROR_VARIABLE why)
 if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo gap generate --set validation: ${why}")

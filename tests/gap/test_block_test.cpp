@@ -4,6 +4,8 @@
 //     model without the effect leaves the effect's whole signature;
 //   - the floor: on test runs with 1 % sensor noise the truth leaves a gap under the noise floor
 //     the test items' own standard errors give, and not far under it;
+//   - a changed rig: a test on a stiffer spring is predicted on the calibrated rig scaled as the
+//     told one is;
 //   - no inverse crime: a diagnosis of the independent generator's Kato-ageing case (another
 //     integrator, another form of rate-dependent static friction, a measuring chain) still
 //     halves the gap on that generator's runs at four speeds between the diagnosed five.
@@ -68,6 +70,35 @@ TEST(TestBlock, OnNoisyRunsTheTruthLeavesAGapUnderTheNoiseFloor) {
   // step 8). So: under the floor, and above a fifth of it — the noise does show.
   EXPECT_LT(t.gap_after, t.noise_floor);
   EXPECT_GT(t.gap_after, 0.2 * t.noise_floor);
+}
+
+// A test on a changed rig (a proposed test, gap/discriminate.h: the spring twice as stiff): the
+// calibrated rig is scaled as the test's told one is, so the truth, on noiseless runs, again
+// leaves only the integration tolerance; on the diagnosed spring it would miss every period and
+// rise time by √2 and 2. A candidate named beside the verdict is predicted there too — here the
+// Coulomb baseline under another name, which must leave the baseline's gap to the bit.
+TEST(TestBlock, ATestOnAStifferSpringIsPredictedOnTheCalibratedRigScaledAsTheToldOne) {
+  const rig::FrictionModel truth = viscous_truth();
+  SyntheticOptions o;
+  o.speeds_m_per_s = o.test_speeds_m_per_s;
+  o.noise_fraction = 0.0;
+  rig::RigParameters stiffer;
+  stiffer.stiffness_N_per_m *= 2.0;
+  const ExperimentBundle test = synthesize_bundle(stiffer, truth, o, 17);
+  Diagnosis d = diagnosis_of(rig::coulomb(0.32, 0.19), truth, "viscous_friction");
+  Candidate beside;
+  beside.effects = {"thermal_thinning"};
+  beside.model = rig::coulomb(0.32, 0.19);
+  d.candidates.push_back(beside);
+  d.verdict.indistinguishable = {"thermal_thinning"};
+  const rig::RigParameters told = apply_bundle_rig(test, rig::RigParameters{});
+  ASSERT_DOUBLE_EQ(told.stiffness_N_per_m, stiffer.stiffness_N_per_m);
+  const TestBlockGap scaled = test_block_gap(test, told, d, 1, rig::RigParameters{});
+  EXPECT_LT(scaled.gap_after, 1e-4);
+  EXPECT_EQ(scaled.gap_indistinguishable.at("thermal_thinning"), scaled.gap_before);
+  const TestBlockGap unscaled = test_block_gap(test, told, d, 1);
+  std::printf("stiffer spring: truth on the scaled rig %.2e, on the diagnosed one %.4f\n", scaled.gap_after, unscaled.gap_after);
+  EXPECT_GT(unscaled.gap_after, 0.1);
 }
 
 TEST(TestBlock, ADiagnosisOfTheIndependentGeneratorHalvesTheGapAtSpeedsItNeverSaw) {
