@@ -19,6 +19,7 @@
 #include "apps/selftest_journal.h"
 #include "gap/bundle.h"
 #include "gap/diagnosis.h"
+#include "gap/discriminate.h"
 #include "gap/report.h"
 #include "gap/selftest.h"
 #include "gap/test_block.h"
@@ -272,6 +273,10 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
                           {"earns", c.earns}});
   j["candidates"] = candidates;
   j["indistinguishable_from"] = row.indistinguishable_from;
+  j["proposal_checks"] = nlohmann::json::array();
+  for (const gap::ProposalCheck& k : row.proposal_checks)
+    j["proposal_checks"].push_back({{"against", k.against}, {"test", k.test}, {"separation_floors", gap::finite_or_null(k.floors)},
+                                    {"gap_verdict", k.gap_verdict}, {"gap_against", k.gap_against}, {"truth_nearer", k.truth_nearer}});
   j["git_commit"] = row.git_commit.empty() ? build : row.git_commit;
   return j;
 }
@@ -354,6 +359,7 @@ void run_selftest(const SelftestArgs& args) {
                             {"visible_identified_fraction", gap::finite_or_null(sum.visible_identified_fraction)},
                             {"named_or_indistinguishable_fraction", gap::finite_or_null(sum.named_or_indistinguishable_fraction)},
                             {"mean_names_per_verdict", gap::finite_or_null(sum.mean_names_per_verdict)},
+                            {"deciding_proposals", sum.deciding_proposals}, {"deciding_proposals_for_truth", sum.deciding_proposals_for_truth},
                             {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
                             {"confusion", sum.confusion}};
   j["reliability"] = nlohmann::json::array();
@@ -382,6 +388,9 @@ void run_selftest(const SelftestArgs& args) {
     if (sum.effect_cases)
       std::printf("  the verdict or a candidate the held-out data cannot tell from it: %.0f %% (%.1f names a verdict on average)\n",
                   100.0 * sum.named_or_indistinguishable_fraction, sum.mean_names_per_verdict);
+    if (sum.deciding_proposals)
+      std::printf("  proposed tests that decide (>= %g floors), run on the truth: %d of %d came out for it\n", gap::kDecidingFloors,
+                  sum.deciding_proposals_for_truth, sum.deciding_proposals);
     for (const auto& [e, s] : sum.mean_shrink) {
       std::printf("  mean gap shrink, %s: held-out %.0f %%", e.c_str(), 100.0 * s);
       if (const auto t = sum.mean_test_shrink.find(e); t != sum.mean_test_shrink.end()) std::printf(", test block %.0f %%", 100.0 * t->second);

@@ -42,6 +42,9 @@ struct ProposedTest {
 // long), at a friction-sensor noise of `noise_fraction` of μk W.
 std::vector<ProposedTest> proposed_tests(const std::vector<double>& speeds_m_per_s, double duration_s, double noise_fraction);
 
+// A separation that decides: two floors, as a signal is visible at two (selftest.h kVisibleSignalFloors).
+inline constexpr double kDecidingFloors = 2.0;
+
 struct Separation {
   std::string test, description;
   int items = 0;

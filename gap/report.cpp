@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "gap/discriminate.h"
+
 namespace tribo::gap {
 namespace {
 
@@ -34,7 +36,7 @@ std::string deciding_tests_text(const Diagnosis& d) {
     char b[512];
     if (best == d.proposed_tests.end() || !std::isfinite(best->floors))
       std::snprintf(b, sizeof b, "against %s no test was proposed (constant-speed runs are needed to start from)", other.c_str());
-    else if (best->floors >= 2.0)
+    else if (best->floors >= kDecidingFloors)
       std::snprintf(b, sizeof b, "to decide against %s: %s (%s), where their predictions differ by %.1f noise floors", other.c_str(),
                     best->description.c_str(), best->test.c_str(), best->floors);
     else

@@ -208,6 +208,31 @@ std::map<std::string, ExperimentBundle> make_proposed_test_bundles(const Selftes
 
 namespace {
 
+// SelftestRow::proposal_checks: the pairs of the verdict and a candidate beside it that hold the
+// truth, each with the best of its proposed tests the generator can run, run on the truth.
+std::vector<ProposalCheck> check_proposals(const SelftestCase& sc, const SyntheticOptions& synthetic, const Diagnosis& d,
+                                           const rig::RigParameters& diagnosed_rig) {
+  std::vector<ProposalCheck> out;
+  const std::string verdict = verdict_name(d.verdict);
+  std::map<std::string, ExperimentBundle> records;
+  for (const std::string& other : d.verdict.indistinguishable) {
+    if (sc.true_effect != verdict && sc.true_effect != other) continue;
+    if (records.empty()) records = make_proposed_test_bundles(sc, synthetic);
+    // d.proposed_tests holds each candidate's tests largest separation first.
+    const auto best = std::find_if(d.proposed_tests.begin(), d.proposed_tests.end(),
+                                   [&](const ProposedSeparation& t) { return t.other == other && records.count(t.test); });
+    if (best == d.proposed_tests.end()) continue;
+    const ExperimentBundle& record = records.at(best->test);
+    const TestBlockGap t = test_block_gap(record, apply_bundle_rig(record, rig::RigParameters{}), d, sc.seed, diagnosed_rig);
+    ProposalCheck k;
+    k.against = other, k.test = best->test, k.floors = best->floors;
+    k.gap_verdict = t.gap_after, k.gap_against = t.gap_indistinguishable.at(other);
+    k.truth_nearer = sc.true_effect == verdict ? k.gap_verdict < k.gap_against : k.gap_against < k.gap_verdict;
+    out.push_back(k);
+  }
+  return out;
+}
+
 SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis) {
   const CaseBundles c = make_case_bundles(sc, synthetic);
   diagnosis.seed = sc.seed;
@@ -234,6 +259,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
     row.test_gap_before = t.gap_before;
     row.test_gap_after = t.gap_after;
   }
+  row.proposal_checks = check_proposals(sc, synthetic, d, rig);
   return row;
 }
 
@@ -259,6 +285,8 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
         to[row.c.true_effect].first += 1.0 - after / before;
         ++to[row.c.true_effect].second;
       };
+      for (const ProposalCheck& k : row.proposal_checks)
+        if (k.floors >= kDecidingFloors) ++out.deciding_proposals, out.deciding_proposals_for_truth += k.truth_nearer;
       add(shrink, row.heldout_gap_before, row.heldout_gap_after);
       add(test_shrink, row.test_gap_before, row.test_gap_after);
     }

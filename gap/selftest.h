@@ -62,6 +62,18 @@ struct CandidateFigures {
   bool earns = false;
 };
 
+// A proposed test (discriminate.h) run on the truth: for a pair of the verdict and a candidate
+// named beside it, one of them the truth, the test that parts their predictions most among those
+// the case's generator can run (make_proposed_test_bundles), the truth recorded under it, and which
+// of the two fitted models comes nearer that record (TestBlockGap).
+struct ProposalCheck {
+  std::string against;             // the candidate beside the verdict
+  std::string test;                // the proposed test run
+  double floors = 0.0;             // its separation of the pair as proposed (ProposedSeparation::floors)
+  double gap_verdict = 0.0, gap_against = 0.0;  // each fitted model's gap on the truth's record
+  bool truth_nearer = false;       // the one of the pair that is the truth has the smaller gap
+};
+
 struct SelftestRow {
   SelftestCase c;
   std::string verdict;
@@ -80,6 +92,7 @@ struct SelftestRow {
   StageTimes stage_times;  // where that time went (Diagnosis::stage_times); zeros: not recorded
   std::vector<CandidateFigures> candidates;  // in the diagnosis' ranking; empty in journals from before
   std::vector<std::string> indistinguishable_from;  // earning candidates the held-out data do not tell from the verdict
+  std::vector<ProposalCheck> proposal_checks;       // pairs that hold the truth (empty in journals from before)
   std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
 };
 
@@ -106,6 +119,9 @@ struct SelftestSummary {
   // bar — identified_fraction counts the verdict alone. NaN without effect cases.
   double named_or_indistinguishable_fraction = std::numeric_limits<double>::quiet_NaN();
   double mean_names_per_verdict = std::numeric_limits<double>::quiet_NaN();
+  // Proposed tests run on the truth (SelftestRow::proposal_checks) whose proposed separation was
+  // two floors or more — the ones the conclusion names — and how many of them came out for the truth.
+  int deciding_proposals = 0, deciding_proposals_for_truth = 0;
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink;  // per true effect, of correctly identified cases: 1 − after/before
   std::map<std::string, double> mean_test_shrink;  // the same on the test block (cases that have one)
@@ -123,6 +139,9 @@ struct SelftestResult {
   // Over all cases (both generators), kept for callers of the one-generator selftest.
   std::map<std::string, std::map<std::string, int>> confusion;
   double identified_fraction = 0.0;
+  // Proposed tests run on the truth (SelftestRow::proposal_checks) whose proposed separation was
+  // two floors or more — the ones the conclusion names — and how many of them came out for the truth.
+  int deciding_proposals = 0, deciding_proposals_for_truth = 0;
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink, mean_test_shrink;
   std::map<std::string, SelftestSummary> by_generator;  // "rig", "independent"
