@@ -419,8 +419,9 @@ void add_gap_command(CLI::App& app) {
       ->required();
   diagnose->add_option("--model", diagnose_args->model, "Model TOML ([rig], [friction] as for `tribo rig`)")->required();
   diagnose->add_option("--test", diagnose_args->test,
-                       "Test bundle of the same machine and kind (other runs, other speeds): the fitted baseline and the verdict's "
-                       "candidate predict it, and the shrink is reported on data that neither the fits nor the verdict saw");
+                       "Test bundle of the same machine and kind (other runs, other speeds), or a test the diagnosis proposes (a "
+                       "stiffer spring, another load, a slide-hold-slide: the calibrated rig is scaled as the bundle's told one): the "
+                       "fitted baseline, the verdict's candidate and those named beside it predict it, on data no fit or verdict saw");
   diagnose->add_option("--out", diagnose_args->out, "Output directory")->capture_default_str();
   diagnose->add_option("--seed", diagnose_args->seed, "Seed of random starts, bootstrap and instrument noise")->capture_default_str();
   diagnose->add_flag("--quick", diagnose_args->quick, "Fewer iterations per fit");

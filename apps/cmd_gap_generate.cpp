@@ -115,7 +115,9 @@ void run_generate(const GenerateArgs& a) {
 
 void add_gap_generate_command(CLI::App& gap) {
   auto args = std::make_shared<GenerateArgs>();
-  CLI::App* cmd = gap.add_subcommand("generate", "Write one synthetic experiment bundle with a known withheld effect, and the model to diagnose it with");
+  CLI::App* cmd = gap.add_subcommand("generate",
+                                     "Write one synthetic experiment bundle with a known withheld effect, and the model to diagnose it with "
+                                     "(pin_on_disc: also its test block and the truth under each test a diagnosis may propose, proposed/T)");
   cmd->add_option("--generator", args->generator, "rig (the rig's own simulator, catalogue forms) or independent (gap/independent/: other forms, integrator and measuring chain)")
       ->check(CLI::IsMember({"rig", "independent"}))
       ->capture_default_str();
