@@ -64,7 +64,6 @@ void switch_on(rig::FrictionModel& m, const std::string& effect, std::mt19937_64
 
 }  // namespace
 
-
 SyntheticCase make_synthetic_case(const std::string& true_effect, const std::vector<std::string>& model_effects, std::uint64_t seed,
                                   const SyntheticOptions& o) {
   std::mt19937_64 rng(seed);
