@@ -44,17 +44,24 @@ std::vector<ProposedSeparation> propose_tests(const ExperimentBundle& bundle, co
   if (speeds.empty()) return out;
   std::sort(speeds.begin(), speeds.end());
   const std::vector<ProposedTest> tests = proposed_tests(speeds, std::clamp(numerics::median(spans), 1.0, 5.0), 0.01);
+  std::vector<const Candidate*> beside;
   for (const std::string& name : others) {
     const auto other = std::find_if(candidates.begin(), candidates.end(), [&](const Candidate& c) { return verdict_name(c.effects) == name; });
-    if (other == candidates.end()) continue;
-    std::vector<ProposedSeparation> rows;
-    for (const ProposedTest& t : tests) {
-      const Separation s = separation(t, chosen.rig, chosen.model, other->rig, other->model, seed);
-      rows.push_back({name, s.test, s.description, s.gap, s.noise_floor, s.floors()});
+    if (other != candidates.end()) beside.push_back(&*other);
+  }
+  // Each test recorded once from the verdict's model; rows[k] collects candidate k's separations.
+  std::vector<std::vector<ProposedSeparation>> rows(beside.size());
+  for (const ProposedTest& t : tests) {
+    const TestRecord record(t, chosen.rig, chosen.model, seed);
+    for (std::size_t k = 0; k < beside.size(); ++k) {
+      const Separation s = record.against(beside[k]->rig, beside[k]->model);
+      rows[k].push_back({verdict_name(beside[k]->effects), s.test, s.description, s.gap, s.noise_floor, s.floors()});
     }
-    const auto key = [](const ProposedSeparation& r) { return std::isnan(r.floors) ? -1.0 : r.floors; };  // no floor: last
-    std::stable_sort(rows.begin(), rows.end(), [&](const auto& a, const auto& b) { return key(a) > key(b); });
-    out.insert(out.end(), rows.begin(), rows.end());
+  }
+  const auto key = [](const ProposedSeparation& r) { return std::isnan(r.floors) ? -1.0 : r.floors; };  // no floor: last
+  for (std::vector<ProposedSeparation>& r : rows) {
+    std::stable_sort(r.begin(), r.end(), [&](const auto& a, const auto& b) { return key(a) > key(b); });
+    out.insert(out.end(), r.begin(), r.end());
   }
   return out;
 }

@@ -12,17 +12,17 @@
 namespace tribo::gap {
 namespace {
 
-rig::RigParameters scaled(rig::RigParameters rig, const ProposedTest& t) {
-  rig.stiffness_N_per_m *= t.stiffness_factor;
-  rig.normal_load_N *= t.load_factor;
-  return rig;
-}
-
 std::string speeds_text(const std::vector<double>& v) {
   return numerics::fmt(v.front(), "%.3g") + " … " + numerics::fmt(v.back(), "%.3g") + " m/s";
 }
 
 }  // namespace
+
+rig::RigParameters ProposedTest::rig_for(rig::RigParameters rig) const {
+  rig.stiffness_N_per_m *= stiffness_factor;
+  rig.normal_load_N *= load_factor;
+  return rig;
+}
 
 double Separation::floors() const { return noise_floor > 0.0 ? gap / noise_floor : std::numeric_limits<double>::quiet_NaN(); }
 
@@ -56,34 +56,38 @@ std::vector<ProposedTest> proposed_tests(const std::vector<double>& speeds_m_per
   return out;
 }
 
-Separation separation(const ProposedTest& t, const rig::RigParameters& rig_a, const rig::FrictionModel& a, const rig::RigParameters& rig_b,
-                      const rig::FrictionModel& b, std::uint64_t seed) {
-  const rig::RigParameters test_rig_a = scaled(rig_a, t), test_rig_b = scaled(rig_b, t);
-  const ExperimentBundle record = synthesize_bundle(test_rig_a, a, t.runs, seed);
-  const Comparison comparison(record, test_rig_a);
-  const std::vector<Item>& items = comparison.items();
+TestRecord::TestRecord(const ProposedTest& t, const rig::RigParameters& rig_a, const rig::FrictionModel& a, std::uint64_t seed)
+    : test_(t), seed_(seed), comparison_(synthesize_bundle(t.rig_for(rig_a), a, t.runs, seed), t.rig_for(rig_a)) {
+  const std::vector<Item>& items = comparison_.items();
   if (items.empty()) throw std::invalid_argument("proposed test " + t.name + ": its record gives no item to compare");
-  const std::vector<double> pa = comparison.predict(test_rig_a, a, seed), pb = comparison.predict(test_rig_b, b, seed);
+  predicted_a_ = comparison_.predict(t.rig_for(rig_a), a, seed);
+  // The floor: what the record's noise leaves, or what the record's own model leaves on it when
+  // that is more — the analysis' reproducibility. A constant-speed run's model predicts its own
+  // record to a fifth of the noise floor or better; a slide-hold-slide on a stick-slipping rig does
+  // not (its steady levels are window means of a stick-slip whose phase the restart after each
+  // hold sets: a Coulomb model's own record is missed by about one floor).
+  const std::vector<bool> all(items.size(), true);
+  floor_ = std::max(breakdown(items, comparison_.relative_noise(), all).gap, breakdown(items, comparison_.residuals(predicted_a_), all).gap);
+}
+
+Separation TestRecord::against(const rig::RigParameters& rig_b, const rig::FrictionModel& b) const {
+  const std::vector<Item>& items = comparison_.items();
+  const std::vector<double>& pa = predicted_a_;
+  const std::vector<double> pb = comparison_.predict(test_.rig_for(rig_b), b, seed_);
   // The two predictions against each other in the record's units: the record's noise is in
   // neither. A feature one model shows and the other lacks counts 1, as a missing feature does in
   // any gap.
   std::vector<double> d(items.size(), 0.0);
   for (std::size_t i = 0; i < items.size(); ++i) {
     if (std::isnan(pa[i]) != std::isnan(pb[i])) d[i] = 1.0;
-    else if (!std::isnan(pa[i])) d[i] = (pb[i] - pa[i]) / comparison.scale(items[i].observable);
+    else if (!std::isnan(pa[i])) d[i] = (pb[i] - pa[i]) / comparison_.scale(items[i].observable);
   }
-  const std::vector<bool> all(items.size(), true);
   Separation s;
-  s.test = t.name;
-  s.description = t.description;
+  s.test = test_.name;
+  s.description = test_.description;
   s.items = static_cast<int>(items.size());
-  s.gap = breakdown(items, d, all).gap;
-  // The floor: what the record's noise leaves, or what the record's own model leaves on it when
-  // that is more — the analysis' reproducibility. A constant-speed run's model predicts its own
-  // record to a fifth of the noise floor or better; a slide-hold-slide on a stick-slipping rig does
-  // not (its steady levels are window means of a stick-slip whose phase the restart after each
-  // hold sets: a Coulomb model's own record is missed by about one floor).
-  s.noise_floor = std::max(breakdown(items, comparison.relative_noise(), all).gap, breakdown(items, comparison.residuals(pa), all).gap);
+  s.gap = breakdown(items, d, std::vector<bool>(items.size(), true)).gap;
+  s.noise_floor = floor_;
   return s;
 }
 

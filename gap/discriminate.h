@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "gap/compare.h"
 #include "gap/synthesize.h"
 #include "rig/friction_model.h"
 #include "rig/parameters.h"
@@ -36,6 +37,7 @@ struct ProposedTest {
   std::string description;  // what to run, in the lab's words
   SyntheticOptions runs;    // speeds, durations, holds
   double stiffness_factor = 1.0, load_factor = 1.0;  // on the rig of each model
+  rig::RigParameters rig_for(rig::RigParameters rig) const;  // a rig with the factors applied
 };
 
 // The four tests around the present constant-speed runs (their driven speeds, each `duration_s`
@@ -53,10 +55,21 @@ struct Separation {
   double floors() const;     // gap / noise_floor (NaN without a floor)
 };
 
-// The separation of models a and b (each on its own fitted rig, scaled by the test's factors) by
-// test t, with a's simulation as the record. Throws std::invalid_argument when the test's record
-// gives no item to compare.
-Separation separation(const ProposedTest& t, const rig::RigParameters& rig_a, const rig::FrictionModel& a, const rig::RigParameters& rig_b,
-                      const rig::FrictionModel& b, std::uint64_t seed);
+// Test t recorded once from model a (on its fitted rig, scaled by the test's factors), analysed,
+// and a's prediction of it with the floor they give; `against` then separates any model b from a
+// on that record. Throws std::invalid_argument when the test's record gives no item to compare.
+class TestRecord {
+ public:
+  TestRecord(const ProposedTest& t, const rig::RigParameters& rig_a, const rig::FrictionModel& a, std::uint64_t seed);
+  // The separation of model b (on its own fitted rig, scaled as a's) from a.
+  Separation against(const rig::RigParameters& rig_b, const rig::FrictionModel& b) const;
+
+ private:
+  ProposedTest test_;
+  std::uint64_t seed_;
+  Comparison comparison_;
+  std::vector<double> predicted_a_;
+  double floor_ = 0.0;
+};
 
 }  // namespace tribo::gap

@@ -194,11 +194,7 @@ std::map<std::string, ExperimentBundle> make_proposed_test_bundles(const Selftes
     }
   } else if (sc.generator == kRigGenerator) {
     const SyntheticCase s = make_synthetic_case(sc.true_effect, sc.model_effects, sc.seed, synthetic);
-    for (const ProposedTest& t : tests) {
-      rig::RigParameters rig;
-      rig.stiffness_N_per_m *= t.stiffness_factor, rig.normal_load_N *= t.load_factor;
-      out[t.name] = synthesize_bundle(rig, s.truth, t.runs, seed);
-    }
+    for (const ProposedTest& t : tests) out[t.name] = synthesize_bundle(t.rig_for(rig::RigParameters{}), s.truth, t.runs, seed);
   } else {
     throw std::invalid_argument("selftest: unknown generator '" + sc.generator + "'");
   }

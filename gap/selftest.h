@@ -139,9 +139,6 @@ struct SelftestResult {
   // Over all cases (both generators), kept for callers of the one-generator selftest.
   std::map<std::string, std::map<std::string, int>> confusion;
   double identified_fraction = 0.0;
-  // Proposed tests run on the truth (SelftestRow::proposal_checks) whose proposed separation was
-  // two floors or more — the ones the conclusion names — and how many of them came out for the truth.
-  int deciding_proposals = 0, deciding_proposals_for_truth = 0;
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink, mean_test_shrink;
   std::map<std::string, SelftestSummary> by_generator;  // "rig", "independent"

@@ -107,7 +107,7 @@ TEST(ProposedTests, AModelIsSeparatedFromItselfByNothing) {
   const std::vector<ProposedTest> tests = proposed_tests(kSpeeds, 2.0, 0.01);
   ASSERT_EQ(tests.size(), 4u);
   for (const ProposedTest& t : tests) {
-    const Separation s = separation(t, rig, m, rig, m, 3);
+    const Separation s = TestRecord(t, rig, m, 3).against(rig, m);
     EXPECT_EQ(s.gap, 0.0) << t.name;
     EXPECT_GT(s.noise_floor, 0.0) << t.name;
     EXPECT_GT(s.items, 0) << t.name;
@@ -128,13 +128,12 @@ TEST(ProposedTests, ATestIsJudgedAgainstWhatItsOwnModelMissesOnItsRecord) {
   m.set("hydrodynamic_lift", "max_fraction", 0.5);
   m.set("hydrodynamic_lift", "half_speed_m_per_s", 0.02);
   for (const ProposedTest& t : proposed_tests(kSpeeds, 2.0, 0.01)) {
-    rig::RigParameters scaled = rig;
-    scaled.stiffness_N_per_m *= t.stiffness_factor, scaled.normal_load_N *= t.load_factor;
+    const rig::RigParameters scaled = t.rig_for(rig);
     const Comparison c(synthesize_bundle(scaled, m, t.runs, 5), scaled);
     const std::vector<bool> all(c.items().size(), true);
     const double noise = breakdown(c.items(), c.relative_noise(), all).gap;
     const double own = breakdown(c.items(), c.residuals(c.predict(scaled, m, 5)), all).gap;
-    EXPECT_DOUBLE_EQ(separation(t, rig, m, rig, m, 5).noise_floor, std::max(noise, own)) << t.name;
+    EXPECT_DOUBLE_EQ(TestRecord(t, rig, m, 5).against(rig, m).noise_floor, std::max(noise, own)) << t.name;
     if (t.name == "slide_hold_slide") EXPECT_GT(own, 0.5 * noise) << t.name;
     else EXPECT_LT(own, 0.2 * noise) << t.name;
   }
