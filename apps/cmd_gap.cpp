@@ -135,11 +135,6 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     md << " (refitted in every resample: " << refitted << "; with every fit held: " << gap::confidence_text(d.verdict.confidence_fixed_fits) << ")";
   }
   md << ".\n\n";
-  if (!d.verdict.none_weighed_against.empty())
-    md << "The confidence weighs `none` against the closest candidate, `" << d.verdict.none_weighed_against << "`: "
-       << fmt(100.0 * d.verdict.none_as_measured, "%.0f") << " % of the resamples read `none` as measured, and "
-       << fmt(100.0 * d.verdict.none_had_it_been_true, "%.0f")
-       << " % would have, had that candidate (as fitted) been true; at even odds the baseline's probability is their ratio to the sum.\n\n";
   if (!d.proposed_tests.empty()) {
     md << "## Tests that would decide\n\nThe held-out data do not tell `" << gap::verdict_name(d.verdict) << "` from "
        << "the candidates below. Each test is simulated with the verdict's model as the record (the rig's simulator, 1 % friction noise), "
@@ -268,7 +263,6 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
           {"heldout_gap_after", row.heldout_gap_after}, {"noise_floor", gap::finite_or_null(row.noise_floor)},
           {"confidence", gap::finite_or_null(row.confidence)},
           {"confidence_fixed_fits", gap::finite_or_null(row.confidence_fixed_fits)},
-          {"none_as_measured", gap::finite_or_null(row.none_as_measured)},
           {"test_gap_before", gap::finite_or_null(row.test_gap_before)}, {"test_gap_after", gap::finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s},
           {"stage_wall_s", gap::stage_times_json(row.stage_times)}};

@@ -180,9 +180,6 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   d.verdict.refitted = conf.refitted;
   d.verdict.confidence = conf.with_refits.agreement;
   d.verdict.confidence_fixed_fits = conf.fixed.agreement;
-  d.verdict.none_weighed_against = conf.with_refits.alternative;
-  d.verdict.none_as_measured = conf.with_refits.agreement_as_measured;
-  d.verdict.none_had_it_been_true = conf.with_refits.none_under_alternative;
   d.verdict.heldout_gap_after_std = conf.with_refits.heldout_gap_after_std;
   d.stage_times.confidence_s = lap();
 

@@ -96,10 +96,6 @@ struct Verdict {
   double confidence = 0.0;
   double confidence_fixed_fits = 0.0;  // the same bootstrap with every fit held where it is
   std::vector<std::string> refitted;   // refitted in the resamples: "baseline" and the leaders
-  // "none" only (verdict.h Confidence): the closest candidate the confidence weighs the baseline
-  // against, the resamples' agreement with "none" as measured, and had that candidate been true.
-  std::string none_weighed_against;
-  double none_as_measured = 0.0, none_had_it_been_true = 0.0;
   std::vector<std::string> indistinguishable;  // earning candidates the held-out data do not tell from the verdict's
   std::string conclusion;            // one sentence a tribologist can act on
 };

@@ -101,13 +101,6 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   baseline_text(d.calibrated).c_str(), d.verdict.heldout_gap_before, floor_text,
                   top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0, closest.c_str(),
                   closest_gap);
-    if (!d.verdict.none_weighed_against.empty()) {
-      char sure[240];
-      std::snprintf(sure, sizeof sure, " Confidence %s: had %s been true as fitted, these data would still read none in %.0f %% of resamples.",
-                    confidence_text(d.verdict.confidence).c_str(), d.verdict.none_weighed_against.c_str(),
-                    100.0 * d.verdict.none_had_it_been_true);
-      return std::string(buf) + sure;
-    }
   }
   return buf;
 }
@@ -171,9 +164,6 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"confidence", finite_or_null(d.verdict.confidence)},
                   {"confidence_fixed_fits", finite_or_null(d.verdict.confidence_fixed_fits)},
                   {"refitted_in_resamples", d.verdict.refitted},
-                  {"none_weighed_against", d.verdict.none_weighed_against},
-                  {"none_share_as_measured", d.verdict.none_as_measured},
-                  {"none_share_had_it_been_true", d.verdict.none_had_it_been_true},
                   {"indistinguishable_from", d.verdict.indistinguishable},
                   {"noise_floor", d.verdict.noise_floor},
                   {"remaining_gap_in_floors", finite_or_null(d.verdict.remaining_floors)},

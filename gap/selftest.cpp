@@ -245,7 +245,6 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.noise_floor = d.verdict.noise_floor;
   row.confidence = d.verdict.confidence;
   row.confidence_fixed_fits = d.verdict.confidence_fixed_fits;
-  if (!d.verdict.none_weighed_against.empty()) row.none_as_measured = d.verdict.none_as_measured;
   row.correct = row.verdict == sc.true_effect;
   row.indistinguishable_from = d.verdict.indistinguishable;
   for (const Candidate& k : d.candidates)

@@ -235,79 +235,52 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
   // agreement would say 100 % about nothing.
   bool noisy = false;
   for (std::size_t i = 0; i < n; ++i) noisy = noisy || (heldout[i] && noise_r[i] > 0.0);
-  if (units.size() < 2 && !noisy) return {std::numeric_limits<double>::quiet_NaN(), 0.0, {}, 0.0, 0.0};
+  if (units.size() < 2 && !noisy) return {std::numeric_limits<double>::quiet_NaN(), 0.0};
+  std::mt19937_64 rng(o.seed ^ 0x9e3779b97f4a7c15ULL);
+  std::uniform_int_distribution<std::size_t> pick(0, units.size() - 1);
+  std::normal_distribution<double> z;
+  int agree = 0;
+  double s1 = 0.0, s2 = 0.0;
+  std::vector<double> shift(n, 0.0);
   const std::vector<double> s = item_noise(items, noise_r);
   std::vector<bool> train(n);
   for (std::size_t i = 0; i < n; ++i) train[i] = !heldout[i];
-
-  // The share of resamples that give `verdict`, with every model's residuals taken relative to
-  // candidate `truth`'s (−1: as fitted — the data as they are). Both runs draw the same resamples
-  // (common random numbers), so their ratio is not blurred by two independent draws.
-  const auto share = [&](int truth, double* gap_std) {
-    std::mt19937_64 rng(o.seed ^ 0x9e3779b97f4a7c15ULL);
-    std::uniform_int_distribution<std::size_t> pick(0, units.size() - 1);
-    std::normal_distribution<double> z;
-    int agree = 0;
-    double s1 = 0.0, s2 = 0.0;
-    std::vector<double> shift(n, 0.0);
-    for (int b = 0; b < o.bootstrap_samples; ++b) {
-      std::map<int, int> times;
-      for (std::size_t k = 0; k < units.size(); ++k) ++times[units[pick(rng)]];
-      for (std::size_t i = 0; i < n; ++i) {
-        shift[i] = heldout[i] && noise_r[i] > 0.0 ? noise_r[i] * z(rng) : 0.0;
-        // Data that follow `truth` carry no noise once its residuals are taken off; they are given
-        // the record's (one more draw) besides the one every resample adds.
-        if (truth >= 0 && heldout[i] && noise_r[i] > 0.0) shift[i] += noise_r[i] * z(rng);
-      }
-      Multiplicity m(n, 0.0);
-      for (std::size_t i = 0; i < n; ++i)
-        if (heldout[i] && times.count(items[i].unit)) m[i] = times[items[i].unit];
-      const Refit* refit = refits.empty() ? nullptr : &refits[static_cast<std::size_t>(b) % refits.size()];
-      const auto fitted = [&](int k) -> const std::vector<double>& {
-        if (k < 0) return refit ? refit->baseline : baseline_residuals;
-        const std::size_t c = static_cast<std::size_t>(k);
-        if (refit)
-          if (const auto it = refit->candidates.find(c); it != refit->candidates.end()) return it->second;
-        return candidates[c].residuals;
-      };
-      const auto resampled = [&](int k) {
-        std::vector<double> out = fitted(k);
-        for (std::size_t i = 0; i < n; ++i) out[i] += shift[i] - (truth >= 0 ? fitted(truth)[i] : 0.0);
-        return out;
-      };
-      const std::vector<double> before = resampled(-1);
-      const double gap_before = gap(items, before, m), floor = gap(items, noise_r, m);
-      const std::vector<double> baseline_lpd = log_density(before, predictive(items, before, s, train));
-      std::vector<Standing> standing;
-      for (std::size_t c = 0; c < candidates.size(); ++c)
-        standing.push_back(standing_of(items, resampled(static_cast<int>(c)), s, train, baseline_lpd, gap_before, m,
-                                       static_cast<int>(candidates.size())));
-      const Decision k = decide(candidates, standing, m, o, gap_before, floor);
-      const std::string winner =
-          k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(candidates[static_cast<std::size_t>(k.index)].effects);
-      agree += winner == verdict;
-      const double g = gap(items, resampled(chosen), m);
-      s1 += g, s2 += g * g;
-    }
-    const double B = o.bootstrap_samples;
-    if (gap_std) *gap_std = B > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / B) / (B - 1))) : 0.0;
-    return agree / B;
+  const auto shifted = [&](const std::vector<double>& r) {
+    std::vector<double> out = r;
+    for (std::size_t i = 0; i < n; ++i) out[i] += shift[i];
+    return out;
   };
-
-  Confidence out;
-  out.agreement = share(-1, &out.heldout_gap_after_std);
-  // "none" asserts an absence, which is only as sure as an effect would have shown: the closest
-  // candidate (the most held-out evidence; `candidates` are ranked) had it been true — the
-  // record its fitted prediction plus the data's noise — gives "none" as well in a share of
-  // resamples; with even odds on the two, P(baseline | "none") = a / (a + b).
-  if (verdict == "none" && !candidates.empty()) {
-    out.alternative = verdict_name(candidates.front().effects);
-    out.none_under_alternative = share(0, nullptr);
-    out.agreement_as_measured = out.agreement;
-    if (out.agreement + out.none_under_alternative > 0.0)
-      out.agreement = out.agreement / (out.agreement + out.none_under_alternative);
+  for (int b = 0; b < o.bootstrap_samples; ++b) {
+    std::map<int, int> times;
+    for (std::size_t k = 0; k < units.size(); ++k) ++times[units[pick(rng)]];
+    for (std::size_t i = 0; i < n; ++i) shift[i] = heldout[i] && noise_r[i] > 0.0 ? noise_r[i] * z(rng) : 0.0;
+    Multiplicity m(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (heldout[i] && times.count(items[i].unit)) m[i] = times[items[i].unit];
+    const Refit* refit = refits.empty() ? nullptr : &refits[static_cast<std::size_t>(b) % refits.size()];
+    const auto fitted = [&](int k) -> const std::vector<double>& {
+      if (k < 0) return refit ? refit->baseline : baseline_residuals;
+      const std::size_t c = static_cast<std::size_t>(k);
+      if (refit)
+        if (const auto it = refit->candidates.find(c); it != refit->candidates.end()) return it->second;
+      return candidates[c].residuals;
+    };
+    const std::vector<double> before = shifted(fitted(-1));
+    const double gap_before = gap(items, before, m), floor = gap(items, noise_r, m);
+    const std::vector<double> baseline_lpd = log_density(before, predictive(items, before, s, train));
+    std::vector<Standing> standing;
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, gap_before, m,
+                                     static_cast<int>(candidates.size())));
+    const Decision k = decide(candidates, standing, m, o, gap_before, floor);
+    const std::string winner =
+        k.unexplained ? "unexplained" : k.index < 0 ? "none" : verdict_name(candidates[static_cast<std::size_t>(k.index)].effects);
+    agree += winner == verdict;
+    const double g = gap(items, shifted(fitted(chosen)), m);
+    s1 += g, s2 += g * g;
   }
-  return out;
+  const double B = o.bootstrap_samples;
+  return {agree / B, B > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / B) / (B - 1))) : 0.0};
 }
 
 }  // namespace tribo::gap

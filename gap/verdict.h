@@ -152,21 +152,9 @@ struct Refit {
 // With `refits`, resample b takes the baseline's and the refitted candidates' residuals from
 // refits[b mod R] (the training redraws and the held-out redraws are independent, so pairing them
 // in turn samples both); the other candidates keep their fitted residuals.
-// "none" is the one verdict that asserts an absence, and the resamples' agreement a with it says
-// only that no candidate clears the bar on these data, not that an effect would have. So for
-// "none" the same resamples are drawn again from data that follow the closest candidate (the
-// first of `candidates`, ranked by held-out evidence): every model's residuals less that
-// candidate's, with the data's noise drawn once more in its place. The share b of those that
-// still read "none" is how often an effect of the size the candidate fits goes unseen, and the
-// confidence is the posterior of the baseline against it at even prior odds, a / (a + b): about ½
-// where the candidate's effect lies below the noise (a control, or an effect the data cannot
-// see), near 1 where the held-out data would have shown it.
 struct Confidence {
   double agreement = 0.0;
   double heldout_gap_after_std = 0.0;
-  std::string alternative;              // "none" only: the candidate it is weighed against
-  double agreement_as_measured = 0.0;   // "none" only: a
-  double none_under_alternative = 0.0;  // "none" only: b
 };
 Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vector<bool>& heldout, const std::vector<double>& noise_r,
                                 const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates, int chosen,
