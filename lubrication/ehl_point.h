@@ -30,11 +30,13 @@
 //               the nodes within `preconditioner_reach` of each other (0: each node's own cell —
 //               the fastest on 129² and 257²; the wider near fields of 1–2 cut GMRES iterations by
 //               a third but fill the LU more), its dense load row and H0 column by their Schur
-//               complement. The LU is analysed once per grid and refactorised only when GMRES
-//               slows down; GMRES solves no more exactly than Newton's progress can use
-//               (Eisenstat–Walker) or the tolerance needs; the start is the solve on a grid half
-//               as fine. Memory and cost grow like N log N a GMRES iteration: 129² ≈ 0.8 s, 257²
-//               ≈ 4–4.5 s (BM_EhlPoint), 5–6 Newton steps on each grid.
+//               complement. The LU is analysed once per grid — on a second thread while the
+//               coarser grid that starts this one is solved — and refactorised only when GMRES
+//               slows down; GMRES (classical Gram–Schmidt) solves no more exactly than Newton's
+//               progress can use (Eisenstat–Walker) or the tolerance needs; the start is the solve
+//               on a grid half as fine, interpolated by cubics. Memory and cost grow like N log N a
+//               GMRES iteration: 129² ≈ 0.5 s, 257² ≈ 1.8–2.1 s at 10 N and 2.2–2.7 s at 20 N, 513²
+//               ≈ 13–15 s (BM_EhlPoint, 2026-11-30), 4–5 Newton steps on each grid.
 // `linear_solver = automatic` takes the dense LU up to 21 × 21 nodes and Newton–Krylov beyond
 // (measured with the minimum NCP function, 2–50 N: 25² 0.04–0.07 s against 0.09–0.10 s dense, 31²
 // 0.07–0.12 s against 0.18–0.21 s, 41² 0.07–0.38 s against 0.56–0.65 s; 17²–21² the same to 0.01 s).
@@ -80,7 +82,10 @@ struct EhlPointOptions {
   // Converged when the scaled residual ‖F‖∞ ≤ tolerance, F = (φ(P, −c R_Reynolds) in units of p_H,
   // load balance ΔXΔY ΣP − 2π/3), and the pressures' error left is at most 10·tolerance·max(1, max P)
   // (the last step, or after a full step that step times the residual's contraction: ehl_newton.h).
-  double tolerance = 1e-9;
+  // 1e-7 (1e-9 until 2026-11-30): on the tests' ball at 2, 10 and 20 N the central and minimum
+  // film and the peak pressure equal 1e-9's to 3e-9 of their value on 129² and 257², where one
+  // grid's refinement moves them by 1 %; the solve is a Newton step shorter on 257² at 10 N.
+  double tolerance = 1e-7;
   int max_newton_iterations = 30;   // per solve (the direct one and each continuation step)
   int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)
   // The NCP function of the cavitation (complementarity.h). The minimum function: Newton stays
@@ -92,7 +97,8 @@ struct EhlPointOptions {
   EhlPointLinearSolver linear_solver = EhlPointLinearSolver::automatic;
   int preconditioner_reach = 0;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
   // Newton–Krylov: start from the solve on a grid about half as fine (recursively; the dense LU
-  // once it is small; each to ‖F‖∞ ≤ max(tolerance, 1e-6), a start needing no more), interpolated —
+  // once it is small; each to ‖F‖∞ ≤ max(tolerance, 1e-4), a start needing no more: the finer
+  // grid's residual at it, ≈ 0.07, is the two discretisations' difference), interpolated —
   // within Newton's reach where the Hertz start needs the continuation (129² on the tests' ball at
   // 10 N: 5 Newton steps; with Fischer–Burmeister 11, and 160 through the continuation from the
   // Hertz start). Where the coarser solve does not converge (its continuation limited to 4 solves),
