@@ -60,7 +60,8 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
       e_star_Pa_(e_star_Pa),
       periodic_(periodic),
       fft_(periodic ? grid.nx : padded_length(grid.nx), periodic ? grid.ny : padded_length(grid.ny),
-           fft_threads(grid, periodic, threads), measure_fft) {
+           fft_threads(grid, periodic, threads), measure_fft),
+      one_thread_(threads == 1) {
   if (!(std::isfinite(e_star_Pa) && e_star_Pa > 0.0)) {
     throw std::invalid_argument("composite modulus e_star_Pa must be positive and finite");
   }
@@ -131,7 +132,7 @@ double ElasticHalfSpace::displacement_and_energy(const Eigen::ArrayXXd& p, Eigen
   const Eigen::Index mxh = fft_.nx_half(), my = fft_.ny();
   const bool even_x = fft_.nx() % 2 == 0;
   double energy = 0.0;
-#pragma omp parallel for if (mxh * my >= Eigen::Index{1} << 15) reduction(+ : energy) schedule(static)
+#pragma omp parallel for if (!one_thread_ && mxh * my >= Eigen::Index{1} << 15) reduction(+ : energy) schedule(static)
   for (Eigen::Index j = 0; j < my; ++j) {
     std::complex<double>* col = s + j * mxh;
     const double* k = kernel_.data() + j * mxh;

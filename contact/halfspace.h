@@ -28,7 +28,8 @@ double composite_modulus_Pa(double e1_Pa, double nu1, double e2_Pa, double nu2);
 
 class ElasticHalfSpace {
  public:
-  // `threads` as for RealFft2d (0 = all OpenMP threads).
+  // `threads` as for RealFft2d (0 = all OpenMP threads); 1 keeps the spectrum's product on the
+  // caller's thread too (no OpenMP team whose idle threads spin beside a caller's own threads).
   ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool periodic, int threads = 0, bool measure_fft = false);
 
   const Grid& grid() const { return grid_; }
@@ -54,6 +55,7 @@ class ElasticHalfSpace {
   RealFft2d fft_;                // nx × ny (periodic) or ≥ 2nx × 2ny (padded)
   Eigen::ArrayXd kernel_;        // real Fourier multiplier on the half spectrum, 1/(FFT size) folded in
   double self_compliance_ = 0.0;
+  bool one_thread_ = false;      // constructed with threads = 1
 };
 
 }  // namespace tribo::contact
