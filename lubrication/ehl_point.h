@@ -92,7 +92,7 @@ struct EhlPointOptions {
   // quadratic to the end (6 steps on each grid of the tests' ball where Fischer–Burmeister took 11–14,
   // linear near the cavitation front), full steps from the Hertz start (33² at 10 N: 6 steps against
   // 14 damped ones) — with the other changes of 2026-11-29, 257² in 4–4.5 s instead of 9.5–12
-  // (BM_EhlPoint).
+  // (BM_EhlPoint; 2.0–2.7 s since 2026-11-30, the header's method).
   Complementarity complementarity = Complementarity::minimum;
   EhlPointLinearSolver linear_solver = EhlPointLinearSolver::automatic;
   int preconditioner_reach = 0;     // Newton–Krylov: kernel entries within ±reach nodes in x and y (0–16)
