@@ -275,7 +275,7 @@ class PointProblem {
     residual(s, row_scales(s), &jac);
     analysis_ = std::async(std::launch::async, [local = local_matrix(jac)]() {
       Analysis a;
-      a.solver = make_linear_solver(LinearSolverKind::umfpack, {}, DirectSolveOptions{0});
+      a.solver = preconditioner_lu();
       a.status = a.solver->analyze(local);
       a.nonzeros = local.nonZeros();
       return a;
@@ -283,6 +283,10 @@ class PointProblem {
   }
 
  private:
+  // The preconditioner's LU: UMFPACK without iterative refinement, whose inexactness GMRES absorbs.
+  static std::unique_ptr<SparseLinearSolver> preconditioner_lu() {
+    return make_linear_solver(LinearSolverKind::umfpack, {}, DirectSolveOptions{0});
+  }
   // A = S + D K_near of the preconditioner (krylov_step), compressed as UMFPACK reads it.
   SparseMatrix local_matrix(const Jacobian& jac) const {
     Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * near_kernel_;
@@ -343,7 +347,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
       if (early.status.ok && early.nonzeros == factored_.nonZeros()) lu_ = std::move(early.solver), analysed_nonzeros_ = early.nonzeros;
     }
     if (!lu_ || !lu_->analyzed() || factored_.nonZeros() != analysed_nonzeros_) {
-      lu_ = make_linear_solver(LinearSolverKind::umfpack, {}, DirectSolveOptions{0});
+      lu_ = preconditioner_lu();
       if (const LinearSolveStatus status = lu_->analyze(factored_); !status.ok) {
         why = "the preconditioner's analysis failed: " + status.message;
         return false;
