@@ -1,5 +1,6 @@
 #include "contact/halfspace.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -22,13 +23,14 @@ double love_influence(double x, double y, double a, double b, double e_star) {
   return s / (std::numbers::pi * e_star);
 }
 
-// The padded FFT length for n nodes: the smallest even m ≥ 2n with no prime factor above 5, so
-// that the circular convolution is the linear one on the patch (m ≥ 2n − 1) and FFTW runs its
-// fast codelets — 2n itself for a power of two, but 540 rather than 514 = 2 · 257 for 257 nodes
-// (an r2c + c2r pair on 540² takes a quarter of the time on 514²: a prime factor of 257 leaves
-// FFTW its generic algorithm).
+// The padded FFT length for n nodes: the smallest even m ≥ 2n − 2 with no prime factor above 5.
+// The circular convolution is the linear one on the patch when no two offsets within ±(n − 1)
+// share an index mod m; at m = 2n − 2 only +(n − 1) and −(n − 1) do, and the kernel is even, so
+// its values there are equal. Small prime factors let FFTW run its fast codelets: 2n for a power
+// of two n, and 2ⁿ⁺¹ for 2ⁿ + 1 nodes — 512 for 257 (an r2c + c2r pair on 514² took four times
+// as long as on 540², the smallest 5-smooth length ≥ 2n, and 540² is 11 % more points than 512²).
 Eigen::Index padded_length(Eigen::Index n) {
-  for (Eigen::Index m = 2 * n;; m += 2) {
+  for (Eigen::Index m = std::max<Eigen::Index>(2, 2 * n - 2);; m += 2) {
     Eigen::Index r = m;
     for (const Eigen::Index f : {2, 3, 5})
       while (r % f == 0) r /= f;
@@ -89,7 +91,7 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
   } else {
     const double a = 0.5 * grid.dx_m, b = 0.5 * grid.dy_m;
     auto real = fft_.real();
-    // Wrapped offsets: index i ↔ offset i up to m/2, i − m above (m the padded length ≥ 2nx);
+    // Wrapped offsets: index i ↔ offset i up to m/2, i − m above (m the padded length ≥ 2nx − 2);
     // offsets beyond ±(nx − 1) are never reached by a convolution restricted to the nx × ny patch.
     for (Eigen::Index j = 0; j < my; ++j) {
       const double y = grid.dy_m * static_cast<double>(signed_frequency(j, my));

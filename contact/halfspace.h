@@ -10,9 +10,10 @@
 //                        + (x−a)(ash((y−b)/|x−a|) − ash((y+b)/|x−a|))
 //                        + (y−b)(ash((x−a)/|y−b|) − ash((x+a)/|y−b|)) ]   (ash = asinh)
 //     (Johnson, Contact Mechanics (1985) §3.9, written with asinh to avoid cancellation),
-//     evaluated on a grid of at least 2nx × 2ny (the next lengths with no prime factor above 5)
-//     with the pressure zero-padded, so the circular convolution equals the linear one on the
-//     nx × ny patch (Liu, Wang & Liu 2000, DC-FFT).
+//     evaluated on a grid of at least (2nx − 2) × (2ny − 2) (the next lengths with no prime factor
+//     above 5) with the pressure zero-padded, so the circular convolution equals the linear one on
+//     the nx × ny patch (Liu, Wang & Liu 2000, DC-FFT; K is even, so the one offset pair that
+//     shares an index, ±(n − 1), has equal values).
 // u > 0 is displacement into the body (the gap opens); units m from Pa.
 #pragma once
 
@@ -52,7 +53,7 @@ class ElasticHalfSpace {
   Grid grid_;
   double e_star_Pa_;
   bool periodic_;
-  RealFft2d fft_;                // nx × ny (periodic) or ≥ 2nx × 2ny (padded)
+  RealFft2d fft_;                // nx × ny (periodic) or ≥ (2nx − 2) × (2ny − 2) (padded)
   Eigen::ArrayXd kernel_;        // real Fourier multiplier on the half spectrum, 1/(FFT size) folded in
   double self_compliance_ = 0.0;
   bool one_thread_ = false;      // constructed with threads = 1

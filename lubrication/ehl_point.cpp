@@ -34,7 +34,7 @@ class PointProblem {
  public:
   PointProblem(const EhlPointContact& c, const PiezoviscousLubricant& l, const EhlPointOptions& o, bool dense)
       : lub_(l), complementarity_(o.complementarity), dense_(dense), krylov_(o.krylov), tolerance_(o.tolerance), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
-        dy_(2.0 * o.side_over_radius / (o.nodes_y - 1)) {
+        dy_(2.0 * o.side_over_radius / (o.nodes_y - 1)), symmetric_(o.symmetric_in_y), first_row_(symmetric_ ? o.nodes_y / 2 : 1) {
     a_ = reference::hertz_point_radius_m(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
     ph_ = reference::hertz_point_peak_pressure_Pa(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
     radius_ = c.reduced_radius_m;
@@ -54,11 +54,12 @@ class PointProblem {
                           inverse_distance_antiderivative(s - hx, t + hy) + inverse_distance_antiderivative(s - hx, t - hy));
       }
     if (dense_) {
-      kernel_.resize(nx_ * ny_, interior());
+      // A node and its mirror image share an unknown: its column holds both cells' deflections.
+      kernel_.setZero(nx_ * ny_, interior());
       for (int j = 0; j < ny_; ++j)
         for (int i = 0; i < nx_; ++i)
           for (int l = 1; l <= ny_ - 2; ++l)
-            for (int k = 1; k <= nx_ - 2; ++k) kernel_(node(i, j), unknown(k, l)) = offset(std::abs(i - k), std::abs(j - l));
+            for (int k = 1; k <= nx_ - 2; ++k) kernel_(node(i, j), unknown(k, l)) += offset(std::abs(i - k), std::abs(j - l));
     } else {
       // The same operator by FFT: contact/'s non-periodic half-space is Love's cell integral times
       // 1/(π E*), so E* = π/2 gives the (2/π²) ∫∫ 1/r here. The preconditioner keeps its near field.
@@ -70,7 +71,7 @@ class PointProblem {
         for (int k = 1; k <= nx_ - 2; ++k)
           for (int j = std::max(0, l - reach); j <= std::min(ny_ - 1, l + reach); ++j)
             for (int i = std::max(0, k - reach); i <= std::min(nx_ - 1, k + reach); ++i)
-              near.emplace_back(node(i, j), unknown(k, l), offset(std::abs(i - k), std::abs(j - l)));
+              near.emplace_back(node(i, j), unknown(k, l), offset(std::abs(i - k), std::abs(j - l)));  // mirrors summed
       near_kernel_.resize(nx_ * ny_, interior());
       near_kernel_.setFromTriplets(near.begin(), near.end());
     }
@@ -78,13 +79,21 @@ class PointProblem {
     rigid_.resize(nx_ * ny_);
     for (int j = 0; j < ny_; ++j)
       for (int i = 0; i < nx_; ++i) rigid_(node(i, j)) = 0.5 * (x_(i) * x_(i) + y_(j) * y_(j));
+    // The load row ΔXΔY Σ P over every interior node: an unknown counts once more for its mirror.
+    load_weights_.resize(interior());
+    for (int j = first_row_; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i) load_weights_(unknown(i, j)) = dx_ * dy_ * (symmetric_ && mirror(j) != j ? 2.0 : 1.0);
   }
 
-  int interior() const { return (nx_ - 2) * (ny_ - 2); }
+  // Pressure unknowns: the interior nodes of the rows first_row_ … ny − 2 (all interior rows, or
+  // with EhlPointOptions::symmetric_in_y the upper half and the centre row); a row below stands
+  // for its mirror image ny − 1 − j.
+  int interior() const { return (nx_ - 2) * (ny_ - 1 - first_row_); }
   int unknowns() const { return interior() + 1; }
   int pressure_unknowns() const { return interior(); }
   int node(int i, int j) const { return i + nx_ * j; }
-  int unknown(int i, int j) const { return (i - 1) + (nx_ - 2) * (j - 1); }
+  int mirror(int j) const { return ny_ - 1 - j; }
+  int unknown(int i, int j) const { return (i - 1) + (nx_ - 2) * ((j < first_row_ ? mirror(j) : j) - first_row_); }
   bool inside(int i, int j) const { return i >= 1 && i <= nx_ - 2 && j >= 1 && j <= ny_ - 2; }
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -148,7 +157,7 @@ class PointProblem {
   // the line contact's: c R reads as a pressure in the thick inlet and the stiff Hertz zone alike.
   Eigen::VectorXd row_scales(const Nodal& s) const {
     Eigen::VectorXd c(interior());
-    for (int j = 1; j <= ny_ - 2; ++j)
+    for (int j = first_row_; j <= ny_ - 2; ++j)
       for (int i = 1; i <= nx_ - 2; ++i) {
         const auto e = [&](int ii, int jj) { return s.eps(node(ii, jj)); };
         const double xx = 0.5 * (e(i - 1, j) + 2.0 * e(i, j) + e(i + 1, j)) / (dx_ * dx_);
@@ -178,7 +187,7 @@ class PointProblem {
       through_film.reserve(static_cast<std::size_t>(5 * np));
       stencil.reserve(static_cast<std::size_t>(11 * np));
     }
-    for (int j = 1; j <= ny_ - 2; ++j)
+    for (int j = first_row_; j <= ny_ - 2; ++j)
       for (int i = 1; i <= nx_ - 2; ++i) {
         const int row = unknown(i, j), here = node(i, j);
         const int east = node(i + 1, j), west = node(i - 1, j), north = node(i, j + 1), south = node(i, j - 1);
@@ -253,7 +262,7 @@ class PointProblem {
       m.topLeftCorner(np, np) = jacobian->stencil;
       m.topLeftCorner(np, np).noalias() += jacobian->through_film * kernel_;
       m.col(np).head(np) = jacobian->h0_column;
-      m.row(np).head(np).setConstant(cell);
+      m.row(np).head(np) = load_weights_.transpose();
     }
     return f;
   }
@@ -305,7 +314,9 @@ class PointProblem {
   double tolerance_;  // Newton's, on ‖F‖∞
   int nx_, ny_;
   double dx_, dy_, a_ = 0.0, ph_ = 0.0, radius_ = 0.0, self_ = 0.0;
-  Eigen::VectorXd x_, y_, rigid_;
+  bool symmetric_;  // EhlPointOptions::symmetric_in_y
+  int first_row_;   // the lowest row of unknowns (interior())
+  Eigen::VectorXd x_, y_, rigid_, load_weights_;
   Eigen::MatrixXd kernel_;  // all nodes × interior nodes (dense method)
   Eigen::SparseMatrix<double, Eigen::RowMajor> near_kernel_;  // its entries within the reach (Krylov)
   std::unique_ptr<contact::ElasticHalfSpace> halfspace_;  // K by FFT (Krylov); its buffers make products non-const
@@ -313,7 +324,7 @@ class PointProblem {
   // The Krylov preconditioner: its matrix (UMFPACK's solve reads it), factors and their state.
   mutable SparseMatrix factored_;
   mutable Eigen::VectorXd border_;  // A⁻¹ b: the film constant's column through the factors
-  mutable double schur_ = 0.0;      // ΔXΔY Σ A⁻¹b: the load row's Schur complement (up to sign)
+  mutable double schur_ = 0.0;      // wᵀA⁻¹b: the load row's Schur complement (up to sign)
   mutable std::unique_ptr<SparseLinearSolver> lu_;
   struct Analysis {
     std::unique_ptr<SparseLinearSolver> solver;
@@ -333,8 +344,7 @@ class PointProblem {
 
 bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen::VectorXd& step, std::string& why) const {
   const int np = interior();
-  const double cell = dx_ * dy_;
-  // The preconditioner: [A, b; ΔXΔY 1ᵀ, 0] with A = S + D K_near at this step, solved by the LU of
+  // The preconditioner: [A, b; wᵀ, 0] (w the load row's weights) with A = S + D K_near at this step, solved by the LU of
   // A alone (the load row and the H0 column are dense: in the LU they made UMFPACK's symbolic
   // analysis of 257² take 1 s) and the border by its scalar Schur complement, A⁻¹ b kept with
   // the factors. A's pattern is the same at every step (residual() keeps zero coefficients), so the
@@ -362,7 +372,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
       why = "the preconditioner's solve failed: " + status.message;
       return false;
     }
-    schur_ = cell * border_.sum();
+    schur_ = load_weights_.dot(border_);
     if (!std::isfinite(schur_) || schur_ == 0.0) {
       why = "the preconditioner is singular: the load does not depend on the film constant through it";
       return false;
@@ -375,10 +385,10 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
     const Eigen::VectorXd film = deflection(v.head(np));
     y.resize(np + 1);
     y.head(np) = jac.stencil * v.head(np) + jac.through_film * film + jac.h0_column * v(np);
-    y(np) = cell * v.head(np).sum();
+    y(np) = load_weights_.dot(v.head(np));
     return true;
   };
-  // z = M⁻¹ r: A z_p + b z_H0 = r_p and ΔXΔY Σ z_p = r_H0, so z_H0 = (ΔXΔY Σ A⁻¹r_p − r_H0) / (ΔXΔY Σ A⁻¹b).
+  // z = M⁻¹ r: A z_p + b z_H0 = r_p and wᵀz_p = r_H0, so z_H0 = (wᵀA⁻¹r_p − r_H0) / (wᵀA⁻¹b).
   const numerics::LinearMap precondition = [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) {
     Eigen::VectorXd y;
     const LinearSolveStatus status = lu_->solve(r.head(np), y);
@@ -387,7 +397,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
       return false;
     }
     z.resize(np + 1);
-    z(np) = (cell * y.sum() - r(np)) / schur_;
+    z(np) = (load_weights_.dot(y) - r(np)) / schur_;
     z.head(np) = y - border_ * z(np);
     return true;
   };

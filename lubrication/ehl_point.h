@@ -104,6 +104,11 @@ struct EhlPointOptions {
   // Hertz start). Where the coarser solve does not converge (its continuation limited to 4 solves),
   // the Hertz start.
   bool start_from_coarser_grid = true;
+  // Solve for the half |Y| ≥ 0 only (Hamrock & Dowson 1976 did the same): the smooth contact,
+  // entrained along x, is symmetric in y, so a node and its mirror image share one unknown. Half
+  // the unknowns for the sparse LU, GMRES and the Jacobian; the film by the same full-grid FFT.
+  // The full grid (false) is the reference the tests compare it with.
+  bool symmetric_in_y = true;
   EhlPointKrylovOptions krylov;
 };
 

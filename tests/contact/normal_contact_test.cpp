@@ -9,6 +9,7 @@
 
 #include "contact/halfspace.h"
 #include "contact/normal_contact.h"
+#include "contact/reference/boussinesq.h"
 #include "contact/reference/hertz.h"
 #include "contact/reference/westergaard.h"
 #include "contact/surface.h"
@@ -404,6 +405,39 @@ TEST(HalfSpace, UniformSquareLoadMatchesLoveAtTheCentre) {
   const double centre = 4.0 * c * 1e6 / (std::numbers::pi * kEStar) * 2.0 * std::log(1.0 + std::sqrt(2.0));
   EXPECT_NEAR(u(32, 32) / centre, 1.0, 1e-10);
 }
+
+// The zero padding at its smallest (2n − 2 nodes, contact/halfspace.h): a cell loaded in one corner
+// displaces the cells n − 1 away, in the far corners, as a Boussinesq point force does with the
+// cell's second moment added — u = F/(π E* r) (1 + Δ²/(24 r²)) for a square cell of side Δ, the
+// next term O(Δ⁴/r⁴) ≈ 1e-5 at r = 16Δ — while a circular image one padding step (2 nodes) too
+// close would be 14 % off on 17 nodes. The load in the opposite corner gives the mirrored field
+// (the kernel is even) to round-off. 17 and 26 nodes pad to 32 and 50, whose next smaller even
+// lengths 30 and 48 also have no prime factor above 5 (a padding rule that reached them would be
+// seen here); 257 pads to 512 (540 before 2026-11-30).
+class HalfSpacePadding : public ::testing::TestWithParam<Eigen::Index> {};
+
+TEST_P(HalfSpacePadding, CornerLoadReachesTheFarCornersAsABoussinesqForce) {
+  const Eigen::Index n = GetParam();
+  const Grid grid = Grid::patch(n, n, 1e-3, 1e-3);
+  ElasticHalfSpace hs(grid, kEStar, false);
+  Eigen::ArrayXXd p = Eigen::ArrayXXd::Zero(n, n), u, v;
+  p(0, 0) = 1e6;
+  hs.displacement(p, u);
+  const double force_N = 1e6 * grid.dx_m * grid.dy_m;
+  const auto square_cell = [&](double r_m) {
+    return reference::boussinesq_displacement_m(force_N, r_m, kEStar) * (1.0 + grid.dx_m * grid.dx_m / (24.0 * r_m * r_m));
+  };
+  const double side_m = static_cast<double>(n - 1) * grid.dx_m;
+  EXPECT_NEAR(u(n - 1, n - 1) / square_cell(std::sqrt(2.0) * side_m), 1.0, 2e-5);
+  EXPECT_NEAR(u(n - 1, 0) / square_cell(side_m), 1.0, 2e-5);
+  EXPECT_NEAR(u(0, n - 1) / square_cell(side_m), 1.0, 2e-5);
+  p(0, 0) = 0.0;
+  p(n - 1, n - 1) = 1e6;
+  hs.displacement(p, v);
+  EXPECT_LE((v - u.reverse()).abs().maxCoeff(), 1e-12 * u.abs().maxCoeff());
+}
+
+INSTANTIATE_TEST_SUITE_P(OddAndEvenGrids, HalfSpacePadding, ::testing::Values(17, 26, 257));
 
 }  // namespace
 }  // namespace tribo::contact
