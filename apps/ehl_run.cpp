@@ -89,7 +89,7 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     };
     if (run.point) {
       lub::EhlPointOptions& o = run.point_options;
-      // Beyond 21² Newton–Krylov (ehl_point.h): 257² takes ≈ 2–2.7 s, 513² ≈ 10–11 s and 0.8 GB — the limit.
+      // Beyond 21² Newton–Krylov (ehl_point.h): 257² takes ≈ 1–1.4 s, 513² ≈ 5–7 s and 0.4 GB — the limit.
       o.nodes_x = static_cast<int>(s->integer("nodes_x", o.nodes_x, 11, 513));
       o.nodes_y = static_cast<int>(s->integer("nodes_y", o.nodes_y, 11, 513));
       const std::string method = s->choice("linear_solver", "automatic", {"automatic", "dense_lu", "newton_krylov"});

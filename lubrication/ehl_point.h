@@ -35,8 +35,11 @@
 //               slows down; GMRES (classical Gram–Schmidt) solves no more exactly than Newton's
 //               progress can use (Eisenstat–Walker) or the tolerance needs; the start is the solve
 //               on a grid half as fine, interpolated by cubics. Memory and cost grow like N log N a
-//               GMRES iteration: 129² ≈ 0.45–0.6 s, 257² ≈ 2.0–2.75 s at 10 and 20 N, 513²
-//               ≈ 10.1–10.6 s (BM_EhlPoint, 2026-11-30, bench/README.md), 4–5 Newton steps on each grid.
+//               GMRES iteration: 129² ≈ 0.2–0.3 s, 257² ≈ 0.9–1.4 s at 10 and 20 N, 513²
+//               ≈ 5.0–6.8 s (BM_EhlPoint, 2026-11-30, bench/README.md), 4–5 Newton steps on each grid.
+// Both solve the half Y ≥ 0 (`symmetric_in_y`): the unknowns of a row below the centre line are
+// those of its mirror image, so the load row counts them twice and the elastic kernel's column of
+// an unknown sums both cells; the film is still computed on every node (the FFT on the full grid).
 // `linear_solver = automatic` takes the dense LU up to 21 × 21 nodes and Newton–Krylov beyond
 // (measured with the minimum NCP function, 2–50 N: 25² 0.04–0.07 s against 0.09–0.10 s dense, 31²
 // 0.07–0.12 s against 0.18–0.21 s, 41² 0.07–0.38 s against 0.56–0.65 s; 17²–21² the same to 0.01 s).
