@@ -11,6 +11,9 @@
 #include <utility>
 
 namespace tribo::contact {
+namespace detail {
+extern const char* const kShippedFftwWisdom;  // contact/fftw_wisdom.txt, compiled in by CMake
+}  // namespace detail
 namespace {
 
 // FFTW's planner is not thread-safe; all planning and plan destruction goes through this lock.
@@ -19,14 +22,24 @@ std::mutex& planner_mutex() {
   return m;
 }
 
+bool wisdom_loaded = false;
+
+// Before the first plan: FFTW's threads, and the shipped wisdom (fft.h).
 void init_threads_once() {
   static std::once_flag once;
   std::call_once(once, [] {
     if (fftw_init_threads() == 0) throw std::runtime_error("FFTW: fftw_init_threads failed");
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    wisdom_loaded = fftw_import_wisdom_from_string(detail::kShippedFftwWisdom) != 0;
   });
 }
 
 }  // namespace
+
+bool shipped_fftw_wisdom_loaded() {
+  init_threads_once();
+  return wisdom_loaded;
+}
 
 RealFft2d::RealFft2d(Eigen::Index nx, Eigen::Index ny, int threads, bool measure) : nx_(nx), ny_(ny) {
   if (nx < 1 || ny < 1) {

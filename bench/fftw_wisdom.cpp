@@ -1,0 +1,35 @@
+// Makes contact/fftw_wisdom.txt, the FFTW wisdom tribo ships (contact/fft.h,
+// shipped_fftw_wisdom_loaded): the plans FFTW_MEASURE chooses on this machine for the r2c and c2r
+// transforms of RealFft2d on square grids 64² … 4096², on 1 and on 2 threads. Run on an idle
+// machine (the planner times its candidates):
+//   OMP_WAIT_POLICY=passive build/bench/fftw_wisdom > contact/fftw_wisdom.txt
+// and rebuild; the wisdom is compiled into tribo_contact. Progress and planning times on stderr.
+#include <fftw3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+#include "contact/fft.h"
+
+int main() {
+  using tribo::contact::RealFft2d;
+  { RealFft2d first(8, 8, 1); }  // FFTW's threads initialised and the shipped wisdom imported ...
+  fftw_forget_wisdom();           // ... and forgotten, so every plan below is measured afresh
+  for (const int threads : {1, 2}) {
+    for (int n = 64; n <= 4096; n *= 2) {
+      const auto start = std::chrono::steady_clock::now();
+      const RealFft2d planned(n, n, threads, true);
+      std::fprintf(stderr, "%d x %d, %d thread(s): planned in %.1f s\n", n, n, threads,
+                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+  }
+  char* wisdom = fftw_export_wisdom_to_string();
+  if (wisdom == nullptr) {
+    std::fputs("fftw_wisdom: FFTW could not export its wisdom\n", stderr);
+    return 1;
+  }
+  std::fputs(wisdom, stdout);
+  std::free(wisdom);
+  return 0;
+}
