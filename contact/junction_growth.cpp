@@ -11,7 +11,7 @@
 namespace tribo::contact {
 namespace {
 
-void require(bool ok, const char* what) {  // literal: nothing built unless it fails
+void require_ramp(bool ok, const char* what) {  // literal: nothing built unless it fails
   if (!ok) throw std::invalid_argument(std::string("junction ramp: ") + what);
 }
 
@@ -48,27 +48,27 @@ bool advance(numerics::Cvode& cv, double s_out, double& s) {
 }  // namespace
 
 double damping_from_location(double w, double sigma0, double n, double location) {
-  require(std::isfinite(w) && w > 0.0, "normal load must be positive");
-  require(std::isfinite(sigma0) && sigma0 > 0.0, "hardness must be positive");
-  require(std::isfinite(n) && n >= 0.0, "n must be non-negative");
-  require(std::isfinite(location) && location > 0.0, "location parameter must be positive");
+  require_ramp(std::isfinite(w) && w > 0.0, "normal load must be positive");
+  require_ramp(std::isfinite(sigma0) && sigma0 > 0.0, "hardness must be positive");
+  require_ramp(std::isfinite(n) && n >= 0.0, "n must be non-negative");
+  require_ramp(std::isfinite(location) && location > 0.0, "location parameter must be positive");
   return std::pow(sigma0, 1.0 + n) / (std::pow(w, n) * location);
 }
 
 JunctionRampResult integrate_junction_ramp(const JunctionRampParams& p) {
-  require(std::isfinite(p.normal_load_N) && p.normal_load_N > 0.0, "normal_load_N must be positive");
-  require(std::isfinite(p.hardness_Pa) && p.hardness_Pa > 0.0, "hardness_Pa must be positive");
-  require(std::isfinite(p.alpha) && p.alpha >= 0.0, "alpha must be non-negative");
-  require(std::isfinite(p.interface_shear_strength_Pa) && p.interface_shear_strength_Pa > 0.0 &&
+  require_ramp(std::isfinite(p.normal_load_N) && p.normal_load_N > 0.0, "normal_load_N must be positive");
+  require_ramp(std::isfinite(p.hardness_Pa) && p.hardness_Pa > 0.0, "hardness_Pa must be positive");
+  require_ramp(std::isfinite(p.alpha) && p.alpha >= 0.0, "alpha must be non-negative");
+  require_ramp(std::isfinite(p.interface_shear_strength_Pa) && p.interface_shear_strength_Pa > 0.0 &&
               std::pow(p.hardness_Pa / p.interface_shear_strength_Pa, 2) > p.alpha,
           "interface_shear_strength_Pa must be positive with (sigma0/tau_i)^2 > alpha (3.1.23)");
-  require(std::isfinite(p.n) && p.n >= 0.0, "n must be non-negative");
-  require(std::isfinite(p.damping_b) && p.damping_b > 0.0, "damping_b must be positive");
-  require(std::isfinite(p.load_rate_N_per_s) && p.load_rate_N_per_s > 0.0, "load_rate_N_per_s must be positive");
-  require(std::isfinite(p.initial_tangential_load_N) && p.initial_tangential_load_N >= 0.0,
+  require_ramp(std::isfinite(p.n) && p.n >= 0.0, "n must be non-negative");
+  require_ramp(std::isfinite(p.damping_b) && p.damping_b > 0.0, "damping_b must be positive");
+  require_ramp(std::isfinite(p.load_rate_N_per_s) && p.load_rate_N_per_s > 0.0, "load_rate_N_per_s must be positive");
+  require_ramp(std::isfinite(p.initial_tangential_load_N) && p.initial_tangential_load_N >= 0.0,
           "initial_tangential_load_N must be non-negative");
-  require(p.relative_tolerance > 0.0 && p.relative_tolerance < 1e-2, "relative_tolerance must lie in (0, 1e-2)");
-  require(p.trajectory_samples >= 0, "trajectory_samples must be >= 0");
+  require_ramp(p.relative_tolerance > 0.0 && p.relative_tolerance < 1e-2, "relative_tolerance must lie in (0, 1e-2)");
+  require_ramp(p.trajectory_samples >= 0, "trajectory_samples must be >= 0");
 
   const double w = p.normal_load_N, sigma0 = p.hardness_Pa;
   const double location = std::pow(sigma0, 1.0 + p.n) / (std::pow(w, p.n) * p.damping_b);  // L, 1/s

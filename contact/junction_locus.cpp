@@ -12,7 +12,7 @@ namespace {
 
 // The message is a literal, so a check that passes allocates nothing: the rig's event functions
 // ask for μs on the locus at every integrator step.
-void require(bool ok, const char* what) {
+void require_locus(bool ok, const char* what) {
   if (!ok) throw std::invalid_argument(std::string("junction model: ") + what);
 }
 
@@ -29,20 +29,20 @@ double hardening_exponent(const JunctionLocus& l) { return l.strain_rate_index_m
 }  // namespace
 
 void validate(const JunctionLocus& l) {
-  require(std::isfinite(l.alpha) && l.alpha > 0.0, "alpha must be positive (thesis: 10..25)");
-  require(std::isfinite(l.n) && l.n >= 0.0, "n must be non-negative (thesis: 1..1.5)");
-  require(std::isfinite(l.sigma0_over_tau_i) && l.sigma0_over_tau_i * l.sigma0_over_tau_i > l.alpha,
+  require_locus(std::isfinite(l.alpha) && l.alpha > 0.0, "alpha must be positive (thesis: 10..25)");
+  require_locus(std::isfinite(l.n) && l.n >= 0.0, "n must be non-negative (thesis: 1..1.5)");
+  require_locus(std::isfinite(l.sigma0_over_tau_i) && l.sigma0_over_tau_i * l.sigma0_over_tau_i > l.alpha,
           "sigma0/tau_i squared must exceed alpha (3.1.23), otherwise there is no upper asymptote");
-  require(std::isfinite(l.location_per_s) && l.location_per_s > 0.0, "location parameter must be positive");
-  require(std::isfinite(l.strain_rate_index_m) && l.strain_rate_index_m >= 0.0 && hardening_exponent(l) < 1.0,
+  require_locus(std::isfinite(l.location_per_s) && l.location_per_s > 0.0, "location parameter must be positive");
+  require_locus(std::isfinite(l.strain_rate_index_m) && l.strain_rate_index_m >= 0.0 && hardening_exponent(l) < 1.0,
           "strain-rate index m must satisfy 0 <= m (1 + n) < 1");
-  require(std::isfinite(l.reference_load_rate_per_s) && l.reference_load_rate_per_s > 0.0,
+  require_locus(std::isfinite(l.reference_load_rate_per_s) && l.reference_load_rate_per_s > 0.0,
           "reference load rate must be positive");
 }
 
 double sigma0_over_tau_i_from_upper_asymptote(double mu_s_max, double alpha) {
-  require(std::isfinite(mu_s_max) && mu_s_max > 0.0, "upper asymptote mu_s_max must be positive");
-  require(std::isfinite(alpha) && alpha > 0.0, "alpha must be positive");
+  require_locus(std::isfinite(mu_s_max) && mu_s_max > 0.0, "upper asymptote mu_s_max must be positive");
+  require_locus(std::isfinite(alpha) && alpha > 0.0, "alpha must be positive");
   return std::sqrt(1.0 / (mu_s_max * mu_s_max) + alpha);  // thesis (3.1.23)
 }
 
@@ -64,7 +64,7 @@ double load_rate_at_static_friction_per_s(const JunctionLocus& l, double mu_s) {
 
 double static_friction_from_load_rate(const JunctionLocus& l, double phi_dot_per_s) {
   const double mu_max = upper_asymptote(l);
-  require(std::isfinite(phi_dot_per_s) && phi_dot_per_s >= 0.0, "load rate must be finite and non-negative");
+  require_locus(std::isfinite(phi_dot_per_s) && phi_dot_per_s >= 0.0, "load rate must be finite and non-negative");
   if (phi_dot_per_s == 0.0) return mu_max;
   // (3.1.24) with (5.1.2) in logarithms: F(μ) = ln q(μ) − n ln μ − c = 0, q = √(1+αμ²) − Sμ and
   // c = ln(φ̇^{1−m(1+n)} φ̇_ref^{m(1+n)} S^{1+n} / L_ref). q falls from 1 at μ = 0 to 0 at μs,max, so
@@ -104,17 +104,17 @@ double location_through_point_per_s(const JunctionLocus& shape_params, double ph
   JunctionLocus l = shape_params;
   l.location_per_s = 1.0;
   const double mu_max = upper_asymptote(l);
-  require(std::isfinite(mu_s) && mu_s > 0.0 && mu_s < mu_max, "mu_s must lie below the upper asymptote");
-  require(std::isfinite(phi_dot_per_s) && phi_dot_per_s > 0.0, "load rate must be positive");
+  require_locus(std::isfinite(mu_s) && mu_s > 0.0 && mu_s < mu_max, "mu_s must lie below the upper asymptote");
+  require_locus(std::isfinite(phi_dot_per_s) && phi_dot_per_s > 0.0, "load rate must be positive");
   const double e = hardening_exponent(l);
   return std::pow(phi_dot_per_s, 1.0 - e) * std::pow(l.reference_load_rate_per_s, e) / shape(l, mu_s);
 }
 
 double tabor_area_m2(double normal_load_N, double tangential_load_N, double alpha, double sigma0_Pa) {
-  require(std::isfinite(normal_load_N) && normal_load_N >= 0.0, "normal load must be non-negative");
-  require(std::isfinite(tangential_load_N), "tangential load must be finite");
-  require(std::isfinite(alpha) && alpha >= 0.0, "alpha must be non-negative");
-  require(std::isfinite(sigma0_Pa) && sigma0_Pa > 0.0, "flow stress sigma0 must be positive");
+  require_locus(std::isfinite(normal_load_N) && normal_load_N >= 0.0, "normal load must be non-negative");
+  require_locus(std::isfinite(tangential_load_N), "tangential load must be finite");
+  require_locus(std::isfinite(alpha) && alpha >= 0.0, "alpha must be non-negative");
+  require_locus(std::isfinite(sigma0_Pa) && sigma0_Pa > 0.0, "flow stress sigma0 must be positive");
   return std::sqrt(normal_load_N * normal_load_N + alpha * tangential_load_N * tangential_load_N) / sigma0_Pa;  // (3.1.9)
 }
 
