@@ -60,13 +60,13 @@ JunctionRampResult integrate_junction_ramp(const JunctionRampParams& p) {
   require_ramp(std::isfinite(p.hardness_Pa) && p.hardness_Pa > 0.0, "hardness_Pa must be positive");
   require_ramp(std::isfinite(p.alpha) && p.alpha >= 0.0, "alpha must be non-negative");
   require_ramp(std::isfinite(p.interface_shear_strength_Pa) && p.interface_shear_strength_Pa > 0.0 &&
-              std::pow(p.hardness_Pa / p.interface_shear_strength_Pa, 2) > p.alpha,
-          "interface_shear_strength_Pa must be positive with (sigma0/tau_i)^2 > alpha (3.1.23)");
+                   std::pow(p.hardness_Pa / p.interface_shear_strength_Pa, 2) > p.alpha,
+               "interface_shear_strength_Pa must be positive with (sigma0/tau_i)^2 > alpha (3.1.23)");
   require_ramp(std::isfinite(p.n) && p.n >= 0.0, "n must be non-negative");
   require_ramp(std::isfinite(p.damping_b) && p.damping_b > 0.0, "damping_b must be positive");
   require_ramp(std::isfinite(p.load_rate_N_per_s) && p.load_rate_N_per_s > 0.0, "load_rate_N_per_s must be positive");
   require_ramp(std::isfinite(p.initial_tangential_load_N) && p.initial_tangential_load_N >= 0.0,
-          "initial_tangential_load_N must be non-negative");
+               "initial_tangential_load_N must be non-negative");
   require_ramp(p.relative_tolerance > 0.0 && p.relative_tolerance < 1e-2, "relative_tolerance must lie in (0, 1e-2)");
   require_ramp(p.trajectory_samples >= 0, "trajectory_samples must be >= 0");
 

@@ -32,12 +32,12 @@ void validate(const JunctionLocus& l) {
   require_locus(std::isfinite(l.alpha) && l.alpha > 0.0, "alpha must be positive (thesis: 10..25)");
   require_locus(std::isfinite(l.n) && l.n >= 0.0, "n must be non-negative (thesis: 1..1.5)");
   require_locus(std::isfinite(l.sigma0_over_tau_i) && l.sigma0_over_tau_i * l.sigma0_over_tau_i > l.alpha,
-          "sigma0/tau_i squared must exceed alpha (3.1.23), otherwise there is no upper asymptote");
+                "sigma0/tau_i squared must exceed alpha (3.1.23), otherwise there is no upper asymptote");
   require_locus(std::isfinite(l.location_per_s) && l.location_per_s > 0.0, "location parameter must be positive");
   require_locus(std::isfinite(l.strain_rate_index_m) && l.strain_rate_index_m >= 0.0 && hardening_exponent(l) < 1.0,
-          "strain-rate index m must satisfy 0 <= m (1 + n) < 1");
+                "strain-rate index m must satisfy 0 <= m (1 + n) < 1");
   require_locus(std::isfinite(l.reference_load_rate_per_s) && l.reference_load_rate_per_s > 0.0,
-          "reference load rate must be positive");
+                "reference load rate must be positive");
 }
 
 double sigma0_over_tau_i_from_upper_asymptote(double mu_s_max, double alpha) {

@@ -7,6 +7,7 @@
 #include <complex>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "contact/fft.h"
 
