@@ -129,6 +129,8 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   md << "\n## Verdict\n\n`" << gap::verdict_name(d.verdict) << "`: held-out gap " << fmt(d.verdict.heldout_gap_before, "%.4g") << " -> "
      << fmt(d.verdict.heldout_gap_after, "%.4g") << " (bootstrap std " << fmt(d.verdict.heldout_gap_after_std, "%.2g") << "), confidence "
      << gap::confidence_text(d.verdict.confidence);
+  if (gap::verdict_name(d.verdict) == "none" && std::isfinite(d.verdict.confidence))
+    md << " (bootstrap agreement " << gap::confidence_text(d.verdict.confidence_bootstrap) << " times the reliability of \"none\")";
   if (!d.verdict.refitted.empty()) {
     std::string refitted;
     for (const auto& r : d.verdict.refitted) refitted += (refitted.empty() ? "" : ", ") + r;

@@ -74,6 +74,7 @@ std::string DiagnosisOptions::invalid_reason() const {
   if (!(unexplained_floors > 1.0)) return "unexplained_floors must exceed 1";
   if (bootstrap_samples < 0) return "bootstrap_samples must not be negative";
   if (refit_leaders < 0) return "refit_leaders must not be negative";
+  if (!(none_reliability > 0.0 && none_reliability <= 1.0)) return "none_reliability must lie in (0, 1]";
   for (const auto& k : calibrate_rig)
     if (k != "stiffness_N_per_m" && k != "damping_N_s_per_m" && k != "damping_ratio" && k != "mass_kg")
       return "cannot calibrate rig key '" + k + "'";
@@ -178,7 +179,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   // 4. Confidence.
   const ConfidenceStage conf = confidence(p, cal, baseline, d.candidates, choice.index, verdict_name(d.verdict));
   d.verdict.refitted = conf.refitted;
-  d.verdict.confidence = conf.with_refits.agreement;
+  d.verdict.confidence_bootstrap = conf.with_refits.agreement;
+  d.verdict.confidence = verdict_confidence(conf.with_refits.agreement, verdict_name(d.verdict), o);
   d.verdict.confidence_fixed_fits = conf.fixed.agreement;
   d.verdict.heldout_gap_after_std = conf.with_refits.heldout_gap_after_std;
   d.stage_times.confidence_s = lap();

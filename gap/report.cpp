@@ -61,7 +61,7 @@ std::string confidence_text(double confidence) {
 }
 
 std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
-  char buf[900];
+  char buf[1400];
   const Localization* top = d.localization.empty() ? nullptr : &d.localization.front();
   char floor_text[160] = "";
   if (d.verdict.noise_floor > 0.0)
@@ -97,10 +97,12 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
   } else {
     std::snprintf(buf, sizeof buf,
                   "No catalogue effect earns its parameters on held-out data: keep %s, "
-                  "whose held-out gap is %.3g%s; the largest remaining share is %s (%s, %.0f %%), closest candidate %s at held-out gap %.3g.",
+                  "whose held-out gap is %.3g%s; the largest remaining share is %s (%s, %.0f %%), closest candidate %s at held-out gap %.3g. "
+                  "Confidence %s: the bootstrap's %s times the share of \"none\" verdicts that were right in the development "
+                  "selftests — an effect that moves the held-out data by less than about one noise floor is not excluded.",
                   baseline_text(d.calibrated).c_str(), d.verdict.heldout_gap_before, floor_text,
                   top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0, closest.c_str(),
-                  closest_gap);
+                  closest_gap, confidence_text(d.verdict.confidence).c_str(), confidence_text(d.verdict.confidence_bootstrap).c_str());
   }
   return buf;
 }
@@ -162,6 +164,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"heldout_gap_after", d.verdict.heldout_gap_after},
                   {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},
                   {"confidence", finite_or_null(d.verdict.confidence)},
+                  {"confidence_bootstrap", finite_or_null(d.verdict.confidence_bootstrap)},
                   {"confidence_fixed_fits", finite_or_null(d.verdict.confidence_fixed_fits)},
                   {"refitted_in_resamples", d.verdict.refitted},
                   {"indistinguishable_from", d.verdict.indistinguishable},

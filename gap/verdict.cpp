@@ -283,4 +283,8 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
   return {agree / B, B > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / B) / (B - 1))) : 0.0};
 }
 
+double verdict_confidence(double agreement, const std::string& verdict, const DiagnosisOptions& o) {
+  return verdict == "none" ? agreement * o.none_reliability : agreement;
+}
+
 }  // namespace tribo::gap

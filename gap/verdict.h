@@ -160,4 +160,9 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
                                 const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates, int chosen,
                                 const std::string& verdict, const DiagnosisOptions& o, const std::vector<Refit>& refits = {});
 
+// The verdict's confidence from its bootstrap agreement: for "none" the agreement times
+// DiagnosisOptions::none_reliability (the bootstrap cannot see an effect below the noise), else the
+// agreement. NaN (not estimable) stays NaN.
+double verdict_confidence(double agreement, const std::string& verdict, const DiagnosisOptions& o);
+
 }  // namespace tribo::gap

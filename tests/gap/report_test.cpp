@@ -76,9 +76,15 @@ TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {
   EXPECT_EQ(verdict_name(d.verdict), "unexplained");
 
   d.verdict.unexplained = false;
+  d.verdict.confidence_bootstrap = 0.96;
+  d.verdict.confidence = 0.72;
   s = conclusion(d, nullptr);
   EXPECT_EQ(s.rfind("No catalogue effect earns its parameters on held-out data: keep the calibrated baseline (mu_s = 0.62, mu_k = 0.41)", 0), 0u) << s;
   EXPECT_NE(s.find("closest candidate slip_transient at held-out gap 0.157"), std::string::npos) << s;
+  // "none" states its confidence with the bootstrap's agreement it came from, and what it cannot exclude.
+  EXPECT_NE(s.find("Confidence 72 %: the bootstrap's 96 % times the share of \"none\" verdicts that were right"), std::string::npos) << s;
+  EXPECT_NE(s.find("less than about one noise floor is not excluded."), std::string::npos) << s;
+  EXPECT_DOUBLE_EQ(report_json(d)["verdict"]["confidence_bootstrap"].get<double>(), 0.96);
   EXPECT_EQ(verdict_name(d.verdict), "none");
   // A homogenised base has no μs, μk of its own: the sentence names the law, not placeholders.
   d.calibrated.baseline.homogenised =
