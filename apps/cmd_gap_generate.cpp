@@ -13,10 +13,12 @@
 //   DIR/truth.json   the withheld effect with its parameters (the rig generator's in catalogue
 //                    names; the independent one's in its own forms, with its rig and chain), the form it was
 //                    written in, generator, kind, set, seed, provenance
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 #include "apps/commands.h"
 #include "apps/config.h"
@@ -33,6 +35,7 @@ namespace {
 struct GenerateArgs {
   std::string generator = "independent", kind = "pin_on_disc", effect = "none", set = "development", out = "out/gap-case";
   std::uint64_t seed = 1;
+  std::vector<double> speeds_m_per_s;  // pin_on_disc: instead of the set's; the test speeds between them
 };
 
 struct GeneratedCase {
@@ -47,8 +50,17 @@ struct GeneratedCase {
 GeneratedCase generate(const GenerateArgs& a) {
   GeneratedCase g;
   if (a.kind == "pin_on_disc") {
-    const gap::SyntheticOptions options =
-        gap::synthetic_options(a.set == "validation" ? gap::SelftestSet::validation : gap::SelftestSet::development);
+    gap::SyntheticOptions options = gap::synthetic_options(a.set == "validation" ? gap::SelftestSet::validation : gap::SelftestSet::development);
+    if (!a.speeds_m_per_s.empty()) {
+      if (a.speeds_m_per_s.size() < 2) throw InputError("--speeds: give at least two driven speeds");
+      for (std::size_t i = 0; i < a.speeds_m_per_s.size(); ++i)
+        if (!(std::isfinite(a.speeds_m_per_s[i]) && a.speeds_m_per_s[i] > 0.0) || (i > 0 && !(a.speeds_m_per_s[i] > a.speeds_m_per_s[i - 1])))
+          throw InputError("--speeds: the speeds must be positive and increasing (m/s)");
+      options.speeds_m_per_s = a.speeds_m_per_s;
+      options.test_speeds_m_per_s.clear();
+      for (std::size_t i = 1; i < a.speeds_m_per_s.size(); ++i)  // between them, as the sets' test speeds
+        options.test_speeds_m_per_s.push_back(std::sqrt(a.speeds_m_per_s[i - 1] * a.speeds_m_per_s[i]));
+    }
     gap::CaseBundles c = gap::make_case_bundles({a.effect, {}, a.seed, a.generator}, options);
     g.proposed = gap::make_proposed_test_bundles({a.effect, {}, a.seed, a.generator}, options);
     g.bundle = std::move(c.bundle), g.test = std::move(c.test);
@@ -57,6 +69,7 @@ GeneratedCase generate(const GenerateArgs& a) {
     g.truth_parameters = c.truth_parameters;
   } else {
     if (a.generator == "rig") throw InputError("--kind " + a.kind + ": the rig's simulator writes pin_on_disc bundles only");
+    if (!a.speeds_m_per_s.empty()) throw InputError("--speeds: a " + a.kind + " case has its own drive history (pin_on_disc only)");
     gap::independent::IndependentCase c = a.kind == "slide_hold_slide" ? gap::independent::make_slide_hold_slide_case(a.effect, a.seed)
                                                                        : gap::independent::make_velocity_step_case(a.effect, a.seed);
     g.bundle = std::move(c.bundle);
@@ -103,6 +116,7 @@ void run_generate(const GenerateArgs& a) {
                        {"kind", a.kind},          {"seed", a.seed},           {"set", a.set},
                        {"provenance", provenance_json(std::filesystem::path())}};
   if (!g.truth_parameters.empty()) truth["parameters"] = g.truth_parameters;
+  if (!a.speeds_m_per_s.empty()) truth["speeds_m_per_s"] = a.speeds_m_per_s;
   write_file_atomically(dir / "truth.json", truth.dump(2) + "\n");
   const bool test = !g.test.runs.empty();
   std::printf("%s case, %s (%s, %s set), seed %llu -> %s/{bundle/,%smodel.toml,truth.json}\n", a.generator.c_str(), a.effect.c_str(),
@@ -129,6 +143,10 @@ void add_gap_generate_command(CLI::App& gap) {
   cmd->add_option("--set", args->set, "pin_on_disc: the selftest set whose speeds, test speeds and effect strengths the case is drawn with (development or validation; the case of `tribo gap selftest --set S` with this seed)")
       ->check(CLI::IsMember({"development", "validation"}))
       ->capture_default_str();
+  cmd->add_option("--speeds", args->speeds_m_per_s,
+                  "pin_on_disc: the driven speeds (m/s, increasing, comma-separated) instead of the set's; the test block at the geometric "
+                  "means between them — a case drawn at the speeds of one's own rig, or a development draw at speeds neither set uses")
+      ->delimiter(',');
   cmd->add_option("--out", args->out, "Output directory")->capture_default_str();
   cmd->callback([args] { run_generate(*args); });
 }

@@ -67,3 +67,29 @@ assert v.count(0.0) > 0 and max(v) == 1.4e-2, (v.count(0.0), max(v))
 if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo gap generate --set validation: ${why}")
 endif()
+
+# --speeds: a case at one's own speeds (here slower than either set's), the test block at the
+# geometric means between them; decreasing speeds are refused with status 2 and nothing written.
+file(REMOVE_RECURSE ${WORK}-speeds)
+execute_process(COMMAND ${TRIBO} gap generate --effect rate_dependent_static --seed 304 --speeds 0.0035,0.006,0.01 --out ${WORK}-speeds
+                RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "tribo gap generate --speeds failed (${status}): ${err}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "
+import csv, json, math, sys
+d = sys.argv[1]
+speeds = lambda b: [float(r['v_m_per_s']) for r in csv.DictReader(open(d + '/' + b + '/runs.csv'))]
+assert speeds('bundle') == [0.0035, 0.006, 0.01], speeds('bundle')
+t = speeds('test')
+assert len(t) == 2 and abs(t[0] / math.sqrt(0.0035 * 0.006) - 1) < 1e-9 and abs(t[1] / math.sqrt(0.006 * 0.01) - 1) < 1e-9, t  # runs.csv: 10 digits
+assert json.load(open(d + '/truth.json'))['speeds_m_per_s'] == [0.0035, 0.006, 0.01]
+" ${WORK}-speeds RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo gap generate --speeds: ${why}")
+endif()
+file(REMOVE_RECURSE ${WORK}-speeds-bad)
+execute_process(COMMAND ${TRIBO} gap generate --speeds 0.01,0.005 --out ${WORK}-speeds-bad RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 2 OR NOT err MATCHES "--speeds: the speeds must be positive and increasing" OR EXISTS ${WORK}-speeds-bad)
+  message(FATAL_ERROR "tribo gap generate --speeds 0.01,0.005: expected status 2 naming --speeds and no output, got ${status}: ${err}")
+endif()
