@@ -264,6 +264,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
           {"heldout_gap_after", row.heldout_gap_after}, {"noise_floor", gap::finite_or_null(row.noise_floor)},
           {"confidence", gap::finite_or_null(row.confidence)},
+          {"confidence_bootstrap", gap::finite_or_null(row.confidence_bootstrap)},
           {"confidence_fixed_fits", gap::finite_or_null(row.confidence_fixed_fits)},
           {"test_gap_before", gap::finite_or_null(row.test_gap_before)}, {"test_gap_after", gap::finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s},

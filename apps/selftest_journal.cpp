@@ -41,6 +41,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.test_gap_before = number(j, "test_gap_before");
       r.test_gap_after = number(j, "test_gap_after");
       r.confidence_fixed_fits = number(j, "confidence_fixed_fits");
+      r.confidence_bootstrap = number(j, "confidence_bootstrap");
       r.noise_floor = number(j, "noise_floor");
       if (const auto t = j.find("stage_wall_s"); t != j.end() && t->is_object()) {
         const auto s = [&](const char* key) { return t->contains(key) && t->at(key).is_number() ? t->at(key).get<double>() : 0.0; };

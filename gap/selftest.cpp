@@ -245,6 +245,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.noise_floor = d.verdict.noise_floor;
   row.confidence = d.verdict.confidence;
   row.confidence_fixed_fits = d.verdict.confidence_fixed_fits;
+  row.confidence_bootstrap = d.verdict.confidence_bootstrap;
   row.correct = row.verdict == sc.true_effect;
   row.indistinguishable_from = d.verdict.indistinguishable;
   for (const Candidate& k : d.candidates)

@@ -85,6 +85,8 @@ struct SelftestRow {
   double signal_floors() const { return noise_floor > 0.0 ? heldout_gap_before / noise_floor : std::numeric_limits<double>::quiet_NaN(); }
   // The bootstrap with every fit held (Verdict::confidence_fixed_fits); NaN in journals from before.
   double confidence_fixed_fits = std::numeric_limits<double>::quiet_NaN();
+  // The bootstrap's agreement (Verdict::confidence_bootstrap); NaN in journals from before.
+  double confidence_bootstrap = std::numeric_limits<double>::quiet_NaN();
   // On the test block (SyntheticOptions::test_speeds_m_per_s); NaN in journals from before it.
   double test_gap_before = std::numeric_limits<double>::quiet_NaN(), test_gap_after = std::numeric_limits<double>::quiet_NaN();
   bool correct = false;
