@@ -667,13 +667,14 @@ void write_npy_header(std::ostream& out, const std::string& shape) {
 }  // namespace
 
 void write_npy(std::ostream& out, const Eigen::ArrayXXd& field) {
-  write_npy_header(out, "(" + std::to_string(field.rows()) + ", " + std::to_string(field.cols()) + ")");
+  // The shape appended to a std::string, not "(" + …: GCC 12 warns falsely (-Wrestrict) on a literal + string&&.
+  write_npy_header(out, std::string("(").append(std::to_string(field.rows())).append(", ").append(std::to_string(field.cols())).append(")"));
   // Column-major storage is exactly numpy's Fortran order for shape (rows, cols).
   out.write(reinterpret_cast<const char*>(field.data()), static_cast<std::streamsize>(sizeof(double) * field.size()));
 }
 
 void write_npy(std::ostream& out, const std::vector<double>& profile) {
-  write_npy_header(out, "(" + std::to_string(profile.size()) + ",)");
+  write_npy_header(out, std::string("(").append(std::to_string(profile.size())).append(",)"));
   out.write(reinterpret_cast<const char*>(profile.data()), static_cast<std::streamsize>(sizeof(double) * profile.size()));
 }
 

@@ -211,28 +211,6 @@ double gap_rate(const ReynoldsProblem& pr, Eigen::Index node) {
 
 std::string shape(const Eigen::ArrayXXd& f) { return std::to_string(f.rows()) + " x " + std::to_string(f.cols()); }
 
-// Pattern signature: a new symbolic analysis is needed only when it changes.
-struct Signature {
-  Eigen::Index nx = 0, ny = 0;
-  BoundaryY by = BoundaryY::ambient;
-  bool disc = false;
-  double cx = 0, cy = 0, r = 0, dx = 0, dy = 0;
-  Cavitation cav = Cavitation::none;
-  int upwind = 0;
-  bool operator==(const Signature&) const = default;
-};
-
-Signature signature_of(const ReynoldsProblem& pr) {
-  Signature s{pr.grid.nx, pr.grid.ny, pr.boundary_y, pr.disc.has_value(), 0, 0, 0, pr.grid.dx_m, pr.grid.dy_m,
-              pr.cavitation, pr.sliding_speed_m_per_s > 0 ? 1 : (pr.sliding_speed_m_per_s < 0 ? -1 : 0)};
-  if (pr.disc) {
-    s.cx = pr.disc->centre_x_m;
-    s.cy = pr.disc->centre_y_m;
-    s.r = pr.disc->radius_m;
-  }
-  return s;
-}
-
 }  // namespace
 
 void validate(const ReynoldsProblem& pr) {
@@ -291,6 +269,28 @@ void validate(const ReynoldsProblem& pr) {
 }
 
 struct ReynoldsSolver::Impl {
+  // Pattern signature: a new symbolic analysis is needed only when it changes. A type of Impl's
+  // own, not the anonymous namespace's: a member of such a type warns (-Wsubobject-linkage) where
+  // this file is compiled inside another (unity builds).
+  struct Signature {
+    Eigen::Index nx = 0, ny = 0;
+    BoundaryY by = BoundaryY::ambient;
+    bool disc = false;
+    double cx = 0, cy = 0, r = 0, dx = 0, dy = 0;
+    Cavitation cav = Cavitation::none;
+    int upwind = 0;
+    bool operator==(const Signature&) const = default;
+  };
+  static Signature signature_of(const ReynoldsProblem& pr) {
+    Signature s{pr.grid.nx, pr.grid.ny, pr.boundary_y, pr.disc.has_value(), 0, 0, 0, pr.grid.dx_m, pr.grid.dy_m,
+                pr.cavitation, pr.sliding_speed_m_per_s > 0 ? 1 : (pr.sliding_speed_m_per_s < 0 ? -1 : 0)};
+    if (pr.disc) {
+      s.cx = pr.disc->centre_x_m;
+      s.cy = pr.disc->centre_y_m;
+      s.r = pr.disc->radius_m;
+    }
+    return s;
+  }
   ReynoldsOptions options;
   std::unique_ptr<SparseLinearSolver> cholmod = make_linear_solver(LinearSolverKind::cholmod);
   std::unique_ptr<SparseLinearSolver> umfpack = make_linear_solver(LinearSolverKind::umfpack);

@@ -25,7 +25,7 @@ CompositeLaw::CompositeLaw(BaselineLaw baseline, std::optional<contact::Junction
 std::string CompositeLaw::name() const {
   std::string n = baseline_.homogenised ? "homogenised" : baseline_.kinetic ? "kinetic_curve" : "coulomb";
   if (locus_) n += locus_->strain_rate_index_m > 0.0 ? "+junction_locus(m>0)" : "+junction_locus";
-  for (const auto& e : effects_) n += "+" + e->name();
+  for (const auto& e : effects_) n.append("+").append(e->name());  // not "+" + name(): a false -Wrestrict of GCC 12
   return n;
 }
 
