@@ -45,7 +45,7 @@ struct DiagnosisOptions {
   // again would show no effect, not whether an effect below the noise hides in them, so a "none"
   // verdict's confidence is its agreement times this share. 0.75: of the 32 "none" verdicts over the
   // validation sets of seeds 9001-9062 (now development data: each case seed's last diagnosis,
-  // `tools/gap_reliability.py docs/gap-validation-seed90*`), 24 were controls; the 8 others were effects
+  // `tools/gap_reliability.py` over docs/gap-validation-seed9001 ... seed9062), 24 were controls; the 8 others were effects
   // that moved the held-out data by 0.2-1.0 noise floors, told apart from a control by no statistic
   // of the diagnosis (docs/gap.md). The named verdicts' agreement needs no such factor (35 of 35
   // right at >= 90 %).
