@@ -24,7 +24,7 @@ namespace {
 // an older answer under the new provenance.
 std::string cache_key(const std::string& config_hash, const std::vector<std::filesystem::path>& inputs) {
   std::string key = config_hash;
-  for (const auto& f : inputs) key += "+" + tribo::cli::config_hash(f);
+  for (const auto& f : inputs) key.append("+").append(tribo::cli::config_hash(f));  // not "+" + …: a false GCC 12 warning
   return key + "@" + git_commit();
 }
 
