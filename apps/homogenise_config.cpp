@@ -145,6 +145,7 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
     o.bem_tolerance = h->number("bem_tolerance", o.bem_tolerance, Range::positive);
     o.pin_grid = static_cast<int>(h->integer("pin_grid", o.pin_grid, 9, 16384));
     o.min_contact_grid = static_cast<int>(h->integer("min_contact_grid", o.min_contact_grid, 1, 65536));
+    o.junction_grid = static_cast<int>(h->integer("junction_grid", o.junction_grid, 0, 65536));
     o.target_relative_error = h->number("target_relative_error", o.target_relative_error, Range::positive);
     o.threads = static_cast<int>(h->integer("threads", o.threads, 0, 1'000'000));
     h->finish();

@@ -186,8 +186,8 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   write_area_csv(dir / "area.csv", pin, cells.sigma_m, provenance);
   write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, provenance);
   write_file_atomically(dir / "law.json", law.dump(2) + "\n");
-  std::printf("mu_s,max %.4g ± %.2g (BEM on %d², %d realisations; ± the discretisation error), dry mu %.4g ± %.2g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
-              cells.mu_s_max.mean, cells.mu_s_max_discretisation_error, cells.contact_grid, cells.realisations, cells.mu_boundary.mean,
+  std::printf("mu_s,max %.4g ± %.2g (BEM extrapolated from %d², %d realisations; ± the discretisation error), dry mu %.4g ± %.2g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
+              cells.mu_s_max.mean, cells.mu_s_max_discretisation_error, cells.junction_grid, cells.realisations, cells.mu_boundary.mean,
               cells.mu_boundary_discretisation_error, stribeck.size(), o.pin.normal_load_N,
               law["wall_s"].get<double>(), out.string().c_str());
   if (!law["table"]["dropped_separations_m"].empty())

@@ -21,11 +21,15 @@ struct CellTable {
   // With micro-EHL films: the spots' mean shear τ̄ per node and ηU node (options' micro_ehl_eta_u_Pa_m),
   // on the contact grid and on half of it; empty without.
   std::vector<std::vector<Estimate>> spot_shear_Pa, spot_shear_coarse_Pa, spot_film_share;
+  // μs,max and μ_b at the pin's nominal pressure: the first-order extrapolation 2 μ(Δ) − μ(2Δ) from
+  // the junction grid (spacing Δ) and its half, mean and standard error over the realisations; its
+  // discretisation error, the realisations' mean change of their extrapolation from one grid
+  // coarser (the half and the quarter: error_from_refinement with p = 1); and the junction grid's
+  // own values.
   Estimate mu_s_max, mu_boundary;
-  // Discretisation error of the two means (error_from_refinement of the realisations' mean on half
-  // the contact grid against their mean on it), and that grid's nodes a side.
   double mu_s_max_discretisation_error = 0, mu_boundary_discretisation_error = 0;
-  int contact_grid = 0;
+  Estimate mu_s_max_on_junction_grid, mu_boundary_on_junction_grid;
+  int contact_grid = 0, junction_grid = 0;  // nodes a side
   double first_contact_separation_m = 0;  // the largest over the realisations
   int realisations = 0;
   int unconverged = 0;                    // solves left out (NaN) over all realisations

@@ -71,8 +71,8 @@ std::vector<std::string> resolution_warnings(const HomogeniseOptions& o, const C
     if (!(relative <= o.target_relative_error))
       out.push_back(std::string(name) + " = " + numerics::fmt(value.mean) + " carries a discretisation error of " +
                     numerics::fmt(error, "%.2g") + " (" + numerics::fmt(100.0 * relative, "%.2g") + " %, target " +
-                    numerics::shortest(100.0 * o.target_relative_error) + " %) on the " + std::to_string(cells.contact_grid) +
-                    "² contact grid; raise [homogenise] min_contact_grid");
+                    numerics::shortest(100.0 * o.target_relative_error) + " %) from the " + std::to_string(cells.junction_grid) +
+                    "² junction grid; raise [homogenise] junction_grid");
   };
   check("mu_s_max", cells.mu_s_max, cells.mu_s_max_discretisation_error);
   check("mu_boundary", cells.mu_boundary, cells.mu_boundary_discretisation_error);
@@ -135,7 +135,10 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                    {"mu_boundary", jn.mu_boundary},
                    {"mu_boundary_standard_error", standard_error(cells.mu_boundary)},
                    {"mu_boundary_discretisation_error", cells.mu_boundary_discretisation_error},
-                   {"contact_grid", cells.contact_grid}};
+                   {"mu_s_max_on_junction_grid", cells.mu_s_max_on_junction_grid.mean},
+                   {"mu_boundary_on_junction_grid", cells.mu_boundary_on_junction_grid.mean},
+                   {"contact_grid", cells.contact_grid},
+                   {"junction_grid", cells.junction_grid}};
   j["warnings"] = resolution_warnings(o, cells);
   j["table"] = {{"separation_m", pin.separation_m},
                 {"solid_load_N", pin.solid_load_N},

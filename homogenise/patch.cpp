@@ -1,6 +1,7 @@
 #include "homogenise/patch.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -66,6 +67,7 @@ void validate(const HomogeniseOptions& o) {
   if (!(o.bem_tolerance > 0 && o.bem_tolerance < 1)) bad("bem_tolerance must lie in (0, 1)");
   if (o.pin_grid < 9) bad("pin_grid must be >= 9");
   if (o.min_contact_grid < 1) bad("min_contact_grid must be >= 1");
+  if (o.junction_grid < 0) bad("junction_grid must be >= 0");
   if (!(o.target_relative_error > 0 && o.target_relative_error < 1)) bad("target_relative_error must lie in (0, 1)");
   if (o.threads < 0) bad("threads must be >= 0");
   if (const auto& e = o.micro_ehl) {
@@ -114,6 +116,12 @@ int contact_refinement(const HomogeniseOptions& o) {
   return f;
 }
 
+int junction_refinement(const HomogeniseOptions& o) {
+  int f = std::max(4, contact_refinement(o));
+  while (f * o.surface.grid < o.junction_grid) f *= 2;
+  return f;
+}
+
 PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   validate(o);
   PatchResult r;
@@ -137,20 +145,44 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
     bad("the largest separation ratio " + numerics::shortest(o.separation_ratios.back()) +
         " lies below the first contact of seed " + std::to_string(r.seed) + " at h/σ = " +
         numerics::shortest(r.first_contact_separation_m / sigma) + "; add a larger one");
-  SolidPressures coarse_pressures;
+  SolidPressures coarse_pressures, fine_pressures;
   const SolidContact coarse = solid_contact(o, contact::fourier_refine(z, f / 2), nullptr, &coarse_pressures);
-  const SolidContact fine = solid_contact(o, z_fine, &coarse_pressures);
+  const bool refine_junction = junction_refinement(o) > f;
+  const SolidContact fine = solid_contact(o, z_fine, &coarse_pressures, refine_junction ? &fine_pressures : nullptr);
   coarse_pressures = {};
   r.contact_grid = f * static_cast<int>(o.surface.grid);
   r.solid_pressure_Pa = fine.solid_pressure_Pa, r.area_fraction = fine.area_fraction;
   r.solid_pressure_coarse_Pa = coarse.solid_pressure_Pa, r.area_fraction_coarse = coarse.area_fraction;
-  r.mu_s_max = fine.mu_s_max, r.mu_boundary = fine.mu_boundary;
-  r.mu_s_max_coarse = coarse.mu_s_max, r.mu_boundary_coarse = coarse.mu_boundary;
   r.spot_shear_Pa = fine.spot_shear_Pa, r.spot_shear_coarse_Pa = coarse.spot_shear_Pa;
   r.spot_film_share = fine.spot_film_share;
   r.bem_iterations = fine.bem_iterations + coarse.bem_iterations;
   r.unconverged = fine.unconverged + coarse.unconverged;
   r.messages = fine.messages + coarse.messages;
+
+  // The junction on its three grids, coarsest first: the solid solves' where they coincide, the
+  // others alone, each finer one started from the one below it.
+  const int fj = junction_refinement(o);
+  r.junction_grid = fj * static_cast<int>(o.surface.grid);
+  std::array<SolidContact, 3> junction;
+  for (int level = 0; level < 3; ++level) {
+    const int fl = fj >> (2 - level);
+    if (fl == f / 2) {
+      junction[level] = coarse;
+    } else if (fl == f) {
+      junction[level] = fine;
+    } else {
+      SolidPressures next;
+      junction[level] = junction_contact(o, contact::fourier_refine(z, fl), fl > f ? &fine_pressures : nullptr, &next);
+      fine_pressures = std::move(next);
+      r.bem_iterations += junction[level].bem_iterations;
+      r.unconverged += junction[level].unconverged;
+      r.messages += junction[level].messages;
+    }
+  }
+  fine_pressures = {};
+  r.mu_s_max_coarser = junction[0].mu_s_max, r.mu_boundary_coarser = junction[0].mu_boundary;
+  r.mu_s_max_coarse = junction[1].mu_s_max, r.mu_boundary_coarse = junction[1].mu_boundary;
+  r.mu_s_max = junction[2].mu_s_max, r.mu_boundary = junction[2].mu_boundary;
   r.bem_s = seconds_since(bem_start);
 
   // Fluid cells on the same realisation.
@@ -199,6 +231,9 @@ nlohmann::json to_json(const PatchResult& p) {
           {"area_fraction_coarse", p.area_fraction_coarse},
           {"mu_s_max_coarse", p.mu_s_max_coarse},
           {"mu_boundary_coarse", p.mu_boundary_coarse},
+          {"mu_s_max_coarser", p.mu_s_max_coarser},
+          {"mu_boundary_coarser", p.mu_boundary_coarser},
+          {"junction_grid", p.junction_grid},
           {"spot_shear_Pa", p.spot_shear_Pa},
           {"spot_shear_coarse_Pa", p.spot_shear_coarse_Pa},
           {"spot_film_share", p.spot_film_share},
@@ -231,6 +266,9 @@ PatchResult patch_from_json(const nlohmann::json& j) {
   j.at("area_fraction_coarse").get_to(p.area_fraction_coarse);
   j.at("mu_s_max_coarse").get_to(p.mu_s_max_coarse);
   j.at("mu_boundary_coarse").get_to(p.mu_boundary_coarse);
+  j.at("mu_s_max_coarser").get_to(p.mu_s_max_coarser);
+  j.at("mu_boundary_coarser").get_to(p.mu_boundary_coarser);
+  j.at("junction_grid").get_to(p.junction_grid);
   j.at("spot_shear_Pa").get_to(p.spot_shear_Pa);
   j.at("spot_shear_coarse_Pa").get_to(p.spot_shear_coarse_Pa);
   j.at("spot_film_share").get_to(p.spot_film_share);

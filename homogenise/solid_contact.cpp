@@ -25,6 +25,45 @@ Eigen::ArrayXXd spread_to_finer(const Eigen::ArrayXXd& coarse, Eigen::Index rows
   return fine;
 }
 
+// The junction at the pin's nominal pressure (solid_contact.h "static" and "dry"): two capped
+// solves, each started from `coarse`'s field for it (spread to this grid) when given; their
+// pressures into `keep`. Adds to r's μs,max, μ_b, iterations and failures.
+void solve_junction(const HomogeniseOptions& o, contact::ElasticHalfSpace& halfspace, const Eigen::ArrayXXd& gap0,
+                    const contact::NormalContactOptions& bem, const SolidPressures* coarse, SolidPressures* keep, SolidContact& r) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const double side = o.surface.size_m, patch_area = side * side;
+  const double pin_area = M_PI * o.pin.radius_m * o.pin.radius_m;
+  const double load = o.pin.normal_load_N / pin_area * patch_area;  // the pin's nominal pressure on the patch
+  const double tau = o.interface_shear_strength_Pa;
+  const auto area_at_cap = [&](double cap, const Eigen::ArrayXXd* coarse_field, Eigen::ArrayXXd* kept) {
+    contact::NormalContactOptions capped = bem;
+    capped.pressure_cap_Pa = cap;
+    const Eigen::ArrayXXd w = coarse_field ? spread_to_finer(*coarse_field, gap0.rows(), gap0.cols()) : Eigen::ArrayXXd();
+    const contact::NormalContactResult c = contact::solve_normal_load(halfspace, gap0, load, capped, w.size() ? &w : nullptr);
+    r.bem_iterations += c.summary.iterations;
+    if (!c.summary.converged) {
+      ++r.unconverged;
+      r.messages += "BEM (" + std::to_string(gap0.rows()) + "²) at the pin load with cap " + numerics::shortest(cap) +
+                    " Pa: " + c.summary.message + "; ";
+      return kNaN;
+    }
+    if (kept) *kept = c.pressure_Pa;
+    return c.real_area_m2;
+  };
+  r.mu_s_max = tau *
+               area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau), coarse ? &coarse->at_slip_cap : nullptr,
+                           keep ? &keep->at_slip_cap : nullptr) /
+               load;  // thesis (3.1.5)
+  r.mu_boundary = tau * area_at_cap(o.hardness_Pa, coarse ? &coarse->at_hardness_cap : nullptr, keep ? &keep->at_hardness_cap : nullptr) / load;
+}
+
+contact::NormalContactOptions bem_options(const HomogeniseOptions& o) {
+  contact::NormalContactOptions bem;
+  bem.tolerance = o.bem_tolerance;
+  bem.pressure_cap_Pa = o.hardness_Pa;
+  return bem;
+}
+
 }  // namespace
 
 SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z, const SolidPressures* coarse, SolidPressures* keep) {
@@ -43,9 +82,7 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
   contact::ElasticHalfSpace halfspace(grid, o.e_star_Pa, true, 1);
   const Eigen::ArrayXXd gap0 = z - z.minCoeff();  // the rigid film h̄ + z against a flat: gap0 = z − min z
   r.first_contact_separation_m = -z.minCoeff();
-  contact::NormalContactOptions bem;
-  bem.tolerance = o.bem_tolerance;
-  bem.pressure_cap_Pa = o.hardness_Pa;
+  const contact::NormalContactOptions bem = bem_options(o);
   const auto failed = [&](const std::string& where, const contact::NormalContactResult& c) {
     ++r.unconverged;
     r.messages += "BEM (" + grid_name + ") " + where + ": " + c.summary.message + "; ";
@@ -87,27 +124,17 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
     if (keep) keep->at_node[m] = c.pressure_Pa;
   }
 
-  const double pin_area = M_PI * o.pin.radius_m * o.pin.radius_m;
-  const double load = o.pin.normal_load_N / pin_area * patch_area;  // the pin's nominal pressure on the patch
-  const double tau = o.interface_shear_strength_Pa;
-  const auto area_at_cap = [&](double cap, const Eigen::ArrayXXd* coarse_field, Eigen::ArrayXXd* kept) {
-    contact::NormalContactOptions capped = bem;
-    capped.pressure_cap_Pa = cap;
-    const Eigen::ArrayXXd w = start(coarse_field ? *coarse_field : Eigen::ArrayXXd(), Eigen::ArrayXXd());
-    const contact::NormalContactResult c = contact::solve_normal_load(halfspace, gap0, load, capped, w.size() ? &w : nullptr);
-    r.bem_iterations += c.summary.iterations;
-    if (!c.summary.converged) {
-      failed("at the pin load with cap " + numerics::shortest(cap) + " Pa", c);
-      return kNaN;
-    }
-    if (kept) *kept = c.pressure_Pa;
-    return c.real_area_m2;
-  };
-  r.mu_s_max = tau *
-               area_at_cap(std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau), coarse ? &coarse->at_slip_cap : nullptr,
-                           keep ? &keep->at_slip_cap : nullptr) /
-               load;  // thesis (3.1.5)
-  r.mu_boundary = tau * area_at_cap(o.hardness_Pa, coarse ? &coarse->at_hardness_cap : nullptr, keep ? &keep->at_hardness_cap : nullptr) / load;
+  solve_junction(o, halfspace, gap0, bem, coarse, keep, r);
+  return r;
+}
+
+SolidContact junction_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z, const SolidPressures* coarse, SolidPressures* keep) {
+  if (keep) *keep = SolidPressures{};
+  SolidContact r;
+  const double side = o.surface.size_m;
+  contact::ElasticHalfSpace halfspace(contact::Grid::patch(z.rows(), z.cols(), side, side), o.e_star_Pa, true, 1);
+  r.first_contact_separation_m = -z.minCoeff();
+  solve_junction(o, halfspace, z - z.minCoeff(), bem_options(o), coarse, keep, r);
   return r;
 }
 

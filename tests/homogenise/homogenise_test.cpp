@@ -119,9 +119,12 @@ TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
 }
 
 // A patch with hand-set columns: N_s and A_r falling to 0 at 4σ, smooth-film flow factors, lift
-// 1e6/r per m — NaN at 2σ (a lift cell that converged nowhere) — and the static friction on the
-// contact grid and half of it.
-PatchResult toy_patch(double mu_s_max, double mu_s_max_coarse, double mu_boundary, double mu_boundary_coarse) {
+// 1e6/r per m — NaN at 2σ (a lift cell that converged nowhere) — and the junction on its three
+// grids, finest first.
+struct JunctionLevels {
+  double finest, coarse, coarser;
+};
+PatchResult toy_patch(JunctionLevels mu_s_max, JunctionLevels mu_boundary) {
   PatchResult p;
   for (double r : {1.0, 2.0, 3.0, 4.0, 8.0}) {
     p.separation_m.push_back(r * kSigma);
@@ -134,9 +137,10 @@ PatchResult toy_patch(double mu_s_max, double mu_s_max_coarse, double mu_boundar
     p.film_over_sigma.push_back(r);
     p.lift_per_eta_u_per_m.push_back(r == 2.0 ? std::nan("") : 1e6 / r);
   }
-  p.mu_s_max = mu_s_max, p.mu_s_max_coarse = mu_s_max_coarse;
-  p.mu_boundary = mu_boundary, p.mu_boundary_coarse = mu_boundary_coarse;
+  p.mu_s_max = mu_s_max.finest, p.mu_s_max_coarse = mu_s_max.coarse, p.mu_s_max_coarser = mu_s_max.coarser;
+  p.mu_boundary = mu_boundary.finest, p.mu_boundary_coarse = mu_boundary.coarse, p.mu_boundary_coarser = mu_boundary.coarser;
   p.contact_grid = 2048;
+  p.junction_grid = 4096;
   return p;
 }
 
@@ -146,7 +150,7 @@ TEST(LawFile, SeparationsWithoutAConvergedSolveAreLeftOutOfTheTableAndListed) {
   // alike), names it, and the law still reads back.
   HomogeniseOptions o;
   o.surface.rms_height_m = kSigma;
-  const PatchResult p = toy_patch(0.55, 0.55, 0.19, 0.19);
+  const PatchResult p = toy_patch({0.55, 0.55, 0.55}, {0.19, 0.19, 0.19});
   const CellTable cells = aggregate(o, {p});
   ASSERT_EQ(cells.separation_m.size(), 4u);
   ASSERT_EQ(cells.dropped_separation_m, std::vector<double>{2.0 * kSigma});
@@ -158,25 +162,38 @@ TEST(LawFile, SeparationsWithoutAConvergedSolveAreLeftOutOfTheTableAndListed) {
   EXPECT_NO_THROW(rig::law_table_from_json(law, "law.json"));
 }
 
-// The discretisation error is the change of the ensemble mean from half the contact grid to it
-// (first order: static_friction.h), taken over the realisations solved on both; the law carries it
-// beside the standard error, and a warning names each quantity above the target.
-TEST(LawFile, DiscretisationErrorIsTheMeanChangeOnRefinementAndWarnsAboveTheTarget) {
+// The junction reports the first-order extrapolation 2 μ(Δ) − μ(2Δ) from its two finest grids and,
+// as its discretisation error, the realisations' mean change of that extrapolation from the two
+// coarsest (solid_contact.h, cell_table.h), over the realisations solved on all three; the law
+// carries both beside the standard error and the finest grid's own value, and a warning names
+// each quantity above the target.
+TEST(LawFile, JunctionIsExtrapolatedAndItsErrorIsTheMeanChangeOfTheExtrapolation) {
   HomogeniseOptions o;
   o.surface.rms_height_m = kSigma;
   o.target_relative_error = 0.01;
-  PatchResult unsolved = toy_patch(std::nan(""), 0.9, std::nan(""), 0.9);  // left out of both means
-  const CellTable cells = aggregate(o, {toy_patch(0.58, 0.60, 0.2005, 0.2015), toy_patch(0.56, 0.56, 0.1995, 0.1985), unsolved});
-  EXPECT_NEAR(cells.mu_s_max.mean, 0.57, 1e-12);
-  EXPECT_NEAR(cells.mu_s_max_discretisation_error, 0.01, 1e-12);  // 0.58 − 0.57
-  EXPECT_NEAR(cells.mu_boundary_discretisation_error, 0.0, 1e-12);  // the two changes cancel
+  // μs,max: the first realisation is exactly first order in Δ (0.60, 0.58, 0.57: both extrapolations
+  // 0.56, no change), the second is not (0.64, 0.58, 0.57: 0.52 then 0.56). μ_b: the two
+  // extrapolations move 0.001 in opposite directions, so their mean does not move at all.
+  const PatchResult unsolved = toy_patch({std::nan(""), 0.9, 0.9}, {0.3, std::nan(""), 0.3});  // left out
+  const CellTable cells =
+      aggregate(o, {toy_patch({0.57, 0.58, 0.60}, {0.2000, 0.2000, 0.1990}), toy_patch({0.57, 0.58, 0.64}, {0.2000, 0.2000, 0.2010}), unsolved});
+  EXPECT_NEAR(cells.mu_s_max.mean, 0.56, 1e-12);
+  EXPECT_NEAR(cells.mu_s_max_on_junction_grid.mean, 0.57, 1e-12);
+  EXPECT_NEAR(cells.mu_s_max_discretisation_error, 0.02, 1e-12);     // (0 + 0.04) / 2
+  EXPECT_NEAR(cells.mu_boundary.mean, 0.2, 1e-12);
+  EXPECT_NEAR(cells.mu_boundary_discretisation_error, 0.001, 1e-12);  // not 0: the changes do not cancel
   const nlohmann::json law = law_json(o, cells, pin_scale(o, cells));
-  EXPECT_EQ(law.at("junction").at("mu_s_max_discretisation_error").get<double>(), cells.mu_s_max_discretisation_error);
-  EXPECT_EQ(law.at("junction").at("contact_grid").get<int>(), 2048);
+  const nlohmann::json& junction = law.at("junction");
+  EXPECT_EQ(junction.at("mu_s_max").get<double>(), cells.mu_s_max.mean);
+  EXPECT_EQ(junction.at("mu_s_max_discretisation_error").get<double>(), cells.mu_s_max_discretisation_error);
+  EXPECT_EQ(junction.at("mu_s_max_on_junction_grid").get<double>(), cells.mu_s_max_on_junction_grid.mean);
+  EXPECT_EQ(junction.at("contact_grid").get<int>(), 2048);
+  EXPECT_EQ(junction.at("junction_grid").get<int>(), 4096);
   const std::vector<std::string> warnings = law.at("warnings").get<std::vector<std::string>>();
-  ASSERT_EQ(warnings.size(), 1u);  // μs,max at 1.75 % warns, μ_b at 0 % does not
-  EXPECT_EQ(warnings[0].rfind("mu_s_max = 0.57 carries a discretisation error of 0.01 (1.8 %, target 1 %) on the 2048² contact grid", 0), 0u) << warnings[0];
-  o.target_relative_error = 0.02;
+  ASSERT_EQ(warnings.size(), 1u);  // μs,max at 3.6 % warns, μ_b at 0.5 % does not
+  EXPECT_EQ(warnings[0].rfind("mu_s_max = 0.56 carries a discretisation error of 0.02 (3.6 %, target 1 %) from the 4096² junction grid", 0), 0u)
+      << warnings[0];
+  o.target_relative_error = 0.04;
   EXPECT_TRUE(resolution_warnings(o, cells).empty());
 }
 
