@@ -1,5 +1,5 @@
 // Grid convergence of the static and dry friction at the thesis preset's pressure (issue 37):
-// one realisation of examples/thesis-steel.toml's surface, Fourier-refined from 128² to 1024²
+// one realisation of examples/thesis-steel.toml's surface, Fourier-refined from 128² to 4096²
 // (the same continuous surface: contact/surface.h), solved at each grid.
 #include <gtest/gtest.h>
 
@@ -28,17 +28,27 @@ HomogeniseOptions thesis_preset() {
 // surface (rms slope 0.057) is nearly fully plastic at the pin's pressure: the refined values fall
 // towards those bounds, and a coarse grid overstates the area by the elastic rim of every spot.
 // Measured (seed 1): μ_b 0.279, 0.224, 0.208, 0.198, 0.195, 0.193 from 128² to 4096²; μs,max 0.619
-// … 0.571. Convergence is first order at best and irregular (observed orders 0.2 – 3.7 between
-// successive pairs), so the one-refinement estimate gives the error's size, not its digits: the
-// assertion is that the estimate at the default grid (2048² from 1024²) lies within a factor 3 of
-// the change to the 4096² reference, and that the changes shrink by more than 4× from 128² to
-// 4096².
-TEST(SolidContactConvergence, RefinedContactFallsTowardsThePlasticBoundAndTheEstimateHasTheErrorsSize) {
+// … 0.571. The excess area is the perimeter's cells, first order in Δ once the spots are resolved,
+// so the junction reports 2 μ(Δ) − μ(2Δ) (solid_contact.h) — but the approach is irregular: μ_b's
+// changes shrink by 0.32, then 0.86 per halving of Δ from 512² to 4096² on this seed (0.2 – 0.9 on
+// seeds 1 – 6). Asserted on seed 1:
+//   - the changes shrink by more than 4× from 128² to 4096²;
+//   - the extrapolation from 1024² and 2048² agrees with the one from 2048² and 4096² within 1.5 %
+//     (measured 1.2 % for μ_b, 0.1 % for μs,max; over seeds 1 – 6 −0.75 … +1.2 % and −0.16 … +0.35 %),
+//     at least twice as close as μ(2048²) itself (2.9 % and 0.7 % above it);
+//   - the error estimate at 2048², the change of the extrapolation from 512² and 1024², is not
+//     smaller than that agreement (measured 1.8 % and 0.7 %): the estimate errs on the safe side
+//     here (on one of the six seeds it fell short for μ_b, 0.25 % against 0.75 %; the law's
+//     estimate is the mean over its realisations, 1.4 % against 0.34 % over seeds 1 – 4).
+TEST(SolidContactConvergence, RefinedContactFallsTowardsThePlasticBoundAndExtrapolatesToFirstOrder) {
   const HomogeniseOptions o = thesis_preset();
   const Eigen::ArrayXXd z = contact::gaussian_surface(o.surface);
-  std::vector<SolidContact> s;
-  for (int f : {1, 2, 8, 16, 32}) {
-    s.push_back(solid_contact(o, contact::fourier_refine(z, f)));
+  std::vector<SolidContact> s;  // 128², 256², 512², 1024², 2048², 4096²
+  SolidPressures previous;
+  for (int f : {1, 2, 4, 8, 16, 32}) {
+    SolidPressures next;
+    s.push_back(junction_contact(o, contact::fourier_refine(z, f), f > 1 ? &previous : nullptr, &next));
+    previous = std::move(next);
     ASSERT_EQ(s.back().unconverged, 0) << s.back().messages;
     std::printf("%5d²: mu_s_max %.5f  mu_boundary %.5f\n", 128 * f, s.back().mu_s_max, s.back().mu_boundary);
   }
@@ -47,14 +57,16 @@ TEST(SolidContactConvergence, RefinedContactFallsTowardsThePlasticBoundAndTheEst
   const std::pair<double SolidContact::*, double> quantities[] = {{&SolidContact::mu_s_max, tau / cap},
                                                                     {&SolidContact::mu_boundary, tau / o.hardness_Pa}};
   for (const auto& [field, plastic] : quantities) {
-    for (const SolidContact& r : s) EXPECT_GE(r.*field, plastic * (1.0 - 1e-6));  // BEM load tolerance
-    const double first_change = std::abs(s[1].*field - s[0].*field);
-    const double reference_change = std::abs(s[4].*field - s[3].*field);
-    EXPECT_LT(reference_change, first_change / 4.0);
-    const double estimate = error_from_refinement(s[2].*field, s[3].*field);
-    std::printf("estimate at 2048²: %.5f, change to 4096²: %.5f, plastic bound %.5f\n", estimate, reference_change, plastic);
-    EXPECT_LT(estimate, 3.0 * reference_change);
-    EXPECT_GT(estimate, reference_change / 3.0);
+    const auto mu = [&, field = field](int k) { return s[k].*field; };
+    for (std::size_t k = 0; k < s.size(); ++k) EXPECT_GE(mu(k), plastic * (1.0 - 1e-6));  // BEM load tolerance
+    EXPECT_LT(std::abs(mu(5) - mu(4)), std::abs(mu(1) - mu(0)) / 4.0);
+    const double reference = extrapolate_first_order(mu(4), mu(5));
+    const double at_2048 = extrapolate_first_order(mu(3), mu(4));
+    const double estimate = error_from_refinement(extrapolate_first_order(mu(2), mu(3)), at_2048);
+    std::printf("extrapolated at 2048²: %.5f (estimate %.5f), at 4096²: %.5f; plastic bound %.5f\n", at_2048, estimate, reference, plastic);
+    EXPECT_NEAR(at_2048, reference, 0.015 * reference);
+    EXPECT_LT(std::abs(at_2048 - reference), std::abs(mu(4) - reference) / 2.0);
+    EXPECT_GE(estimate, std::abs(at_2048 - reference));
   }
 }
 
