@@ -87,7 +87,8 @@ void bind_homogenise(py::module_& m) {
 Returns dict (lists per table separation): separation_m (m), solid_pressure_Pa (nominal N_s/L^2),
 area_fraction (A_r/L^2), phi_x, phi_y, phi_s (Patir-Cheng flow factors), film_over_sigma,
 phi_f, couette_shear_factor, phi_fp, contact_fraction, lift_per_eta_u_per_m (rugosity lift p/(eta U), 1/m);
-mu_s_max, mu_boundary at the pin's nominal pressure; first_contact_separation_m; bem_iterations,
+mu_s_max, mu_boundary at the pin's nominal pressure on the junction grid (and _coarse, _coarser on its half and
+quarter); first_contact_separation_m; bem_iterations,
 stage_wall_s, unconverged, messages; options (the config's main values).)",
         "path"_a, "realisation"_a = 0);
   m.def("homogenise_from_toml", &homogenise_from_toml,

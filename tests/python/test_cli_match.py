@@ -173,7 +173,7 @@ class Homogenise(CliMatch):
         # The thesis steel pair at 32² with one realisation and a short Stribeck curve.
         cfg = write_config(d, "steel.toml", example_text("thesis-steel.toml", [
             ("grid = 128", "grid = 32"), ("realisations = 4", "realisations = 1"), ("count = 25", "count = 5"),
-            ("min_contact_grid = 2048", "min_contact_grid = 64")]))
+            ("min_contact_grid = 2048", "min_contact_grid = 64"), ("junction_grid = 4096", "junction_grid = 0")]))
         cli_out = os.path.join(d, "cli")
         p = run_cli("homogenise", cfg, "--out", cli_out, "--no-plots")
         self.assertEqual(p.returncode, 0, p.stderr)
