@@ -455,13 +455,15 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   }
 
   if (since_sync != 0) resync();
+  t_old.resize(0, 0), t_new.resize(0, 0), r.resize(0, 0);  // the iteration's grids, before the result's
   NormalContactResult out;
-  Eigen::ArrayXXd p = (y - shift).max(0.0).min(cap);
-  out.pressure_Pa = p;
-  out.displacement_m = v - h0;
-  const Eigen::ArrayXXd g = v - delta;
-  out.gap_m = g.max(0.0);
-  out.plastic_increment_m = (p >= cap).select((-g).max(0.0), 0.0);
+  out.pressure_Pa = (y - shift).max(0.0).min(cap);
+  const Eigen::ArrayXXd& p = out.pressure_Pa;
+  if (opt.full_fields) {
+    out.displacement_m = v - h0;
+    out.gap_m = (v - delta).max(0.0);
+    out.plastic_increment_m = (p >= cap).select((delta - v).max(0.0), 0.0);
+  }
   out.approach_m = delta;
   out.normal_load_N = p.sum() * cell;
   const double contact_cells = static_cast<double>((p > 0.0).count());
@@ -469,7 +471,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   out.plastic_area_m2 = static_cast<double>((p >= cap).count()) * cell;
   out.area_fraction = contact_cells / static_cast<double>(n);
   out.max_pressure_Pa = p.maxCoeff();
-  out.mean_gap_m = out.gap_m.mean();
+  out.mean_gap_m = (v - delta).max(0.0).mean();
   out.summary.converged = converged;
   out.summary.iterations = it;
   out.summary.residual = residual;

@@ -48,6 +48,10 @@ struct NormalContactOptions {
   // resync_interval = 1 recomputes u every iteration (two products per iteration: the reference).
   int resync_interval = 64;
   double resync_drift = 0.2;
+  // False: the result carries pressure_Pa and the scalars only — gap_m, displacement_m and
+  // plastic_increment_m stay empty — for callers that need no more (a 4096² solve ends 3 grids,
+  // 384 MB, lighter).
+  bool full_fields = true;
 
   // False with a reason when an option is out of range (tolerance in (0, 1), cap > 0, iterations ≥ 0).
   bool is_valid(std::string* why) const;  // also resync_interval ≥ 1, resync_drift ≥ 0

@@ -150,6 +150,7 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
   const bool refine_junction = junction_refinement(o) > f;
   const SolidContact fine = solid_contact(o, z_fine, &coarse_pressures, refine_junction ? &fine_pressures : nullptr);
   coarse_pressures = {};
+  fine_pressures.at_node.clear();  // only the junction's fields start its finer solves
   r.contact_grid = f * static_cast<int>(o.surface.grid);
   r.solid_pressure_Pa = fine.solid_pressure_Pa, r.area_fraction = fine.area_fraction;
   r.solid_pressure_coarse_Pa = coarse.solid_pressure_Pa, r.area_fraction_coarse = coarse.area_fraction;

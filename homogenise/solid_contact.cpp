@@ -61,6 +61,7 @@ contact::NormalContactOptions bem_options(const HomogeniseOptions& o) {
   contact::NormalContactOptions bem;
   bem.tolerance = o.bem_tolerance;
   bem.pressure_cap_Pa = o.hardness_Pa;
+  bem.full_fields = false;  // the pressure (spots, warm starts) and the scalars are all this file reads
   return bem;
 }
 

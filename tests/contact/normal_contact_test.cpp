@@ -322,6 +322,30 @@ TEST(NormalContact, PlasticFlatteningMakesUnloadingAndReloadingElastic) {
   EXPECT_NEAR(elastic_reload.max_pressure_Pa / first.max_pressure_Pa, 1.0, 1e-4);
 }
 
+// Without the full fields (NormalContactOptions::full_fields = false) a solve is the same solve:
+// the same pressures and scalars to the bit, only gap, displacement and plastic increment left out.
+// Elastic-plastic, so every scalar the result carries is exercised (plastic area, mean gap).
+TEST(NormalContact, WithoutTheFullFieldsTheSolveAndItsScalarsAreUnchanged) {
+  const Grid grid = Grid::patch(63, 63, 1e-3, 1e-3);
+  ElasticHalfSpace hs(grid, kEStar, false);
+  const Eigen::ArrayXXd h = sphere_gap(grid, 0.01);
+  NormalContactOptions opt;
+  opt.pressure_cap_Pa = 0.7 * reference::hertz_peak_pressure_Pa(100.0, 0.01, kEStar);
+  const NormalContactResult full = solve_normal_load(hs, h, 100.0, opt);
+  opt.full_fields = false;
+  const NormalContactResult lean = solve_normal_load(hs, h, 100.0, opt);
+  ASSERT_TRUE(full.summary.converged && lean.summary.converged);
+  ASSERT_GT(full.plastic_area_m2, 0.0);
+  EXPECT_EQ((lean.pressure_Pa - full.pressure_Pa).abs().maxCoeff(), 0.0);
+  EXPECT_EQ(lean.approach_m, full.approach_m);
+  EXPECT_EQ(lean.real_area_m2, full.real_area_m2);
+  EXPECT_EQ(lean.plastic_area_m2, full.plastic_area_m2);
+  EXPECT_EQ(lean.mean_gap_m, full.mean_gap_m);
+  EXPECT_EQ(lean.summary.iterations, full.summary.iterations);
+  EXPECT_EQ(lean.gap_m.size() + lean.displacement_m.size() + lean.plastic_increment_m.size(), 0);
+  EXPECT_EQ(full.gap_m.size(), 63 * 63);
+}
+
 // Near-complete elastic contact of a rough surface (≈ 97 % of the cells), the other regime where
 // FFT contact codes are reported to stall: converges, keeps the load, leaves a few open cells.
 TEST(NormalContact, NearCompleteElasticContactConverges) {
