@@ -138,18 +138,20 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
   // three; its error: the realisations' mean change of their extrapolation from the two coarsest to
   // the two finest — not the change of the mean, in which realisations moving apart cancel (on the
   // 32² – 128² grids of a tiny config μs,max's did, exactly, the areas being few whole cells).
-  const auto extrapolate = [](const Levels& l, double& error) {
+  // Both kept above their fully plastic values τ_i/p_cap (solid_contact.h: extrapolate_above).
+  const auto extrapolate = [](const Levels& l, double plastic, double& error) {
     std::vector<double> fine, change;
     for (std::size_t k = 0; k < l.finest.size(); ++k)
       if (std::isfinite(l.coarse[k])) {
-        fine.push_back(extrapolate_first_order(l.coarse[k], l.finest[k]));
-        change.push_back(error_from_refinement(extrapolate_first_order(l.coarser[k], l.coarse[k]), fine.back()));
+        fine.push_back(extrapolate_above(l.coarse[k], l.finest[k], plastic));
+        change.push_back(error_from_refinement(extrapolate_above(l.coarser[k], l.coarse[k], plastic), fine.back()));
       }
     error = change.empty() ? kNaN : lubrication::estimate(change).mean;
     return finite_estimate(fine);
   };
-  t.mu_s_max = extrapolate(mus, t.mu_s_max_discretisation_error);
-  t.mu_boundary = extrapolate(mub, t.mu_boundary_discretisation_error);
+  const double tau = o.interface_shear_strength_Pa;
+  t.mu_s_max = extrapolate(mus, tau / std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau), t.mu_s_max_discretisation_error);  // (3.1.5)
+  t.mu_boundary = extrapolate(mub, tau / o.hardness_Pa, t.mu_boundary_discretisation_error);
   t.mu_s_max_on_junction_grid = finite_estimate(mus.finest);
   t.mu_boundary_on_junction_grid = finite_estimate(mub.finest);
   t.junction_grid = patches.front().junction_grid;

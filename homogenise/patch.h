@@ -24,8 +24,13 @@ struct PatchResult {
   double first_contact_separation_m = 0;  // −min z: contact vanishes above it
   std::vector<double> separation_m;       // the nodes (options' ratios × σ)
   std::vector<double> solid_pressure_Pa;  // N_s / L², on the contact grid
-  std::vector<double> area_fraction;      // A_r / L², on the contact grid
+  std::vector<double> area_fraction;      // A_r / L², on the contact grid (extrapolated: below)
   std::vector<double> solid_pressure_coarse_Pa, area_fraction_coarse;  // the same on half of it
+  // With a quarter of the contact grid solved too (contact grid ≥ 4 × surface grid): area_fraction
+  // is the first-order extrapolation from the contact grid and its half, area_fraction_coarse the
+  // one from its half and quarter (solid_contact.h: extrapolate_above), so the change between them
+  // is the extrapolation's discretisation error.
+  bool area_extrapolated = false;
   std::vector<double> phi_x, phi_y, phi_s, film_over_sigma, phi_f, couette_shear_factor, phi_fp, contact_fraction;
   std::vector<double> lift_per_eta_u_per_m;  // p̄ / (ηU) of the cavitating cell, 1/m
   double mu_s_max = 0;                     // at the pin's nominal pressure, on the junction grid

@@ -84,4 +84,12 @@ inline double error_from_refinement(double coarse, double fine, double order = 1
 // (tests/homogenise/solid_contact_slow_test.cpp).
 inline double extrapolate_first_order(double coarse, double fine) { return 2.0 * fine - coarse; }
 
+// The same, kept at or above `bound`: the fully plastic value (A ≥ W/p_cap, since Σ p = W with p ≤
+// p_cap on every grid and in the continuum), which the extrapolation could otherwise cross where
+// the approach is irregular (0.2 % under it for μs,max on one of six seeds from 1024² and 2048²).
+inline double extrapolate_above(double coarse, double fine, double bound) {
+  const double e = extrapolate_first_order(coarse, fine);
+  return e < bound ? bound : e;  // NaN stays NaN
+}
+
 }  // namespace tribo::homogenise
