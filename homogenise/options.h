@@ -76,12 +76,12 @@ struct HomogeniseOptions {
   double bem_tolerance = 1e-8;               // NormalContactOptions::tolerance
   // The solid solves (homogenise/solid_contact.h: N_s and A_r at the separations, μs,max, μ_b)
   // run on the realisation Fourier-refined to f · grid nodes a side, f the smallest power of two
-  // ≥ 2 with f · grid ≥ min_contact_grid, and once more at f/2 · grid: the change is their
-  // discretisation error. At the thesis pressure the
-  // contact spots need ≈ 2048² on a 1 mm patch (the change 1024² → 2048² is 0.8 % of μs,max and
-  // 1.6 % of μ_b; at 128² alone μ_b came out 40 % high: tests/homogenise/solid_contact_slow_test),
-  // which examples/thesis-steel.toml asks for; the default is a cheaper start whose warning says
-  // when it is not enough.
+  // ≥ 2 with f · grid ≥ min_contact_grid, and once more at f/2 · grid: the change is the load's
+  // discretisation error. With f ≥ 4 also at f/4 · grid, and A_r is the first-order extrapolation
+  // from f and f/2, its error the change of that extrapolation from f/2 and f/4 (patch.h). At the
+  // thesis pressure the contact spots need ≈ 2048² on a 1 mm patch (at 128² alone μ_b came out
+  // 40 % high: tests/homogenise/solid_contact_slow_test), which examples/thesis-steel.toml asks
+  // for; the default is a cheaper start whose warning says when it is not enough.
   int min_contact_grid = 512;
   // The junction (μs,max and μ_b at the pin's nominal pressure) runs on three grids, each twice
   // the one before: the finest f_j · grid nodes a side, f_j the smallest power of two ≥ 4 and ≥ f

@@ -16,9 +16,10 @@
 // At the thesis' pressure (1.3 MPa, A_r/A0 ≈ 0.16 %) a 128² patch resolves ≈ 27 contact cells and
 // overstates the area by the elastic rim of every spot (μ_b 40 % high). The solves therefore run
 // on the realisation Fourier-refined (contact/surface.h: the same continuous surface, sampled more
-// finely) to the contact grid, and once more on half of it: the change between the two is the
-// discretisation error's estimate (error_from_refinement). The flow and lift cells keep their own
-// grid (the patch's).
+// finely) to the contact grid and to coarser and finer grids (homogenise/options.h: min_contact_grid,
+// junction_grid); the area-like results are extrapolated to first order (extrapolate_above below),
+// and the changes between grids are the discretisation errors. The flow and lift cells keep their
+// own grid (the patch's).
 #pragma once
 
 #include <Eigen/Core>
