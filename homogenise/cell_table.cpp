@@ -121,10 +121,10 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
     std::vector<double> finest, coarse, coarser;
   } mus, mub;
   const auto push = [](Levels& l, double finest, double coarse, double coarser) {
-    const bool all = std::isfinite(finest) && std::isfinite(coarse) && std::isfinite(coarser);
+    const bool both = std::isfinite(finest) && std::isfinite(coarse);
     l.finest.push_back(std::isfinite(finest) ? finest : kNaN);
-    l.coarse.push_back(all ? coarse : kNaN);
-    l.coarser.push_back(all ? coarser : kNaN);
+    l.coarse.push_back(both ? coarse : kNaN);
+    l.coarser.push_back(both ? coarser : kNaN);
   };
   for (const PatchResult& p : patches) {
     if (p.contact_grid != patches.front().contact_grid || p.junction_grid != patches.front().junction_grid)
@@ -134,17 +134,20 @@ CellTable aggregate(const HomogeniseOptions& o, const std::vector<PatchResult>& 
     t.first_contact_separation_m = std::max(t.first_contact_separation_m, p.first_contact_separation_m);
     t.unconverged += p.unconverged;
   }
-  // Reported: the extrapolation from the two finest grids, over the realisations solved on all
-  // three; its error: the realisations' mean change of their extrapolation from the two coarsest to
-  // the two finest — not the change of the mean, in which realisations moving apart cancel (on the
+  // Reported: the extrapolation from the two finest grids, over the realisations solved on both;
+  // its error: the realisations' mean change of their extrapolation from the two coarsest to the
+  // two finest — not the change of the mean, in which realisations moving apart cancel (on the
   // 32² – 128² grids of a tiny config μs,max's did, exactly, the areas being few whole cells).
+  // Where the coarsest solve failed, the extrapolation's own correction (from the middle grid's
+  // value) stands in for that change: twice the grid values' change, on the safe side.
   // Both kept above their fully plastic values τ_i/p_cap (solid_contact.h: extrapolate_above).
   const auto extrapolate = [](const Levels& l, double plastic, double& error) {
     std::vector<double> fine, change;
     for (std::size_t k = 0; k < l.finest.size(); ++k)
       if (std::isfinite(l.coarse[k])) {
         fine.push_back(extrapolate_above(l.coarse[k], l.finest[k], plastic));
-        change.push_back(error_from_refinement(extrapolate_above(l.coarser[k], l.coarse[k], plastic), fine.back()));
+        const double below = extrapolate_above(l.coarser[k], l.coarse[k], plastic);
+        change.push_back(error_from_refinement(std::isfinite(below) ? below : l.coarse[k], fine.back()));
       }
     error = change.empty() ? kNaN : lubrication::estimate(change).mean;
     return finite_estimate(fine);

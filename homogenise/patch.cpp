@@ -166,10 +166,15 @@ PatchResult solve_patch(const HomogeniseOptions& o, int realisation) {
     // law's discretisation errors are the extrapolation's change), both kept above the plastic
     // bound N_s/σ0. The load converges fast (its change 1024² → 2048² on the thesis preset ≤ 0.13 %)
     // and stays the contact grid's.
+    // Where the coarsest solve failed, the middle grid's value stands in for the coarse twin (the
+    // error is then the extrapolation's own correction, on the safe side); where the middle one
+    // failed, the node keeps the contact grid's value and its error is unknown, as without.
     for (std::size_t m = 0; m < nodes; ++m) {
-      r.area_fraction[m] = extrapolate_above(coarse.area_fraction[m], fine.area_fraction[m], fine.solid_pressure_Pa[m] / o.hardness_Pa);
-      r.area_fraction_coarse[m] =
-          extrapolate_above(coarser->area_fraction[m], coarse.area_fraction[m], coarse.solid_pressure_Pa[m] / o.hardness_Pa);
+      const double fine_area = fine.area_fraction[m], coarse_area = coarse.area_fraction[m];
+      if (!std::isfinite(coarse_area)) continue;
+      r.area_fraction[m] = extrapolate_above(coarse_area, fine_area, fine.solid_pressure_Pa[m] / o.hardness_Pa);
+      const double below = extrapolate_above(coarser->area_fraction[m], coarse_area, coarse.solid_pressure_Pa[m] / o.hardness_Pa);
+      r.area_fraction_coarse[m] = std::isfinite(below) ? below : coarse_area;
     }
     r.bem_iterations += coarser->bem_iterations;
     r.unconverged += coarser->unconverged;

@@ -202,6 +202,19 @@ TEST(LawFile, JunctionIsExtrapolatedAndItsErrorIsTheMeanChangeOfTheExtrapolation
   EXPECT_NEAR(under.mu_s_max.mean, tau / std::sqrt(o.hardness_Pa * o.hardness_Pa - o.alpha * tau * tau), 1e-12);
 }
 
+// A coarsest junction solve that failed (NaN) does not drop the realisation: the extrapolation
+// from the two finest stands, and its own correction (the distance to the middle grid's value) is
+// its error — on the safe side of the change it replaces.
+TEST(LawFile, WhereTheCoarsestJunctionSolveFailedTheCorrectionIsTheError) {
+  HomogeniseOptions o;
+  o.surface.rms_height_m = kSigma;
+  const CellTable cells = aggregate(o, {toy_patch({0.62, 0.63, std::nan("")}, {0.2000, 0.2010, std::nan("")})});
+  EXPECT_NEAR(cells.mu_s_max.mean, 0.61, 1e-12);
+  EXPECT_NEAR(cells.mu_s_max_discretisation_error, 0.02, 1e-12);  // |0.61 − 0.63|
+  EXPECT_NEAR(cells.mu_boundary.mean, 0.1990, 1e-12);
+  EXPECT_NEAR(cells.mu_boundary_discretisation_error, 0.0020, 1e-12);
+}
+
 // The coarse grid's pressures only start the fine solves: the answer is the cold start's to the
 // BEM's tolerance (1e-8 of the deflection; the loads to 1e-6), in fewer iterations.
 TEST(SolidContact, CoarseGridStartKeepsTheAnswerInFewerIterations) {
