@@ -6,11 +6,8 @@
 //   per_iter_over_fft    wall time per iteration / wall time of one r2c + c2r pair, same grid
 //   per_iter_over_fft_cpu the same ratio in process CPU time (robust on a shared machine)
 //   fft_pair_ms          that FFT pair, measured in the same process with the same thread count
-//   fft_pairs            half-space evaluations of the solve (1 per iteration + re-synchronisations)
+//   fft_pairs            half-space evaluations of the solve (1 per iteration + 1 for the start)
 //   pairs_per_iter       fft_pairs / iterations (the floor is 1)
-//   resyncs              exact recomputations u = G p (NormalContactOptions::resync_drift)
-//   carried_error        error of the carried u found by the re-sync that confirmed convergence,
-//                        ‖Δu‖₂/‖u − ū‖₂ (carried_error_max: the largest, early in the solve)
 //   solve_cpu_s, solve_s the whole solve, process CPU and wall time
 //   peak_rss_MiB         the process' peak resident memory so far (VmHWM)
 // and, to locate the floor, BM_Product (one half-space product with its energy, as the solve
@@ -120,9 +117,6 @@ void solve_bench(benchmark::State& state, bool plastic) {
   state.counters["iterations"] = r.summary.iterations;
   state.counters["fft_pairs"] = r.summary.fft_pairs;
   state.counters["pairs_per_iter"] = static_cast<double>(r.summary.fft_pairs) / r.summary.iterations;
-  state.counters["resyncs"] = r.summary.resyncs;
-  state.counters["carried_error"] = r.summary.carried_error;
-  state.counters["carried_error_max"] = r.summary.carried_error_max;
   state.counters["solve_cpu_s"] = solve_cpu_s / static_cast<double>(state.iterations());
   state.counters["solve_s"] = solve_s / static_cast<double>(state.iterations());
   state.counters["fft_pair_cpu_ms"] = 1e3 * fft.cpu_s;

@@ -70,14 +70,10 @@ double projection_shift(const Eigen::ArrayXXd& y, double cap, double target, con
     double sum = 0.0;
     long active = 0;
 #pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : sum, active) schedule(static)
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < n; ++i) {  // branch-free: the sets are scattered
       const double v = yp[i] - c;
-      if (v >= cap) {
-        sum += cap;
-      } else if (v > 0.0) {
-        sum += v;
-        ++active;
-      }
+      sum += std::min(std::max(v, 0.0), cap);
+      active += (v > 0.0) & (v < cap);
     }
     const double f = sum - target;
     if (std::abs(f) <= 1e-14 * target) break;
@@ -88,92 +84,6 @@ double projection_shift(const Eigen::ArrayXXd& y, double cap, double target, con
   }
   return c;
 }
-
-// Which of the three sets a cell belongs to, from its pressure (or trial value) q.
-enum CellSet : int { kOpen = 0, kFree = 1, kPlastic = 2 };
-inline int cell_set(double q, double cap) { return q <= 0.0 ? kOpen : (q >= cap ? kPlastic : kFree); }
-
-// What the iteration needs to know about the sets after a pass over the grid, with v = h + u:
-// the free cells' sums of v − ref (ref a nearby approach, so that the rms gap Σ (v − δ)² follows
-// from them without cancellation), the bracket of δ when nothing is free, Σ p, and the extreme
-// trial values per set (they tell whether a uniform load shift keeps every cell in its set).
-struct SetStats {
-  long free = 0;
-  double s1 = 0.0, s2 = 0.0;  // Σ_F (v − ref), Σ_F (v − ref)²
-  double t_sum = 0.0;         // Σ_F t of the direction the pass saw
-  double plastic_v_max = -std::numeric_limits<double>::infinity();
-  double open_v_min = std::numeric_limits<double>::infinity();
-  double load = 0.0;  // Σ clamp(q, 0, cap)
-  double free_q_min = std::numeric_limits<double>::infinity(), free_q_max = -std::numeric_limits<double>::infinity();
-  double open_q_max = -std::numeric_limits<double>::infinity();
-  double plastic_q_min = std::numeric_limits<double>::infinity();
-  double q_min = std::numeric_limits<double>::infinity(), q_max = -std::numeric_limits<double>::infinity();
-  long changed = 0;     // update pass: cells whose set or (outside the free set) pressure changed
-  double drift2 = 0.0;  // update pass: Σ e², e = pressure change not along the CG direction
-
-  void add(double q, double v, double t, double ref, double cap) {
-    q_min = std::min(q_min, q);
-    q_max = std::max(q_max, q);
-    switch (cell_set(q, cap)) {
-      case kOpen:
-        open_v_min = std::min(open_v_min, v);
-        open_q_max = std::max(open_q_max, q);
-        break;
-      case kPlastic:
-        plastic_v_max = std::max(plastic_v_max, v);
-        plastic_q_min = std::min(plastic_q_min, q);
-        load += cap;
-        break;
-      default: {
-        const double d = v - ref;
-        ++free;
-        s1 += d;
-        s2 += d * d;
-        t_sum += t;
-        load += q;
-        free_q_min = std::min(free_q_min, q);
-        free_q_max = std::max(free_q_max, q);
-      }
-    }
-  }
-  void merge(const SetStats& o) {
-    free += o.free;
-    s1 += o.s1;
-    s2 += o.s2;
-    t_sum += o.t_sum;
-    plastic_v_max = std::max(plastic_v_max, o.plastic_v_max);
-    open_v_min = std::min(open_v_min, o.open_v_min);
-    load += o.load;
-    free_q_min = std::min(free_q_min, o.free_q_min);
-    free_q_max = std::max(free_q_max, o.free_q_max);
-    open_q_max = std::max(open_q_max, o.open_q_max);
-    plastic_q_min = std::min(plastic_q_min, o.plastic_q_min);
-    q_min = std::min(q_min, o.q_min);
-    q_max = std::max(q_max, o.q_max);
-    changed += o.changed;
-    drift2 += o.drift2;
-  }
-};
-
-struct DirectionStats {
-  double res2 = 0.0, num = 0.0, g2 = 0.0;  // Σ r², Σ_F g t, Σ_F g²
-  void merge(const DirectionStats& o) {
-    res2 += o.res2;
-    num += o.num;
-    g2 += o.g2;
-  }
-};
-
-struct ScaleStats {
-  double usum = 0.0, usq = 0.0, err2 = 0.0;  // Σ u, Σ u², Σ (u_carried − G p)²
-  SetStats sets;
-  void merge(const ScaleStats& o) {
-    usum += o.usum;
-    usq += o.usq;
-    err2 += o.err2;
-    sets.merge(o.sets);
-  }
-};
 
 // One statically scheduled pass over n cells; `body(i, acc)` accumulates into a thread-local
 // Acc, and the partial results are merged in thread order, so a solve's bits depend on the
@@ -198,6 +108,130 @@ Acc grid_pass(Eigen::Index n, Body&& body) {
   for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
   return acc;
 }
+
+// The same over contiguous chunks: `body(lo, hi)` returns the Acc of cells [lo, hi), so a body
+// can keep its sums in scalars and let `omp simd` vectorise the loop (a fixed order per chunk).
+template <class Acc, class Body>
+Acc grid_chunks(Eigen::Index n, Body&& body) {
+  const int threads = n >= kParallelMinCells ? std::max(1, omp_get_max_threads()) : 1;
+  if (threads == 1) return body(Eigen::Index{0}, n);
+  std::vector<Acc> part(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads)
+  {
+    const Eigen::Index t = omp_get_thread_num(), m = omp_get_num_threads();
+    part[static_cast<std::size_t>(t)] = body(n * t / m, n * (t + 1) / m);
+  }
+  Acc acc = part[0];
+  for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
+  return acc;
+}
+
+// Pass B's sums: the residual, the trial's sets (for the load shift) and the slope of the energy
+// along the step it makes (exact when the shift keeps every set, see pass C).
+struct TrialStats {
+  double res2 = 0.0;       // Σ r² of the current state
+  double slope0 = 0.0;     // Σ (v − δ)(clamp(y) − p)
+  double slope_free = 0.0; // Σ over the trial's free cells of (v − δ)
+  double load = 0.0;       // Σ clamp(y, 0, cap)
+  long free = 0;           // trial cells strictly inside (0, cap)
+  double free_y_min = std::numeric_limits<double>::infinity(), free_y_max = -std::numeric_limits<double>::infinity();
+  double open_y_max = -std::numeric_limits<double>::infinity();
+  double plastic_y_min = std::numeric_limits<double>::infinity();
+  double y_min = std::numeric_limits<double>::infinity(), y_max = -std::numeric_limits<double>::infinity();
+
+  // Branch-free (selects, not jumps): the sets are scattered over the grid, so a branch on
+  // them is mispredicted about as often as a cell is in contact.
+  void add(double y, double g, double p, double cap) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const bool open = y <= 0.0, plastic = y >= cap, in = !(open || plastic);
+    const double py = std::min(std::max(y, 0.0), cap);
+    y_min = std::min(y_min, y);
+    y_max = std::max(y_max, y);
+    open_y_max = std::max(open_y_max, open ? y : -inf);
+    plastic_y_min = std::min(plastic_y_min, plastic ? y : inf);
+    free_y_min = std::min(free_y_min, in ? y : inf);
+    free_y_max = std::max(free_y_max, in ? y : -inf);
+    free += in;
+    slope_free += in ? g : 0.0;
+    load += py;
+    slope0 += g * (py - p);
+  }
+  void merge(const TrialStats& o) {
+    res2 += o.res2;
+    slope0 += o.slope0;
+    slope_free += o.slope_free;
+    load += o.load;
+    free += o.free;
+    free_y_min = std::min(free_y_min, o.free_y_min);
+    free_y_max = std::max(free_y_max, o.free_y_max);
+    open_y_max = std::max(open_y_max, o.open_y_max);
+    plastic_y_min = std::min(plastic_y_min, o.plastic_y_min);
+    y_min = std::min(y_min, o.y_min);
+    y_max = std::max(y_max, o.y_max);
+  }
+};
+
+// Pass C's: the largest multiple of the step that stays within [0, cap] (≥ 1: p and p + s both
+// do), and the slope where pass B's could not be used.
+struct StepStats {
+  double alpha_max = std::numeric_limits<double>::infinity();
+  double slope = 0.0;  // Σ (v − δ) s
+  void merge(const StepStats& o) {
+    alpha_max = std::min(alpha_max, o.alpha_max);
+    slope += o.slope;
+  }
+};
+
+// Pass D's: the free set of the new state and its sums about `ref` (a nearby approach, so that
+// Σ_F (v − δ)² follows without cancellation), for δ, Σ_F g² and the next direction.
+struct StateStats {
+  long free = 0;
+  double s1 = 0.0, s2 = 0.0;     // Σ_F (v − ref), Σ_F (v − ref)²
+  double w_sum = 0.0, vw = 0.0;  // Σ_F w, Σ_F (v − ref) w
+  double s_sum = 0.0, vs = 0.0;  // Σ_F s, Σ_F (v − ref) s
+  double sw = 0.0;               // Σ_F s w
+  double plastic_v_max = -std::numeric_limits<double>::infinity();
+  double open_v_min = std::numeric_limits<double>::infinity();
+  double usum = 0.0, usq = 0.0;  // Σ u, Σ u² (on the passes that refresh the elastic scale)
+
+  void add(double p, double v, double s, double w, double ref, double cap) {  // branch-free
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    const bool open = p <= 0.0, plastic = p >= cap, in = !(open || plastic);
+    open_v_min = std::min(open_v_min, open ? v : inf);
+    plastic_v_max = std::max(plastic_v_max, plastic ? v : -inf);
+    const double d = in ? v - ref : 0.0, sf = in ? s : 0.0, wf = in ? w : 0.0;
+    free += in;
+    s1 += d;
+    s2 += d * d;
+    w_sum += wf;
+    vw += d * wf;
+    s_sum += sf;
+    vs += d * sf;
+    sw += sf * wf;
+  }
+  void merge(const StateStats& o) {
+    free += o.free;
+    s1 += o.s1;
+    s2 += o.s2;
+    w_sum += o.w_sum;
+    vw += o.vw;
+    s_sum += o.s_sum;
+    vs += o.vs;
+    sw += o.sw;
+    plastic_v_max = std::max(plastic_v_max, o.plastic_v_max);
+    open_v_min = std::min(open_v_min, o.open_v_min);
+    usum += o.usum;
+    usq += o.usq;
+  }
+};
+
+struct ScaleStats {
+  double usum = 0.0, usq = 0.0;
+  void merge(const ScaleStats& o) {
+    usum += o.usum;
+    usq += o.usq;
+  }
+};
 
 NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Control control, double value,
                           const NormalContactOptions& opt, const Eigen::ArrayXXd* warm) {
@@ -226,259 +260,249 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
                                  ? opt.max_iterations
                                  : 1000 + 4 * static_cast<int>(std::max(grid.nx, grid.ny));
 
-  // State. The pressure is p = clamp(y − shift, 0, cap): y holds the last trial values, shift the
-  // load-control projection of them (Euclidean projection onto Σ p = target, see
-  // projection_shift), applied lazily by every pass instead of in a pass of its own. v = h + u,
-  // carried incrementally between exact products. t_old / t_new: the last and the next search
-  // direction (two buffers, so a re-synchronisation does not lose the conjugate direction);
-  // r = G t_new.
-  Eigen::ArrayXXd y(grid.nx, grid.ny), v(grid.nx, grid.ny), t_old = Eigen::ArrayXXd::Zero(grid.nx, grid.ny),
-      t_new(grid.nx, grid.ny), r(grid.nx, grid.ny);
-  double shift = 0.0;
+  // State: the pressure p (feasible: 0 ≤ p ≤ cap, Σ p = target), v = h + u with u = G p exact
+  // (every change of p is a multiple of a step whose product was taken), the last step s and
+  // w = G s. s also holds the trial values between passes B and C.
+  Eigen::ArrayXXd p(grid.nx, grid.ny), v(grid.nx, grid.ny), s = Eigen::ArrayXXd::Zero(grid.nx, grid.ny),
+      w(grid.nx, grid.ny);
   if (warm != nullptr) {
-    y = warm->max(0.0).min(cap);
+    p = warm->max(0.0).min(cap);
   } else if (load_control) {
-    y.setConstant(target / static_cast<double>(n));
+    p.setConstant(target / static_cast<double>(n));
   } else {
-    y.setZero();
+    p.setZero();
   }
-  if (load_control) shift = projection_shift(y, cap, target);
-
+  if (load_control) {
+    const double c = projection_shift(p, cap, target);
+    p = (p - c).max(0.0).min(cap);
+  }
   const double* hp = h0.data();
-  double* yp = y.data();
+  double* pp = p.data();
   double* vp = v.data();
+  double* sp = s.data();
+  double* wp = w.data();
   const double hscale = (h0 - h0.mean()).matrix().norm();
   const double c0 = hs.self_compliance_m_per_Pa();
+  int fft_pairs = 0;
 
-  double delta = load_control ? 0.0 : value;  // approach; for load control the free cells' mean of v
-  bool have_delta = !load_control;
-  double scale = 0.0;         // ‖u − ū‖₂ at the last exact product
-  double g_norm_est = 0.0;    // Σ_F (v − δ)² of the current state (from the last pass' sums)
-  double t_sum = 0.0;         // Σ_F t_old over the current free set
-  long free_count = 0;
-  int fft_pairs = 0, resyncs = 0, since_sync = 0;
-  double drift = 0.0;         // estimate of ‖u_carried − G p‖₂ (m)
-  double last_error = 0.0, max_error = 0.0;  // measured ‖u_carried − G p‖₂ / ‖u − ū‖₂ at re-syncs
-
-  // δ (load control) and Σ_F g² from a pass' set sums taken about `ref`.
-  auto take_stats = [&](const SetStats& st, double ref) {
-    free_count = st.free;
-    t_sum = st.t_sum;
-    if (!load_control) {
-      g_norm_est = st.s2 - 2.0 * (delta - ref) * st.s1 + static_cast<double>(st.free) * (delta - ref) * (delta - ref);
-      return true;
-    }
-    have_delta = true;
-    if (st.free > 0) {
-      const double mean = st.s1 / static_cast<double>(st.free);
-      delta = ref + mean;
-      g_norm_est = st.s2 - mean * st.s1;
-      // Cancellation: Σ (v − ref)² ≫ Σ (v − δ)² leaves too few digits; the caller repeats the
-      // pass about the new δ (rare: ref is the previous iteration's δ).
-      return !(mean * st.s1 > 1e8 * g_norm_est) && g_norm_est >= 0.0;
-    }
-    // Without free cells δ is only bracketed: plastic cells need δ ≥ h + u, open ones δ ≤ h + u.
-    // Take the smallest admissible approach, or the middle of an empty bracket.
-    if (!std::isfinite(st.open_v_min) || st.plastic_v_max <= st.open_v_min) {
-      delta = st.plastic_v_max;
-    } else {
-      delta = 0.5 * (st.plastic_v_max + st.open_v_min);
-    }
-    g_norm_est = 0.0;
-    return true;
+  hs.displacement_and_energy(p, w);  // u of the start; w is scratch until the first step
+  ++fft_pairs;
+  double scale = 0.0;  // ‖u − ū‖₂
+  auto set_scale = [&](double usum, double usq) {
+    scale = std::sqrt(std::max(usq - usum * usum / static_cast<double>(n), 0.0));
   };
-  // The set sums of the current state (v, y − shift) with the direction t, about δ.
-  auto set_pass = [&](const Eigen::ArrayXXd& t) {
-    const double* tp = t.data();
-    const double ref = delta;
-    const SetStats st = grid_pass<SetStats>(n, [&](Eigen::Index i, SetStats& a) {
-      a.add(yp[i] - shift, vp[i], tp[i], ref, cap);
-    });
-    if (!take_stats(st, ref)) take_stats(grid_pass<SetStats>(n, [&](Eigen::Index i, SetStats& a) {
-                                            a.add(yp[i] - shift, vp[i], tp[i], delta, cap);
-                                          }),
-                                          delta);
-  };
-  // Exact re-synchronisation: v = h + G p, the elastic scale, the sets. t_new is scratch here.
-  auto resync = [&] {
-    double* sp = t_new.data();
-#pragma omp parallel for if (n >= kParallelMinCells) schedule(static)
-    for (Eigen::Index i = 0; i < n; ++i) sp[i] = std::clamp(yp[i] - shift, 0.0, cap);
-    hs.displacement_and_energy(t_new, r);
-    ++fft_pairs;
-    ++resyncs;
-    const double* rp = r.data();
-    const double* tp = t_old.data();
-    // Before the first exact product δ is unknown (load control); the mean of h + u is a
-    // reference close enough for the sums (re-done about δ if not).
-    const double ref = have_delta ? delta : (h0.mean() + r.mean());
-    // v still holds the carried h + u: the pass measures its error (v is written anyway).
+  {
     const ScaleStats st = grid_pass<ScaleStats>(n, [&](Eigen::Index i, ScaleStats& a) {
-      const double vi = hp[i] + rp[i];
-      a.err2 += (vp[i] - vi) * (vp[i] - vi);
-      vp[i] = vi;
-      a.usum += rp[i];
-      a.usq += rp[i] * rp[i];
-      a.sets.add(yp[i] - shift, vi, tp[i], ref, cap);
+      vp[i] = hp[i] + wp[i];
+      a.usum += wp[i];
+      a.usq += wp[i] * wp[i];
     });
-    scale = std::sqrt(std::max(st.usq - st.usum * st.usum / static_cast<double>(n), 0.0));
-    if (since_sync > 0) {
-      last_error = std::sqrt(st.err2) / std::max(scale, 1e-300);
-      max_error = std::max(max_error, last_error);
-    }
-    if (!take_stats(st.sets, ref)) set_pass(t_old);
-    drift = 0.0;
-    since_sync = 0;
-  };
+    set_scale(st.usum, st.usq);
+  }
+  w.setZero();
 
-  v.setZero();  // the first re-sync measures nothing (since_sync = 0) but reads v
-  resync();
-  bool conjugate = false, converged = false;
-  double g_norm_old = 1.0, step = 1.0 / c0, residual = 0.0, res_abs = std::numeric_limits<double>::infinity();
+  // What the next direction needs from the state: δ (load control: the free cells' mean of v),
+  // Σ_F g², and, against the last step, Σ_F g w, Σ_F s w, Σ_F s, Σ_F g s (g = v − δ).
+  double delta = load_control ? h0.mean() + (v - h0).mean() : value;
+  double g2 = 0.0, gw = 0.0, sw = 0.0, s_free = 0.0, gs = 0.0;
+  long free_count = 0;
+  auto take_state = [&](const StateStats& st, double ref) {
+    free_count = st.free;
+    double dref = delta - ref;
+    if (load_control) {
+      if (st.free > 0) {
+        dref = st.s1 / static_cast<double>(st.free);
+      } else {
+        // Without free cells δ is only bracketed: plastic cells need δ ≥ v, open ones δ ≤ v.
+        // Take the smallest admissible approach, or the middle of an empty bracket.
+        const double d = (!std::isfinite(st.open_v_min) || st.plastic_v_max <= st.open_v_min)
+                             ? st.plastic_v_max
+                             : 0.5 * (st.plastic_v_max + st.open_v_min);
+        dref = d - ref;
+      }
+      delta = ref + dref;
+    }
+    const double f = static_cast<double>(st.free);
+    g2 = st.s2 - 2.0 * dref * st.s1 + f * dref * dref;
+    gw = st.vw - dref * st.w_sum;
+    gs = st.vs - dref * st.s_sum;
+    sw = st.sw;
+    s_free = st.s_sum;
+    // Cancellation: Σ (v − ref)² ≫ Σ (v − δ)² leaves too few digits; the caller repeats the
+    // sums about the new δ (rare: ref is the previous δ).
+    return !(std::abs(dref * st.s1) > 1e8 * std::abs(g2));
+  };
+  auto state_sums = [&](double ref) {
+    return grid_pass<StateStats>(n, [&](Eigen::Index i, StateStats& a) { a.add(pp[i], vp[i], sp[i], wp[i], ref, cap); });
+  };
+  if (!take_state(state_sums(delta), delta)) take_state(state_sums(delta), delta);
+
+  double tau = 1.0 / c0;  // trial step length (m/Pa → Pa per m of gap)
+  double residual = 0.0;
+  bool converged = false, have_step = false;
   int it = 0;
   for (;;) {
-    if (since_sync > 0 && (since_sync >= opt.resync_interval || drift > opt.resync_drift * res_abs)) resync();
-
-    // Pass 1: the residual of the contact conditions (against the elastic scale ‖u − ū‖₂) and
-    // the conjugate direction on the free cells (Polonsky & Keer), made mean-free there for load
-    // control so that a step along it keeps Σ p. The gap has zero mean over the free cells
-    // (that defines δ), so the mean of g + β t_old is β Σ t_old / free.
-    const double beta = conjugate ? g_norm_est / g_norm_old : 0.0;
-    const double tmean = load_control && free_count > 0 ? beta * t_sum / static_cast<double>(free_count) : 0.0;
-    {
-      const double* top = t_old.data();
-      double* tnp = t_new.data();
-      const double d = delta, s = shift;
-      const DirectionStats ds = grid_pass<DirectionStats>(n, [&](Eigen::Index i, DirectionStats& a) {
-        const double q = yp[i] - s;
-        const double g = vp[i] - d;
-        double ri, ti = 0.0;
-        if (q <= 0.0) {
-          ri = std::min(g, 0.0);
-        } else if (q >= cap) {
-          ri = std::max(g, 0.0);
-        } else {
-          ri = g;
-          ti = g + beta * top[i] - tmean;
-          a.num += g * ti;
-          a.g2 += g * g;
-        }
-        tnp[i] = ti;
-        a.res2 += ri * ri;
-      });
-      res_abs = std::sqrt(ds.res2);
-      residual = res_abs / std::max(scale, 1e-300 + 1e-12 * hscale);
-      if (!std::isfinite(residual)) break;
-      if (residual <= opt.tolerance) {
-        if (since_sync == 0) {
-          converged = true;
-          break;
-        }
-        resync();  // confirm on an exactly recomputed displacement
-        continue;
-      }
-      if (it >= max_iterations) break;
-      g_norm_old = ds.g2;
-
-      // One half-space product: r = G t and t·G t (Parseval), hence the exact line minimum
-      // τ = Σ_F g t / Σ_F t G t along t (t vanishes off the free set).
-      const double den = hs.displacement_and_energy(t_new, r);
-      ++fft_pairs;
-      const bool cg_step = free_count > 0 && den > 0.0 && std::isfinite(ds.num / den) && ds.num / den > 0.0;
-      if (cg_step) step = ds.num / den;
-
-      // Pass 2: trial pressure y: the CG step on free cells, a gradient step of the same length
-      // on the others (Polonsky & Keer's recovery: overlapping cells out of contact gain pressure,
-      // opening plastic cells lose it); v − τ G t; and the set sums of the new state, taken at
-      // zero shift (below: the shift that restores the load usually keeps every set).
-      const double tau = step, tau_v = cg_step ? step : 0.0;
-      const double* rp = r.data();
-      const SetStats st = grid_pass<SetStats>(n, [&](Eigen::Index i, SetStats& a) {
-        const double q = yp[i] - s;
-        const double p_old = std::clamp(q, 0.0, cap);
-        const bool was_free = q > 0.0 && q < cap;
-        const double vn = vp[i] - tau_v * rp[i];
-        double yn, along;  // trial value; pressure the carried u accounts for
-        if (was_free) {
-          yn = cg_step ? p_old - tau * tnp[i] : p_old;
-          along = yn;
-        } else {
-          yn = p_old - tau * (vp[i] - d);
-          along = p_old;
-        }
-        const double pn = std::clamp(yn, 0.0, cap);
-        const double e = pn - along;
-        a.drift2 += e * e;
-        if (cell_set(yn, cap) != cell_set(q, cap) || (!was_free && pn != p_old)) ++a.changed;
-        a.add(yn, vn, tnp[i], d, cap);
-        yp[i] = yn;
-        vp[i] = vn;
-      });
-      conjugate = cg_step;
-      ++it;
-      ++since_sync;
-
-      // Load control: the shift c with Σ clamp(y − c, 0, cap) = target. When no cell changed set
-      // the mismatch is round-off (Σ_F t = 0) and shifting for it is not worth an error in u. A
-      // Newton step from c = 0 is exact when it moves no cell across 0 or the cap (the common
-      // case); otherwise the full projection and a pass for the sets it makes.
-      double new_shift = 0.0;
-      bool sets_valid = true;
-      if (load_control && (st.changed > 0 || std::abs(st.load - target) > 1e-10 * target)) {
-        const double c1 = st.free > 0 ? (st.load - target) / static_cast<double>(st.free) : 0.0;
-        if (st.free > 0 && c1 < st.free_q_min && c1 > st.free_q_max - cap && c1 >= st.open_q_max &&
-            c1 <= st.plastic_q_min - cap) {
-          new_shift = c1;
-        } else {
-          const ShiftStart start{st.load, st.free, st.q_min, st.q_max};
-          new_shift = projection_shift(y, cap, target, &start);
-          sets_valid = false;
-        }
-      }
-      const double d_old = delta;
-      shift = new_shift;
-      double shift_cells = static_cast<double>(st.free);
-      if (sets_valid) {
-        if (!take_stats(st, d_old)) set_pass(t_new);
-      } else {
-        set_pass(t_new);
-        shift_cells = static_cast<double>(free_count + st.changed);
-      }
-      // Estimate of ‖G e‖₂: c₀ ‖e‖₂ (c₀ the self-compliance) for the clamps, which are scattered
-      // cells; for the shift, uniform over the free cells, c₀ |c| |F|: a uniform pressure on a
-      // patch of m cells displaces each by ~ c₀ c √m, so √m × √m over the patch. (With √|F|
-      // alone the plastic case, where F is most of the grid, re-synchronised too late and took
-      // 16–25 iterations instead of 13 at 512²; measured in bench/README.md.)
-      drift += c0 * (std::sqrt(st.drift2) + std::abs(new_shift) * shift_cells);
-      std::swap(t_old, t_new);
+    // The direction t = g − β s on the free cells (g the gap, s the last step): β makes t
+    // G-conjugate to s (Daniel's formula; s is the step actually taken, so conjugacy survives
+    // the projection), β = 0 where that would not leave a descent direction. For load control t
+    // is made mean-free on the free set (Σ_F g = 0 defines δ, so only −β Σ_F s needs removing).
+    double beta = 0.0;
+    if (have_step && sw > 0.0) {
+      beta = gw / sw;
+      if (!(g2 - beta * gs > 0.1 * g2)) beta = 0.0;
     }
+    const double tmean =
+        load_control && free_count > 0 ? -beta * s_free / static_cast<double>(free_count) : 0.0;
+
+    // Pass B: the residual of the contact conditions; the trial y = p − τ t on the free cells and
+    // p − τ g on the others (Polonsky & Keer's recovery: overlapping open cells gain pressure,
+    // opening plastic cells lose it), written over s.
+    const double d = delta, b = beta, tr = tau;
+    const TrialStats tb = grid_pass<TrialStats>(n, [&](Eigen::Index i, TrialStats& a) {
+      const double q = pp[i];
+      const double g = vp[i] - d;
+      const bool open = q <= 0.0, plastic = q >= cap;
+      const double ri = open ? std::min(g, 0.0) : (plastic ? std::max(g, 0.0) : g);
+      const double y = q - tr * ((open || plastic) ? g : g - b * sp[i] - tmean);
+      a.res2 += ri * ri;
+      a.add(y, g, q, cap);
+      sp[i] = y;
+    });
+    residual = std::sqrt(tb.res2) / std::max(scale, 1e-300 + 1e-12 * hscale);
+    if (!std::isfinite(residual)) break;
+    if (residual <= opt.tolerance) {
+      converged = true;
+      break;
+    }
+    if (it >= max_iterations) break;
+
+    // The load shift c: Σ clamp(y − c, 0, cap) = target. A Newton step from 0 is exact when it
+    // moves no trial value across 0 or the cap (the common case; then pass B's slope holds);
+    // otherwise the full projection.
+    double c = 0.0;
+    bool sets_kept = true;
+    if (load_control) {
+      const double c1 = tb.free > 0 ? (tb.load - target) / static_cast<double>(tb.free) : 0.0;
+      // (With no trial value at the cap, plastic_y_min − cap would be ∞ − ∞ for an elastic solve.)
+      const bool plastic_kept = !(tb.plastic_y_min < std::numeric_limits<double>::infinity()) ||
+                                c1 <= tb.plastic_y_min - cap;
+      if (tb.free > 0 && c1 < tb.free_y_min && c1 > tb.free_y_max - cap && c1 >= tb.open_y_max && plastic_kept) {
+        c = c1;
+      } else {
+        const ShiftStart start{tb.load, tb.free, tb.y_min, tb.y_max};
+        c = projection_shift(s, cap, target, &start);
+        sets_kept = false;
+      }
+    }
+
+    // Pass C: the step s = clamp(y − c, 0, cap) − p and how far along it p stays feasible.
+    auto step_cell = [&](Eigen::Index i, StepStats& a) {
+      const double q = pp[i];
+      const double si = std::min(std::max(sp[i] - c, 0.0), cap) - q;
+      sp[i] = si;
+      // α_max = min of q / −s (s < 0) and (cap − q) / s (s > 0), dividing only where the bound
+      // drops (rarely: the comparisons are false for s = 0 and for an infinite cap).
+      if (q < -si * a.alpha_max) a.alpha_max = q / -si;
+      if (cap - q < si * a.alpha_max) a.alpha_max = (cap - q) / si;
+    };
+    double slope;
+    StepStats sc;
+    if (sets_kept) {
+      sc = grid_pass<StepStats>(n, step_cell);
+      slope = tb.slope0 - c * tb.slope_free;
+    } else {
+      sc = grid_pass<StepStats>(n, [&](Eigen::Index i, StepStats& a) {
+        step_cell(i, a);
+        a.slope += (vp[i] - d) * sp[i];
+      });
+      slope = sc.slope;
+    }
+
+    // The one half-space product of the iteration, w = G s with s·G s (Parseval), and the exact
+    // minimum of the energy ½ p·G p + h·p along p + α s (Σ s = 0 for load control, so δ drops
+    // out), within the feasible α ≤ alpha_max.
+    const double den = hs.displacement_and_energy(s, w);
+    ++fft_pairs;
+    ++it;
+    if (!(den > 0.0) || !(slope < 0.0)) {
+      // Not a descent step (round-off near the solution, or a poor trial length): try again from
+      // the gradient with half the length; p and v are untouched.
+      tau *= 0.5;
+      have_step = false;
+      s.setZero();
+      w.setZero();
+      if (!take_state(state_sums(delta), delta)) take_state(state_sums(delta), delta);
+      continue;
+    }
+    const double alpha_best = -slope / den;
+    const double alpha = std::min(alpha_best, sc.alpha_max);
+
+    // Pass D: p += α s, v += α w (exact), and the new state's sums.
+    const double cap_snap = cap - 4e-16 * cap;  // ∞ for an elastic solve
+    const double ref = delta;
+    const StateStats st = grid_chunks<StateStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      double fr = 0.0, s1 = 0.0, s2 = 0.0, w_sum = 0.0, vw = 0.0, s_sum = 0.0, vs = 0.0, sw = 0.0, usum = 0.0,
+             usq = 0.0, ovmin = inf, pvmax = -inf;
+#pragma omp simd reduction(+ : fr, s1, s2, w_sum, vw, s_sum, vs, sw, usum, usq) reduction(min : ovmin) reduction(max : pvmax)
+      for (Eigen::Index i = lo; i < hi; ++i) {
+        // α = alpha_max lands cells on a bound: put them exactly there.
+        double pn = std::max(pp[i] + alpha * sp[i], 0.0);
+        pn = pn >= cap_snap ? cap : pn;
+        pp[i] = pn;
+        const double vn = vp[i] + alpha * wp[i];
+        vp[i] = vn;
+        const bool open = pn <= 0.0, plastic = pn >= cap, in = !(open || plastic);
+        ovmin = std::min(ovmin, open ? vn : inf);
+        pvmax = std::max(pvmax, plastic ? vn : -inf);
+        const double d = in ? vn - ref : 0.0, sf = in ? sp[i] : 0.0, wf = in ? wp[i] : 0.0;
+        fr += in ? 1.0 : 0.0;
+        s1 += d;
+        s2 += d * d;
+        w_sum += wf;
+        vw += d * wf;
+        s_sum += sf;
+        vs += d * sf;
+        sw += sf * wf;
+        const double u = vn - hp[i];
+        usum += u;
+        usq += u * u;
+      }
+      StateStats a;
+      a.free = static_cast<long>(fr);
+      a.s1 = s1, a.s2 = s2, a.w_sum = w_sum, a.vw = vw, a.s_sum = s_sum, a.vs = vs, a.sw = sw;
+      a.usum = usum, a.usq = usq, a.open_v_min = ovmin, a.plastic_v_max = pvmax;
+      return a;
+    });
+    set_scale(st.usum, st.usq);
+    if (!take_state(st, ref)) take_state(state_sums(delta), delta);
+    // The next trial length: the best multiple of this one (CG's own step when nothing was
+    // clamped), kept within a factor 4.
+    tau *= std::clamp(alpha_best, 0.25, 4.0);
+    have_step = true;
   }
 
-  if (since_sync != 0) resync();
-  t_old.resize(0, 0), t_new.resize(0, 0), r.resize(0, 0);  // the iteration's grids, before the result's
+  s.resize(0, 0), w.resize(0, 0);  // the iteration's grids, before the result's
   NormalContactResult out;
-  out.pressure_Pa = (y - shift).max(0.0).min(cap);
-  const Eigen::ArrayXXd& p = out.pressure_Pa;
+  out.pressure_Pa = std::move(p);
+  const Eigen::ArrayXXd& pr = out.pressure_Pa;
   if (opt.full_fields) {
     out.displacement_m = v - h0;
     out.gap_m = (v - delta).max(0.0);
-    out.plastic_increment_m = (p >= cap).select((delta - v).max(0.0), 0.0);
+    out.plastic_increment_m = (pr >= cap).select((delta - v).max(0.0), 0.0);
   }
   out.approach_m = delta;
-  out.normal_load_N = p.sum() * cell;
-  const double contact_cells = static_cast<double>((p > 0.0).count());
+  out.normal_load_N = pr.sum() * cell;
+  const double contact_cells = static_cast<double>((pr > 0.0).count());
   out.real_area_m2 = contact_cells * cell;
-  out.plastic_area_m2 = static_cast<double>((p >= cap).count()) * cell;
+  out.plastic_area_m2 = static_cast<double>((pr >= cap).count()) * cell;
   out.area_fraction = contact_cells / static_cast<double>(n);
-  out.max_pressure_Pa = p.maxCoeff();
+  out.max_pressure_Pa = pr.maxCoeff();
   out.mean_gap_m = (v - delta).max(0.0).mean();
   out.summary.converged = converged;
   out.summary.iterations = it;
   out.summary.residual = residual;
   out.summary.fft_pairs = fft_pairs;
-  out.summary.resyncs = resyncs;
-  out.summary.carried_error = last_error;
-  out.summary.carried_error_max = max_error;
   std::ostringstream msg;
   if (converged) {
     msg << "converged in " << it << " iterations, residual " << residual << " <= " << opt.tolerance;
@@ -502,8 +526,6 @@ bool NormalContactOptions::is_valid(std::string* why) const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) return fail("tolerance must lie in (0, 1)");
   if (max_iterations < 0) return fail("max_iterations must be >= 0");
   if (!(pressure_cap_Pa > 0.0)) return fail("pressure cap (hardness) must be positive");
-  if (resync_interval < 1) return fail("resync_interval must be >= 1");
-  if (!(resync_drift >= 0.0)) return fail("resync_drift must be >= 0");
   return true;
 }
 

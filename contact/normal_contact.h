@@ -1,6 +1,6 @@
 // Frictionless normal contact of a rigid rough profile and an elastic(-plastic) half-space by
-// constrained conjugate gradients (Polonsky & Keer, Wear 231 (1999) 206), with the pressure cap of
-// the saturated plasticity model (Sainsot & Lubrecht 2011; Almqvist et al. 2007).
+// constrained conjugate gradients (after Polonsky & Keer, Wear 231 (1999) 206), with the pressure
+// cap of the saturated plasticity model (Sainsot & Lubrecht 2011; Almqvist et al. 2007).
 //
 // Unknown: pressure p_i ≥ 0 on the cells of a Grid. Initial gap (profile) h_i ≥ 0, rigid approach δ,
 // elastic displacement u = G p (contact/halfspace.h). The gap and the conditions are
@@ -11,6 +11,22 @@
 // and, for load control, Σ p_i ΔA = W (δ is then the Lagrange multiplier of the load, computed as
 // the mean of h + u over the free cells). Elastic contact is the case p_cap = ∞. Surface
 // plasticity with p_cap = σ0 ≈ 3Y is the thesis' fully plastic junction pressure (3.1.9) at F = 0.
+//
+// The iteration takes one half-space product each and keeps u = G p exact (no re-synchronisation):
+// from a feasible p (0 ≤ p ≤ p_cap, Σ p ΔA = W) with v = h + u,
+//   t = g − β s on the free cells, β = Σ_F g w / Σ_F s w   (G-conjugate to the last step s, w = G s:
+//                                                          Daniel's formula, robust to projected steps)
+//   y = p − τ t (free), p − τ g (open and plastic: Polonsky & Keer's recovery of cells that overlap
+//       or open), projected onto the feasible set: s = clamp(y − c, 0, p_cap) − p, c the load shift
+//   w = G s (the product), α = min(−Σ g s / Σ s w, α_max): the exact minimum of the energy
+//       ½ p·G p + h·p along s within the box, p += α s, v += α w
+//   τ ← τ · clamp(α*, 1/4, 4), α* = −Σ g s / Σ s w: the next trial length, the best multiple of this one.
+// Where nothing is clamped the step is CG's own (α τ = Σ g t / Σ t G t). Polonsky & Keer take the
+// product of the direction t and then clamp, which moves p off the step and so needs a second
+// product u = G p (or an error carried in u) whenever a cell changes set; here the product is of
+// the step actually taken. Each iteration also makes three passes over the grid (direction and
+// trial; the step; the update with the sums of the next direction), branch-free where the sets
+// are scattered.
 //
 // Plastic displacement is kept by the caller: after a solve, profile + plastic_increment_m is the
 // flattened profile; unloading and reloading from it are elastic up to the previous peak load.
@@ -36,38 +52,20 @@ struct NormalContactOptions {
   int max_iterations = 0;
   // Local pressure cap p_cap (Pa): the hardness σ0 for surface plasticity; ∞ for elastic contact.
   double pressure_cap_Pa = std::numeric_limits<double>::infinity();
-  // Exact against incremental displacement. A CG iteration needs one half-space product, G t of
-  // its search direction t (the FFT floor); u = G p is then carried as u − τ G t, which stays exact
-  // (to round-off) while the step is a pure CG step. Cells that change set (clamped at 0 or the cap,
-  // or re-entering contact) and the load-control shift move p off that step, an error in u that the
-  // iteration tolerates (it only steers the next steps) until it must be removed by a fresh product
-  // u = G p: when the estimated error ‖G e‖₂, e the accumulated off-direction pressure change,
-  // exceeds `resync_drift` × the current rms residual ‖r‖₂ (both gap errors, m), or after
-  // `resync_interval` incremental steps (bounds the round-off of the updates). Convergence is only
-  // declared on a freshly computed u, so these settings change the cost, never the answer.
-  // resync_interval = 1 recomputes u every iteration (two products per iteration: the reference).
-  int resync_interval = 64;
-  double resync_drift = 0.2;
   // False: the result carries pressure_Pa and the scalars only — gap_m, displacement_m and
   // plastic_increment_m stay empty — for callers that need no more (a 4096² solve ends 3 grids,
   // 384 MB, lighter).
   bool full_fields = true;
 
   // False with a reason when an option is out of range (tolerance in (0, 1), cap > 0, iterations ≥ 0).
-  bool is_valid(std::string* why) const;  // also resync_interval ≥ 1, resync_drift ≥ 0
+  bool is_valid(std::string* why) const;
 };
 
 struct NormalContactSummary {
   bool converged = false;
   int iterations = 0;
   double residual = 0.0;  // ε at exit (see NormalContactOptions::tolerance)
-  int fft_pairs = 0;      // half-space evaluations (r2c + c2r pairs on the FFT grid)
-  int resyncs = 0;        // of which exact recomputations u = G p (the rest: one G t per iteration)
-  // Error of the incrementally carried u found by a re-synchronisation, ‖u_carried − G p‖₂ /
-  // ‖u − ū‖₂ (the scale of `residual`): at the last one (the one that confirmed convergence), and
-  // the largest (early, while the contact set still moves a lot).
-  double carried_error = 0.0;
-  double carried_error_max = 0.0;
+  int fft_pairs = 0;      // half-space evaluations (r2c + c2r pairs): one per iteration and one for the start
   std::string message;
 };
 

@@ -70,10 +70,11 @@ TEST(SolidContactConvergence, RefinedContactFallsTowardsThePlasticBoundAndExtrap
   }
 }
 
-// A start the CG stalls from is retried from cold: on this surface (H 1.0, λ_s 31.25 µm, the
-// roughness study's point that failed) the 512² solve at h̄/σ 1.75 started from the 2σ node's
-// pressure stops at residual 0.13 after 3048 iterations; from cold it converges in 175.
-TEST(SolidContactSlow, AStalledWarmStartIsRetriedFromCold) {
+// The warm start Polonsky & Keer's CG stalled from: on this surface (H 1.0, λ_s 31.25 µm, the
+// roughness study's point that failed) their iteration, started at h̄/σ 1.75 from the 2σ node's
+// pressure, stopped at residual 0.13 after 3048 iterations (and the solve was retried from cold).
+// The one-product iteration takes no more than a few hundred for all three separations.
+TEST(SolidContactSlow, TheWarmStartPolonskyKeerStalledFromConverges) {
   HomogeniseOptions o;
   o.surface = contact::fixture::thesis_steel_surface();  // examples/thesis-steel.toml's, seed 1
   o.surface.hurst = 1.0;
@@ -83,7 +84,7 @@ TEST(SolidContactSlow, AStalledWarmStartIsRetriedFromCold) {
   o.pin.normal_load_N = 93.86;
   const SolidContact s = solid_contact(o, contact::fourier_refine(contact::gaussian_surface(o.surface), 4));
   EXPECT_EQ(s.unconverged, 0) << s.messages;
-  EXPECT_GT(s.bem_iterations, 3000);  // the stalled attempt is counted
+  EXPECT_LT(s.bem_iterations, 600);  // a stalled attempt would count its 3000+
   EXPECT_GT(s.area_fraction[0], s.area_fraction[1]);
 }
 
