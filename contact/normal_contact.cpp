@@ -192,23 +192,8 @@ struct StateStats {
   double sw = 0.0;               // Σ_F s w
   double plastic_v_max = -std::numeric_limits<double>::infinity();
   double open_v_min = std::numeric_limits<double>::infinity();
-  double usum = 0.0, usq = 0.0;  // Σ u, Σ u² (on the passes that refresh the elastic scale)
+  double usum = 0.0, usq = 0.0;  // Σ u, Σ u² (the elastic scale)
 
-  void add(double p, double v, double s, double w, double ref, double cap) {  // branch-free
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    const bool open = p <= 0.0, plastic = p >= cap, in = !(open || plastic);
-    open_v_min = std::min(open_v_min, open ? v : inf);
-    plastic_v_max = std::max(plastic_v_max, plastic ? v : -inf);
-    const double d = in ? v - ref : 0.0, sf = in ? s : 0.0, wf = in ? w : 0.0;
-    free += in;
-    s1 += d;
-    s2 += d * d;
-    w_sum += wf;
-    vw += d * wf;
-    s_sum += sf;
-    vs += d * sf;
-    sw += sf * wf;
-  }
   void merge(const StateStats& o) {
     free += o.free;
     s1 += o.s1;
@@ -220,14 +205,6 @@ struct StateStats {
     sw += o.sw;
     plastic_v_max = std::max(plastic_v_max, o.plastic_v_max);
     open_v_min = std::min(open_v_min, o.open_v_min);
-    usum += o.usum;
-    usq += o.usq;
-  }
-};
-
-struct ScaleStats {
-  double usum = 0.0, usq = 0.0;
-  void merge(const ScaleStats& o) {
     usum += o.usum;
     usq += o.usq;
   }
@@ -291,14 +268,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   auto set_scale = [&](double usum, double usq) {
     scale = std::sqrt(std::max(usq - usum * usum / static_cast<double>(n), 0.0));
   };
-  {
-    const ScaleStats st = grid_pass<ScaleStats>(n, [&](Eigen::Index i, ScaleStats& a) {
-      vp[i] = hp[i] + wp[i];
-      a.usum += wp[i];
-      a.usq += wp[i] * wp[i];
-    });
-    set_scale(st.usum, st.usq);
-  }
+  v = h0 + w;
   w.setZero();
 
   // What the next direction needs from the state: δ (load control: the free cells' mean of v),
@@ -332,10 +302,51 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     // sums about the new δ (rare: ref is the previous δ).
     return !(std::abs(dref * st.s1) > 1e8 * std::abs(g2));
   };
-  auto state_sums = [&](double ref) {
-    return grid_pass<StateStats>(n, [&](Eigen::Index i, StateStats& a) { a.add(pp[i], vp[i], sp[i], wp[i], ref, cap); });
+  // Pass D: p += α s, v += α w and the sums of the new state's free set about ref (α = 0: the
+  // sums alone). An `omp simd` loop: its many sums vectorise, where the branches on the scattered
+  // sets would be mispredicted.
+  const double cap_snap = cap - 4e-16 * cap;  // ∞ for an elastic solve
+  auto update_pass = [&](double alpha, double ref) {
+    return grid_chunks<StateStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
+      constexpr double inf = std::numeric_limits<double>::infinity();
+      double fr = 0.0, s1 = 0.0, s2 = 0.0, w_sum = 0.0, vw = 0.0, s_sum = 0.0, vs = 0.0, sw = 0.0, usum = 0.0,
+             usq = 0.0, ovmin = inf, pvmax = -inf;
+#pragma omp simd reduction(+ : fr, s1, s2, w_sum, vw, s_sum, vs, sw, usum, usq) reduction(min : ovmin) reduction(max : pvmax)
+      for (Eigen::Index i = lo; i < hi; ++i) {
+        // α = alpha_max lands cells on a bound: put them exactly there.
+        double pn = std::max(pp[i] + alpha * sp[i], 0.0);
+        pn = pn >= cap_snap ? cap : pn;
+        pp[i] = pn;
+        const double vn = vp[i] + alpha * wp[i];
+        vp[i] = vn;
+        const bool open = pn <= 0.0, plastic = pn >= cap, in = !(open || plastic);
+        ovmin = std::min(ovmin, open ? vn : inf);
+        pvmax = std::max(pvmax, plastic ? vn : -inf);
+        const double d = in ? vn - ref : 0.0, sf = in ? sp[i] : 0.0, wf = in ? wp[i] : 0.0;
+        fr += in ? 1.0 : 0.0;
+        s1 += d;
+        s2 += d * d;
+        w_sum += wf;
+        vw += d * wf;
+        s_sum += sf;
+        vs += d * sf;
+        sw += sf * wf;
+        const double u = vn - hp[i];
+        usum += u;
+        usq += u * u;
+      }
+      StateStats a;
+      a.free = static_cast<long>(fr);
+      a.s1 = s1, a.s2 = s2, a.w_sum = w_sum, a.vw = vw, a.s_sum = s_sum, a.vs = vs, a.sw = sw;
+      a.usum = usum, a.usq = usq, a.open_v_min = ovmin, a.plastic_v_max = pvmax;
+      return a;
+    });
   };
-  if (!take_state(state_sums(delta), delta)) take_state(state_sums(delta), delta);
+  {
+    const StateStats st = update_pass(0.0, delta);
+    set_scale(st.usum, st.usq);
+    if (!take_state(st, delta)) take_state(update_pass(0.0, delta), delta);
+  }
 
   double tau = 1.0 / c0;  // trial step length (m/Pa → Pa per m of gap)
   double residual = 0.0;
@@ -431,51 +442,17 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       have_step = false;
       s.setZero();
       w.setZero();
-      if (!take_state(state_sums(delta), delta)) take_state(state_sums(delta), delta);
+      if (!take_state(update_pass(0.0, delta), delta)) take_state(update_pass(0.0, delta), delta);
       continue;
     }
     const double alpha_best = -slope / den;
     const double alpha = std::min(alpha_best, sc.alpha_max);
 
     // Pass D: p += α s, v += α w (exact), and the new state's sums.
-    const double cap_snap = cap - 4e-16 * cap;  // ∞ for an elastic solve
     const double ref = delta;
-    const StateStats st = grid_chunks<StateStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
-      constexpr double inf = std::numeric_limits<double>::infinity();
-      double fr = 0.0, s1 = 0.0, s2 = 0.0, w_sum = 0.0, vw = 0.0, s_sum = 0.0, vs = 0.0, sw = 0.0, usum = 0.0,
-             usq = 0.0, ovmin = inf, pvmax = -inf;
-#pragma omp simd reduction(+ : fr, s1, s2, w_sum, vw, s_sum, vs, sw, usum, usq) reduction(min : ovmin) reduction(max : pvmax)
-      for (Eigen::Index i = lo; i < hi; ++i) {
-        // α = alpha_max lands cells on a bound: put them exactly there.
-        double pn = std::max(pp[i] + alpha * sp[i], 0.0);
-        pn = pn >= cap_snap ? cap : pn;
-        pp[i] = pn;
-        const double vn = vp[i] + alpha * wp[i];
-        vp[i] = vn;
-        const bool open = pn <= 0.0, plastic = pn >= cap, in = !(open || plastic);
-        ovmin = std::min(ovmin, open ? vn : inf);
-        pvmax = std::max(pvmax, plastic ? vn : -inf);
-        const double d = in ? vn - ref : 0.0, sf = in ? sp[i] : 0.0, wf = in ? wp[i] : 0.0;
-        fr += in ? 1.0 : 0.0;
-        s1 += d;
-        s2 += d * d;
-        w_sum += wf;
-        vw += d * wf;
-        s_sum += sf;
-        vs += d * sf;
-        sw += sf * wf;
-        const double u = vn - hp[i];
-        usum += u;
-        usq += u * u;
-      }
-      StateStats a;
-      a.free = static_cast<long>(fr);
-      a.s1 = s1, a.s2 = s2, a.w_sum = w_sum, a.vw = vw, a.s_sum = s_sum, a.vs = vs, a.sw = sw;
-      a.usum = usum, a.usq = usq, a.open_v_min = ovmin, a.plastic_v_max = pvmax;
-      return a;
-    });
+    const StateStats st = update_pass(alpha, ref);
     set_scale(st.usum, st.usq);
-    if (!take_state(st, ref)) take_state(state_sums(delta), delta);
+    if (!take_state(st, ref)) take_state(update_pass(0.0, delta), delta);
     // The next trial length: the best multiple of this one (CG's own step when nothing was
     // clamped), kept within a factor 4.
     tau *= std::clamp(alpha_best, 0.25, 4.0);

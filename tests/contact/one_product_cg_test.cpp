@@ -99,7 +99,9 @@ TEST_P(OneProductPerIteration, MeetsTheContactConditionsOnAFreshlyComputedDispla
   EXPECT_NEAR(r.normal_load_N / load, 1.0, 1e-12);
   EXPECT_GE(r.pressure_Pa.minCoeff(), 0.0);
   EXPECT_LE(r.pressure_Pa.maxCoeff(), opt.pressure_cap_Pa);
-  if (std::isfinite(c.cap_over_mean)) EXPECT_GT(r.plastic_area_m2, 0.0);
+  if (std::isfinite(c.cap_over_mean)) {
+    EXPECT_GT(r.plastic_area_m2, 0.0);
+  }
 
   Eigen::ArrayXXd u;
   hs.displacement(r.pressure_Pa, u);
