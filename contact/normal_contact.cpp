@@ -305,7 +305,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   // Pass D: p += α s, v += α w and the sums of the new state's free set about ref (α = 0: the
   // sums alone). An `omp simd` loop: its many sums vectorise, where the branches on the scattered
   // sets would be mispredicted.
-  const double cap_snap = cap - 4e-16 * cap;  // ∞ for an elastic solve
+  const double cap_snap = std::isfinite(cap) ? cap * (1.0 - 4e-16) : cap;  // within 2 ulp of the cap
   auto update_pass = [&](double alpha, double ref) {
     return grid_chunks<StateStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
       constexpr double inf = std::numeric_limits<double>::infinity();
