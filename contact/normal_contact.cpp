@@ -85,32 +85,10 @@ double projection_shift(const Eigen::ArrayXXd& y, double cap, double target, con
   return c;
 }
 
-// One statically scheduled pass over n cells; `body(i, acc)` accumulates into a thread-local
-// Acc, and the partial results are merged in thread order, so a solve's bits depend on the
-// thread count but not on the scheduling.
-template <class Acc, class Body>
-Acc grid_pass(Eigen::Index n, Body&& body) {
-  const int threads = n >= kParallelMinCells ? std::max(1, omp_get_max_threads()) : 1;
-  if (threads == 1) {
-    Acc acc;
-    for (Eigen::Index i = 0; i < n; ++i) body(i, acc);
-    return acc;
-  }
-  std::vector<Acc> part(static_cast<std::size_t>(threads));
-#pragma omp parallel num_threads(threads)
-  {
-    Acc local;  // thread-local, so the partial sums do not share cache lines
-#pragma omp for schedule(static) nowait
-    for (Eigen::Index i = 0; i < n; ++i) body(i, local);
-    part[static_cast<std::size_t>(omp_get_thread_num())] = local;
-  }
-  Acc acc = part[0];
-  for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
-  return acc;
-}
-
-// The same over contiguous chunks: `body(lo, hi)` returns the Acc of cells [lo, hi), so a body
-// can keep its sums in scalars and let `omp simd` vectorise the loop (a fixed order per chunk).
+// One pass over n cells in contiguous chunks, one per thread: `body(lo, hi)` returns the Acc of
+// cells [lo, hi), and the chunks' results are merged in thread order, so a solve's bits depend
+// on the thread count but not on the scheduling. A body can keep its sums in scalars and let
+// `omp simd` vectorise its loop (a fixed order per chunk).
 template <class Acc, class Body>
 Acc grid_chunks(Eigen::Index n, Body&& body) {
   const int threads = n >= kParallelMinCells ? std::max(1, omp_get_max_threads()) : 1;
@@ -124,6 +102,16 @@ Acc grid_chunks(Eigen::Index n, Body&& body) {
   Acc acc = part[0];
   for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
   return acc;
+}
+
+// The same, cell by cell: `body(i, acc)` accumulates into the chunk's Acc.
+template <class Acc, class Body>
+Acc grid_pass(Eigen::Index n, Body&& body) {
+  return grid_chunks<Acc>(n, [&](Eigen::Index lo, Eigen::Index hi) {
+    Acc acc;
+    for (Eigen::Index i = lo; i < hi; ++i) body(i, acc);
+    return acc;
+  });
 }
 
 // Pass B's sums: the residual, the trial's sets (for the load shift) and the slope of the energy
@@ -264,19 +252,17 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
 
   hs.displacement_and_energy(p, w);  // u of the start; w is scratch until the first step
   ++fft_pairs;
-  double scale = 0.0;  // ‖u − ū‖₂
-  auto set_scale = [&](double usum, double usq) {
-    scale = std::sqrt(std::max(usq - usum * usum / static_cast<double>(n), 0.0));
-  };
   v = h0 + w;
   w.setZero();
 
   // What the next direction needs from the state: δ (load control: the free cells' mean of v),
-  // Σ_F g², and, against the last step, Σ_F g w, Σ_F s w, Σ_F s, Σ_F g s (g = v − δ).
+  // Σ_F g², and, against the last step, Σ_F g w, Σ_F s w, Σ_F s, Σ_F g s (g = v − δ); and the
+  // elastic scale ‖u − ū‖₂ of the residual.
   double delta = load_control ? h0.mean() + (v - h0).mean() : value;
-  double g2 = 0.0, gw = 0.0, sw = 0.0, s_free = 0.0, gs = 0.0;
+  double g2 = 0.0, gw = 0.0, sw = 0.0, s_free = 0.0, gs = 0.0, scale = 0.0;
   long free_count = 0;
-  auto take_state = [&](const StateStats& st, double ref) {
+  auto sums_about = [&](const StateStats& st, double ref) {
+    scale = std::sqrt(std::max(st.usq - st.usum * st.usum / static_cast<double>(n), 0.0));
     free_count = st.free;
     double dref = delta - ref;
     if (load_control) {
@@ -298,8 +284,6 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     gs = st.vs - dref * st.s_sum;
     sw = st.sw;
     s_free = st.s_sum;
-    // Cancellation: Σ (v − ref)² ≫ Σ (v − δ)² leaves too few digits; the caller repeats the
-    // sums about the new δ (rare: ref is the previous δ).
     return !(std::abs(dref * st.s1) > 1e8 * std::abs(g2));
   };
   // Pass D: p += α s, v += α w and the sums of the new state's free set about ref (α = 0: the
@@ -342,11 +326,12 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       return a;
     });
   };
-  {
-    const StateStats st = update_pass(0.0, delta);
-    set_scale(st.usum, st.usq);
-    if (!take_state(st, delta)) take_state(update_pass(0.0, delta), delta);
-  }
+  // The state's sums from an update pass about ref; where Σ (v − ref)² ≫ Σ (v − δ)² leaves too
+  // few digits, taken again about the new δ (rare: ref is the previous δ).
+  auto take_state = [&](const StateStats& st, double ref) {
+    if (!sums_about(st, ref)) sums_about(update_pass(0.0, delta), delta);
+  };
+  take_state(update_pass(0.0, delta), delta);
 
   double tau = 1.0 / c0;  // trial step length (m/Pa → Pa per m of gap)
   double residual = 0.0;
@@ -442,7 +427,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       have_step = false;
       s.setZero();
       w.setZero();
-      if (!take_state(update_pass(0.0, delta), delta)) take_state(update_pass(0.0, delta), delta);
+      take_state(update_pass(0.0, delta), delta);
       continue;
     }
     const double alpha_best = -slope / den;
@@ -450,9 +435,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
 
     // Pass D: p += α s, v += α w (exact), and the new state's sums.
     const double ref = delta;
-    const StateStats st = update_pass(alpha, ref);
-    set_scale(st.usum, st.usq);
-    if (!take_state(st, ref)) take_state(update_pass(0.0, delta), delta);
+    take_state(update_pass(alpha, ref), ref);
     // The next trial length: the best multiple of this one (CG's own step when nothing was
     // clamped), kept within a factor 4.
     tau *= std::clamp(alpha_best, 0.25, 4.0);
