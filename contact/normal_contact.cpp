@@ -20,6 +20,16 @@ enum class Control { load, approach };
 // a busy machine far smaller than a descheduled spinning thread), so it runs serially.
 constexpr Eigen::Index kParallelMinCells = Eigen::Index{1} << 15;
 
+// The passes' cell loops are compiled twice, for AVX2 and for baseline x86-64, and the CPU picks
+// one at load time (function multiversioning). They are selects, min/max and sums: baseline
+// SSE2 has no blend and two lanes, and runs them compute-bound at 2–3× AVX2's time (measured,
+// bench/README.md), while the FFT pair they are weighed against already runs FFTW's AVX2 codelets.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define TRIBO_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define TRIBO_VECTOR_CLONES
+#endif
+
 void check_field(const ElasticHalfSpace& hs, const Eigen::ArrayXXd& f, const char* name) {
   const Grid& g = hs.grid();
   if (!g.holds(f)) {
@@ -28,6 +38,47 @@ void check_field(const ElasticHalfSpace& hs, const Eigen::ArrayXXd& f, const cha
                                 " x " + std::to_string(g.ny));
   }
   if (!f.allFinite()) throw std::invalid_argument(std::string(name) + " holds NaN or infinite values");
+}
+
+// One pass over n cells in contiguous chunks, one per thread: `body(lo, hi)` returns the Acc of
+// cells [lo, hi), and the chunks' results are merged in thread order, so a solve's bits depend
+// on the thread count but not on the scheduling. A body can keep its sums in scalars and let
+// `omp simd` vectorise its loop (a fixed order per chunk).
+template <class Acc, class Body>
+Acc grid_chunks(Eigen::Index n, Body&& body) {
+  const int threads = n >= kParallelMinCells ? std::max(1, omp_get_max_threads()) : 1;
+  if (threads == 1) return body(Eigen::Index{0}, n);
+  std::vector<Acc> part(static_cast<std::size_t>(threads));
+#pragma omp parallel num_threads(threads)
+  {
+    const Eigen::Index t = omp_get_thread_num(), m = omp_get_num_threads();
+    part[static_cast<std::size_t>(t)] = body(n * t / m, n * (t + 1) / m);
+  }
+  Acc acc = part[0];
+  for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
+  return acc;
+}
+
+// S(c) and the cells strictly inside (0, cap) on cells [lo, hi) (branch-free: the sets are
+// scattered; the count is summed as a double, exact below 2^53 cells).
+struct ShiftSums {
+  double sum = 0.0, active = 0.0;
+  void merge(const ShiftSums& o) {
+    sum += o.sum;
+    active += o.active;
+  }
+};
+
+TRIBO_VECTOR_CLONES
+ShiftSums shift_cells(const double* __restrict y, Eigen::Index lo, Eigen::Index hi, double c, double cap) {
+  double sum = 0.0, active = 0.0;
+#pragma omp simd reduction(+ : sum, active)
+  for (Eigen::Index i = lo; i < hi; ++i) {
+    const double v = y[i] - c;
+    sum += std::min(std::max(v, 0.0), cap);
+    active += (v > 0.0) & (v < cap) ? 1.0 : 0.0;
+  }
+  return {sum, active};
 }
 
 // Euclidean projection onto {0 ≤ p ≤ cap, Σ p = target}: p = clamp(y − c, 0, cap) with the
@@ -67,51 +118,16 @@ double projection_shift(const Eigen::ArrayXXd& y, double cap, double target, con
   c_lo -= 1e-12 * std::abs(c_lo) + 1e-300;
   if (c <= c_lo || c >= c_hi) c = 0.5 * (c_lo + c_hi);
   for (int it = 0; it < 200; ++it) {
-    double sum = 0.0;
-    long active = 0;
-#pragma omp parallel for if (n >= kParallelMinCells) reduction(+ : sum, active) schedule(static)
-    for (Eigen::Index i = 0; i < n; ++i) {  // branch-free: the sets are scattered
-      const double v = yp[i] - c;
-      sum += std::min(std::max(v, 0.0), cap);
-      active += (v > 0.0) & (v < cap);
-    }
-    const double f = sum - target;
+    const ShiftSums at_c =
+        grid_chunks<ShiftSums>(n, [&](Eigen::Index lo, Eigen::Index hi) { return shift_cells(yp, lo, hi, c, cap); });
+    const double f = at_c.sum - target;
     if (std::abs(f) <= 1e-14 * target) break;
     (f > 0.0 ? c_lo : c_hi) = c;
-    const double newton = active > 0 ? c + f / static_cast<double>(active) : c_hi + 1.0;
+    const double newton = at_c.active > 0.0 ? c + f / at_c.active : c_hi + 1.0;
     c = (newton > c_lo && newton < c_hi) ? newton : 0.5 * (c_lo + c_hi);
     if (c_hi - c_lo <= 1e-15 * (std::abs(c_lo) + std::abs(c_hi))) break;
   }
   return c;
-}
-
-// One pass over n cells in contiguous chunks, one per thread: `body(lo, hi)` returns the Acc of
-// cells [lo, hi), and the chunks' results are merged in thread order, so a solve's bits depend
-// on the thread count but not on the scheduling. A body can keep its sums in scalars and let
-// `omp simd` vectorise its loop (a fixed order per chunk).
-template <class Acc, class Body>
-Acc grid_chunks(Eigen::Index n, Body&& body) {
-  const int threads = n >= kParallelMinCells ? std::max(1, omp_get_max_threads()) : 1;
-  if (threads == 1) return body(Eigen::Index{0}, n);
-  std::vector<Acc> part(static_cast<std::size_t>(threads));
-#pragma omp parallel num_threads(threads)
-  {
-    const Eigen::Index t = omp_get_thread_num(), m = omp_get_num_threads();
-    part[static_cast<std::size_t>(t)] = body(n * t / m, n * (t + 1) / m);
-  }
-  Acc acc = part[0];
-  for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
-  return acc;
-}
-
-// The same, cell by cell: `body(i, acc)` accumulates into the chunk's Acc.
-template <class Acc, class Body>
-Acc grid_pass(Eigen::Index n, Body&& body) {
-  return grid_chunks<Acc>(n, [&](Eigen::Index lo, Eigen::Index hi) {
-    Acc acc;
-    for (Eigen::Index i = lo; i < hi; ++i) body(i, acc);
-    return acc;
-  });
 }
 
 // Pass B's sums: the residual, the trial's sets (for the load shift) and the slope of the energy
@@ -127,23 +143,6 @@ struct TrialStats {
   double plastic_y_min = std::numeric_limits<double>::infinity();
   double y_min = std::numeric_limits<double>::infinity(), y_max = -std::numeric_limits<double>::infinity();
 
-  // Branch-free (selects, not jumps): the sets are scattered over the grid, so a branch on
-  // them is mispredicted about as often as a cell is in contact.
-  void add(double y, double g, double p, double cap) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    const bool open = y <= 0.0, plastic = y >= cap, in = !(open || plastic);
-    const double py = std::min(std::max(y, 0.0), cap);
-    y_min = std::min(y_min, y);
-    y_max = std::max(y_max, y);
-    open_y_max = std::max(open_y_max, open ? y : -inf);
-    plastic_y_min = std::min(plastic_y_min, plastic ? y : inf);
-    free_y_min = std::min(free_y_min, in ? y : inf);
-    free_y_max = std::max(free_y_max, in ? y : -inf);
-    free += in;
-    slope_free += in ? g : 0.0;
-    load += py;
-    slope0 += g * (py - p);
-  }
   void merge(const TrialStats& o) {
     res2 += o.res2;
     slope0 += o.slope0;
@@ -159,6 +158,56 @@ struct TrialStats {
   }
 };
 
+// Pass B's constants: the bound, the approach δ, the conjugacy β, the trial length τ and the
+// direction's mean shift.
+struct TrialInput {
+  double cap, delta, beta, tau, tmean;
+};
+
+// Pass B on cells [lo, hi): the residual r of the contact conditions (open cells may not overlap,
+// plastic ones not open: r = min(g, 0), max(g, 0), g on free ones); the trial y = p − τ t with
+// t = g − β s − t̄ on the free cells and g on the others (Polonsky & Keer's recovery: overlapping
+// open cells gain pressure, opening plastic cells lose it), written over s; and the sums.
+// Selects, not jumps: the sets are scattered over the grid, so a branch on them would be
+// mispredicted about as often as a cell is in contact.
+TRIBO_VECTOR_CLONES
+TrialStats trial_cells(const double* __restrict p, const double* __restrict v, double* __restrict s, Eigen::Index lo,
+                       Eigen::Index hi, TrialInput in) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double cap = in.cap, d = in.delta, b = in.beta, tr = in.tau, tmean = in.tmean;
+  double res2 = 0.0, slope0 = 0.0, slope_free = 0.0, load = 0.0, free = 0.0;
+  double free_min = inf, free_max = -inf, open_max = -inf, plastic_min = inf, y_min = inf, y_max = -inf;
+#pragma omp simd reduction(+ : res2, slope0, slope_free, load, free) reduction(min : free_min, plastic_min, y_min) \
+    reduction(max : free_max, open_max, y_max)
+  for (Eigen::Index i = lo; i < hi; ++i) {
+    const double q = p[i];
+    const double g = v[i] - d;
+    const bool q_open = q <= 0.0, q_plastic = q >= cap;
+    const double r = std::min(std::max(g, q_plastic ? 0.0 : -inf), q_open ? 0.0 : inf);
+    const double t = (q_open | q_plastic) ? g : g - b * s[i] - tmean;
+    const double y = q - tr * t;
+    s[i] = y;
+    res2 += r * r;
+    const bool open = y <= 0.0, plastic = y >= cap, inside = !(open | plastic);
+    const double py = std::min(std::max(y, 0.0), cap);
+    y_min = std::min(y_min, y);
+    y_max = std::max(y_max, y);
+    open_max = std::max(open_max, open ? y : -inf);
+    plastic_min = std::min(plastic_min, plastic ? y : inf);
+    free_min = std::min(free_min, inside ? y : inf);
+    free_max = std::max(free_max, inside ? y : -inf);
+    free += inside ? 1.0 : 0.0;
+    slope_free += inside ? g : 0.0;
+    load += py;
+    slope0 += g * (py - q);
+  }
+  TrialStats a;
+  a.res2 = res2, a.slope0 = slope0, a.slope_free = slope_free, a.load = load, a.free = static_cast<long>(free);
+  a.free_y_min = free_min, a.free_y_max = free_max, a.open_y_max = open_max, a.plastic_y_min = plastic_min;
+  a.y_min = y_min, a.y_max = y_max;
+  return a;
+}
+
 // Pass C's: the largest multiple of the step that stays within [0, cap] (≥ 1: p and p + s both
 // do), and the slope where pass B's could not be used.
 struct StepStats {
@@ -169,6 +218,37 @@ struct StepStats {
     slope += o.slope;
   }
 };
+
+// Pass C on cells [lo, hi): the step s = clamp(y − c, 0, cap) − p over the trial y in s, with
+// α_max = min of p / −s (s < 0) and (cap − p) / s (s > 0); and, where v is given, the slope
+// Σ (v − δ) s.
+TRIBO_VECTOR_CLONES
+StepStats step_cells(const double* __restrict p, double* __restrict s, const double* __restrict v, Eigen::Index lo,
+                     Eigen::Index hi, double cap, double c, double delta) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double alpha_max = inf, slope = 0.0;
+  if (v == nullptr) {
+#pragma omp simd reduction(min : alpha_max)
+    for (Eigen::Index i = lo; i < hi; ++i) {
+      const double q = p[i];
+      const double si = std::min(std::max(s[i] - c, 0.0), cap) - q;
+      s[i] = si;
+      alpha_max = std::min(alpha_max, si < 0.0 ? q / -si : (si > 0.0 ? (cap - q) / si : inf));
+    }
+  } else {
+#pragma omp simd reduction(min : alpha_max) reduction(+ : slope)
+    for (Eigen::Index i = lo; i < hi; ++i) {
+      const double q = p[i];
+      const double si = std::min(std::max(s[i] - c, 0.0), cap) - q;
+      s[i] = si;
+      alpha_max = std::min(alpha_max, si < 0.0 ? q / -si : (si > 0.0 ? (cap - q) / si : inf));
+      slope += (v[i] - delta) * si;
+    }
+  }
+  StepStats a;
+  a.alpha_max = alpha_max, a.slope = slope;
+  return a;
+}
 
 // Pass D's: the free set of the new state and its sums about `ref` (a nearby approach, so that
 // Σ_F (v − δ)² follows without cancellation), for δ, Σ_F g² and the next direction.
@@ -197,6 +277,48 @@ struct StateStats {
     usq += o.usq;
   }
 };
+
+// Pass D on cells [lo, hi): p += α s, v += α w (α = alpha_max lands cells on a bound: those
+// within 2 ulp of the cap are put on it), and the new state's sums about ref (α = 0: the sums
+// alone); h for the elastic scale u = v − h.
+TRIBO_VECTOR_CLONES
+StateStats update_cells(double* __restrict p, double* __restrict v, const double* __restrict s,
+                        const double* __restrict w, const double* __restrict h, Eigen::Index lo, Eigen::Index hi,
+                        double alpha, double ref, double cap) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double cap_snap = std::isfinite(cap) ? cap * (1.0 - 4e-16) : cap;
+  double fr = 0.0, s1 = 0.0, s2 = 0.0, w_sum = 0.0, vw = 0.0, s_sum = 0.0, vs = 0.0, sw = 0.0, usum = 0.0, usq = 0.0,
+         ovmin = inf, pvmax = -inf;
+#pragma omp simd reduction(+ : fr, s1, s2, w_sum, vw, s_sum, vs, sw, usum, usq) reduction(min : ovmin) \
+    reduction(max : pvmax)
+  for (Eigen::Index i = lo; i < hi; ++i) {
+    double pn = std::max(p[i] + alpha * s[i], 0.0);
+    pn = pn >= cap_snap ? cap : pn;
+    p[i] = pn;
+    const double vn = v[i] + alpha * w[i];
+    v[i] = vn;
+    const bool open = pn <= 0.0, plastic = pn >= cap, in = !(open | plastic);
+    ovmin = std::min(ovmin, open ? vn : inf);
+    pvmax = std::max(pvmax, plastic ? vn : -inf);
+    const double dv = in ? vn - ref : 0.0, sf = in ? s[i] : 0.0, wf = in ? w[i] : 0.0;
+    fr += in ? 1.0 : 0.0;
+    s1 += dv;
+    s2 += dv * dv;
+    w_sum += wf;
+    vw += dv * wf;
+    s_sum += sf;
+    vs += dv * sf;
+    sw += sf * wf;
+    const double u = vn - h[i];
+    usum += u;
+    usq += u * u;
+  }
+  StateStats a;
+  a.free = static_cast<long>(fr);
+  a.s1 = s1, a.s2 = s2, a.w_sum = w_sum, a.vw = vw, a.s_sum = s_sum, a.vs = vs, a.sw = sw;
+  a.usum = usum, a.usq = usq, a.open_v_min = ovmin, a.plastic_v_max = pvmax;
+  return a;
+}
 
 NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Control control, double value,
                           const NormalContactOptions& opt, const Eigen::ArrayXXd* warm) {
@@ -286,45 +408,10 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     s_free = st.s_sum;
     return !(std::abs(dref * st.s1) > 1e8 * std::abs(g2));
   };
-  // Pass D: p += α s, v += α w and the sums of the new state's free set about ref (α = 0: the
-  // sums alone). An `omp simd` loop: its many sums vectorise, where the branches on the scattered
-  // sets would be mispredicted.
-  const double cap_snap = std::isfinite(cap) ? cap * (1.0 - 4e-16) : cap;  // within 2 ulp of the cap
+  // Pass D (update_cells).
   auto update_pass = [&](double alpha, double ref) {
-    return grid_chunks<StateStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
-      constexpr double inf = std::numeric_limits<double>::infinity();
-      double fr = 0.0, s1 = 0.0, s2 = 0.0, w_sum = 0.0, vw = 0.0, s_sum = 0.0, vs = 0.0, sw = 0.0, usum = 0.0,
-             usq = 0.0, ovmin = inf, pvmax = -inf;
-#pragma omp simd reduction(+ : fr, s1, s2, w_sum, vw, s_sum, vs, sw, usum, usq) reduction(min : ovmin) reduction(max : pvmax)
-      for (Eigen::Index i = lo; i < hi; ++i) {
-        // α = alpha_max lands cells on a bound: put them exactly there.
-        double pn = std::max(pp[i] + alpha * sp[i], 0.0);
-        pn = pn >= cap_snap ? cap : pn;
-        pp[i] = pn;
-        const double vn = vp[i] + alpha * wp[i];
-        vp[i] = vn;
-        const bool open = pn <= 0.0, plastic = pn >= cap, in = !(open || plastic);
-        ovmin = std::min(ovmin, open ? vn : inf);
-        pvmax = std::max(pvmax, plastic ? vn : -inf);
-        const double d = in ? vn - ref : 0.0, sf = in ? sp[i] : 0.0, wf = in ? wp[i] : 0.0;
-        fr += in ? 1.0 : 0.0;
-        s1 += d;
-        s2 += d * d;
-        w_sum += wf;
-        vw += d * wf;
-        s_sum += sf;
-        vs += d * sf;
-        sw += sf * wf;
-        const double u = vn - hp[i];
-        usum += u;
-        usq += u * u;
-      }
-      StateStats a;
-      a.free = static_cast<long>(fr);
-      a.s1 = s1, a.s2 = s2, a.w_sum = w_sum, a.vw = vw, a.s_sum = s_sum, a.vs = vs, a.sw = sw;
-      a.usum = usum, a.usq = usq, a.open_v_min = ovmin, a.plastic_v_max = pvmax;
-      return a;
-    });
+    return grid_chunks<StateStats>(
+        n, [&](Eigen::Index lo, Eigen::Index hi) { return update_cells(pp, vp, sp, wp, hp, lo, hi, alpha, ref, cap); });
   };
   // The state's sums from an update pass about ref; where Σ (v − ref)² ≫ Σ (v − δ)² leaves too
   // few digits, taken again about the new δ (rare: ref is the previous δ).
@@ -350,20 +437,10 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     const double tmean =
         load_control && free_count > 0 ? -beta * s_free / static_cast<double>(free_count) : 0.0;
 
-    // Pass B: the residual of the contact conditions; the trial y = p − τ t on the free cells and
-    // p − τ g on the others (Polonsky & Keer's recovery: overlapping open cells gain pressure,
-    // opening plastic cells lose it), written over s.
-    const double d = delta, b = beta, tr = tau;
-    const TrialStats tb = grid_pass<TrialStats>(n, [&](Eigen::Index i, TrialStats& a) {
-      const double q = pp[i];
-      const double g = vp[i] - d;
-      const bool open = q <= 0.0, plastic = q >= cap;
-      const double ri = open ? std::min(g, 0.0) : (plastic ? std::max(g, 0.0) : g);
-      const double y = q - tr * ((open || plastic) ? g : g - b * sp[i] - tmean);
-      a.res2 += ri * ri;
-      a.add(y, g, q, cap);
-      sp[i] = y;
-    });
+    // Pass B (trial_cells): the residual, and the trial written over s.
+    const TrialInput trial{cap, delta, beta, tau, tmean};
+    const TrialStats tb = grid_chunks<TrialStats>(
+        n, [&](Eigen::Index lo, Eigen::Index hi) { return trial_cells(pp, vp, sp, lo, hi, trial); });
     residual = std::sqrt(tb.res2) / std::max(scale, 1e-300 + 1e-12 * hscale);
     if (!std::isfinite(residual)) break;
     if (residual <= opt.tolerance) {
@@ -391,28 +468,11 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       }
     }
 
-    // Pass C: the step s = clamp(y − c, 0, cap) − p and how far along it p stays feasible.
-    auto step_cell = [&](Eigen::Index i, StepStats& a) {
-      const double q = pp[i];
-      const double si = std::min(std::max(sp[i] - c, 0.0), cap) - q;
-      sp[i] = si;
-      // α_max = min of q / −s (s < 0) and (cap − q) / s (s > 0), dividing only where the bound
-      // drops (rarely: the comparisons are false for s = 0 and for an infinite cap).
-      if (q < -si * a.alpha_max) a.alpha_max = q / -si;
-      if (cap - q < si * a.alpha_max) a.alpha_max = (cap - q) / si;
-    };
-    double slope;
-    StepStats sc;
-    if (sets_kept) {
-      sc = grid_pass<StepStats>(n, step_cell);
-      slope = tb.slope0 - c * tb.slope_free;
-    } else {
-      sc = grid_pass<StepStats>(n, [&](Eigen::Index i, StepStats& a) {
-        step_cell(i, a);
-        a.slope += (vp[i] - d) * sp[i];
-      });
-      slope = sc.slope;
-    }
+    // Pass C (step_cells): the step, α_max, and the slope where pass B's could not be used.
+    const StepStats sc = grid_chunks<StepStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
+      return step_cells(pp, sp, sets_kept ? nullptr : vp, lo, hi, cap, c, delta);
+    });
+    const double slope = sets_kept ? tb.slope0 - c * tb.slope_free : sc.slope;
 
     // The one half-space product of the iteration, w = G s with s·G s (Parseval), and the exact
     // minimum of the energy ½ p·G p + h·p along p + α s (Σ s = 0 for load control, so δ drops
