@@ -25,8 +25,9 @@
 // product of the direction t and then clamp, which moves p off the step and so needs a second
 // product u = G p (or an error carried in u) whenever a cell changes set; here the product is of
 // the step actually taken. Each iteration also makes three passes over the grid (direction and
-// trial; the step; the update with the sums of the next direction), branch-free where the sets
-// are scattered.
+// trial; the step; the update with the sums of the next direction): vectorised loops that select
+// on the scattered sets instead of branching, compiled for AVX2 and for baseline x86-64 (the CPU
+// picks one at load time; the two agree to round-off).
 //
 // Plastic displacement is kept by the caller: after a solve, profile + plastic_increment_m is the
 // flattened profile; unloading and reloading from it are elastic up to the previous peak load.
