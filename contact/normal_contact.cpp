@@ -20,12 +20,14 @@ enum class Control { load, approach };
 // a busy machine far smaller than a descheduled spinning thread), so it runs serially.
 constexpr Eigen::Index kParallelMinCells = Eigen::Index{1} << 15;
 
-// The passes' cell loops are compiled twice, for AVX2 and for baseline x86-64, and the CPU picks
-// one at load time (function multiversioning). They are selects, min/max and sums: baseline
-// SSE2 has no blend and two lanes, and runs them compute-bound at 2–3× AVX2's time (measured,
-// bench/README.md), while the FFT pair they are weighed against already runs FFTW's AVX2 codelets.
+// The passes' cell loops are compiled three times, for AVX-512 (x86-64-v4), AVX2 and baseline
+// x86-64, and the CPU picks one at load time (function multiversioning). They are selects,
+// min/max and sums: baseline SSE2 has no blend and two lanes and runs them compute-bound at 2–3×
+// AVX2's time, and AVX-512's eight lanes and mask registers take the trial pass from 14 % to 8 %
+// of an elastic 1024² solve (bench/README.md), while the FFT pair they are weighed against
+// already runs FFTW's AVX codelets.
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define TRIBO_VECTOR_CLONES __attribute__((target_clones("avx2", "default")))
+#define TRIBO_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
 #else
 #define TRIBO_VECTOR_CLONES
 #endif
@@ -59,70 +61,72 @@ Acc grid_chunks(Eigen::Index n, Body&& body) {
   return acc;
 }
 
-// S(c) and the cells strictly inside (0, cap) on cells [lo, hi) (branch-free: the sets are
-// scattered; the count is summed as a double, exact below 2^53 cells).
+// S(c), the cells strictly inside (0, cap), and min y and max y (for the bracket) on cells
+// [lo, hi) (branch-free: the sets are scattered; the count is summed as a double, exact below
+// 2^53 cells).
 struct ShiftSums {
   double sum = 0.0, active = 0.0;
+  double y_min = std::numeric_limits<double>::infinity(), y_max = -std::numeric_limits<double>::infinity();
   void merge(const ShiftSums& o) {
     sum += o.sum;
     active += o.active;
+    y_min = std::min(y_min, o.y_min);
+    y_max = std::max(y_max, o.y_max);
   }
 };
 
 TRIBO_VECTOR_CLONES
 ShiftSums shift_cells(const double* __restrict y, Eigen::Index lo, Eigen::Index hi, double c, double cap) {
-  double sum = 0.0, active = 0.0;
-#pragma omp simd reduction(+ : sum, active)
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double sum = 0.0, active = 0.0, y_min = inf, y_max = -inf;
+#pragma omp simd reduction(+ : sum, active) reduction(min : y_min) reduction(max : y_max)
   for (Eigen::Index i = lo; i < hi; ++i) {
-    const double v = y[i] - c;
+    const double yi = y[i], v = yi - c;
     sum += std::min(std::max(v, 0.0), cap);
     active += (v > 0.0) & (v < cap) ? 1.0 : 0.0;
+    y_min = std::min(y_min, yi);
+    y_max = std::max(y_max, yi);
   }
-  return {sum, active};
+  return {sum, active, y_min, y_max};
 }
 
 // Euclidean projection onto {0 ≤ p ≤ cap, Σ p = target}: p = clamp(y − c, 0, cap) with the
 // shift c solving S(c) = Σ clamp(y_i − c, 0, cap) = target. S is continuous, non-increasing and
 // piecewise linear, so a Newton step on the current piece, kept inside a shrinking bracket
-// [c_lo, c_hi] (bisection when it would leave it), ends exactly on the right piece.
-// What a pass over y already knows, so the projection can skip its own first passes: S(0),
-// the cells strictly inside (0, cap) at c = 0, min y and max y.
-struct ShiftStart {
-  double sum0 = 0.0;
-  long active0 = 0;
-  double y_min = 0.0, y_max = 0.0;
-};
-
-double projection_shift(const Eigen::ArrayXXd& y, double cap, double target, const ShiftStart* start = nullptr) {
+// [c_lo, c_hi] (bisection when it would leave it), ends exactly on the right piece. The first
+// Newton step starts from S(0) and the active count there: `at_zero` when a pass over y already
+// took them (pass B), else a pass here. The first evaluation also brackets the root: below
+// min y − cap every cell is at the cap (finite cap), below min y − target/n every cell holds
+// more than target/n (infinite cap), and at max y every cell is at zero.
+double projection_shift(const Eigen::ArrayXXd& y, double cap, double target, const ShiftSums* at_zero = nullptr) {
   const Eigen::Index n = y.size();
   const double* yp = y.data();
-  // Bracket: below c_lo every cell is at the cap (finite cap) or S(c) ≥ Σ y − n c ≥ target
-  // (infinite cap); at c_hi every cell is at zero.
-  double c_lo, c_hi, c = 0.0;
-  if (start == nullptr) {
-    const double y_min = y.minCoeff();
-    c_lo = std::isfinite(cap) ? y_min - cap : std::min(y_min, (y.sum() - target) / static_cast<double>(n));
-    c_hi = y.maxCoeff();
-  } else {
-    // With S(0) known the root lies on one side of 0; on the other side the bracket is as above
-    // (for an infinite cap, at y_min − target/n every cell holds more than target/n).
-    c_lo = std::isfinite(cap) ? start->y_min - cap : start->y_min - target / static_cast<double>(n);
-    c_hi = start->y_max;
-    if (start->sum0 > target) {
-      c_lo = std::max(c_lo, 0.0);
-    } else {
-      c_hi = std::min(c_hi, 0.0);
-    }
-    if (start->active0 > 0) c = (start->sum0 - target) / static_cast<double>(start->active0);
-  }
-  c_lo -= 1e-12 * std::abs(c_lo) + 1e-300;
-  if (c <= c_lo || c >= c_hi) c = 0.5 * (c_lo + c_hi);
+  auto at = [&](double c) {
+    return grid_chunks<ShiftSums>(n, [&](Eigen::Index lo, Eigen::Index hi) { return shift_cells(yp, lo, hi, c, cap); });
+  };
+  const ShiftSums zero = at_zero != nullptr ? *at_zero : at(0.0);
+  double c = zero.active > 0.0 ? (zero.sum - target) / zero.active : 0.0;
+  double c_lo = -std::numeric_limits<double>::infinity(), c_hi = std::numeric_limits<double>::infinity();
   for (int it = 0; it < 200; ++it) {
-    const ShiftSums at_c =
-        grid_chunks<ShiftSums>(n, [&](Eigen::Index lo, Eigen::Index hi) { return shift_cells(yp, lo, hi, c, cap); });
+    const ShiftSums at_c = at(c);
+    if (it == 0) {
+      c_lo = std::isfinite(cap) ? at_c.y_min - cap : at_c.y_min - target / static_cast<double>(n);
+      c_lo -= 1e-12 * std::abs(c_lo) + 1e-300;
+      c_hi = at_c.y_max;
+      // S(0) puts the root on one side of 0.
+      if (zero.sum > target) {
+        c_lo = std::max(c_lo, 0.0);
+      } else {
+        c_hi = std::min(c_hi, 0.0);
+      }
+    }
     const double f = at_c.sum - target;
     if (std::abs(f) <= 1e-14 * target) break;
-    (f > 0.0 ? c_lo : c_hi) = c;
+    if (f > 0.0) {
+      c_lo = std::max(c_lo, c);
+    } else {
+      c_hi = std::min(c_hi, c);
+    }
     const double newton = at_c.active > 0.0 ? c + f / at_c.active : c_hi + 1.0;
     c = (newton > c_lo && newton < c_hi) ? newton : 0.5 * (c_lo + c_hi);
     if (c_hi - c_lo <= 1e-15 * (std::abs(c_lo) + std::abs(c_hi))) break;
@@ -141,7 +145,6 @@ struct TrialStats {
   double free_y_min = std::numeric_limits<double>::infinity(), free_y_max = -std::numeric_limits<double>::infinity();
   double open_y_max = -std::numeric_limits<double>::infinity();
   double plastic_y_min = std::numeric_limits<double>::infinity();
-  double y_min = std::numeric_limits<double>::infinity(), y_max = -std::numeric_limits<double>::infinity();
 
   void merge(const TrialStats& o) {
     res2 += o.res2;
@@ -153,8 +156,6 @@ struct TrialStats {
     free_y_max = std::max(free_y_max, o.free_y_max);
     open_y_max = std::max(open_y_max, o.open_y_max);
     plastic_y_min = std::min(plastic_y_min, o.plastic_y_min);
-    y_min = std::min(y_min, o.y_min);
-    y_max = std::max(y_max, o.y_max);
   }
 };
 
@@ -176,9 +177,9 @@ TrialStats trial_cells(const double* __restrict p, const double* __restrict v, d
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double cap = in.cap, d = in.delta, b = in.beta, tr = in.tau, tmean = in.tmean;
   double res2 = 0.0, slope0 = 0.0, slope_free = 0.0, load = 0.0, free = 0.0;
-  double free_min = inf, free_max = -inf, open_max = -inf, plastic_min = inf, y_min = inf, y_max = -inf;
-#pragma omp simd reduction(+ : res2, slope0, slope_free, load, free) reduction(min : free_min, plastic_min, y_min) \
-    reduction(max : free_max, open_max, y_max)
+  double free_min = inf, free_max = -inf, open_max = -inf, plastic_min = inf;
+#pragma omp simd reduction(+ : res2, slope0, slope_free, load, free) reduction(min : free_min, plastic_min) \
+    reduction(max : free_max, open_max)
   for (Eigen::Index i = lo; i < hi; ++i) {
     const double q = p[i];
     const double g = v[i] - d;
@@ -190,8 +191,6 @@ TrialStats trial_cells(const double* __restrict p, const double* __restrict v, d
     res2 += r * r;
     const bool open = y <= 0.0, plastic = y >= cap, inside = !(open | plastic);
     const double py = std::min(std::max(y, 0.0), cap);
-    y_min = std::min(y_min, y);
-    y_max = std::max(y_max, y);
     open_max = std::max(open_max, open ? y : -inf);
     plastic_min = std::min(plastic_min, plastic ? y : inf);
     free_min = std::min(free_min, inside ? y : inf);
@@ -204,7 +203,6 @@ TrialStats trial_cells(const double* __restrict p, const double* __restrict v, d
   TrialStats a;
   a.res2 = res2, a.slope0 = slope0, a.slope_free = slope_free, a.load = load, a.free = static_cast<long>(free);
   a.free_y_min = free_min, a.free_y_max = free_max, a.open_y_max = open_max, a.plastic_y_min = plastic_min;
-  a.y_min = y_min, a.y_max = y_max;
   return a;
 }
 
@@ -220,8 +218,9 @@ struct StepStats {
 };
 
 // Pass C on cells [lo, hi): the step s = clamp(y − c, 0, cap) − p over the trial y in s, with
-// α_max = min of p / −s (s < 0) and (cap − p) / s (s > 0); and, where v is given, the slope
-// Σ (v − δ) s.
+// α_max = min of p / −s (s < 0) and (cap − p) / s (s > 0), one division per cell (the distance
+// to the bound the cell moves toward over |s|: the divider took half of this pass with two); and,
+// where v is given, the slope Σ (v − δ) s.
 TRIBO_VECTOR_CLONES
 StepStats step_cells(const double* __restrict p, double* __restrict s, const double* __restrict v, Eigen::Index lo,
                      Eigen::Index hi, double cap, double c, double delta) {
@@ -233,7 +232,7 @@ StepStats step_cells(const double* __restrict p, double* __restrict s, const dou
       const double q = p[i];
       const double si = std::min(std::max(s[i] - c, 0.0), cap) - q;
       s[i] = si;
-      alpha_max = std::min(alpha_max, si < 0.0 ? q / -si : (si > 0.0 ? (cap - q) / si : inf));
+      alpha_max = std::min(alpha_max, si != 0.0 ? (si < 0.0 ? q : cap - q) / std::abs(si) : inf);
     }
   } else {
 #pragma omp simd reduction(min : alpha_max) reduction(+ : slope)
@@ -241,7 +240,7 @@ StepStats step_cells(const double* __restrict p, double* __restrict s, const dou
       const double q = p[i];
       const double si = std::min(std::max(s[i] - c, 0.0), cap) - q;
       s[i] = si;
-      alpha_max = std::min(alpha_max, si < 0.0 ? q / -si : (si > 0.0 ? (cap - q) / si : inf));
+      alpha_max = std::min(alpha_max, si != 0.0 ? (si < 0.0 ? q : cap - q) / std::abs(si) : inf);
       slope += (v[i] - delta) * si;
     }
   }
@@ -462,8 +461,9 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       if (tb.free > 0 && c1 < tb.free_y_min && c1 > tb.free_y_max - cap && c1 >= tb.open_y_max && plastic_kept) {
         c = c1;
       } else {
-        const ShiftStart start{tb.load, tb.free, tb.y_min, tb.y_max};
-        c = projection_shift(s, cap, target, &start);
+        ShiftSums at_zero;
+        at_zero.sum = tb.load, at_zero.active = static_cast<double>(tb.free);
+        c = projection_shift(s, cap, target, &at_zero);
         sets_kept = false;
       }
     }
