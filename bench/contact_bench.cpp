@@ -6,6 +6,8 @@
 //   per_iter_over_fft    wall time per iteration / wall time of one r2c + c2r pair, same grid
 //   per_iter_over_fft_cpu the same ratio in process CPU time (robust on a shared machine)
 //   fft_pair_ms          that FFT pair, measured in the same process with the same thread count
+//                        just before and just after the solve (the mean: this machine's speed
+//                        drifts by up to 2× within minutes, so the pair brackets the solve)
 //   fft_pairs            half-space evaluations of the solve (1 per iteration + 1 for the start)
 //   pairs_per_iter       fft_pairs / iterations (the floor is 1)
 //   solve_cpu_s, solve_s the whole solve, process CPU and wall time
@@ -23,6 +25,7 @@
 #include <chrono>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include "contact/fft.h"
@@ -102,6 +105,7 @@ void solve_bench(benchmark::State& state, bool plastic) {
   opt.tolerance = 1e-8;
   if (plastic) opt.pressure_cap_Pa = load / grid.area_m2() / 0.6;
   NormalContactResult r;
+  const PairTime before = fft_pair_time(n, threads);
   double solve_s = 0.0, solve_cpu_s = 0.0;
   for (auto _ : state) {
     const double c0 = cpu_seconds();
@@ -112,7 +116,8 @@ void solve_bench(benchmark::State& state, bool plastic) {
     benchmark::DoNotOptimize(r.real_area_m2);
   }
   if (!r.summary.converged) state.SkipWithError(r.summary.message.c_str());
-  const PairTime fft = fft_pair_time(n, threads);
+  const PairTime after = fft_pair_time(n, threads);
+  const PairTime fft{0.5 * (before.wall_s + after.wall_s), 0.5 * (before.cpu_s + after.cpu_s)};
   const double runs = static_cast<double>(state.iterations()) * r.summary.iterations;
   state.counters["iterations"] = r.summary.iterations;
   state.counters["fft_pairs"] = r.summary.fft_pairs;
@@ -153,6 +158,29 @@ void BM_Product(benchmark::State& state) {
   for (auto _ : state) {
     const double c0 = cpu_seconds();
     energy += hs.displacement_and_energy(t, r);
+    cpu += cpu_seconds() - c0;
+  }
+  benchmark::DoNotOptimize(energy);
+  const PairTime fft = fft_pair_time(n, threads);
+  state.counters["over_fft_cpu"] = cpu / static_cast<double>(state.iterations()) / fft.cpu_s;
+}
+
+// The same product taken line by line (ElasticHalfSpace::displacement_by_rows) with nothing fused
+// into its stages, against the bare FFT pair: what the transforms cost when taken apart.
+void BM_LineProduct(benchmark::State& state) {
+  const Eigen::Index n = state.range(0);
+  const int threads = static_cast<int>(state.range(1));
+  omp_set_num_threads(threads);
+  ElasticHalfSpace hs(Grid::patch(n, n, 1.0, 1.0), 1.0, true, threads);
+  Eigen::ArrayXXd t = Eigen::ArrayXXd::Random(n, n);
+  Eigen::ArrayXXd r(n, n);
+  const ElasticHalfSpace::RowPass nothing = [](int, Eigen::Index) {};
+  const std::function<bool(double)> want = [](double) { return true; };
+  double energy = hs.displacement_by_rows(t.data(), r.data(), nothing, want, nothing);
+  double cpu = 0.0;
+  for (auto _ : state) {
+    const double c0 = cpu_seconds();
+    energy += hs.displacement_by_rows(t.data(), r.data(), nothing, want, nothing);
     cpu += cpu_seconds() - c0;
   }
   benchmark::DoNotOptimize(energy);
@@ -213,6 +241,12 @@ BENCHMARK(BM_FftPair)->Apply([](benchmark::internal::Benchmark* b) {
   b->ArgNames({"n", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime();
 });
 BENCHMARK(BM_Product)->Apply([](benchmark::internal::Benchmark* b) {
+  for (int n : {256, 512, 1024, 2048}) {
+    for (int t : {1, 2}) b->Args({n, t});
+  }
+  b->ArgNames({"n", "threads"})->Unit(benchmark::kMillisecond)->UseRealTime();
+});
+BENCHMARK(BM_LineProduct)->Apply([](benchmark::internal::Benchmark* b) {
   for (int n : {256, 512, 1024, 2048}) {
     for (int t : {1, 2}) b->Args({n, t});
   }

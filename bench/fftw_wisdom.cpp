@@ -1,22 +1,39 @@
 // Makes contact/fftw_wisdom.txt, the FFTW wisdom tribo ships (contact/fft.h,
 // shipped_fftw_wisdom_loaded): the plans FFTW_MEASURE chooses on this machine for the r2c and c2r
-// transforms of RealFft2d on square grids 64² … 4096², on 1 and on 2 threads. Run on an idle
-// machine (the planner times its candidates):
+// transforms of RealFft2d on square grids 64² … 4096², on 1 and on 2 threads, and for the line
+// transforms of RowColumnFft on the same grids. Run on an idle machine (the planner times its
+// candidates):
 //   OMP_WAIT_POLICY=passive build/bench/fftw_wisdom > contact/fftw_wisdom.txt
-// and rebuild; the wisdom is compiled into tribo_contact. Progress and planning times on stderr.
+// and rebuild; the wisdom is compiled into tribo_contact. With --lines-only the shipped 2-D plans
+// are kept as they are and only the line transforms are measured (so the 2-D transforms, and
+// every result through them, keep their bits). Progress and planning times on stderr.
 #include <fftw3.h>
 
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 
 #include "contact/fft.h"
 
-int main() {
+int main(int argc, char** argv) {
   using tribo::contact::RealFft2d;
+  using tribo::contact::RowColumnFft;
+  const bool lines_only = argc == 2 && std::strcmp(argv[1], "--lines-only") == 0;
+  if (argc > 2 || (argc == 2 && !lines_only)) {
+    std::fputs("usage: fftw_wisdom [--lines-only] > contact/fftw_wisdom.txt\n", stderr);
+    return 2;
+  }
   { RealFft2d first(8, 8, 1); }  // FFTW's threads initialised and the shipped wisdom imported ...
-  fftw_forget_wisdom();           // ... and forgotten, so every plan below is measured afresh
+  if (!lines_only) fftw_forget_wisdom();  // ... and forgotten, so every plan below is measured afresh
+  for (int n = 64; n <= 4096; n *= 2) {
+    const auto start = std::chrono::steady_clock::now();
+    const RowColumnFft planned(n, n, true);
+    std::fprintf(stderr, "%d x %d lines: planned in %.1f s\n", n, n,
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
   for (const int threads : {1, 2}) {
+    if (lines_only) break;
     for (int n = 64; n <= 4096; n *= 2) {
       const auto start = std::chrono::steady_clock::now();
       const RealFft2d planned(n, n, threads, true);

@@ -3,6 +3,7 @@
 #include <fftw3.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cassert>
 #include <mutex>
 #include <new>
@@ -145,6 +146,91 @@ void RealFft2d::inverse(double* out) {
     inverse();
     Eigen::Map<Eigen::ArrayXXd>(out, nx_, ny_) = real();
   }
+}
+
+RowColumnFft::RowColumnFft(Eigen::Index nx, Eigen::Index ny, bool measure) : nx_(nx), ny_(ny) {
+  if (nx < 1 || ny < 1) {
+    throw std::invalid_argument("FFT grid must have at least one point per direction, got " + std::to_string(nx) +
+                                " x " + std::to_string(ny));
+  }
+  init_threads_once();
+  // Planning arrays (FFTW_MEASURE overwrites them); the plans then run on the caller's arrays.
+  double* r = static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(nx)));
+  fftw_complex* c = static_cast<fftw_complex*>(
+      fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(std::max(nx / 2 + 1, kColumns * ny))));
+  if (r == nullptr || c == nullptr) {
+    fftw_free(r);
+    fftw_free(c);
+    throw std::bad_alloc();
+  }
+  const unsigned flags = measure ? FFTW_MEASURE : FFTW_ESTIMATE;
+  const int n_y = static_cast<int>(ny), stride = static_cast<int>(kColumns);
+  {
+    std::lock_guard<std::mutex> lock(planner_mutex());
+    fftw_plan_with_nthreads(1);
+    row_forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(nx), r, c, flags);
+    row_inverse_ = fftw_plan_dft_c2r_1d(static_cast<int>(nx), c, r, flags);
+    block_forward_ = fftw_plan_many_dft(1, &n_y, stride, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_FORWARD, flags);
+    block_inverse_ = fftw_plan_many_dft(1, &n_y, stride, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_BACKWARD, flags);
+    column_forward_ = fftw_plan_many_dft(1, &n_y, 1, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_FORWARD, flags);
+    column_inverse_ = fftw_plan_many_dft(1, &n_y, 1, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_BACKWARD, flags);
+  }
+  fftw_free(r);
+  fftw_free(c);
+  for (void* p : {row_forward_, row_inverse_, block_forward_, block_inverse_, column_forward_, column_inverse_}) {
+    if (p == nullptr) {
+      release();
+      throw std::runtime_error("FFTW could not plan the line transforms of a " + std::to_string(nx) + " x " +
+                               std::to_string(ny) + " grid");
+    }
+  }
+}
+
+RowColumnFft::~RowColumnFft() { release(); }
+
+void RowColumnFft::release() noexcept {
+  std::lock_guard<std::mutex> lock(planner_mutex());
+  for (void** p : {&row_forward_, &row_inverse_, &block_forward_, &block_inverse_, &column_forward_, &column_inverse_}) {
+    if (*p != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(*p));
+    *p = nullptr;
+  }
+}
+
+bool RowColumnFft::aligned(const void* p) {
+  // fftw_alignment_of is p's offset from FFTW's SIMD alignment; fftw_malloc's arrays have 0.
+  return fftw_alignment_of(static_cast<double*>(const_cast<void*>(p))) == 0;
+}
+
+void RowColumnFft::row_forward(const double* in, std::complex<double>* out) const {
+  assert(aligned(in) && aligned(out));
+  // fftw's signature is non-const; an out-of-place r2c preserves its input.
+  fftw_execute_dft_r2c(static_cast<fftw_plan>(row_forward_), const_cast<double*>(in),
+                       reinterpret_cast<fftw_complex*>(out));
+}
+
+void RowColumnFft::row_inverse(std::complex<double>* in, double* out) const {
+  assert(aligned(in) && aligned(out));
+  fftw_execute_dft_c2r(static_cast<fftw_plan>(row_inverse_), reinterpret_cast<fftw_complex*>(in), out);
+}
+
+namespace {
+void run_columns(void* block_plan, void* column_plan, std::complex<double>* block, Eigen::Index count) {
+  assert(count >= 0 && count <= RowColumnFft::kColumns);
+  auto* c = reinterpret_cast<fftw_complex*>(block);
+  if (count == RowColumnFft::kColumns) {
+    fftw_execute_dft(static_cast<fftw_plan>(block_plan), c, c);
+    return;
+  }
+  for (Eigen::Index k = 0; k < count; ++k) fftw_execute_dft(static_cast<fftw_plan>(column_plan), c + k, c + k);
+}
+}  // namespace
+
+void RowColumnFft::columns_forward(std::complex<double>* block, Eigen::Index count) const {
+  run_columns(block_forward_, column_forward_, block, count);
+}
+
+void RowColumnFft::columns_inverse(std::complex<double>* block, Eigen::Index count) const {
+  run_columns(block_inverse_, column_inverse_, block, count);
 }
 
 }  // namespace tribo::contact

@@ -56,6 +56,48 @@ class RealFft2d {
   void* inverse_plan_ = nullptr;
 };
 
+// The 1-D transforms of the same nx × ny real 2-D FFT taken line by line, for a caller that fuses
+// its own work into the stages (ElasticHalfSpace::displacement_by_rows): r2c along x of one
+// x-line (nx doubles → nx/2 + 1 complex values), and the complex transforms along y of a block
+// of kColumns columns of that half spectrum, gathered interleaved (value j of column c at
+// block[j·kColumns + c]) so that FFTW's vector codelets take several columns at once. The
+// composition is RealFft2d's transform (same unnormalised convention). Single-threaded plans,
+// executed through FFTW's new-array interface, which is safe from several threads at once (each
+// thread owns its buffers); the arrays must be SIMD-aligned (aligned()). Planned as RealFft2d
+// (estimate, or measure; the shipped wisdom holds measured plans for square grids 64² … 4096²).
+class RowColumnFft {
+ public:
+  static constexpr Eigen::Index kColumns = 8;
+
+  RowColumnFft(Eigen::Index nx, Eigen::Index ny, bool measure = false);
+  ~RowColumnFft();
+  RowColumnFft(const RowColumnFft&) = delete;
+  RowColumnFft& operator=(const RowColumnFft&) = delete;
+
+  Eigen::Index nx() const { return nx_; }
+  Eigen::Index ny() const { return ny_; }
+  Eigen::Index nx_half() const { return nx_ / 2 + 1; }
+  // Whether an array has the alignment the plans were made for (fftw_malloc's).
+  static bool aligned(const void* p);
+
+  void row_forward(const double* in, std::complex<double>* out) const;  // in: nx values, preserved
+  void row_inverse(std::complex<double>* in, double* out) const;        // in: nx/2 + 1, destroyed
+  // The first `count` ≤ kColumns columns of an interleaved block of ny · kColumns values, in place.
+  void columns_forward(std::complex<double>* block, Eigen::Index count) const;
+  void columns_inverse(std::complex<double>* block, Eigen::Index count) const;
+
+ private:
+  void release() noexcept;
+
+  Eigen::Index nx_, ny_;
+  void* row_forward_ = nullptr;  // fftw_plan
+  void* row_inverse_ = nullptr;
+  void* block_forward_ = nullptr;  // kColumns interleaved columns
+  void* block_inverse_ = nullptr;
+  void* column_forward_ = nullptr;  // one column of an interleaved block
+  void* column_inverse_ = nullptr;
+};
+
 // FFTW wisdom shipped with tribo (contact/fftw_wisdom.txt, made by build/bench/fftw_wisdom): the
 // plans FFTW_MEASURE chose for RealFft2d on square grids 64² … 4096² on 1 and 2 threads. It is
 // imported before the first plan, and FFTW then builds a covered problem's plan from it, without

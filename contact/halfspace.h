@@ -19,6 +19,11 @@
 
 #include <Eigen/Core>
 
+#include <complex>
+#include <functional>
+#include <memory>
+#include <vector>
+
 #include "contact/fft.h"
 #include "contact/grid.h"
 
@@ -46,6 +51,21 @@ class ElasticHalfSpace {
   // step) saves a pass over the grid. On a periodic grid p and u are transformed in place of the
   // FFT buffers (no copies); `u` must already have the grid's shape and must not alias `p`.
   double displacement_and_energy(const Eigen::ArrayXXd& pressure_Pa, Eigen::ArrayXXd& displacement_m);
+  // The same product on a periodic grid, taken in the stages of a row–column FFT with the
+  // caller's passes fused into them, so that no grid is read or written twice for it:
+  //   1. make_row(t, j) writes line j of s, s(0..nx−1, j), and the line is transformed along x
+  //      while it is in cache;
+  //   2. the columns of the half spectrum are transformed along y, multiplied by the kernel
+  //      (summing the energy s·G s) and transformed back, a block of columns at a time;
+  //   3. decide(energy) says whether u is wanted; if so each line of u = G s is transformed back
+  //      along x into u and use_row(t, j) is called on it while it is in cache.
+  // Every line j is made and used by the same thread t < row_threads() (its accumulators can be
+  // kept per thread and merged in thread order). Returns the energy. `s` and `u` are nx × ny
+  // arrays (x contiguous) and must not alias.
+  using RowPass = std::function<void(int thread, Eigen::Index line)>;
+  double displacement_by_rows(double* s, double* u, const RowPass& make_row, const std::function<bool(double)>& decide,
+                              const RowPass& use_row);
+  int row_threads() const;
   // Number of r2c + c2r pairs per displacement() — one on the (padded) FFT grid.
   const RealFft2d& fft() const { return fft_; }
 
@@ -54,6 +74,9 @@ class ElasticHalfSpace {
   double e_star_Pa_;
   bool periodic_;
   RealFft2d fft_;                // nx × ny (periodic) or ≥ (2nx − 2) × (2ny − 2) (padded)
+  std::unique_ptr<RowColumnFft> lines_;           // periodic: the transforms of displacement_by_rows
+  std::vector<double> block_kernel_;              // its kernel by column block: [block][j][column]
+  std::vector<std::complex<double>> scratch_;     // its per-thread column blocks and lines
   Eigen::ArrayXd kernel_;        // real Fourier multiplier on the half spectrum, 1/(FFT size) folded in
   double self_compliance_ = 0.0;
   bool one_thread_ = false;      // constructed with threads = 1

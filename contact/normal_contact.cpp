@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "contact/vector_clones.h"
+
 namespace tribo::contact {
 namespace {
 
@@ -19,18 +21,6 @@ enum class Control { load, approach };
 // Below this many cells a loop's work is smaller than the cost of waking a thread team (and on
 // a busy machine far smaller than a descheduled spinning thread), so it runs serially.
 constexpr Eigen::Index kParallelMinCells = Eigen::Index{1} << 15;
-
-// The passes' cell loops are compiled three times, for AVX-512 (x86-64-v4), AVX2 and baseline
-// x86-64, and the CPU picks one at load time (function multiversioning). They are selects,
-// min/max and sums: baseline SSE2 has no blend and two lanes and runs them compute-bound at 2–3×
-// AVX2's time, and AVX-512's eight lanes and mask registers take the trial pass from 14 % to 8 %
-// of an elastic 1024² solve (bench/README.md), while the FFT pair they are weighed against
-// already runs FFTW's AVX codelets.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define TRIBO_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "avx2", "default")))
-#else
-#define TRIBO_VECTOR_CLONES
-#endif
 
 void check_field(const ElasticHalfSpace& hs, const Eigen::ArrayXXd& f, const char* name) {
   const Grid& g = hs.grid();
@@ -468,19 +458,57 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       }
     }
 
-    // Pass C (step_cells): the step, α_max, and the slope where pass B's could not be used.
-    const StepStats sc = grid_chunks<StepStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
-      return step_cells(pp, sp, sets_kept ? nullptr : vp, lo, hi, cap, c, delta);
-    });
-    const double slope = sets_kept ? tb.slope0 - c * tb.slope_free : sc.slope;
-
-    // The one half-space product of the iteration, w = G s with s·G s (Parseval), and the exact
+    // Pass C (step_cells): the step, α_max, and the slope where pass B's could not be used. Then
+    // the one half-space product of the iteration, w = G s with s·G s (Parseval), and the exact
     // minimum of the energy ½ p·G p + h·p along p + α s (Σ s = 0 for load control, so δ drops
-    // out), within the feasible α ≤ alpha_max.
-    const double den = hs.displacement_and_energy(s, w);
+    // out), within the feasible α ≤ α_max. Then pass D: p += α s, v += α w (exact), and the new
+    // state's sums.
+    const double* step_v = sets_kept ? nullptr : vp;
+    const double ref = delta;
+    double alpha_best = 0.0, alpha = 0.0;
+    auto line_minimum = [&](const StepStats& sc, double den) {
+      const double slope = sets_kept ? tb.slope0 - c * tb.slope_free : sc.slope;
+      if (!(den > 0.0) || !(slope < 0.0)) return false;
+      alpha_best = -slope / den;
+      alpha = std::min(alpha_best, sc.alpha_max);
+      return true;
+    };
+    bool descent = false;
+    StateStats updated;
+    if (hs.periodic()) {
+      // Passes C and D fused into the product's line stages (ElasticHalfSpace::displacement_by_rows):
+      // each line of s is transformed while in cache, and each line of w used as it comes back.
+      const Eigen::Index nx = grid.nx;
+      const auto threads = static_cast<std::size_t>(hs.row_threads());
+      std::vector<StepStats> steps(threads);
+      std::vector<StateStats> states(threads);
+      hs.displacement_by_rows(
+          sp, wp,
+          [&](int t, Eigen::Index j) {
+            steps[static_cast<std::size_t>(t)].merge(step_cells(pp, sp, step_v, j * nx, (j + 1) * nx, cap, c, delta));
+          },
+          [&](double den) {
+            StepStats sc = steps[0];
+            for (std::size_t k = 1; k < threads; ++k) sc.merge(steps[k]);
+            return descent = line_minimum(sc, den);
+          },
+          [&](int t, Eigen::Index j) {
+            states[static_cast<std::size_t>(t)].merge(
+                update_cells(pp, vp, sp, wp, hp, j * nx, (j + 1) * nx, alpha, ref, cap));
+          });
+      if (descent) {
+        updated = states[0];
+        for (std::size_t k = 1; k < threads; ++k) updated.merge(states[k]);
+      }
+    } else {
+      const StepStats sc = grid_chunks<StepStats>(
+          n, [&](Eigen::Index lo, Eigen::Index hi) { return step_cells(pp, sp, step_v, lo, hi, cap, c, delta); });
+      descent = line_minimum(sc, hs.displacement_and_energy(s, w));
+      if (descent) updated = update_pass(alpha, ref);
+    }
     ++fft_pairs;
     ++it;
-    if (!(den > 0.0) || !(slope < 0.0)) {
+    if (!descent) {
       // Not a descent step (round-off near the solution, or a poor trial length): try again from
       // the gradient with half the length; p and v are untouched.
       tau *= 0.5;
@@ -490,12 +518,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       take_state(update_pass(0.0, delta), delta);
       continue;
     }
-    const double alpha_best = -slope / den;
-    const double alpha = std::min(alpha_best, sc.alpha_max);
-
-    // Pass D: p += α s, v += α w (exact), and the new state's sums.
-    const double ref = delta;
-    take_state(update_pass(alpha, ref), ref);
+    take_state(updated, ref);
     // The next trial length: the best multiple of this one (CG's own step when nothing was
     // clamped), kept within a factor 4.
     tau *= std::clamp(alpha_best, 0.25, 4.0);
