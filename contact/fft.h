@@ -99,13 +99,14 @@ class RowColumnFft {
 };
 
 // FFTW wisdom shipped with tribo (contact/fftw_wisdom.txt, made by build/bench/fftw_wisdom): the
-// plans FFTW_MEASURE chose for RealFft2d on square grids 64² … 4096² on 1 and 2 threads. It is
-// imported before the first plan, and FFTW then builds a covered problem's plan from it, without
-// measuring: the same plan in every run and process, so results stay reproducible to the bit (a
-// measured plan can differ from run to run), at the measured plan's speed — an r2c + c2r pair on
-// 2048² on one thread took 31 ms against the estimated plan's 61 ms (bench/README.md). False when
-// FFTW rejected the wisdom (another FFTW version): every plan is then FFTW's estimate — slower,
-// the same results to round-off.
+// plans FFTW_MEASURE chose for RealFft2d on square grids 64² … 4096² on 1 and 2 threads, and for
+// RowColumnFft's line transforms on the same grids. It is imported before the first plan, and
+// FFTW then builds a covered problem's plan from it, without measuring: the same plan in every
+// run and process, so results stay reproducible to the bit (a measured plan can differ from run
+// to run), at the measured plan's speed — an r2c + c2r pair on 2048² on one thread took 31 ms
+// against the estimated plan's 61 ms (bench/README.md). False when FFTW rejected the wisdom
+// (another FFTW version): every plan is then FFTW's estimate — slower, the same results to
+// round-off.
 bool shipped_fftw_wisdom_loaded();
 
 // Signed wavenumber index of FFT bin j on an n-point axis: j for j ≤ n/2, j − n otherwise.

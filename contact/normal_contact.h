@@ -26,8 +26,11 @@
 // product u = G p (or an error carried in u) whenever a cell changes set; here the product is of
 // the step actually taken. Each iteration also makes three passes over the grid (direction and
 // trial; the step; the update with the sums of the next direction): vectorised loops that select
-// on the scattered sets instead of branching, compiled for AVX2 and for baseline x86-64 (the CPU
-// picks one at load time; the two agree to round-off).
+// on the scattered sets instead of branching, compiled for AVX-512, AVX2 and baseline x86-64 (the
+// CPU picks one at load time; they agree to round-off). On a periodic grid the step and update
+// passes run inside the product, line by line (ElasticHalfSpace::displacement_by_rows): a line of
+// the step is transformed while it is in cache, and a line of w used as it comes back, so neither
+// grid makes an extra trip through memory for the transform.
 //
 // Plastic displacement is kept by the caller: after a solve, profile + plastic_increment_m is the
 // flattened profile; unloading and reloading from it are elastic up to the previous peak load.
