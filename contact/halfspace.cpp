@@ -43,51 +43,33 @@ Eigen::Index padded_length(Eigen::Index n) {
   }
 }
 
-// The column stage of displacement_by_rows on one block of kb = RowColumnFft::kColumns columns
-// (nb ≤ kb of them real): gathered from the half spectrum's lines (`stride` complex values apart)
-// into the interleaved block, and scattered back: fixed-length moves the compiler keeps inline
-// and vectorises (a library memmove per line took 9 % of a 1024² solve), with the lines ahead
-// prefetched (they are more than a page apart, beyond the hardware prefetcher's reach).
+// The column stage of displacement_by_rows moves one block of kb = RowColumnFft::kColumns
+// columns (nb ≤ kb of them real) between the half spectrum, whose lines are `stride` complex
+// values apart, and the interleaved block (kb apart): nb values of each of ny lines, from `from`
+// (lines from_stride apart) to `to` (to_stride apart). Fixed-length moves the compiler keeps
+// inline and vectorises (a library memmove per line took 9 % of a 1024² solve), with the lines
+// ahead prefetched (the spectrum's are more than a page apart, beyond the hardware prefetcher).
 constexpr Eigen::Index kPrefetchLines = 16;
 
 TRIBO_VECTOR_CLONES
-void gather_block(const std::complex<double>* spectrum, Eigen::Index stride, Eigen::Index ny, Eigen::Index nb,
-                  std::complex<double>* block) {
+void move_block(const std::complex<double>* from, Eigen::Index from_stride, std::complex<double>* to,
+                Eigen::Index to_stride, Eigen::Index ny, Eigen::Index nb) {
   constexpr Eigen::Index kb = RowColumnFft::kColumns;
-  const double* __restrict a = reinterpret_cast<const double*>(spectrum);
-  double* __restrict b = reinterpret_cast<double*>(block);
+  const double* __restrict a = reinterpret_cast<const double*>(from);
+  double* __restrict b = reinterpret_cast<double*>(to);
   for (Eigen::Index j = 0; j < ny; ++j) {
-    const double* from = a + 2 * j * stride;
-    double* to = b + 2 * j * kb;
+    const double* src = a + 2 * j * from_stride;
+    double* dst = b + 2 * j * to_stride;
     if (j + kPrefetchLines < ny) {
-      __builtin_prefetch(from + 2 * kPrefetchLines * stride);
-      __builtin_prefetch(from + 2 * kPrefetchLines * stride + 8);
+      __builtin_prefetch(src + 2 * kPrefetchLines * from_stride);
+      __builtin_prefetch(src + 2 * kPrefetchLines * from_stride + 8);
+      __builtin_prefetch(dst + 2 * kPrefetchLines * to_stride, 1);
+      __builtin_prefetch(dst + 2 * kPrefetchLines * to_stride + 8, 1);
     }
     if (nb == kb) {
-      for (Eigen::Index i = 0; i < 2 * kb; ++i) to[i] = from[i];
+      for (Eigen::Index i = 0; i < 2 * kb; ++i) dst[i] = src[i];
     } else {
-      for (Eigen::Index i = 0; i < 2 * nb; ++i) to[i] = from[i];
-    }
-  }
-}
-
-TRIBO_VECTOR_CLONES
-void scatter_block(const std::complex<double>* block, Eigen::Index stride, Eigen::Index ny, Eigen::Index nb,
-                   std::complex<double>* spectrum) {
-  constexpr Eigen::Index kb = RowColumnFft::kColumns;
-  const double* __restrict a = reinterpret_cast<const double*>(block);
-  double* __restrict b = reinterpret_cast<double*>(spectrum);
-  for (Eigen::Index j = 0; j < ny; ++j) {
-    const double* from = a + 2 * j * kb;
-    double* to = b + 2 * j * stride;
-    if (j + kPrefetchLines < ny) {
-      __builtin_prefetch(to + 2 * kPrefetchLines * stride, 1);
-      __builtin_prefetch(to + 2 * kPrefetchLines * stride + 8, 1);
-    }
-    if (nb == kb) {
-      for (Eigen::Index i = 0; i < 2 * kb; ++i) to[i] = from[i];
-    } else {
-      for (Eigen::Index i = 0; i < 2 * nb; ++i) to[i] = from[i];
+      for (Eigen::Index i = 0; i < 2 * nb; ++i) dst[i] = src[i];
     }
   }
 }
@@ -296,13 +278,13 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
     double e = 0.0;
     for (Eigen::Index b = blocks * t / m; b < blocks * (t + 1) / m; ++b) {
       const Eigen::Index k0 = b * kb, nb = std::min(kb, mxh - k0);
-      gather_block(spectrum + k0, mxh, ny, nb, block);
+      move_block(spectrum + k0, mxh, block, kb, ny, nb);
       f.columns_forward(block, nb);
       std::array<double, kb> weight{};
       for (Eigen::Index c = 0; c < nb; ++c) weight[c] = k0 + c == 0 || (even_x && k0 + c == mxh - 1) ? 1.0 : 2.0;
       e += multiply_block(block, block_kernel_.data() + b * ny * kb, ny, weight.data());
       f.columns_inverse(block, nb);
-      scatter_block(block, mxh, ny, nb, spectrum + k0);
+      move_block(block, kb, spectrum + k0, mxh, ny, nb);
     }
     part[static_cast<std::size_t>(t)] = e;
   }
