@@ -95,6 +95,9 @@ double projection_shift(const Eigen::ArrayXXd& y, double cap, double target, con
     return grid_chunks<ShiftSums>(n, [&](Eigen::Index lo, Eigen::Index hi) { return shift_cells(yp, lo, hi, c, cap); });
   };
   const ShiftSums zero = at_zero != nullptr ? *at_zero : at(0.0);
+  // y already on the load (a warm start at a solution): no shift. A Newton step from there would be
+  // round-off, and a negative one lifts every open cell off zero.
+  if (std::abs(zero.sum - target) <= 1e-14 * target) return 0.0;
   double c = zero.active > 0.0 ? (zero.sum - target) / zero.active : 0.0;
   double c_lo = -std::numeric_limits<double>::infinity(), c_hi = std::numeric_limits<double>::infinity();
   for (int it = 0; it < 200; ++it) {

@@ -15,17 +15,17 @@
 namespace tribo::contact {
 namespace {
 
-struct Case {
+struct LineCase {
   int nx, ny, threads;
 };
 
-class LineProduct : public ::testing::TestWithParam<Case> {};
+class LineProduct : public ::testing::TestWithParam<LineCase> {};
 
 // Tolerance: both products sum the same terms in another order, ~1e-15 of the largest value per
 // transform stage; 1e-12 of max |u| (and of the energy) leaves three orders of margin and fails
 // on any misplaced line, column or kernel value (those are O(1) errors).
 TEST_P(LineProduct, EqualsTheTwoDimensionalProductAndItsEnergy) {
-  const Case c = GetParam();
+  const LineCase c = GetParam();
   const int saved = omp_get_max_threads();
   omp_set_num_threads(c.threads);
   const Grid grid = Grid::patch(c.nx, c.ny, 1e-4 * c.nx / c.ny, 1e-4);
@@ -77,8 +77,8 @@ TEST_P(LineProduct, EqualsTheTwoDimensionalProductAndItsEnergy) {
 // 256² is a grid the shipped wisdom holds line plans for, 255 × 192 one it does not (odd nx);
 // 64 × 48 is below the size where the lines are split between threads.
 INSTANTIATE_TEST_SUITE_P(EvenOddThreads, LineProduct,
-                         ::testing::Values(Case{256, 256, 1}, Case{256, 256, 2}, Case{255, 192, 1},
-                                           Case{255, 192, 2}, Case{64, 48, 2}));
+                         ::testing::Values(LineCase{256, 256, 1}, LineCase{256, 256, 2}, LineCase{255, 192, 1},
+                                           LineCase{255, 192, 2}, LineCase{64, 48, 2}));
 
 // When decide() declines, no line of u is transformed back or used.
 TEST(LineProductDeclined, LeavesTheDisplacementUntouched) {
