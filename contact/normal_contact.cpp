@@ -32,6 +32,14 @@ void check_field(const ElasticHalfSpace& hs, const Eigen::ArrayXXd& f, const cha
   if (!f.allFinite()) throw std::invalid_argument(std::string(name) + " holds NaN or infinite values");
 }
 
+// Per-thread partial results merged in thread order (the order fixes the bits).
+template <class Acc>
+Acc merged(const std::vector<Acc>& part) {
+  Acc acc = part[0];
+  for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
+  return acc;
+}
+
 // One pass over n cells in contiguous chunks, one per thread: `body(lo, hi)` returns the Acc of
 // cells [lo, hi), and the chunks' results are merged in thread order, so a solve's bits depend
 // on the thread count but not on the scheduling. A body can keep its sums in scalars and let
@@ -46,9 +54,7 @@ Acc grid_chunks(Eigen::Index n, Body&& body) {
     const Eigen::Index t = omp_get_thread_num(), m = omp_get_num_threads();
     part[static_cast<std::size_t>(t)] = body(n * t / m, n * (t + 1) / m);
   }
-  Acc acc = part[0];
-  for (std::size_t k = 1; k < part.size(); ++k) acc.merge(part[k]);
-  return acc;
+  return merged(part);
 }
 
 // S(c), the cells strictly inside (0, cap), and min y and max y (for the bracket) on cells
@@ -490,19 +496,12 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
           [&](int t, Eigen::Index j) {
             steps[static_cast<std::size_t>(t)].merge(step_cells(pp, sp, step_v, j * nx, (j + 1) * nx, cap, c, delta));
           },
-          [&](double den) {
-            StepStats sc = steps[0];
-            for (std::size_t k = 1; k < threads; ++k) sc.merge(steps[k]);
-            return descent = line_minimum(sc, den);
-          },
+          [&](double den) { return descent = line_minimum(merged(steps), den); },
           [&](int t, Eigen::Index j) {
             states[static_cast<std::size_t>(t)].merge(
                 update_cells(pp, vp, sp, wp, hp, j * nx, (j + 1) * nx, alpha, ref, cap));
           });
-      if (descent) {
-        updated = states[0];
-        for (std::size_t k = 1; k < threads; ++k) updated.merge(states[k]);
-      }
+      if (descent) updated = merged(states);
     } else {
       const StepStats sc = grid_chunks<StepStats>(
           n, [&](Eigen::Index lo, Eigen::Index hi) { return step_cells(pp, sp, step_v, lo, hi, cap, c, delta); });
