@@ -6,7 +6,10 @@
     tribo_plots.py rig DIR    phase_plane.png, trace.png from a `tribo rig` run
     tribo_plots.py gap DIR    gap_by_observable.png, items.png, overlay.png from `tribo gap diagnose`
     tribo_plots.py homogenise DIR   stribeck.png, area.png from `tribo homogenise`
-    tribo_plots.py ehl DIR    ehl.png from `tribo ehl`: pressure and film along the contact
+    tribo_plots.py ehl DIR [REF]   ehl.png from `tribo ehl`: pressure and film along the contact;
+                              with REF, a published solution's centre lines beside them (a folder
+                              with pressure_centre_line.csv and film_centre_line.csv, columns x_m and
+                              pressure_Pa / film_m: tests/lubrication/data/mourier-2006)
     tribo_plots.py sweep DIR  DIR/plots/<column>.png from `tribo sweep`: each output column against
                               the axes (a line for one varying axis, a heat map for two)
 """
@@ -505,10 +508,11 @@ def plot_sweep(d):
     print("\n".join(written))
 
 
-def plot_ehl(d):
+def plot_ehl(d, reference=None):
     """Pressure (GPa) and film (um) along the contact, x over the Hertz half-width (a point contact:
     its radius, along the centre line y = 0, beside a map of the film), with the dry Hertz pressure
-    and the published central-film fits for comparison."""
+    and the published central-film fits for comparison — and, given a reference folder, a published
+    solution's centre lines as points."""
     import numpy as np
 
     with open(os.path.join(d, "ehl.json")) as f:
@@ -543,6 +547,14 @@ def plot_ehl(d):
     fits = (("hamrock_dowson_central_film_m", ":"),) if point else (("pan_hamrock_central_film_m", ":"), ("dowson_toyoda_central_film_m", "-."))
     for key, style in fits:
         film.axhline(s["fits"][key] * 1e6, color="tab:blue", ls=style, lw=0.8, label=key.replace("_central_film_m", " h_c"))
+    if reference is not None:
+        name = os.path.basename(os.path.normpath(reference))
+        ref_p = read_csv(os.path.join(reference, "pressure_centre_line.csv"))
+        ref_h = read_csv(os.path.join(reference, "film_centre_line.csv"))
+        ax.plot([float(r["x_m"]) / b for r in ref_p], [float(r["pressure_Pa"]) / 1e9 for r in ref_p], "o", ms=3.5, mfc="none",
+                color="tab:red", label="pressure, " + name)
+        film.plot([float(r["x_m"]) / b for r in ref_h], [float(r["film_m"]) * 1e6 for r in ref_h], "s", ms=3.5, mfc="none",
+                  color="tab:blue", label="film, " + name)
     film.set_ylabel("film (um)", color="tab:blue")
     film.set_ylim(0, 4 * s["central_film_m"] * 1e6)
     mu = s.get("friction_coefficient")
@@ -561,10 +573,10 @@ def plot_ehl(d):
 def main(argv):
     modes = {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap, "homogenise": plot_homogenise, "sweep": plot_sweep,
              "ehl": plot_ehl}
-    if len(argv) != 3 or argv[1] not in modes:
+    if not (len(argv) == 3 and argv[1] in modes or len(argv) == 4 and argv[1] == "ehl"):
         sys.stderr.write(__doc__)
         return 2
-    modes[argv[1]](argv[2])
+    modes[argv[1]](*argv[2:])
     return 0
 
 
