@@ -211,7 +211,7 @@ double ElasticHalfSpace::displacement_and_energy(const Eigen::ArrayXXd& p, Eigen
   const Eigen::Index mxh = fft_.nx_half(), my = fft_.ny();
   const bool even_x = fft_.nx() % 2 == 0;
   double energy = 0.0;
-#pragma omp parallel for if (!one_thread_ && mxh * my >= Eigen::Index{1} << 15) reduction(+ : energy) schedule(static)
+#pragma omp parallel for if (!one_thread_ && mxh * my >= kParallelMinCells) reduction(+ : energy) schedule(static)
   for (Eigen::Index j = 0; j < my; ++j) {
     std::complex<double>* col = s + j * mxh;
     const double* k = kernel_.data() + j * mxh;
@@ -236,7 +236,7 @@ double ElasticHalfSpace::displacement_and_energy(const Eigen::ArrayXXd& p, Eigen
 }
 
 int ElasticHalfSpace::row_threads() const {
-  return one_thread_ || grid_.nx * grid_.ny < (Eigen::Index{1} << 15) ? 1 : std::max(1, omp_get_max_threads());
+  return one_thread_ || grid_.nx * grid_.ny < kParallelMinCells ? 1 : std::max(1, omp_get_max_threads());
 }
 
 double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPass& make_row,

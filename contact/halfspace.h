@@ -29,6 +29,11 @@
 
 namespace tribo::contact {
 
+// Below this many cells a loop over a grid (the half-space's multiply and line stages, the normal
+// solve's passes) costs less than waking a thread team — and on a busy machine far less than a
+// descheduled spinning thread — so it runs on one thread.
+inline constexpr Eigen::Index kParallelMinCells = Eigen::Index{1} << 15;
+
 // thesis Appendix I materials combine as 1/E* = (1 − ν₁²)/E₁ + (1 − ν₂²)/E₂; a rigid body has E = ∞.
 double composite_modulus_Pa(double e1_Pa, double nu1, double e2_Pa, double nu2);
 

@@ -18,10 +18,6 @@ namespace {
 
 enum class Control { load, approach };
 
-// Below this many cells a loop's work is smaller than the cost of waking a thread team (and on
-// a busy machine far smaller than a descheduled spinning thread), so it runs serially.
-constexpr Eigen::Index kParallelMinCells = Eigen::Index{1} << 15;
-
 void check_field(const ElasticHalfSpace& hs, const Eigen::ArrayXXd& f, const char* name) {
   const Grid& g = hs.grid();
   if (!g.holds(f)) {
