@@ -9,7 +9,8 @@
     tribo_plots.py ehl DIR [REF]   ehl.png from `tribo ehl`: pressure and film along the contact;
                               with REF, a published solution's centre lines beside them (a folder
                               with pressure_centre_line.csv and film_centre_line.csv, columns x_m and
-                              pressure_Pa / film_m: tests/lubrication/data/mourier-2006)
+                              pressure_Pa / film_m, and film_centre_line_measured.csv if measured:
+                              tests/lubrication/data/mourier-2006)
     tribo_plots.py sweep DIR  DIR/plots/<column>.png from `tribo sweep`: each output column against
                               the axes (a line for one varying axis, a heat map for two)
 """
@@ -555,6 +556,11 @@ def plot_ehl(d, reference=None):
                 color="tab:red", label="pressure, " + name)
         film.plot([float(r["x_m"]) / b for r in ref_h], [float(r["film_m"]) * 1e6 for r in ref_h], "s", ms=3.5, mfc="none",
                   color="tab:blue", label="film, " + name)
+        measured = os.path.join(reference, "film_centre_line_measured.csv")
+        if os.path.exists(measured):
+            ref_m = read_csv(measured)
+            film.plot([float(r["x_m"]) / b for r in ref_m], [float(r["film_m"]) * 1e6 for r in ref_m], "x", ms=4,
+                      color="tab:green", label="film measured, " + name)
     film.set_ylabel("film (um)", color="tab:blue")
     film.set_ylim(0, 4 * s["central_film_m"] * 1e6)
     mu = s.get("friction_coefficient")

@@ -1,7 +1,8 @@
 // The EHL point contact (lubrication/ehl_point.h) against a published numerical solution: the
 // smooth ball-on-disc contact of Mourier, Mazuyer, Lubrecht & Donnet (Tribol. Int. 39, 2006),
 // whose centre lines — film and pressure along the rolling direction — are in
-// tests/lubrication/data/mourier-2006/ as digitised from the paper (SOURCE.md there).
+// tests/lubrication/data/mourier-2006/ as digitised from the paper (SOURCE.md there), beside their
+// interferometric measurement of the same contact's film.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,7 +44,7 @@ std::vector<CurvePoint> read_curve(const std::string& name) {
 }
 
 // The paper's case: R = 12.5 mm, E' = 110 GPa, 15 N, u_m = 0.09 m/s, η0 = 0.25 Pa s, α = 22 /GPa,
-// Roelands and Dowson–Higginson (SOURCE.md), on 257² nodes; solved once for both tests.
+// Roelands and Dowson–Higginson (SOURCE.md), on 257² nodes; solved once per test process.
 const EhlPointResult& mourier_case() {
   static const EhlPointResult r = [] {
     const EhlPointContact contact{15.0, 12.5e-3, 110e9, 0.09};
@@ -110,6 +111,29 @@ TEST(EhlPointPublished, FilmAlongTheCentreLineMatchesMourierEtAl2006) {
   std::printf("film: %.1f nm rms over %zu points, %.1f nm at most on the plateau\n", rms * 1e9, theirs.size(), plateau_max * 1e9);
   EXPECT_LT(rms, 0.04 * r.central_film_m);
   EXPECT_LT(plateau_max, 0.03 * r.central_film_m);
+}
+
+// The measurement: the same contact's film by optical interferometry (the paper's experiment;
+// film_centre_line_measured.csv). Over the plateau (|x| ≤ 100 µm) its 17 points average 211.6 nm
+// with a scatter of 2.6 nm (standard error 0.6 nm); our film at those points, 213.6 nm (+0.9 %).
+// Tolerance 2 %: our grid's ≈ 1 % and an interferometer's calibration of about as much. Not
+// asserted, said in docs/lubrication.md: the measured constriction is 167.7 nm at 0.96 a, ours (and
+// their solution's) 175.5 nm — 4.7 % thicker than measured.
+TEST(EhlPointPublished, PlateauFilmMatchesTheInterferometricMeasurement) {
+  const EhlPointResult& r = mourier_case();
+  ASSERT_TRUE(r.converged) << r.message;
+  const std::vector<double> h = centre_line(r, r.film_m);
+  double ours = 0.0, measured = 0.0;
+  int count = 0;
+  for (const CurvePoint& q : read_curve("film_centre_line_measured.csv")) {
+    if (std::abs(q.x_m) > 100e-6) continue;
+    ours += at(r.x_m, h, q.x_m);
+    measured += q.value;
+    ++count;
+  }
+  std::printf("plateau over %d measured points: ours %.1f nm, measured %.1f nm\n", count, ours / count * 1e9, measured / count * 1e9);
+  EXPECT_EQ(count, 17);
+  EXPECT_NEAR(ours / measured, 1.0, 0.02);
 }
 
 // Pressure. Theirs: 388 MPa at the centre (dry Hertz 383 MPa) and the outlet spike, a second
