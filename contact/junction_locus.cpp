@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <stdexcept>
 #include <string>
@@ -62,7 +63,9 @@ double load_rate_at_static_friction_per_s(const JunctionLocus& l, double mu_s) {
   return std::pow(l.location_per_s * std::pow(l.reference_load_rate_per_s, -e) * g, 1.0 / (1.0 - e));
 }
 
-double static_friction_from_load_rate(const JunctionLocus& l, double phi_dot_per_s) {
+namespace {
+
+double solve_static_friction(const JunctionLocus& l, double phi_dot_per_s) {
   const double mu_max = upper_asymptote(l);
   require_locus(std::isfinite(phi_dot_per_s) && phi_dot_per_s >= 0.0, "load rate must be finite and non-negative");
   if (phi_dot_per_s == 0.0) return mu_max;
@@ -98,6 +101,27 @@ double static_friction_from_load_rate(const JunctionLocus& l, double phi_dot_per
     mu = next;
   }
   throw std::logic_error("junction model: static friction root not found for load rate " + numerics::shortest(phi_dot_per_s) + " 1/s");
+}
+
+bool same_locus(const JunctionLocus& a, const JunctionLocus& b) {
+  return a.alpha == b.alpha && a.n == b.n && a.sigma0_over_tau_i == b.sigma0_over_tau_i && a.location_per_s == b.location_per_s &&
+         a.strain_rate_index_m == b.strain_rate_index_m && a.reference_load_rate_per_s == b.reference_load_rate_per_s;
+}
+
+}  // namespace
+
+double static_friction_from_load_rate(const JunctionLocus& l, double phi_dot_per_s) {
+  // A rig asks at one load rate again and again while its contact is stuck (a constant drive loads
+  // the spring at a constant rate): each thread keeps its last answer, the same bits as solving again.
+  struct Last {
+    JunctionLocus locus;
+    double phi_dot_per_s = std::numeric_limits<double>::quiet_NaN(), mu_s = 0.0;
+  };
+  thread_local Last last;
+  if (phi_dot_per_s == last.phi_dot_per_s && same_locus(l, last.locus)) return last.mu_s;
+  const double mu_s = solve_static_friction(l, phi_dot_per_s);
+  last = {l, phi_dot_per_s, mu_s};
+  return mu_s;
 }
 
 double location_through_point_per_s(const JunctionLocus& shape_params, double phi_dot_per_s, double mu_s) {
