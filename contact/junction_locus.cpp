@@ -103,6 +103,8 @@ double solve_static_friction(const JunctionLocus& l, double phi_dot_per_s) {
   throw std::logic_error("junction model: static friction root not found for load rate " + numerics::shortest(phi_dot_per_s) + " 1/s");
 }
 
+// Every field compared: a field added to JunctionLocus must be added here (the assertion fails).
+static_assert(sizeof(JunctionLocus) == 6 * sizeof(double), "same_locus compares every field of JunctionLocus");
 bool same_locus(const JunctionLocus& a, const JunctionLocus& b) {
   return a.alpha == b.alpha && a.n == b.n && a.sigma0_over_tau_i == b.sigma0_over_tau_i && a.location_per_s == b.location_per_s &&
          a.strain_rate_index_m == b.strain_rate_index_m && a.reference_load_rate_per_s == b.reference_load_rate_per_s;
