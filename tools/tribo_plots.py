@@ -513,7 +513,7 @@ def plot_ehl(d, reference=None):
     """Pressure (GPa) and film (um) along the contact, x over the Hertz half-width (a point contact:
     its radius, along the centre line y = 0, beside a map of the film), with the dry Hertz pressure
     and the published central-film fits for comparison — and, given a reference folder, a published
-    solution's centre lines as points."""
+    solution's centre lines (and a measured film, where the folder has one) as points."""
     import numpy as np
 
     with open(os.path.join(d, "ehl.json")) as f:
@@ -550,17 +550,17 @@ def plot_ehl(d, reference=None):
         film.axhline(s["fits"][key] * 1e6, color="tab:blue", ls=style, lw=0.8, label=key.replace("_central_film_m", " h_c"))
     if reference is not None:
         name = os.path.basename(os.path.normpath(reference))
-        ref_p = read_csv(os.path.join(reference, "pressure_centre_line.csv"))
-        ref_h = read_csv(os.path.join(reference, "film_centre_line.csv"))
-        ax.plot([float(r["x_m"]) / b for r in ref_p], [float(r["pressure_Pa"]) / 1e9 for r in ref_p], "o", ms=3.5, mfc="none",
-                color="tab:red", label="pressure, " + name)
-        film.plot([float(r["x_m"]) / b for r in ref_h], [float(r["film_m"]) * 1e6 for r in ref_h], "s", ms=3.5, mfc="none",
-                  color="tab:blue", label="film, " + name)
-        measured = os.path.join(reference, "film_centre_line_measured.csv")
-        if os.path.exists(measured):
-            ref_m = read_csv(measured)
-            film.plot([float(r["x_m"]) / b for r in ref_m], [float(r["film_m"]) * 1e6 for r in ref_m], "x", ms=4,
-                      color="tab:green", label="film measured, " + name)
+        # (file, column, scale, axis, marker, colour, label, required)
+        curves = (("pressure_centre_line.csv", "pressure_Pa", 1e-9, ax, "o", "tab:red", "pressure", True),
+                  ("film_centre_line.csv", "film_m", 1e6, film, "s", "tab:blue", "film", True),
+                  ("film_centre_line_measured.csv", "film_m", 1e6, film, "x", "tab:green", "film measured", False))
+        for file, col, scale, axis, marker, colour, label, required in curves:
+            path = os.path.join(reference, file)
+            if not required and not os.path.exists(path):
+                continue
+            rows = read_csv(path)
+            axis.plot([float(r["x_m"]) / b for r in rows], [float(r[col]) * scale for r in rows], marker, ms=3.5,
+                      mfc="none", color=colour, label="%s, %s" % (label, name))
     film.set_ylabel("film (um)", color="tab:blue")
     film.set_ylim(0, 4 * s["central_film_m"] * 1e6)
     mu = s.get("friction_coefficient")

@@ -9,14 +9,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "lubrication/ehl_point.h"
 #include "lubrication/reference/ehl_point_film.h"
+#include "rig/csv_table.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -25,21 +24,14 @@ struct CurvePoint {
   double x_m, value;
 };
 
-// A two-column CSV with a header line.
-std::vector<CurvePoint> read_curve(const std::string& name) {
-  const std::filesystem::path path = std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/lubrication/data/mourier-2006" / name;
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("cannot open " + path.string());
-  std::string line;
-  std::getline(in, line);
+// Column `value` against x_m of a CSV in data/mourier-2006/, read by the project's CSV reader.
+std::vector<CurvePoint> read_curve(const std::string& name, const std::string& value) {
+  std::vector<std::string> warnings;
+  const rig::CsvTable table = rig::read_csv_table(
+      std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/lubrication/data/mourier-2006" / name, {"x_m", value}, warnings);
+  const int x = table.required("x_m"), v = table.required(value);
   std::vector<CurvePoint> curve;
-  while (std::getline(in, line)) {
-    std::istringstream row(line);
-    CurvePoint p{};
-    char comma = 0;
-    if (!(row >> p.x_m >> comma >> p.value) || comma != ',') throw std::runtime_error(path.string() + ": bad line '" + line + "'");
-    curve.push_back(p);
-  }
+  for (const auto& [line, row] : table.rows) curve.push_back({table.number(line, row, x), table.number(line, row, v)});
   return curve;
 }
 
@@ -101,7 +93,7 @@ TEST(EhlPointPublished, FilmAlongTheCentreLineMatchesMourierEtAl2006) {
   EXPECT_NEAR(x_outlet / a, 126.2e-6 / a, 0.05);
 
   double sum2 = 0.0, plateau_max = 0.0;
-  const std::vector<CurvePoint> theirs = read_curve("film_centre_line.csv");
+  const std::vector<CurvePoint> theirs = read_curve("film_centre_line.csv", "film_m");
   for (const CurvePoint& q : theirs) {
     const double d = at(r.x_m, h, q.x_m) - q.value;
     sum2 += d * d;
@@ -125,7 +117,7 @@ TEST(EhlPointPublished, PlateauFilmMatchesTheInterferometricMeasurement) {
   const std::vector<double> h = centre_line(r, r.film_m);
   double ours = 0.0, measured = 0.0;
   int count = 0;
-  for (const CurvePoint& q : read_curve("film_centre_line_measured.csv")) {
+  for (const CurvePoint& q : read_curve("film_centre_line_measured.csv", "film_m")) {
     if (std::abs(q.x_m) > 100e-6) continue;
     ours += at(r.x_m, h, q.x_m);
     measured += q.value;
@@ -161,7 +153,7 @@ TEST(EhlPointPublished, PressureAndOutletSpikeMatchMourierEtAl2006) {
 
   double sum2 = 0.0;
   int count = 0;
-  for (const CurvePoint& q : read_curve("pressure_centre_line.csv")) {
+  for (const CurvePoint& q : read_curve("pressure_centre_line.csv", "pressure_Pa")) {
     if (std::abs(q.x_m) > 0.7 * a) continue;
     const double d = at(r.x_m, p, q.x_m) - q.value;
     sum2 += d * d;
