@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "lubrication/ehl_newton.h"
 #include "lubrication/reference/ehl_film.h"
@@ -22,7 +24,7 @@ double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::
 // The discrete problem in Hertz units (header): unknowns P_1 … P_{N−2} and H0.
 class LineProblem {
  public:
-  LineProblem(const EhlLineContact& c, const PiezoviscousLubricant& l, const EhlLineOptions& o)
+  LineProblem(const EhlLineContact& c, const EhlLineRoughness* rough, const PiezoviscousLubricant& l, const EhlLineOptions& o)
       : lub_(l), complementarity_(o.complementarity), n_(o.nodes), dx_((o.outlet_over_half_width - o.inlet_over_half_width) / (o.nodes - 1)) {
     b_ = reference::hertz_line_half_width_m(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
     ph_ = reference::hertz_line_peak_pressure_Pa(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
@@ -36,6 +38,12 @@ class LineProblem {
         const double d = x_(i) - x_(j);
         kernel_(i, j) = -(log_antiderivative(d + 0.5 * dx_) - log_antiderivative(d - 0.5 * dx_)) / kPi;
       }
+    rough_ = Eigen::VectorXd::Zero(n_);
+    if (rough) {
+      mixed_ = true;
+      for (int i = 0; i < n_; ++i) rough_(i) = profile_at(*rough, x_(i) * b_) / film_scale_m();
+      floor_ = rough->contact_film_m / film_scale_m();
+    }
   }
 
   int nodes() const { return n_; }
@@ -46,6 +54,7 @@ class LineProblem {
   double half_width_m() const { return b_; }
   double hertz_pressure_Pa() const { return ph_; }
   double film_scale_m() const { return b_ * b_ / radius_; }  // h = H b²/R
+  double contact_floor() const { return floor_; }             // H_c, 0 without roughness
 
   Eigen::VectorXd pressures(const Eigen::VectorXd& u) const {
     Eigen::VectorXd p = Eigen::VectorXd::Zero(n_);
@@ -63,23 +72,26 @@ class LineProblem {
     return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + kernel_ * pressures(du);
   }
   Eigen::VectorXd film(const Eigen::VectorXd& u) const {
-    return (u(n_ - 2) + 0.5 * x_.array().square()).matrix() + kernel_ * pressures(u);
+    return (u(n_ - 2) + 0.5 * x_.array().square() - rough_.array()).matrix() + kernel_ * pressures(u);
   }
 
   // Pressures, film and the lubricant's state at every node, computed once per iterate and read by
   // the row scales and the residual alike.
   struct Nodal {
-    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w;
+    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w, mobile;
   };
   Nodal nodal(const Eigen::VectorXd& u, double lambda) const {
     Nodal s{pressures(u), film(u), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_),
-            Eigen::VectorXd(n_)};
+            Eigen::VectorXd(n_), Eigen::VectorXd(n_)};
     for (int i = 0; i < n_; ++i) {
       const ViscosityAtPressure v = viscosity_ratio(lub_, s.p(i) * ph_);
       const DensityAtPressure r = density_ratio(lub_, s.p(i) * ph_);
       s.rho(i) = r.ratio;
       s.drho(i) = r.slope_per_Pa * ph_;
-      s.eps(i) = s.rho(i) * std::pow(s.h(i), 3) / (v.ratio * lambda);
+      // The pressure flow passes through the film above the boundary layers (H − H_c; all of it on
+      // smooth surfaces): none where the film has closed to H_c — Hu & Zhu's reduced equation there.
+      s.mobile(i) = std::max(s.h(i) - floor_, 0.0);
+      s.eps(i) = s.rho(i) * std::pow(s.mobile(i), 3) / (v.ratio * lambda);
       s.dlog_eps(i) = s.drho(i) / s.rho(i) - v.log_slope_per_Pa * ph_;  // ∂ ln ε/∂P_i at fixed H
       s.w(i) = s.rho(i) * s.h(i);
     }
@@ -104,7 +116,8 @@ class LineProblem {
     return ehl::dense_step(jacobian, rhs, step, why);
   }
   Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
-    const Eigen::VectorXd &p = s.p, &h = s.h, &rho = s.rho, &drho = s.drho, &eps = s.eps, &dlog_eps = s.dlog_eps, &w = s.w;
+    const Eigen::VectorXd &p = s.p, &h = s.h, &rho = s.rho, &drho = s.drho, &eps = s.eps, &dlog_eps = s.dlog_eps, &w = s.w,
+                          &mobile = s.mobile;
     const int m = unknowns(), np = n_ - 2;
     Eigen::VectorXd f(m);
     if (jacobian) jacobian->setZero(m, m);
@@ -113,7 +126,9 @@ class LineProblem {
       const double ep = 0.5 * (eps(i) + eps(i + 1)), em = 0.5 * (eps(i - 1) + eps(i));
       const double gp = p(i + 1) - p(i), gm = p(i) - p(i - 1);
       const double poiseuille = (ep * gp - em * gm) / (dx_ * dx_);
-      const bool second_order = i >= 2;
+      // Second-order upwind; first order with roughness, where films close: extrapolated from a
+      // converging inlet over two nodes, the transport would drive a contact's film through zero.
+      const bool second_order = i >= 2 && !mixed_;
       const double wedge = second_order ? (3.0 * w(i) - 4.0 * w(i - 1) + w(i - 2)) / (2.0 * dx_) : (w(i) - w(i - 1)) / dx_;
       const int row = i - 1;
       const double scale = c(row);
@@ -123,9 +138,9 @@ class LineProblem {
       f(row) = phi.value;
       if (!jacobian) continue;
       const double da = phi.da, db = phi.db;
-      // ∂ε_k/∂P_j = ε_k (3 K_kj/H_k + δ_kj ∂ln ε_k/∂P_k); ∂(ρ̄H)_k/∂P_j = ρ̄_k K_kj + δ_kj ρ̄'_k H_k.
+      // ∂ε_k/∂P_j = ε_k (3 K_kj/(H_k − H_c) + δ_kj ∂ln ε_k/∂P_k) (0 where closed); ∂(ρ̄H)_k/∂P_j = ρ̄_k K_kj + δ_kj ρ̄'_k H_k.
       auto d_eps = [&](int k) {
-        Eigen::RowVectorXd d = (3.0 * eps(k) / h(k)) * kernel_.row(k).segment(1, np);
+        Eigen::RowVectorXd d = (eps(k) > 0.0 ? 3.0 * eps(k) / mobile(k) : 0.0) * kernel_.row(k).segment(1, np);
         if (k >= 1 && k <= n_ - 2) d(k - 1) += eps(k) * dlog_eps(k);
         return d;
       };
@@ -146,8 +161,8 @@ class LineProblem {
       if (i - 1 >= 1) d_poiseuille(i - 2) += em / (dx_ * dx_);
       jacobian->row(row).head(np) = (-scale * db) * (d_poiseuille - d_w);
       (*jacobian)(row, row) += da;
-      // ∂/∂H0: ∂ε_k/∂H0 = 3 ε_k/H_k, ∂(ρ̄H)_k/∂H0 = ρ̄_k.
-      auto de0 = [&](int k) { return 3.0 * eps(k) / h(k); };
+      // ∂/∂H0: ∂ε_k/∂H0 = 3 ε_k/(H_k − H_c), ∂(ρ̄H)_k/∂H0 = ρ̄_k.
+      auto de0 = [&](int k) { return eps(k) > 0.0 ? 3.0 * eps(k) / mobile(k) : 0.0; };
       const double dpois0 = (0.5 * gp * (de0(i) + de0(i + 1)) - 0.5 * gm * (de0(i - 1) + de0(i))) / (dx_ * dx_);
       const double dw0 = second_order ? (3.0 * rho(i) - 4.0 * rho(i - 1) + rho(i - 2)) / (2.0 * dx_) : (rho(i) - rho(i - 1)) / dx_;
       (*jacobian)(row, np) = -scale * db * (dpois0 - dw0);
@@ -165,9 +180,24 @@ class LineProblem {
   double dx_, b_ = 0.0, ph_ = 0.0, radius_ = 0.0;
   Eigen::VectorXd x_;
   Eigen::MatrixXd kernel_;
+  // Roughness: the stationary surface's heights r at the nodes (H units, 0 for smooth surfaces) and
+  // the boundary layers' H_c.
+  bool mixed_ = false;
+  Eigen::VectorXd rough_;
+  double floor_ = 0.0;
+
+  // The profile's height at x (m), linear between its points, 0 outside them.
+  static double profile_at(const EhlLineRoughness& r, double x) {
+    if (x < r.x_m.front() || x > r.x_m.back()) return 0.0;
+    const auto hi = std::upper_bound(r.x_m.begin(), r.x_m.end(), x);
+    if (hi == r.x_m.end()) return r.height_m.back();
+    const auto k = static_cast<std::size_t>(hi - r.x_m.begin());
+    const double t = (x - r.x_m[k - 1]) / (r.x_m[k] - r.x_m[k - 1]);
+    return (1.0 - t) * r.height_m[k - 1] + t * r.height_m[k];
+  }
 };
 
-void validate(const EhlLineContact& c, const EhlLineOptions& o) {
+void validate(const EhlLineContact& c, const EhlLineRoughness* rough, const EhlLineOptions& o) {
   auto positive = [](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0)
       throw std::invalid_argument(std::string("EHL line contact: ") + name + " must be positive and finite, got " + shortest(v));
@@ -182,14 +212,27 @@ void validate(const EhlLineContact& c, const EhlLineOptions& o) {
                                 shortest(o.outlet_over_half_width) + "] (in Hertz half widths) must start before −1 and end after 0");
   if (o.nodes < 11) throw std::invalid_argument("EHL line contact: nodes must be ≥ 11, got " + std::to_string(o.nodes));
   if (!(o.tolerance > 0.0)) throw std::invalid_argument("EHL line contact: tolerance must be positive, got " + shortest(o.tolerance));
+  if (!rough) return;
+  const EhlLineRoughness& r = *rough;
+  if (r.x_m.size() < 2 || r.x_m.size() != r.height_m.size())
+    throw std::invalid_argument("EHL line contact: the roughness profile needs at least two points and as many heights as positions, got " +
+                                std::to_string(r.x_m.size()) + " positions and " + std::to_string(r.height_m.size()) + " heights");
+  for (std::size_t k = 0; k < r.x_m.size(); ++k) {
+    if (!std::isfinite(r.x_m[k]) || !std::isfinite(r.height_m[k]))
+      throw std::invalid_argument("EHL line contact: roughness point " + std::to_string(k) + " is not finite");
+    if (k > 0 && !(r.x_m[k] > r.x_m[k - 1]))
+      throw std::invalid_argument("EHL line contact: the roughness positions must increase, point " + std::to_string(k) + " at " +
+                                  shortest(r.x_m[k]) + " m does not");
+  }
+  positive(r.contact_film_m, "roughness contact_film_m");
 }
 
-}  // namespace
-
-EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant, const EhlLineOptions& options) {
-  validate(contact, options);
+// Smooth (roughness null) or rough.
+EhlLineResult solve_line(const EhlLineContact& contact, const EhlLineRoughness* roughness, const PiezoviscousLubricant& lubricant,
+                         const EhlLineOptions& options) {
+  validate(contact, roughness, options);
   validate(lubricant);
-  const LineProblem problem(contact, lubricant, options);
+  const LineProblem problem(contact, roughness, lubricant, options);
   const double radius = contact.reduced_radius_m, b = problem.half_width_m(), ph = problem.hertz_pressure_Pa();
   const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (b * b * b * ph);
 
@@ -214,9 +257,9 @@ EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLu
   u(np) = 0.0;
   const double centre_offset = problem.at_centre(problem.film(u));  // H(0) with H0 = 0
   u(np) = h_start_m / problem.film_scale_m() - centre_offset;
-  // Keep the starting film positive everywhere.
-  const double lowest = problem.film(u).minCoeff();
-  if (lowest <= 0.0) u(np) += 0.5 * h_start_m / problem.film_scale_m() - lowest;
+  // Keep the starting film open everywhere (above the contact film with roughness).
+  const double lowest = problem.film(u).minCoeff(), floor = problem.contact_floor();
+  if (lowest <= floor) u(np) += 0.5 * h_start_m / problem.film_scale_m() + floor - lowest;
 
   EhlLineResult result;
   const Eigen::VectorXd start = u;
@@ -242,10 +285,28 @@ EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLu
   result.load_balance_error = (problem.dx() * p.sum() - 0.5 * kPi) / (0.5 * kPi);
   result.converged = outcome.converged;
   result.residual = outcome.residual;
+  if (roughness) {
+    const double closed = problem.contact_floor();
+    double carried = 0.0;
+    for (int i = 1; i <= np; ++i)
+      if (h(i) < closed) ++result.contact_nodes, carried += p(i);
+    result.contact_load_share = problem.dx() * carried / (0.5 * kPi);
+  }
   result.message = outcome.converged ? "converged: ‖F‖∞ = " + shortest(outcome.residual) + " after " +
                                            std::to_string(result.iterations) + " Newton iterations"
                                      : "not converged: " + outcome.why + "; ‖F‖∞ = " + shortest(outcome.residual);
   return result;
+}
+
+}  // namespace
+
+EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant, const EhlLineOptions& options) {
+  return solve_line(contact, nullptr, lubricant, options);
+}
+
+EhlLineResult solve_ehl_line(const EhlLineContact& contact, const EhlLineRoughness& roughness, const PiezoviscousLubricant& lubricant,
+                             const EhlLineOptions& options) {
+  return solve_line(contact, &roughness, lubricant, options);
 }
 
 }  // namespace tribo::lubrication

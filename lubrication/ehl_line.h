@@ -1,6 +1,6 @@
 // Elastohydrodynamic line contact: a cylinder of reduced radius R on a plane (or two cylinders),
 // load w per unit length, entrained at the mean surface speed u_m = (u1 + u2)/2, steady,
-// isothermal, smooth surfaces.
+// isothermal; smooth, or with a rough or wavy profile on the stationary surface (below).
 //
 // Equations (Dowson & Higginson 1966; the dimensionless form of Venner & Lubrecht 2000, ch. 8):
 //   Reynolds   d/dx(ρ h³/(12 η) dp/dx) = u_m d(ρ h)/dx,   p ≥ 0 with p = dp/dx = 0 at the exit
@@ -30,6 +30,21 @@
 // from the start (a semi-ellipse of the load's area, the central film of Martin or Pan–Hamrock), it
 // is continued in λ: from a thinner, more Hertzian film (λ lowered by decades) back to the target.
 // Cost: O(N²) per residual and Jacobian, O(N³) per step (N = 401: ≈ 0.05 s).
+//
+// Mixed lubrication (solve_ehl_line with an EhlLineRoughness): the stationary surface carries a profile r(x)
+// (transverse ridges, uniform along the line; stationary, so that the problem stays steady — a rough
+// pin on a moving disc), the film is h − r, and where it closes the surfaces touch: the unified
+// treatment of Hu & Zhu (ASME J. Tribol. 122, 2000) — one pressure field, the Reynolds equation
+// everywhere, the pressure flow through the part of the film above the boundary layers
+// (ε = ρ (H − H_c)₊³/(η̄λ), H_c = contact_film_m), so that where the film has closed to H_c only the
+// surfaces' transport is left (Hu & Zhu's reduced equation, d(ρH)/dX = 0) and the pressure there is
+// the contact's, whatever holds the surfaces together. The wedge term is then first-order upwind
+// (second order extrapolates a converging inlet through zero at a contact's edge); Newton's steps
+// may close a film to H_c/2 in one step, and the continuation in λ also runs from a thicker film
+// (ehl_newton.h). A node whose film is below H_c is in contact (EhlLineResult::contact_nodes); its
+// film is what the transport leaves (≈ 1–4 nm in the tests), a number the model does not resolve —
+// it resolves the pressure. No plastic cap: a capped pressure lets a film close through zero, which
+// this formulation cannot hold (tried: Newton stalls).
 #pragma once
 
 #include <string>
@@ -39,6 +54,16 @@
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
+
+// The stationary surface's profile and what happens where the film closes (header: mixed lubrication).
+struct EhlLineRoughness {
+  // Heights r(x) of the stationary surface towards the other one (m) at increasing x_m (m, from the
+  // Hertz centre), interpolated linearly onto the nodes; zero outside the profile.
+  std::vector<double> x_m, height_m;
+  // The boundary layers' thickness H_c, below which the film passes no pressure flow (an adsorbed
+  // fatty-acid monolayer is ≈ 2.5 nm thick, Bowden & Tabor 1950; one on each surface, ≈ 5 nm). > 0.
+  double contact_film_m = 5e-9;
+};
 
 struct EhlLineContact {
   double load_per_length_N_per_m = 0.0;  // w > 0
@@ -70,6 +95,10 @@ struct EhlLineResult {
   double max_pressure_Pa = 0.0;
   double hertz_half_width_m = 0.0, hertz_pressure_Pa = 0.0;
   double load_balance_error = 0.0;  // (∫p dx − w)/w
+  // With roughness: the nodes where the surfaces touch (film below contact_film_m) and the share
+  // of the load they carry; 0 without.
+  int contact_nodes = 0;
+  double contact_load_share = 0.0;
   bool converged = false;
   int iterations = 0;             // Newton iterations, continuation steps included
   int continuation_steps = 0;
@@ -82,5 +111,9 @@ struct EhlLineResult {
 // `converged` and `message`).
 EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant,
                              const EhlLineOptions& options = {});
+// The same contact with a rough or wavy stationary surface, where films may close (header: mixed
+// lubrication); also throws std::invalid_argument for a bad profile.
+EhlLineResult solve_ehl_line(const EhlLineContact& contact, const EhlLineRoughness& roughness,
+                             const PiezoviscousLubricant& lubricant, const EhlLineOptions& options = {});
 
 }  // namespace tribo::lubrication

@@ -11,6 +11,7 @@
 //   VectorXd residual(const Nodal&, c, Jacobian*)
 //   bool solve_step(Jacobian&, rhs, step, std::string& why)   step = J⁻¹ rhs, or false and why
 //   VectorXd film_change(du)               the film's (linear) change for a step du
+//   double contact_floor()                 the film H_c at which surfaces touch (0: they never do)
 //   int pressure_unknowns()                the pressures among the unknowns (first), then H0
 // and Options the fields tolerance, max_newton_iterations and max_continuation_steps.
 #pragma once
@@ -66,10 +67,17 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
     // The step may change no film by more than half of itself: a full Newton step from a start far
     // from the solution closes the film in the contact, and from a collapsed film (ε ~ H³ → 0) the
     // iteration crawls.
+    // With boundary layers H_c > 0 (mixed lubrication) a closing film may fall to H_c/2 in one step
+    // (below H_c it passes no pressure flow, and ε ~ H³ cannot collapse), and one near H_c may open
+    // by 2 H_c.
     const Eigen::VectorXd dh = problem.film_change(step);
+    const double floor = problem.contact_floor();
     double t = 1.0;
-    for (int i = 0; i < dh.size(); ++i)
-      if (std::abs(dh(i)) > 0.5 * state.h(i)) t = std::min(t, 0.5 * state.h(i) / std::abs(dh(i)));
+    for (int i = 0; i < dh.size(); ++i) {
+      double room = 0.5 * state.h(i);
+      if (floor > 0.0) room = dh(i) < 0.0 ? (state.h(i) > floor ? state.h(i) - 0.5 * floor : room) : std::max(room, 2.0 * floor);
+      if (std::abs(dh(i)) > room) t = std::min(t, room / std::abs(dh(i)));
+    }
     const bool film_limited = t < 1.0;
     Eigen::VectorXd trial;
     auto trial_state = state;
@@ -127,7 +135,8 @@ struct SolveOutcome {
 
 // Newton from `start` at λ; where it does not converge, continuation from a thinner film: λ lowered
 // by decades from the start until Newton converges (the smaller λ, the closer the pressure to the
-// Hertz start), then raised back to the target, the step halved (in log λ) on every failure.
+// Hertz start), then raised back to the target, the step halved (in log λ) on every failure. With
+// asperity contact also the other way, from a thicker film down to the target (below).
 // u returns the answer (the first Newton attempt's last iterate when nothing converged).
 template <class Problem, class Options>
 SolveOutcome solve_with_continuation(const Problem& problem, double lambda, const Eigen::VectorXd& start, Eigen::VectorXd& u,
@@ -138,41 +147,54 @@ SolveOutcome solve_with_continuation(const Problem& problem, double lambda, cons
   out.iterations = out.newton.iterations;
   if (out.newton.converged) return out;
   const double log_target = std::log(lambda);
-  double log_current = log_target, step = std::log(10.0);
-  Eigen::VectorXd anchor;
-  bool anchored = false, reached = false;
-  int steps = 0;
-  while (steps < o.max_continuation_steps && !anchored) {
-    ++steps;
-    log_current -= step;
-    anchor = start;
-    const NewtonOutcome n = newton(problem, std::exp(log_current), anchor, o);
-    out.iterations += n.iterations;
-    anchored = n.converged;
-  }
-  while (anchored && !reached && steps < o.max_continuation_steps) {
-    ++steps;
-    const double next = std::min(log_target, log_current + step);
-    Eigen::VectorXd trial = anchor;
-    const NewtonOutcome n = newton(problem, std::exp(next), trial, o);
-    out.iterations += n.iterations;
-    if (n.converged) {
-      anchor = trial;
-      log_current = next;
-      reached = next == log_target;
-      if (reached) out.newton = n;
-    } else {
-      step *= 0.5;
+  // One continuation: λ moved away from the target by decades (`away` = −1: a thinner film, +1 a
+  // thicker one) until Newton converges, then back; true when it reached the target (u its answer).
+  auto continuation = [&](double away, std::string& why) {
+    double log_current = log_target, step = std::log(10.0);
+    Eigen::VectorXd anchor;
+    bool anchored = false, reached = false;
+    int steps = 0;
+    while (steps < o.max_continuation_steps && !anchored) {
+      ++steps;
+      log_current += away * step;
+      anchor = start;
+      const NewtonOutcome n = newton(problem, std::exp(log_current), anchor, o);
+      out.iterations += n.iterations;
+      anchored = n.converged;
     }
-  }
-  out.continuation_steps = steps;
-  if (reached) {
-    u = anchor;
-  } else {
-    out.newton.why += anchored ? " (continuation in λ from a thinner film stopped at λ = " + numerics::shortest(std::exp(log_current)) +
-                                     ", the target " + numerics::shortest(lambda) + ")"
-                               : " (and at every λ of the continuation)";
-  }
+    while (anchored && !reached && steps < o.max_continuation_steps) {
+      ++steps;
+      const double next = away > 0.0 ? std::max(log_target, log_current - step) : std::min(log_target, log_current + step);
+      Eigen::VectorXd trial = anchor;
+      const NewtonOutcome n = newton(problem, std::exp(next), trial, o);
+      out.iterations += n.iterations;
+      if (n.converged) {
+        anchor = trial;
+        log_current = next;
+        reached = next == log_target;
+        if (reached) out.newton = n;
+      } else {
+        step *= 0.5;
+      }
+    }
+    out.continuation_steps += steps;
+    if (reached) {
+      u = anchor;
+    } else {
+      why += anchored ? std::string(" (continuation in λ from a ") + (away > 0.0 ? "thicker" : "thinner") + " film stopped at λ = " +
+                            numerics::shortest(std::exp(log_current)) + ", the target " + numerics::shortest(lambda) + ")"
+                      : std::string(" (and at every λ of the continuation from a ") + (away > 0.0 ? "thicker" : "thinner") + " film)";
+    }
+    return reached;
+  };
+  std::string why = out.newton.why;
+  // With asperity contact (contact_floor() > 0) a film closing onto the surfaces is what a thinner
+  // film cannot lead Newton to: the continuation is tried both ways, first from a thicker film where
+  // the start's film is within 10 H_c of closing.
+  const double floor = problem.contact_floor();
+  const double first = floor > 0.0 && problem.nodal(start, lambda).h.minCoeff() < 10.0 * floor ? 1.0 : -1.0;
+  if (!continuation(first, why) && floor > 0.0) continuation(-first, why);
+  if (!out.newton.converged) out.newton.why = why;
   return out;
 }
 

@@ -128,6 +128,7 @@ class PointProblem {
     halfspace_->displacement(p, d);
     return d.reshaped();  // column-major: node (i, j) at i + nx j
   }
+  double contact_floor() const { return 0.0; }  // smooth surfaces never touch
   Eigen::VectorXd film_change(const Eigen::VectorXd& du) const {
     return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + deflection(du.head(interior()));
   }
