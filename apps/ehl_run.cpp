@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
+#include <string>
 
 #include "apps/config.h"
 #include "lubrication/reference/ehl_film.h"
@@ -80,6 +82,17 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     r->finish();
     run.roughness = rough;
   }
+  if (auto pr = root.table("profile")) {
+    if (run.point) pr->fail("", "[profile] is a line contact's (geometry = \"line\")");
+    if (run.roughness) pr->fail("", "give [roughness] (load sharing) or [profile] (node by node), not both");
+    EhlRun::Profile profile;
+    profile.amplitude_m = pr->required_number("amplitude_m", Range::non_negative);
+    profile.wavelength_m = pr->required_number("wavelength_m", Range::positive);
+    profile.surface.contact_film_m = pr->number("contact_film_m", profile.surface.contact_film_m, Range::positive);
+    profile.boundary_friction_coefficient = pr->required_number("boundary_friction_coefficient", Range::non_negative);
+    pr->finish();
+    run.profile = profile;
+  }
   if (auto s = root.table("solver")) {
     // The cavitation's NCP function (lubrication/complementarity.h); the default is each contact's.
     const auto complementarity = [&](lub::Complementarity fallback) {
@@ -130,6 +143,22 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   }
   if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
   if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
+  if (run.profile) {
+    // The waviness a cos(2π x/λ) sampled over the solver's domain, 64 points a wavelength.
+    EhlRun::Profile& pr = *run.profile;
+    const double b = lub::reference::hertz_line_half_width_m(run.contact.load_per_length_N_per_m, run.contact.reduced_radius_m,
+                                                             run.contact.reduced_modulus_Pa);
+    const double from = run.options.inlet_over_half_width * b - pr.wavelength_m, to = run.options.outlet_over_half_width * b + pr.wavelength_m;
+    const double points = std::ceil(64.0 * (to - from) / pr.wavelength_m) + 1.0;
+    if (!(points <= 1e6))
+      root.fail("profile.wavelength_m", "needs " + std::to_string(points) + " points over the solver's domain, more than 1e6: too short for it");
+    const auto n = static_cast<std::size_t>(points);
+    for (std::size_t k = 0; k < n; ++k) {
+      const double x = from + (to - from) * static_cast<double>(k) / static_cast<double>(n - 1);
+      pr.surface.x_m.push_back(x);
+      pr.surface.height_m.push_back(pr.amplitude_m * std::cos(2.0 * std::numbers::pi * x / pr.wavelength_m));
+    }
+  }
   return run;
 }
 
@@ -268,6 +297,36 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
   if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
 }
 
+// A line contact with [profile]: films and contacts node by node (ehl_line.h). Friction: the film's
+// traction over the nodes whose film is open (the contact nodes' pressure taken out, so that their
+// nanometre films are not sheared as oil) plus the boundary friction on the load the contacts carry.
+void solve_profile(const EhlRun& run, EhlSolve& out) {
+  nlohmann::json& j = out.summary;
+  const EhlRun::Profile& pr = *run.profile;
+  const double w = run.contact.load_per_length_N_per_m;
+  out.film = lub::solve_ehl_line(run.contact, pr.surface, run.lubricant, run.options);
+  out.converged = out.film.converged;
+  const double contact_load = out.film.contact_load_share * w;
+  double boundary = 0.0;
+  if (out.converged) {
+    lub::EhlLineResult open = out.film;
+    for (std::size_t i = 0; i < open.film_m.size(); ++i)
+      if (open.film_m[i] < pr.surface.contact_film_m) open.pressure_Pa[i] = 0.0;
+    out.traction = lub::ehl_line_traction(open, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating);
+    boundary = pr.boundary_friction_coefficient * contact_load;
+  }
+  const double film = out.traction.force_per_length_N_per_m;
+  j["regime"] = "mixed (node by node, lubrication/ehl_line.h: Hu & Zhu's unified model)";
+  j["contact"] = {{"contact_nodes", out.film.contact_nodes},
+                  {"contact_load_share", out.film.contact_load_share},
+                  {"contact_load_per_length_N_per_m", contact_load},
+                  {"boundary_friction_N_per_m", boundary},
+                  {"film_friction_N_per_m", film}};
+  // ehl.json's traction and friction coefficient are the whole contact's.
+  out.traction.force_per_length_N_per_m = film + boundary;
+  out.traction.friction_coefficient = (film + boundary) / w;
+}
+
 }  // namespace
 
 EhlSolve solve_ehl_run(const EhlRun& run) {
@@ -291,6 +350,8 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
     j["mixed"] = mixed_json(m, {m.film_load_per_length_N_per_m, m.asperity_load_per_length_N_per_m, m.boundary_friction_N_per_m,
                                 m.film_friction_N_per_m},
                             "per_length_N_per_m", "N_per_m");
+  } else if (run.profile) {
+    solve_profile(run, out);
   } else {
     out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
     out.converged = out.film.converged;
@@ -322,6 +383,11 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                  {"nodes", run.options.nodes}};
   j["inputs"].update(lubricant_inputs(run));
   if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
+  if (run.profile)
+    j["inputs"]["profile"] = {{"amplitude_m", run.profile->amplitude_m},
+                              {"wavelength_m", run.profile->wavelength_m},
+                              {"contact_film_m", run.profile->surface.contact_film_m},
+                              {"boundary_friction_coefficient", run.profile->boundary_friction_coefficient}};
   j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

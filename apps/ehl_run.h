@@ -37,12 +37,23 @@ struct EhlRun {
     double boundary_friction_coefficient = 0.0;
   };
   std::optional<Roughness> roughness;
+  // With [profile] (a line contact): a wavy stationary surface and its asperity contact, solved node by
+  // node (ehl_line.h, Hu & Zhu's unified model); the contact nodes shear at the boundary friction, the
+  // others as the film.
+  struct Profile {
+    lubrication::EhlLineRoughness surface;
+    double amplitude_m = 0.0, wavelength_m = 0.0;
+    double boundary_friction_coefficient = 0.0;
+  };
+  std::optional<Profile> profile;
 };
 
 // Reads and checks `path`: [contact] (geometry = "line" with load_per_length_N_per_m, or "point"
 // with load_N; radius, modulus, entrainment, and the sliding speed or the slide-to-roll ratio), [lubricant] (η0, α, law, compressible,
 // eyring_stress_Pa, the film's heating), optionally [roughness] (summit density, radius, standard
-// deviation and mean height, boundary friction coefficient) and [solver] (docs/lubrication.md).
+// deviation and mean height, boundary friction coefficient) or, for a line, [profile] (a waviness's
+// amplitude and wavelength, the boundary layers' thickness, boundary friction coefficient), and
+// [solver] (docs/lubrication.md).
 // Bad input is an InputError naming file, key and reason.
 EhlRun load_ehl_run(const std::filesystem::path& path);
 EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path);

@@ -125,3 +125,33 @@ endif()
 expect_refused(both_sliding "${rough_contact}sliding_speed_m_per_s = 0.01\n${rough_rest}" "contact.slide_to_roll_ratio")
 string(REPLACE "summit_height_m = 1e-7\n" "" no_height "${rough_rest}")
 expect_refused(no_height "${rough_contact}${no_height}" "roughness.summit_height_m")
+
+# With [profile]: a wavy stationary surface solved node by node (examples/ehl-wavy-pin.toml). Crawling,
+# every node of the Hertz strip is in contact, so the friction coefficient is the boundary friction;
+# the contact block splits the friction; the profile is the line's and needs a boundary friction.
+set(wavy_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1e-4\nslide_to_roll_ratio = 2.0\n")
+set(wavy_rest "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n[profile]\namplitude_m = 2.7e-8\nwavelength_m = 4.6e-5\nboundary_friction_coefficient = 0.1\n[solver]\nnodes = 401\n")
+file(WRITE ${WORK}/wavy.toml "${wavy_contact}${wavy_rest}")
+execute_process(COMMAND ${TRIBO} ehl ${WORK}/wavy.toml --out ${WORK}/out_wavy --summary-only RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, wavy pin, failed (${status}): ${out} ${err}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+c = s['contact']
+assert s['converged'], s['message']
+assert c['contact_load_share'] > 0.999 and c['contact_nodes'] > 100, c
+assert abs(c['contact_load_per_length_N_per_m'] - c['contact_load_share'] * 3e5) <= 1e-9 * 3e5, c
+assert abs(c['boundary_friction_N_per_m'] - 0.1 * c['contact_load_per_length_N_per_m']) <= 1e-9 * 3e4, c
+mu = (c['boundary_friction_N_per_m'] + c['film_friction_N_per_m']) / 3e5
+assert abs(s['friction_coefficient'] - mu) <= 1e-12 and abs(mu - 0.1) < 1e-3, (s['friction_coefficient'], mu)
+assert s['minimum_film_m'] < s['inputs']['profile']['contact_film_m'] == 5e-9, s
+" ${WORK}/out_wavy RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, wavy pin: ehl.json is not as documented: ${why}")
+endif()
+string(REPLACE "boundary_friction_coefficient = 0.1\n" "" no_fc "${wavy_rest}")
+expect_refused(wavy_no_fc "${wavy_contact}${no_fc}" "profile.boundary_friction_coefficient")
+expect_refused(wavy_point "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-5\nboundary_friction_coefficient = 0.1\n" "profile")
+expect_refused(wavy_and_rough "${rough_contact}${rough_rest}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-5\nboundary_friction_coefficient = 0.1\n" "profile")
