@@ -1,6 +1,7 @@
 // The reader and the solve of `tribo ehl` (see ehl_run.h).
 #include "apps/ehl_run.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -11,6 +12,7 @@
 #include "lubrication/reference/ehl_film.h"
 #include "lubrication/reference/ehl_point_film.h"
 #include "lubrication/viscosity.h"
+#include "numerics/format.h"
 
 namespace tribo::cli {
 
@@ -83,8 +85,8 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     run.roughness = rough;
   }
   if (auto pr = root.table("profile")) {
-    if (run.point) pr->fail("", "[profile] is a line contact's (geometry = \"line\")");
-    if (run.roughness) pr->fail("", "give [roughness] (load sharing) or [profile] (node by node), not both");
+    if (run.point) root.fail("profile", "is a line contact's (geometry = \"line\")");
+    if (run.roughness) root.fail("profile", "give [roughness] (load sharing) or [profile] (node by node), not both");
     EhlRun::Profile profile;
     profile.amplitude_m = pr->required_number("amplitude_m", Range::non_negative);
     profile.wavelength_m = pr->required_number("wavelength_m", Range::positive);
@@ -149,9 +151,14 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     const double b = lub::reference::hertz_line_half_width_m(run.contact.load_per_length_N_per_m, run.contact.reduced_radius_m,
                                                              run.contact.reduced_modulus_Pa);
     const double from = run.options.inlet_over_half_width * b - pr.wavelength_m, to = run.options.outlet_over_half_width * b + pr.wavelength_m;
+    const double spacing = (run.options.outlet_over_half_width - run.options.inlet_over_half_width) * b / (run.options.nodes - 1);
+    if (!(pr.wavelength_m >= 8.0 * spacing))
+      root.fail("profile.wavelength_m", numerics::shortest(pr.wavelength_m) + " m spans fewer than 8 of the solver's node spacings (" +
+                                            numerics::shortest(spacing) + " m): refine solver.nodes");
     const double points = std::ceil(64.0 * (to - from) / pr.wavelength_m) + 1.0;
-    if (!(points <= 1e6))
-      root.fail("profile.wavelength_m", "needs " + std::to_string(points) + " points over the solver's domain, more than 1e6: too short for it");
+    if (!std::isfinite(from) || !std::isfinite(to) || !(points <= 1e6))
+      root.fail("profile.wavelength_m", "the solver's domain would need " + numerics::shortest(points) +
+                                            " profile points (64 a wavelength), more than 1e6");
     const auto n = static_cast<std::size_t>(points);
     for (std::size_t k = 0; k < n; ++k) {
       const double x = from + (to - from) * static_cast<double>(k) / static_cast<double>(n - 1);
@@ -306,25 +313,29 @@ void solve_profile(const EhlRun& run, EhlSolve& out) {
   const double w = run.contact.load_per_length_N_per_m;
   out.film = lub::solve_ehl_line(run.contact, pr.surface, run.lubricant, run.options);
   out.converged = out.film.converged;
-  const double contact_load = out.film.contact_load_share * w;
-  double boundary = 0.0;
-  if (out.converged) {
-    lub::EhlLineResult open = out.film;
-    for (std::size_t i = 0; i < open.film_m.size(); ++i)
-      if (open.film_m[i] < pr.surface.contact_film_m) open.pressure_Pa[i] = 0.0;
-    out.traction = lub::ehl_line_traction(open, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating);
-    boundary = pr.boundary_friction_coefficient * contact_load;
-  }
-  const double film = out.traction.force_per_length_N_per_m;
   j["regime"] = "mixed (node by node, lubrication/ehl_line.h: Hu & Zhu's unified model)";
+  if (!out.converged) {  // an iterate, not a solution: no contact numbers
+    j["contact"] = {{"contact_nodes", nullptr}, {"contact_load_share", nullptr}, {"contact_load_per_length_N_per_m", nullptr},
+                    {"boundary_friction_N_per_m", nullptr}, {"film_friction_N_per_m", nullptr}};
+    return;
+  }
+  const double contact_load = out.film.contact_load_share * w;
+  lub::EhlLineResult open = out.film;
+  double contact_pressure = 0.0;
+  for (std::size_t i = 0; i < open.film_m.size(); ++i)
+    if (open.film_m[i] < pr.surface.contact_film_m) contact_pressure = std::max(contact_pressure, open.pressure_Pa[i]), open.pressure_Pa[i] = 0.0;
+  out.traction = lub::ehl_line_traction(open, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating);
+  const double boundary = pr.boundary_friction_coefficient * contact_load, film = out.traction.force_per_length_N_per_m;
   j["contact"] = {{"contact_nodes", out.film.contact_nodes},
                   {"contact_load_share", out.film.contact_load_share},
                   {"contact_load_per_length_N_per_m", contact_load},
                   {"boundary_friction_N_per_m", boundary},
                   {"film_friction_N_per_m", film}};
-  // ehl.json's traction and friction coefficient are the whole contact's.
+  // ehl.json's traction, friction coefficient and largest shear stress are the whole contact's (the
+  // temperature rise stays the film's: the contacts' flash heating is not modelled).
   out.traction.force_per_length_N_per_m = film + boundary;
   out.traction.friction_coefficient = (film + boundary) / w;
+  out.traction.max_shear_stress_Pa = std::max(out.traction.max_shear_stress_Pa, pr.boundary_friction_coefficient * contact_pressure);
 }
 
 }  // namespace

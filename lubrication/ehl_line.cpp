@@ -43,6 +43,7 @@ class LineProblem {
       mixed_ = true;
       for (int i = 0; i < n_; ++i) rough_(i) = profile_at(*rough, x_(i) * b_) / film_scale_m();
       floor_ = rough->contact_film_m / film_scale_m();
+      wedge_diagonal_ = 1.0;
     }
   }
 
@@ -105,7 +106,7 @@ class LineProblem {
     Eigen::VectorXd c(n_ - 2);
     for (int i = 1; i <= n_ - 2; ++i)
       c(i - 1) = 1.0 / (0.5 * (s.eps(i - 1) + 2.0 * s.eps(i) + s.eps(i + 1)) / (dx_ * dx_) +
-                        1.5 * s.rho(i) * std::abs(kernel_(i, i)) / dx_);
+                        wedge_diagonal_ * s.rho(i) * std::abs(kernel_(i, i)) / dx_);
     return c;
   }
 
@@ -185,6 +186,7 @@ class LineProblem {
   bool mixed_ = false;
   Eigen::VectorXd rough_;
   double floor_ = 0.0;
+  double wedge_diagonal_ = 1.5;  // the upwind wedge's weight on its own node: 3/2 second order, 1 first
 
   // The profile's height at x (m), linear between its points, 0 outside them.
   static double profile_at(const EhlLineRoughness& r, double x) {

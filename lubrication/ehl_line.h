@@ -24,7 +24,8 @@
 // where the film is stiff, i.e. at high loads where relaxation schemes stall). The cavitation
 // complementarity P ≥ 0, R ≤ 0, P R = 0 is an NCP equation φ(P, −c R) = 0 (complementarity.h), each
 // Reynolds row scaled by c = 1/|∂R/∂P| on its diagonal so that it reads as a pressure. Each step is
-// limited so that no film changes by more than half of itself, and a backtracking line search asks
+// limited so that no film changes by more than half of itself (with roughness: a closing film may fall
+// to H_c/2, a film near H_c open by 2 H_c, ehl_newton.h), and a backtracking line search asks
 // for a decrease of ‖F‖₂ (pressures are not clipped at zero: φ keeps them there at convergence, and
 // clipping a step breaks the line search's descent). Where Newton does not converge
 // from the start (a semi-ellipse of the load's area, the central film of Martin or Pan–Hamrock), it

@@ -148,13 +148,16 @@ SolveOutcome solve_with_continuation(const Problem& problem, double lambda, cons
   if (out.newton.converged) return out;
   const double log_target = std::log(lambda);
   // One continuation: λ moved away from the target by decades (`away` = −1: a thinner film, +1 a
-  // thicker one) until Newton converges, then back; true when it reached the target (u its answer).
+  // thicker one) until Newton converges, then back, within `budget` solves (shared by both
+  // directions); true when it reached the target (u its answer).
+  const double floor = problem.contact_floor();
+  int budget = o.max_continuation_steps;
   auto continuation = [&](double away, std::string& why) {
     double log_current = log_target, step = std::log(10.0);
     Eigen::VectorXd anchor;
     bool anchored = false, reached = false;
     int steps = 0;
-    while (steps < o.max_continuation_steps && !anchored) {
+    while (steps < budget && !anchored) {
       ++steps;
       log_current += away * step;
       anchor = start;
@@ -162,7 +165,7 @@ SolveOutcome solve_with_continuation(const Problem& problem, double lambda, cons
       out.iterations += n.iterations;
       anchored = n.converged;
     }
-    while (anchored && !reached && steps < o.max_continuation_steps) {
+    while (anchored && !reached && steps < budget) {
       ++steps;
       const double next = away > 0.0 ? std::max(log_target, log_current - step) : std::min(log_target, log_current + step);
       Eigen::VectorXd trial = anchor;
@@ -178,9 +181,14 @@ SolveOutcome solve_with_continuation(const Problem& problem, double lambda, cons
       }
     }
     out.continuation_steps += steps;
+    budget -= steps;
     if (reached) {
       u = anchor;
-    } else {
+    } else if (floor == 0.0) {  // (the smooth contact's words, as before mixed contacts)
+      why += anchored ? " (continuation in λ from a thinner film stopped at λ = " + numerics::shortest(std::exp(log_current)) +
+                            ", the target " + numerics::shortest(lambda) + ")"
+                      : " (and at every λ of the continuation)";
+    } else if (steps > 0) {
       why += anchored ? std::string(" (continuation in λ from a ") + (away > 0.0 ? "thicker" : "thinner") + " film stopped at λ = " +
                             numerics::shortest(std::exp(log_current)) + ", the target " + numerics::shortest(lambda) + ")"
                       : std::string(" (and at every λ of the continuation from a ") + (away > 0.0 ? "thicker" : "thinner") + " film)";
@@ -191,7 +199,6 @@ SolveOutcome solve_with_continuation(const Problem& problem, double lambda, cons
   // With asperity contact (contact_floor() > 0) a film closing onto the surfaces is what a thinner
   // film cannot lead Newton to: the continuation is tried both ways, first from a thicker film where
   // the start's film is within 10 H_c of closing.
-  const double floor = problem.contact_floor();
   const double first = floor > 0.0 && problem.nodal(start, lambda).h.minCoeff() < 10.0 * floor ? 1.0 : -1.0;
   if (!continuation(first, why) && floor > 0.0) continuation(-first, why);
   if (!out.newton.converged) out.newton.why = why;

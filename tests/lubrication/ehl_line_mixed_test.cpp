@@ -16,8 +16,8 @@ namespace {
 
 using namespace steel_rollers;
 
-// Crawling (1 µm/s at 3e5 N/m; the smooth EHL film there would be ≈ 0.4 nm, a tenth of the
-// boundary layers' 5 nm): every node of the Hertz strip is in contact and carries Hertz's
+// Crawling (1 µm/s at 3e5 N/m; Pan–Hamrock's smooth film there is ≈ 0.02 nm, against the boundary
+// layers' 5 nm): every node of the Hertz strip is in contact and carries Hertz's
 // semi-ellipse — the dry contact of the same cylinder — to 1 % of p_H inside |x| < 0.9 b (the grid
 // rounds the square-root edge; measured 0.2 %).
 TEST(EhlLineMixed, SmoothCylinderCrawlingOnItsBoundaryLayersIsHertzsDryContact) {
