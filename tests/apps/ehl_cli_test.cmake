@@ -13,12 +13,16 @@ function(expect_refused name text key)
     message(FATAL_ERROR "tribo ehl, ${name}: expected status 2 naming ${key} and no output, got ${status}: ${err}")
   endif()
 endfunction()
+# Config `text` must run: written to NAME.toml, solved into out_NAME (ARGN: more options).
+function(run_ehl name what text)
+  file(WRITE ${WORK}/${name}.toml "${text}")
+  execute_process(COMMAND ${TRIBO} ehl ${WORK}/${name}.toml --out ${WORK}/out_${name} ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "tribo ehl, ${what}, failed (${status}): ${out} ${err}")
+  endif()
+endfunction()
 set(contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e6\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1.0\nsliding_speed_m_per_s = 0.05\n")
-file(WRITE ${WORK}/ehl.toml "${contact}[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n")
-execute_process(COMMAND ${TRIBO} ehl ${WORK}/ehl.toml --out ${WORK}/out RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "tribo ehl failed (${status}): ${out} ${err}")
-endif()
+run_ehl(ehl "line contact" "${contact}[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n")
 execute_process(COMMAND ${PYTHON} -c "
 import json, math, sys
 import numpy as np
@@ -37,7 +41,7 @@ x, p, h = (np.load(d + '/' + s['fields'][k]) for k in ('x_m', 'pressure_Pa', 'fi
 assert x.shape == p.shape == h.shape == (s['inputs']['nodes'],), (x.shape, p.shape, h.shape)
 assert abs(np.trapz(p, x) / 3e6 - 1) < 1e-9, np.trapz(p, x)  # the load balance, from the written profile
 assert s['provenance']['config_hash'], s['provenance']
-" ${WORK}/out RESULT_VARIABLE check ERROR_VARIABLE why)
+" ${WORK}/out_ehl RESULT_VARIABLE check ERROR_VARIABLE why)
 if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo ehl: ehl.json or the profiles are not as documented: ${why}")
 endif()
@@ -50,11 +54,7 @@ expect_refused(point "${point}[lubricant]\neyring_stress_Pa = 5e6\n" "contact.lo
 # A ball on a disc (geometry = "point"): ehl.json with the films, the Hertz circle, Hamrock and
 # Dowson's fits and the traction; the fields as (nx, ny) arrays whose integral is the load.
 set(ball "[contact]\ngeometry = \"point\"\nload_N = 20\nreduced_radius_m = 9.525e-3\nreduced_modulus_Pa = 2.308e11\nmean_speed_m_per_s = 0.5\nslide_to_roll_ratio = 0.05\n[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n")
-file(WRITE ${WORK}/ball.toml "${ball}[solver]\nnodes_x = 31\nnodes_y = 25\n")
-execute_process(COMMAND ${TRIBO} ehl ${WORK}/ball.toml --out ${WORK}/out_ball RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, point contact, failed (${status}): ${out} ${err}")
-endif()
+run_ehl(ball "point contact" "${ball}[solver]\nnodes_x = 31\nnodes_y = 25\n")
 execute_process(COMMAND ${PYTHON} -c "
 import json, math, sys
 import numpy as np
@@ -75,11 +75,7 @@ if(NOT check EQUAL 0)
 endif()
 # The rough ball: the mixed regime over the Hertz circle (lubrication/mixed_point.h), its load split
 # and friction as the line's.
-file(WRITE ${WORK}/ball_rough.toml "${ball}[roughness]\nsummit_density_per_m2 = 4e10\nsummit_radius_m = 1e-5\nsummit_std_m = 1e-7\nsummit_height_m = 1e-7\nboundary_friction_coefficient = 0.1\n[solver]\nnodes_x = 31\nnodes_y = 25\n")
-execute_process(COMMAND ${TRIBO} ehl ${WORK}/ball_rough.toml --out ${WORK}/out_ball_rough --summary-only RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, rough ball, failed (${status}): ${out} ${err}")
-endif()
+run_ehl(ball_rough "rough ball" "${ball}[roughness]\nsummit_density_per_m2 = 4e10\nsummit_radius_m = 1e-5\nsummit_std_m = 1e-7\nsummit_height_m = 1e-7\nboundary_friction_coefficient = 0.1\n[solver]\nnodes_x = 31\nnodes_y = 25\n" --summary-only)
 execute_process(COMMAND ${PYTHON} -c "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
@@ -101,11 +97,7 @@ expect_refused(ball_nodes "${ball}[solver]\nnodes = 41\n" "solver.nodes")
 # film's traction, over the whole load; the sliding speed may be given as a slide-to-roll ratio.
 set(rough_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 1e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 0.3\nslide_to_roll_ratio = 0.05\n")
 set(rough_rest "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n[roughness]\nsummit_density_per_m2 = 4e10\nsummit_radius_m = 1e-5\nsummit_std_m = 1e-7\nsummit_height_m = 1e-7\nboundary_friction_coefficient = 0.1\n[solver]\nnodes = 151\n")
-file(WRITE ${WORK}/rough.toml "${rough_contact}${rough_rest}")
-execute_process(COMMAND ${TRIBO} ehl ${WORK}/rough.toml --out ${WORK}/out_rough --summary-only RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, rough contact, failed (${status}): ${out} ${err}")
-endif()
+run_ehl(rough "rough contact" "${rough_contact}${rough_rest}" --summary-only)
 execute_process(COMMAND ${PYTHON} -c "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
@@ -131,11 +123,7 @@ expect_refused(no_height "${rough_contact}${no_height}" "roughness.summit_height
 # the contact block splits the friction; the profile is the line's and needs a boundary friction.
 set(wavy_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1e-4\nslide_to_roll_ratio = 2.0\n")
 set(wavy_rest "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n[profile]\namplitude_m = 2.7e-8\nwavelength_m = 4.6e-5\nboundary_friction_coefficient = 0.1\n[solver]\nnodes = 401\n")
-file(WRITE ${WORK}/wavy.toml "${wavy_contact}${wavy_rest}")
-execute_process(COMMAND ${TRIBO} ehl ${WORK}/wavy.toml --out ${WORK}/out_wavy --summary-only RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, wavy pin, failed (${status}): ${out} ${err}")
-endif()
+run_ehl(wavy "wavy pin" "${wavy_contact}${wavy_rest}" --summary-only)
 execute_process(COMMAND ${PYTHON} -c "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
