@@ -305,8 +305,8 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
 }
 
 // A line contact with [profile]: films and contacts node by node (ehl_line.h). Friction: the film's
-// traction over the nodes whose film is open (the contact nodes' pressure taken out, so that their
-// nanometre films are not sheared as oil) plus the boundary friction on the load the contacts carry.
+// traction over the nodes whose film is open (the solver's contact nodes' pressure taken out, so that
+// their nanometre films are not sheared as oil) plus the boundary friction on the load they carry.
 void solve_profile(const EhlRun& run, EhlSolve& out) {
   nlohmann::json& j = out.summary;
   const EhlRun::Profile& pr = *run.profile;
@@ -323,7 +323,7 @@ void solve_profile(const EhlRun& run, EhlSolve& out) {
   lub::EhlLineResult open = out.film;
   double contact_pressure = 0.0;
   for (std::size_t i = 0; i < open.film_m.size(); ++i)
-    if (open.film_m[i] < pr.surface.contact_film_m) contact_pressure = std::max(contact_pressure, open.pressure_Pa[i]), open.pressure_Pa[i] = 0.0;
+    if (open.in_contact[i]) contact_pressure = std::max(contact_pressure, open.pressure_Pa[i]), open.pressure_Pa[i] = 0.0;
   out.traction = lub::ehl_line_traction(open, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating);
   const double boundary = pr.boundary_friction_coefficient * contact_load, film = out.traction.force_per_length_N_per_m;
   j["contact"] = {{"contact_nodes", out.film.contact_nodes},

@@ -40,10 +40,8 @@ class LineProblem {
       }
     rough_ = Eigen::VectorXd::Zero(n_);
     if (rough) {
-      mixed_ = true;
       for (int i = 0; i < n_; ++i) rough_(i) = profile_at(*rough, x_(i) * b_) / film_scale_m();
       floor_ = rough->contact_film_m / film_scale_m();
-      wedge_diagonal_ = 1.0;
     }
   }
 
@@ -56,6 +54,7 @@ class LineProblem {
   double hertz_pressure_Pa() const { return ph_; }
   double film_scale_m() const { return b_ * b_ / radius_; }  // h = H b²/R
   double contact_floor() const { return floor_; }             // H_c, 0 without roughness
+  bool rough() const { return floor_ > 0.0; }                  // (a profile's H_c is positive)
 
   Eigen::VectorXd pressures(const Eigen::VectorXd& u) const {
     Eigen::VectorXd p = Eigen::VectorXd::Zero(n_);
@@ -106,7 +105,7 @@ class LineProblem {
     Eigen::VectorXd c(n_ - 2);
     for (int i = 1; i <= n_ - 2; ++i)
       c(i - 1) = 1.0 / (0.5 * (s.eps(i - 1) + 2.0 * s.eps(i) + s.eps(i + 1)) / (dx_ * dx_) +
-                        wedge_diagonal_ * s.rho(i) * std::abs(kernel_(i, i)) / dx_);
+                        wedge_diagonal() * s.rho(i) * std::abs(kernel_(i, i)) / dx_);
     return c;
   }
 
@@ -129,7 +128,7 @@ class LineProblem {
       const double poiseuille = (ep * gp - em * gm) / (dx_ * dx_);
       // Second-order upwind; first order with roughness, where films close: extrapolated from a
       // converging inlet over two nodes, the transport would drive a contact's film through zero.
-      const bool second_order = i >= 2 && !mixed_;
+      const bool second_order = i >= 2 && !rough();
       const double wedge = second_order ? (3.0 * w(i) - 4.0 * w(i - 1) + w(i - 2)) / (2.0 * dx_) : (w(i) - w(i - 1)) / dx_;
       const int row = i - 1;
       const double scale = c(row);
@@ -182,11 +181,12 @@ class LineProblem {
   Eigen::VectorXd x_;
   Eigen::MatrixXd kernel_;
   // Roughness: the stationary surface's heights r at the nodes (H units, 0 for smooth surfaces) and
-  // the boundary layers' H_c.
-  bool mixed_ = false;
+  // the boundary layers' H_c (0 for smooth surfaces).
   Eigen::VectorXd rough_;
   double floor_ = 0.0;
-  double wedge_diagonal_ = 1.5;  // the upwind wedge's weight on its own node: 3/2 second order, 1 first
+
+  // The upwind wedge's weight on its own node: 3/2 second order, 1 first (with roughness).
+  double wedge_diagonal() const { return rough() ? 1.0 : 1.5; }
 
   // The profile's height at x (m), linear between its points, 0 outside them.
   static double profile_at(const EhlLineRoughness& r, double x) {
@@ -290,8 +290,9 @@ EhlLineResult solve_line(const EhlLineContact& contact, const EhlLineRoughness* 
   if (roughness) {
     const double closed = problem.contact_floor();
     double carried = 0.0;
+    result.in_contact.assign(static_cast<std::size_t>(n), false);
     for (int i = 1; i <= np; ++i)
-      if (h(i) < closed) ++result.contact_nodes, carried += p(i);
+      if (h(i) < closed) result.in_contact[static_cast<std::size_t>(i)] = true, ++result.contact_nodes, carried += p(i);
     result.contact_load_share = problem.dx() * carried / (0.5 * kPi);
   }
   result.message = outcome.converged ? "converged: ‖F‖∞ = " + shortest(outcome.residual) + " after " +

@@ -96,8 +96,9 @@ struct EhlLineResult {
   double max_pressure_Pa = 0.0;
   double hertz_half_width_m = 0.0, hertz_pressure_Pa = 0.0;
   double load_balance_error = 0.0;  // (∫p dx − w)/w
-  // With roughness: the nodes where the surfaces touch (film below contact_film_m) and the share
-  // of the load they carry; 0 without.
+  // With roughness: the nodes where the surfaces touch (film below contact_film_m; in_contact by
+  // node, empty without), their count and the share of the load they carry (0 without).
+  std::vector<bool> in_contact;
   int contact_nodes = 0;
   double contact_load_share = 0.0;
   bool converged = false;

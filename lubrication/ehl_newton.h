@@ -184,14 +184,12 @@ SolveOutcome solve_with_continuation(const Problem& problem, double lambda, cons
     budget -= steps;
     if (reached) {
       u = anchor;
-    } else if (floor == 0.0) {  // (the smooth contact's words, as before mixed contacts)
-      why += anchored ? " (continuation in λ from a thinner film stopped at λ = " + numerics::shortest(std::exp(log_current)) +
+    } else if (floor == 0.0 || steps > 0) {
+      // A smooth contact has one direction, which its words leave unnamed where nothing anchored.
+      const std::string film = away > 0.0 ? "thicker" : "thinner";
+      why += anchored ? " (continuation in λ from a " + film + " film stopped at λ = " + numerics::shortest(std::exp(log_current)) +
                             ", the target " + numerics::shortest(lambda) + ")"
-                      : " (and at every λ of the continuation)";
-    } else if (steps > 0) {
-      why += anchored ? std::string(" (continuation in λ from a ") + (away > 0.0 ? "thicker" : "thinner") + " film stopped at λ = " +
-                            numerics::shortest(std::exp(log_current)) + ", the target " + numerics::shortest(lambda) + ")"
-                      : std::string(" (and at every λ of the continuation from a ") + (away > 0.0 ? "thicker" : "thinner") + " film)";
+                      : " (and at every λ of the continuation" + (floor == 0.0 ? std::string() : " from a " + film + " film") + ")";
     }
     return reached;
   };
