@@ -34,7 +34,7 @@ void run_ehl(const EhlArgs& args) {
   const std::filesystem::path dir(args.out);
   const EhlSolve solved = solve_ehl_run(run);
   nlohmann::json j = solved.summary;
-  j["provenance"] = provenance_json(args.config);
+  j["provenance"] = provenance_json(args.config, run.input_files);
   if (!args.summary_only && solved.point_film) {
     const lubrication::EhlPointResult& f = *solved.point_film;
     j["fields"] = {{"x_m", "x_m.npy"},
@@ -94,7 +94,7 @@ void run_ehl(const EhlArgs& args) {
 void add_ehl_command(CLI::App& app) {
   auto args = std::make_shared<EhlArgs>();
   CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line or point contact: film, pressure and traction (TOML config)");
-  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime by load sharing or, for a line, [profile] for it node by node, [solver])")->required();
+  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime by load sharing or, for a line, [profile] (a waviness or a measured trace) for it node by node, [solver])")->required();
   cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy; a point contact y_m.npy too)")->capture_default_str();
   CLI::Option* plot = cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
   add_summary_only_flag(cmd, args->summary_only, "ehl.json")->excludes(plot);

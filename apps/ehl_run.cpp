@@ -6,9 +6,12 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 #include "apps/config.h"
+#include "contact/profile.h"
+#include "contact/surface_io.h"
 #include "lubrication/reference/ehl_film.h"
 #include "lubrication/reference/ehl_point_film.h"
 #include "lubrication/viscosity.h"
@@ -17,6 +20,80 @@
 namespace tribo::cli {
 
 namespace lub = tribo::lubrication;
+
+namespace {
+
+// [profile] file: a measured trace — one line of heights along the entrainment direction (a stylus
+// profile, or the column `line` of a map, rows along x) — read and levelled; placed on the solver's
+// domain once the node spacing is known (place_measured_profile).
+void read_measured_profile(ConfigTable& pr, EhlRun::Profile& profile) {
+  profile.file = pr.input_file("file");
+  const double scale = pr.number("height_scale", 1.0, Range::positive);
+  const contact::Topography topo = input_guard(pr, "file", [&] { return contact::read_topography(profile.file, scale); });
+  const Eigen::Index rows = topo.heights_m.rows(), cols = topo.heights_m.cols();
+  const bool along_y = rows == 1 && cols > 1;  // one row of numbers: a trace written across
+  Eigen::ArrayXd z;
+  double length_m = 0.0;
+  if (along_y) {
+    z = topo.heights_m.row(0).transpose(), length_m = topo.ly_m;
+  } else if (cols == 1 || pr.has("line")) {
+    const long long line = cols == 1 ? 0 : pr.integer("line", 0, 0, cols - 1);
+    z = topo.heights_m.col(static_cast<Eigen::Index>(line)), length_m = topo.lx_m;
+  } else {
+    pr.fail("line", profile.file.string() + " is a " + std::to_string(rows) + " x " + std::to_string(cols) +
+                        " map: name the column whose profile along x (the rows) the contact sees, 0 … " + std::to_string(cols - 1));
+  }
+  const std::optional<double> spacing = pr.optional_number("spacing_m", Range::positive);
+  if (length_m > 0.0 && spacing && std::abs(*spacing * static_cast<double>(z.size()) - length_m) > 1e-9 * length_m)
+    pr.fail("spacing_m", "disagrees with " + profile.file.string() + "'s own length " + numerics::shortest(length_m) + " m over " +
+                             std::to_string(z.size()) + " samples");
+  if (length_m == 0.0 && !spacing) pr.fail("file", profile.file.string() + " gives no lateral size: set spacing_m");
+  profile.spacing_m = length_m > 0.0 ? length_m / static_cast<double>(z.size()) : *spacing;
+  if (z.size() < 3) pr.fail("file", profile.file.string() + " holds " + std::to_string(z.size()) + " samples: a profile needs more");
+  profile.levelled_m = contact::level_profile(z);
+  profile.centre_m = pr.optional_number("centre_m", Range::non_negative);
+  profile.cutoff_m = pr.optional_number("cutoff_m", Range::positive);
+}
+
+// The measured trace filtered at the cut-off (default: 8 node spacings, the shortest wavelength a
+// waviness may have) and its samples over the domain [from, to] (m from the Hertz centre, a sample
+// beyond either end), the trace's point centre_m at x = 0 (default: the domain in the middle of the
+// filtered part).
+void place_measured_profile(const ConfigTable& root, double from, double to, double node_spacing, EhlRun::Profile& pr) {
+  const double cutoff = pr.cutoff_m.value_or(8.0 * node_spacing);
+  if (!(cutoff >= 8.0 * node_spacing * (1.0 - 1e-12)))
+    root.fail("profile.cutoff_m", numerics::shortest(cutoff) + " m passes wavelengths the solver's nodes cannot resolve: at least 8 node "
+                                  "spacings (" + numerics::shortest(8.0 * node_spacing) + " m), or refine solver.nodes");
+  contact::FilteredProfile f;
+  try {
+    f = contact::gaussian_profile_filter(pr.levelled_m, pr.spacing_m, cutoff);
+  } catch (const std::invalid_argument& e) {
+    root.fail("profile.file", pr.file.string() + ": " + e.what());
+  }
+  const double s = pr.spacing_m, first = static_cast<double>(f.first) * s, last = first + static_cast<double>(f.height_m.size() - 1) * s;
+  const double centre = pr.centre_m.value_or(0.5 * (first + last) - 0.5 * (from + to));  // the domain in the middle
+  if (!(centre + from >= first && centre + to <= last))
+    root.fail("profile.centre_m", "the solver's domain, " + numerics::shortest(to - from) + " m about " + numerics::shortest(centre) +
+                                      " m of the trace, leaves the part the filter gives (" + numerics::shortest(first) + " … " +
+                                      numerics::shortest(last) + " m of " + pr.file.string() +
+                                      "): a longer trace, another centre_m, or a shorter domain");
+  pr.cutoff_m = cutoff, pr.centre_m = centre;
+  double sum = 0.0, sum2 = 0.0, fsum = 0.0, fsum2 = 0.0;
+  int inside = 0;
+  for (Eigen::Index k = 0; k < f.height_m.size(); ++k) {
+    const double x = first + static_cast<double>(k) * s - centre;
+    if (x < from - s || x > to + s) continue;
+    pr.surface.x_m.push_back(x);
+    pr.surface.height_m.push_back(f.height_m(k));
+    if (x < from || x > to) continue;
+    const double z = pr.levelled_m(f.first + k), zf = f.height_m(k);
+    sum += z, sum2 += z * z, fsum += zf, fsum2 += zf * zf, ++inside;
+  }
+  const auto rq = [&](double s1, double s2) { return std::sqrt(std::max(0.0, s2 / inside - (s1 / inside) * (s1 / inside))); };
+  pr.rq_m = rq(sum, sum2), pr.filtered_rq_m = rq(fsum, fsum2);
+}
+
+}  // namespace
 
 EhlRun load_ehl_run(const std::filesystem::path& path) { return load_ehl_run(parse_toml_file(path), path); }
 
@@ -88,8 +165,14 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     if (run.point) root.fail("profile", "is a line contact's (geometry = \"line\")");
     if (run.roughness) root.fail("profile", "give [roughness] (load sharing) or [profile] (node by node), not both");
     EhlRun::Profile profile;
-    profile.amplitude_m = pr->required_number("amplitude_m", Range::non_negative);
-    profile.wavelength_m = pr->required_number("wavelength_m", Range::positive);
+    if (pr->has("file")) {
+      for (const char* key : {"amplitude_m", "wavelength_m"})
+        if (pr->has(key)) pr->fail(key, "give a waviness (amplitude_m, wavelength_m) or a measured trace (file), not both");
+      read_measured_profile(*pr, profile);
+    } else {
+      profile.amplitude_m = pr->required_number("amplitude_m", Range::non_negative);
+      profile.wavelength_m = pr->required_number("wavelength_m", Range::positive);
+    }
     profile.surface.contact_film_m = pr->number("contact_film_m", profile.surface.contact_film_m, Range::positive);
     profile.boundary_friction_coefficient = pr->required_number("boundary_friction_coefficient", Range::non_negative);
     pr->finish();
@@ -145,13 +228,18 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   }
   if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
   if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
+  run.input_files = root.input_files();
   if (run.profile) {
-    // The waviness a cos(2π x/λ) sampled over the solver's domain, 64 points a wavelength.
     EhlRun::Profile& pr = *run.profile;
     const double b = lub::reference::hertz_line_half_width_m(run.contact.load_per_length_N_per_m, run.contact.reduced_radius_m,
                                                              run.contact.reduced_modulus_Pa);
-    const double from = run.options.inlet_over_half_width * b - pr.wavelength_m, to = run.options.outlet_over_half_width * b + pr.wavelength_m;
     const double spacing = (run.options.outlet_over_half_width - run.options.inlet_over_half_width) * b / (run.options.nodes - 1);
+    if (!pr.file.empty()) {
+      place_measured_profile(root, run.options.inlet_over_half_width * b, run.options.outlet_over_half_width * b, spacing, pr);
+      return run;
+    }
+    // The waviness a cos(2π x/λ) sampled over the solver's domain, 64 points a wavelength.
+    const double from = run.options.inlet_over_half_width * b - pr.wavelength_m, to = run.options.outlet_over_half_width * b + pr.wavelength_m;
     if (!(pr.wavelength_m >= 8.0 * spacing))
       root.fail("profile.wavelength_m", numerics::shortest(pr.wavelength_m) + " m spans fewer than 8 of the solver's node spacings (" +
                                             numerics::shortest(spacing) + " m): refine solver.nodes");
@@ -304,6 +392,24 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
   if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
 }
 
+// ehl.json's inputs.profile: the waviness, or the measured trace and what the filter kept of it.
+nlohmann::json profile_inputs(const EhlRun::Profile& pr) {
+  nlohmann::json j;
+  if (pr.file.empty()) {
+    j = {{"amplitude_m", pr.amplitude_m}, {"wavelength_m", pr.wavelength_m}};
+  } else {
+    j = {{"file", pr.file.string()},
+         {"sample_spacing_m", pr.spacing_m},
+         {"cutoff_m", *pr.cutoff_m},
+         {"centre_m", *pr.centre_m},
+         {"rq_m", pr.rq_m},
+         {"filtered_rq_m", pr.filtered_rq_m}};
+  }
+  j["contact_film_m"] = pr.surface.contact_film_m;
+  j["boundary_friction_coefficient"] = pr.boundary_friction_coefficient;
+  return j;
+}
+
 // A line contact with [profile]: films and contacts node by node (ehl_line.h). Friction: the film's
 // traction over the nodes whose film is open (the solver's contact nodes' pressure taken out, so that
 // their nanometre films are not sheared as oil) plus the boundary friction on the load they carry.
@@ -394,11 +500,7 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                  {"nodes", run.options.nodes}};
   j["inputs"].update(lubricant_inputs(run));
   if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
-  if (run.profile)
-    j["inputs"]["profile"] = {{"amplitude_m", run.profile->amplitude_m},
-                              {"wavelength_m", run.profile->wavelength_m},
-                              {"contact_film_m", run.profile->surface.contact_film_m},
-                              {"boundary_friction_coefficient", run.profile->boundary_friction_coefficient}};
+  if (run.profile) j["inputs"]["profile"] = profile_inputs(*run.profile);
   j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
 }

@@ -5,7 +5,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
@@ -40,19 +42,28 @@ struct EhlRun {
   // With [profile] (a line contact): a wavy stationary surface and its asperity contact, solved node by
   // node (ehl_line.h, Hu & Zhu's unified model); the contact nodes shear at the boundary friction, the
   // others as the film.
+  // The profile is a waviness a cos(2π x/λ) or a measured trace (`file`): levelled, Gaussian-filtered
+  // at `cutoff_m` (contact/profile.h) and placed with its point `centre_m` at the Hertz centre.
   struct Profile {
-    lubrication::EhlLineRoughness surface;
+    lubrication::EhlLineRoughness surface;  // the samples the solver interpolates
     double amplitude_m = 0.0, wavelength_m = 0.0;
     double boundary_friction_coefficient = 0.0;
+    std::filesystem::path file;     // empty for a waviness
+    Eigen::ArrayXd levelled_m;      // the measured trace, levelled
+    double spacing_m = 0.0;         // its sample spacing
+    std::optional<double> centre_m, cutoff_m;  // as given (else the domain mid-trace, 8 node spacings)
+    double rq_m = 0.0, filtered_rq_m = 0.0;  // Rq over the solver's domain: as measured (levelled), as solved
   };
   std::optional<Profile> profile;
+  std::vector<std::filesystem::path> input_files;  // files the config names (a measured profile)
 };
 
 // Reads and checks `path`: [contact] (geometry = "line" with load_per_length_N_per_m, or "point"
 // with load_N; radius, modulus, entrainment, and the sliding speed or the slide-to-roll ratio), [lubricant] (η0, α, law, compressible,
 // eyring_stress_Pa, the film's heating), optionally [roughness] (summit density, radius, standard
 // deviation and mean height, boundary friction coefficient) or, for a line, [profile] (a waviness's
-// amplitude and wavelength, the boundary layers' thickness, boundary friction coefficient), and
+// amplitude and wavelength or a measured trace's file, the boundary layers' thickness, boundary
+// friction coefficient), and
 // [solver] (docs/lubrication.md).
 // Bad input is an InputError naming file, key and reason.
 EhlRun load_ehl_run(const std::filesystem::path& path);

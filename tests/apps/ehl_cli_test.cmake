@@ -145,3 +145,28 @@ expect_refused(wavy_point "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 
 expect_refused(wavy_and_rough "${rough_contact}${rough_rest}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-5\nboundary_friction_coefficient = 0.1\n" "profile")
 string(REPLACE "wavelength_m = 4.6e-5" "wavelength_m = 4e-6" short_wave "${wavy_rest}")
 expect_refused(wavy_short "${wavy_contact}${short_wave}" "profile.wavelength_m")
+
+# [profile] file: examples/ehl-measured-pin.toml, the stylus trace of tests/contact/data/topography
+# as the pin's profile. At 1 mm/s the film has lifted it (every node open, the film's Eyring traction
+# alone); the trace's Rq over the domain as measured and as filtered; the trace among provenance's
+# inputs with its hash.
+execute_process(COMMAND ${TRIBO} ehl ${EXAMPLES}/ehl-measured-pin.toml --out ${WORK}/out_measured --summary-only
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, measured pin, failed (${status}): ${out} ${err}")
+endif()
+execute_process(COMMAND ${PYTHON} -c "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+p, c = s['inputs']['profile'], s['contact']
+assert s['converged'], s['message']
+assert c['contact_nodes'] == 0 and c['boundary_friction_N_per_m'] == 0.0, c
+assert 0.03 < s['friction_coefficient'] < 0.08, s['friction_coefficient']
+assert p['file'].endswith('dektak-1.csv') and abs(p['sample_spacing_m'] - 1.5e-3 / 9600) < 1e-15, p
+assert 0.0 < p['filtered_rq_m'] <= p['rq_m'] < 1e-6, p
+inputs = s['provenance']['inputs']
+assert len(inputs) == 2 and inputs[1]['path'].endswith('dektak-1.csv') and len(inputs[1]['hash']) == 16, inputs
+" ${WORK}/out_measured RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, measured pin: ehl.json is not as documented: ${why}")
+endif()

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "contact/profile.h"
 #include "contact/surface.h"
 #include "contact/surface_io.h"
 
@@ -411,11 +412,7 @@ TEST(MeasuredTopography, StylusProfileHasTheInstrumentsRqBetweenItsCursors) {
   const double dx = t.lx_m / 9600;
   const auto first = static_cast<Eigen::Index>(std::ceil(468e-6 / dx)), last = static_cast<Eigen::Index>(std::floor(733e-6 / dx));
   const Eigen::Index n = last - first + 1;
-  const Eigen::ArrayXd z = t.heights_m.col(0).segment(first, n);
-  const Eigen::ArrayXd x = Eigen::ArrayXd::LinSpaced(n, 0.0, static_cast<double>(n - 1));
-  const double xm = x.mean(), zm = z.mean();
-  const double slope = ((x - xm) * (z - zm)).sum() / (x - xm).square().sum();
-  const Eigen::ArrayXXd levelled = z - zm - slope * (x - xm);
+  const Eigen::ArrayXXd levelled = level_profile(t.heights_m.col(0).segment(first, n));
   const SurfaceStatistics s = surface_statistics(levelled, static_cast<double>(n) * dx, dx);
   EXPECT_NEAR(s.rq_m / 0.01143e-6, 1.0, 0.005);
   EXPECT_NEAR(s.ra_m / 0.00525e-6, 1.0, 0.005);
