@@ -60,6 +60,9 @@ void read_measured_profile(ConfigTable& pr, EhlRun::Profile& profile) {
 // beyond either end), the trace's point centre_m at x = 0 (default: the domain in the middle of the
 // filtered part).
 void place_measured_profile(const ConfigTable& root, double from, double to, double node_spacing, EhlRun::Profile& pr) {
+  if (!(pr.spacing_m <= node_spacing))
+    root.fail("profile.file", pr.file.string() + " is sampled " + numerics::shortest(pr.spacing_m) + " m apart, coarser than the solver's " +
+                                  numerics::shortest(node_spacing) + " m node spacing: a finer trace, or fewer solver.nodes");
   const double cutoff = pr.cutoff_m.value_or(8.0 * node_spacing);
   if (!(cutoff >= 8.0 * node_spacing * (1.0 - 1e-12)))
     root.fail("profile.cutoff_m", numerics::shortest(cutoff) + " m passes wavelengths the solver's nodes cannot resolve: at least 8 node "

@@ -97,7 +97,8 @@ TEST(EhlMeasuredProfile, BadTracesAndPlacementsAreRefusedWithTheKeyAndReason) {
   expect("file = \"trace.npy\"\nspacing_m = 5e-7\ncutoff_m = 1e-5\n", {"profile.cutoff_m", "8 node", "solver.nodes"});
   expect("file = \"trace.npy\"\nspacing_m = 5e-7\ncentre_m = 2e-4\n", {"profile.centre_m", "leaves the part the filter gives", "trace.npy"});
   expect("file = \"map.npy\"\nspacing_m = 5e-7\nline = 3\n", {"profile.file", "map.npy", "shorter than the filter's window"});
-  expect("file = \"map.npy\"\nspacing_m = 5e-6\nline = 3\n", {"profile.centre_m", "map.npy"});  // 0.32 mm: shorter than the domain
+  expect("file = \"map.npy\"\nspacing_m = 2e-6\nline = 3\n", {"profile.centre_m", "map.npy"});  // 0.13 mm: shorter than the domain
+  expect("file = \"trace.npy\"\nspacing_m = 5e-6\n", {"profile.file", "coarser than the solver's"});  // nodes 2.8 µm apart
 }
 
 }  // namespace
