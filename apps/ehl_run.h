@@ -51,7 +51,8 @@ struct EhlRun {
     std::filesystem::path file;     // empty for a waviness
     Eigen::ArrayXd levelled_m;      // the measured trace, levelled
     double spacing_m = 0.0;         // its sample spacing
-    std::optional<double> centre_m, cutoff_m;  // as given (else the domain mid-trace, 8 node spacings)
+    // As given, else unset; once loaded, the values used (the domain mid-trace, 8 node spacings).
+    std::optional<double> centre_m, cutoff_m;
     double rq_m = 0.0, filtered_rq_m = 0.0;  // Rq over the solver's domain: as measured (levelled), as solved
   };
   std::optional<Profile> profile;

@@ -27,12 +27,7 @@ const std::string kHomogenise = "/nonexistent/tribo-tests/homogenise.toml";
 
 template <class Load>
 std::string error_of(const std::string& text, const std::string& source, Load load) {
-  try {
-    load(parse_toml_text(text, source), source);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return fixture::input_error_of([&] { load(parse_toml_text(text, source), source); });
 }
 
 std::string rig_error(const std::string& text) {
@@ -100,12 +95,7 @@ TEST(ConfigHostile, SweepSizeIsBounded) {
   std::ofstream(dir / "base.toml") << "[rig]\ndrive_speed_m_per_s = 1e-3\n";
   const auto error = [&](const std::string& axes) {
     std::ofstream(dir / "spec.toml") << "[base]\ncommand = \"rig\"\nconfig = \"base.toml\"\n" << axes;
-    try {
-      load_sweep_spec(dir / "spec.toml");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return fixture::input_error_of([&] { load_sweep_spec(dir / "spec.toml"); });
   };
   expect_all(error("[[axis]]\nkey = \"rig.mass_kg\"\nfrom = 1\nto = 2\ncount = 1000000000000\n"),
              {"key 'axis[0].count'", "at most 1000000"});
@@ -152,12 +142,7 @@ TEST(ConfigHostile, ASweepsResultsWithABadOrRepeatedPointIdAreRefusedWithFileAnd
   std::filesystem::create_directories(dir);
   const auto rows_error = [&](const std::string& body) {
     std::ofstream(dir / "results.csv") << "point_id,x\n" << body;
-    try {
-      finished_sweep_rows(dir / "results.csv", "point_id,x");
-    } catch (const InputError& e) {
-      return std::string(e.what());
-    }
-    return std::string();
+    return fixture::input_error_of([&] { finished_sweep_rows(dir / "results.csv", "point_id,x"); });
   };
   expect_all(rows_error("0,1\nabc,2\n"), {"results.csv: line 3", "'abc'", "not a non-negative integer"});
   expect_all(rows_error("99999999999999999999,1\n"), {"results.csv: line 2", "not a non-negative integer"});

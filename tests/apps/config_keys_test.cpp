@@ -28,27 +28,18 @@ std::filesystem::path write_file(const std::string& name, const std::string& tex
   return dir / name;
 }
 
-template <class Load>
-std::string error_of(Load load) {
-  try {
-    load();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 using fixture::expect_all;
+using fixture::input_error_of;
 
 const std::string kSphere = "[surface]\nkind = \"sphere\"\nradius_m = 0.01\n[domain]\nsize_m = 1e-3\ngrid = 32\n"
                             "[material]\ne_star_Pa = 1.137e11\nhardness_Pa = 1.18e9\n";
 
 TEST(RenamedKeys, ContactNormalAndTangentialLoadsNameTheNewKeys) {
   const auto normal = write_file("contact-normal.toml", kSphere + "[load]\nnormal_N = 1.0\n");
-  expect_all(error_of([&] { load_contact_run(normal, false); }),
+  expect_all(input_error_of([&] { load_contact_run(normal, false); }),
              {normal.string(), "key 'load.normal_N'", "use 'load.normal_load_N'"});
   const auto tangential = write_file("contact-tangential.toml", kSphere + "[load]\nnormal_load_N = 1.0\ntangential_N = 0.1\n");
-  expect_all(error_of([&] { load_contact_run(tangential, false); }),
+  expect_all(input_error_of([&] { load_contact_run(tangential, false); }),
              {tangential.string(), "key 'load.tangential_N'", "use 'load.tangential_load_N'"});
   const ContactRun run = load_contact_run(write_file("contact-new.toml", kSphere + "[load]\nnormal_load_N = 1.0\n"), false);
   EXPECT_EQ(run.normal_load_N, 1.0);
@@ -58,7 +49,7 @@ TEST(RenamedKeys, ContactSurfaceFileIsFileNotPath) {
   write_file("heights.txt", "0 1\n1 0\n");
   const std::string rest = "[domain]\nsize_m = 1e-3\n[material]\ne_star_Pa = 1.137e11\n[load]\nnormal_load_N = 1e-3\n";
   const auto old = write_file("contact-path.toml", "[surface]\nkind = \"file\"\npath = \"heights.txt\"\n" + rest);
-  expect_all(error_of([&] { load_contact_run(old, false); }), {old.string(), "key 'surface.path'", "use 'surface.file'"});
+  expect_all(input_error_of([&] { load_contact_run(old, false); }), {old.string(), "key 'surface.path'", "use 'surface.file'"});
   const ContactRun run =
       load_contact_run(write_file("contact-file.toml", "[surface]\nkind = \"file\"\nfile = \"heights.txt\"\n" + rest), false);
   EXPECT_EQ(run.grid.nx, 2);
@@ -67,7 +58,7 @@ TEST(RenamedKeys, ContactSurfaceFileIsFileNotPath) {
 TEST(RenamedKeys, RoughPairContactLoadIsNormalLoad) {
   const auto old = write_file("rough.toml", "[geometry]\nkind = \"rough_pair\"\ncontact_load_N = 0.5\n"
                                             "correlation_length_m = 6.25e-5\n[grid]\nn = 16\n");
-  expect_all(error_of([&] { load_reynolds_run(old); }),
+  expect_all(input_error_of([&] { load_reynolds_run(old); }),
              {old.string(), "key 'geometry.contact_load_N'", "use 'geometry.normal_load_N'"});
 }
 
@@ -77,23 +68,23 @@ TEST(RenamedKeys, RoughPairContactLoadIsNormalLoad) {
 TEST(UnknownKeys, RoughPairRefusesThemBeforeGeneratingItsSurfaces) {
   const auto bad = write_file("rough-unknown.toml", "[geometry]\nkind = \"rough_pair\"\nnormal_load_N = 0.5\n"
                                                     "correlation_length_m = 6.25e-5\n[grid]\nn = 8192\n[nxid]\nn = 128\n");
-  expect_all(error_of([&] { load_reynolds_run(bad); }), {bad.string(), "'nxid'", "unknown key"});
+  expect_all(input_error_of([&] { load_reynolds_run(bad); }), {bad.string(), "'nxid'", "unknown key"});
 }
 
 // The grid's node count has an upper bound (8192 a side), so a typo does not allocate gigabytes
 // while loading: 15226 asked for 1.8 GB (fuzz_reynolds_config, 2026-11-29).
 TEST(UnknownKeys, ReynoldsGridAboveItsBoundIsRefusedWithTheKey) {
   const auto big = write_file("reynolds-big.toml", "[geometry]\ngap_m = 1e-6\n[grid]\nn = 15226\n");
-  expect_all(error_of([&] { load_reynolds_run(big); }), {big.string(), "grid.n", "8192"});
+  expect_all(input_error_of([&] { load_reynolds_run(big); }), {big.string(), "grid.n", "8192"});
 }
 
 // Counts narrowed to int have an upper bound: 4294967298 junction points wrapped to 2 and the
 // curve came out with two points, silently.
 TEST(UnknownKeys, CountsBeyondAnIntAreRefusedNotWrapped) {
   const auto points = write_file("contact-points.toml", kSphere + "[load]\nnormal_load_N = 1.0\n[junction]\npoints = 4294967298\n");
-  expect_all(error_of([&] { load_contact_run(points, true); }), {points.string(), "junction.points", "10000"});
+  expect_all(input_error_of([&] { load_contact_run(points, true); }), {points.string(), "junction.points", "10000"});
   const auto threads = write_file("contact-threads.toml", kSphere + "[load]\nnormal_load_N = 1.0\n[solver]\nthreads = 4294967297\n");
-  expect_all(error_of([&] { load_contact_run(threads, false); }), {threads.string(), "solver.threads"});
+  expect_all(input_error_of([&] { load_contact_run(threads, false); }), {threads.string(), "solver.threads"});
 }
 
 // The point contact's solver keys: the linear solver is one of three names, the preconditioner's
@@ -104,13 +95,13 @@ TEST(UnknownKeys, EhlPointSolverKeysAreCheckedAndReachTheOptions) {
                            "reduced_modulus_Pa = 2.308e11\nmean_speed_m_per_s = 0.5\n"
                            "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n[solver]\n";
   const auto method = write_file("ehl-method.toml", ball + "linear_solver = \"lu\"\n");
-  expect_all(error_of([&] { load_ehl_run(method); }), {method.string(), "solver.linear_solver", "newton_krylov"});
+  expect_all(input_error_of([&] { load_ehl_run(method); }), {method.string(), "solver.linear_solver", "newton_krylov"});
   const auto reach = write_file("ehl-reach.toml", ball + "preconditioner_reach = 17\n");
-  expect_all(error_of([&] { load_ehl_run(reach); }), {reach.string(), "solver.preconditioner_reach", "16"});
+  expect_all(input_error_of([&] { load_ehl_run(reach); }), {reach.string(), "solver.preconditioner_reach", "16"});
   const auto grid = write_file("ehl-grid.toml", ball + "nodes_x = 514\n");
-  expect_all(error_of([&] { load_ehl_run(grid); }), {grid.string(), "solver.nodes_x", "513"});
+  expect_all(input_error_of([&] { load_ehl_run(grid); }), {grid.string(), "solver.nodes_x", "513"});
   const auto ncp = write_file("ehl-ncp.toml", ball + "complementarity = \"fb\"\n");
-  expect_all(error_of([&] { load_ehl_run(ncp); }), {ncp.string(), "solver.complementarity", "fischer_burmeister"});
+  expect_all(input_error_of([&] { load_ehl_run(ncp); }), {ncp.string(), "solver.complementarity", "fischer_burmeister"});
   const auto valid = write_file("ehl-krylov.toml", ball + "linear_solver = \"dense_lu\"\npreconditioner_reach = 3\nnodes_x = 257\n"
                                                           "complementarity = \"fischer_burmeister\"\n");
   const EhlRun run = load_ehl_run(valid);
@@ -124,9 +115,9 @@ TEST(UnknownKeys, EhlPointSolverKeysAreCheckedAndReachTheOptions) {
 TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {
   const std::string surface = "[surface]\nrms_height_m = 4.35e-7\ncorrelation_length_m = 6.25e-5\n";
   const auto size = write_file("ff-size.toml", surface + "size_m = 1e-3\n");
-  expect_all(error_of([&] { load_flow_factor_run(size); }), {size.string(), "key 'surface.size_m'", "use 'domain.size_m'"});
+  expect_all(input_error_of([&] { load_flow_factor_run(size); }), {size.string(), "key 'surface.size_m'", "use 'domain.size_m'"});
   const auto grid = write_file("ff-grid.toml", surface + "grid = 64\n");
-  expect_all(error_of([&] { load_flow_factor_run(grid); }), {grid.string(), "key 'surface.grid'", "use 'domain.grid'"});
+  expect_all(input_error_of([&] { load_flow_factor_run(grid); }), {grid.string(), "key 'surface.grid'", "use 'domain.grid'"});
 }
 
 // The same [surface] and [domain] tables give the same surface in contact, homogenise and
@@ -153,7 +144,7 @@ TEST(SurfaceConfig, ThreeCommandsReadOneSurface) {
   // A Gaussian ACF has no default correlation length, in any of the three.
   const std::string no_length = "[surface]\nrms_height_m = 4.35e-7\n";
   const auto path = write_file("surface-no-length.toml", no_length);
-  for (const std::string& e : {error_of([&] { load_homogenise_run(path); }), error_of([&] { load_flow_factor_run(path); })})
+  for (const std::string& e : {input_error_of([&] { load_homogenise_run(path); }), input_error_of([&] { load_flow_factor_run(path); })})
     expect_all(e, {"key 'surface.correlation_length_m'", "required"});
 }
 
@@ -165,7 +156,7 @@ TEST(DriveTable, ReadByTheBundlesCsvRules) {
   EXPECT_DOUBLE_EQ(run.drive->speed_m_per_s(1.0), 2e-3);
   // A short row names the file and its line, under the config key that named the file.
   write_file("drive.csv", "t_s,v_m_per_s\n0,1e-3\n2\n");
-  expect_all(error_of([&] { load_rig_run(config); }),
+  expect_all(input_error_of([&] { load_rig_run(config); }),
              {config.string(), "key 'drive.file'", "drive.csv:3: expected 2 values, found 1"});
 }
 

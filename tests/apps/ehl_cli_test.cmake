@@ -13,13 +13,17 @@ function(expect_refused name text key)
     message(FATAL_ERROR "tribo ehl, ${name}: expected status 2 naming ${key} and no output, got ${status}: ${err}")
   endif()
 endfunction()
-# Config `text` must run: written to NAME.toml, solved into out_NAME (ARGN: more options).
-function(run_ehl name what text)
-  file(WRITE ${WORK}/${name}.toml "${text}")
-  execute_process(COMMAND ${TRIBO} ehl ${WORK}/${name}.toml --out ${WORK}/out_${name} ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+# `config` must run, solved into out_NAME (ARGN: more options).
+function(run_ehl_config name what config)
+  execute_process(COMMAND ${TRIBO} ehl ${config} --out ${WORK}/out_${name} ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "tribo ehl, ${what}, failed (${status}): ${out} ${err}")
   endif()
+endfunction()
+# Config `text` must run: written to NAME.toml, solved into out_NAME (ARGN: more options).
+function(run_ehl name what text)
+  file(WRITE ${WORK}/${name}.toml "${text}")
+  run_ehl_config(${name} "${what}" ${WORK}/${name}.toml ${ARGN})
 endfunction()
 set(contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e6\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1.0\nsliding_speed_m_per_s = 0.05\n")
 run_ehl(ehl "line contact" "${contact}[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n")
@@ -150,11 +154,7 @@ expect_refused(wavy_short "${wavy_contact}${short_wave}" "profile.wavelength_m")
 # as the pin's profile. At 1 mm/s the film has lifted it (every node open, the film's Eyring traction
 # alone); the trace's Rq over the domain as measured and as filtered; the trace among provenance's
 # inputs with its hash.
-execute_process(COMMAND ${TRIBO} ehl ${EXAMPLES}/ehl-measured-pin.toml --out ${WORK}/out_measured --summary-only
-                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, measured pin, failed (${status}): ${out} ${err}")
-endif()
+run_ehl_config(measured "measured pin" ${EXAMPLES}/ehl-measured-pin.toml --summary-only)
 execute_process(COMMAND ${PYTHON} -c "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))

@@ -37,15 +37,6 @@ std::filesystem::path write_wavy_trace(const std::filesystem::path& dir) {
   return path;
 }
 
-std::string error_of(const std::filesystem::path& config) {
-  try {
-    load_ehl_run(config);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
-}
-
 std::filesystem::path write_config(const std::filesystem::path& dir, const std::string& profile) {
   const auto path = dir / "ehl.toml";
   std::ofstream(path) << kContact << "[profile]\nboundary_friction_coefficient = 0.1\n" << profile;
@@ -87,7 +78,8 @@ TEST(EhlMeasuredProfile, BadTracesAndPlacementsAreRefusedWithTheKeyAndReason) {
   write_wavy_trace(dir);
   contact::write_npy(dir / "map.npy", Eigen::ArrayXXd::Zero(64, 8));
   const auto expect = [&](const std::string& profile, std::initializer_list<std::string> fragments) {
-    fixture::expect_all(error_of(write_config(dir, profile)), fragments);
+    const auto config = write_config(dir, profile);
+    fixture::expect_all(fixture::input_error_of([&] { load_ehl_run(config); }), fragments);
   };
   expect("file = \"trace.npy\"\namplitude_m = 1e-8\n", {"profile.amplitude_m", "not both"});
   expect("file = \"trace.npy\"\n", {"profile.file", "trace.npy", "no lateral size", "spacing_m"});

@@ -1,5 +1,5 @@
-// What the config tests share: an error message checked for every fragment it must name, and a
-// scratch folder of the test's own.
+// What the config tests share: the message a loader's InputError carries, checked for every fragment
+// it must name, and a scratch folder of the test's own.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,7 +8,20 @@
 #include <initializer_list>
 #include <string>
 
+#include "apps/config.h"
+
 namespace tribo::cli::fixture {
+
+// The message of the InputError `load()` raises; empty when it loads.
+template <class Load>
+std::string input_error_of(Load&& load) {
+  try {
+    load();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return {};
+}
 
 // The message names each fragment (the file, key, line, reason …); an empty message means the
 // input was accepted.

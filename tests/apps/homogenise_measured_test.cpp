@@ -65,12 +65,7 @@ TEST(HomogeniseMeasured, AMapOfTheSynthesisedRealisationGivesItsPatch) {
 }
 
 std::string homogenise_error(const std::filesystem::path& config) {
-  try {
-    load_homogenise_run(config);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return {};
+  return fixture::input_error_of([&] { load_homogenise_run(config); });
 }
 
 TEST(HomogeniseMeasured, BadMapsAreRefusedNamingTheFileAndTheReason) {
