@@ -24,7 +24,7 @@ double log_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::
 // The discrete problem in Hertz units (header): unknowns P_1 … P_{N−2} and H0.
 class LineProblem {
  public:
-  LineProblem(const EhlLineContact& c, const EhlLineRoughness* rough, const PiezoviscousLubricant& l, const EhlLineOptions& o)
+  LineProblem(const EhlLineContact& c, const EhlRoughness* rough, const PiezoviscousLubricant& l, const EhlLineOptions& o)
       : lub_(l), complementarity_(o.complementarity), n_(o.nodes), dx_((o.outlet_over_half_width - o.inlet_over_half_width) / (o.nodes - 1)) {
     b_ = reference::hertz_line_half_width_m(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
     ph_ = reference::hertz_line_peak_pressure_Pa(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa);
@@ -40,7 +40,7 @@ class LineProblem {
       }
     rough_ = Eigen::VectorXd::Zero(n_);
     if (rough) {
-      for (int i = 0; i < n_; ++i) rough_(i) = profile_at(*rough, x_(i) * b_) / film_scale_m();
+      for (int i = 0; i < n_; ++i) rough_(i) = ridge_height_m(*rough, x_(i) * b_) / film_scale_m();
       floor_ = rough->contact_film_m / film_scale_m();
     }
   }
@@ -78,11 +78,11 @@ class LineProblem {
   // Pressures, film and the lubricant's state at every node, computed once per iterate and read by
   // the row scales and the residual alike.
   struct Nodal {
-    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w, mobile;
+    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w, mobile, coef;  // ε = coef · mobile³
   };
   Nodal nodal(const Eigen::VectorXd& u, double lambda) const {
     Nodal s{pressures(u), film(u), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_),
-            Eigen::VectorXd(n_), Eigen::VectorXd(n_)};
+            Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_)};
     for (int i = 0; i < n_; ++i) {
       const ViscosityAtPressure v = viscosity_ratio(lub_, s.p(i) * ph_);
       const DensityAtPressure r = density_ratio(lub_, s.p(i) * ph_);
@@ -91,7 +91,8 @@ class LineProblem {
       // The pressure flow passes through the film above the boundary layers (H − H_c; all of it on
       // smooth surfaces): none where the film has closed to H_c — Hu & Zhu's reduced equation there.
       s.mobile(i) = std::max(s.h(i) - floor_, 0.0);
-      s.eps(i) = s.rho(i) * std::pow(s.mobile(i), 3) / (v.ratio * lambda);
+      s.coef(i) = s.rho(i) / (v.ratio * lambda);
+      s.eps(i) = s.coef(i) * std::pow(s.mobile(i), 3);
       s.dlog_eps(i) = s.drho(i) / s.rho(i) - v.log_slope_per_Pa * ph_;  // ∂ ln ε/∂P_i at fixed H
       s.w(i) = s.rho(i) * s.h(i);
     }
@@ -116,14 +117,17 @@ class LineProblem {
     return ehl::dense_step(jacobian, rhs, step, why);
   }
   Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Eigen::MatrixXd* jacobian) const {
-    const Eigen::VectorXd &p = s.p, &h = s.h, &rho = s.rho, &drho = s.drho, &eps = s.eps, &dlog_eps = s.dlog_eps, &w = s.w,
-                          &mobile = s.mobile;
+    const Eigen::VectorXd &p = s.p, &h = s.h, &rho = s.rho, &drho = s.drho, &dlog_eps = s.dlog_eps, &w = s.w, &mobile = s.mobile,
+                          &coef = s.coef;
     const int m = unknowns(), np = n_ - 2;
     Eigen::VectorXd f(m);
     if (jacobian) jacobian->setZero(m, m);
     Eigen::RowVectorXd d_eps_p(np), d_w(np);
     for (int i = 1; i <= n_ - 2; ++i) {
-      const double ep = 0.5 * (eps(i) + eps(i + 1)), em = 0.5 * (eps(i - 1) + eps(i));
+      const auto m3 = [&](int k) { return std::pow(mobile(k), 3); };
+      const FaceFlow fp = face_flow(coef(i), m3(i), coef(i + 1), m3(i + 1), rough());
+      const FaceFlow fm = face_flow(coef(i - 1), m3(i - 1), coef(i), m3(i), rough());
+      const double ep = fp.value, em = fm.value;
       const double gp = p(i + 1) - p(i), gm = p(i) - p(i - 1);
       const double poiseuille = (ep * gp - em * gm) / (dx_ * dx_);
       // Second-order upwind; first order with roughness, where films close: extrapolated from a
@@ -138,10 +142,11 @@ class LineProblem {
       f(row) = phi.value;
       if (!jacobian) continue;
       const double da = phi.da, db = phi.db;
-      // ∂ε_k/∂P_j = ε_k (3 K_kj/(H_k − H_c) + δ_kj ∂ln ε_k/∂P_k) (0 where closed); ∂(ρ̄H)_k/∂P_j = ρ̄_k K_kj + δ_kj ρ̄'_k H_k.
-      auto d_eps = [&](int k) {
-        Eigen::RowVectorXd d = (eps(k) > 0.0 ? 3.0 * eps(k) / mobile(k) : 0.0) * kernel_.row(k).segment(1, np);
-        if (k >= 1 && k <= n_ - 2) d(k - 1) += eps(k) * dlog_eps(k);
+      // A face's ε through node k's c and m³: ∂c_k/∂P_j = δ_kj c_k ∂ln ε_k/∂P_k, ∂m³_k/∂P_j = 3 m_k² K_kj
+      // (m = H − H_c, 0 where closed); ∂(ρ̄H)_k/∂P_j = ρ̄_k K_kj + δ_kj ρ̄'_k H_k.
+      auto d_eps = [&](int k, double dc, double dm3) {
+        Eigen::RowVectorXd d = (dm3 * 3.0 * mobile(k) * mobile(k)) * kernel_.row(k).segment(1, np);
+        if (k >= 1 && k <= n_ - 2) d(k - 1) += dc * coef(k) * dlog_eps(k);
         return d;
       };
       auto d_mass = [&](int k) {
@@ -149,8 +154,8 @@ class LineProblem {
         if (k >= 1 && k <= n_ - 2) d(k - 1) += drho(k) * h(k);
         return d;
       };
-      const Eigen::RowVectorXd de_prev = d_eps(i - 1), de_here = d_eps(i), de_next = d_eps(i + 1);
-      d_eps_p = (0.5 * gp) * (de_here + de_next) - (0.5 * gm) * (de_prev + de_here);
+      d_eps_p = gp * (d_eps(i, fp.dc_a, fp.dm3_a) + d_eps(i + 1, fp.dc_b, fp.dm3_b)) -
+                gm * (d_eps(i - 1, fm.dc_a, fm.dm3_a) + d_eps(i, fm.dc_b, fm.dm3_b));
       if (second_order)
         d_w = (3.0 * d_mass(i) - 4.0 * d_mass(i - 1) + d_mass(i - 2)) / (2.0 * dx_);
       else
@@ -161,9 +166,9 @@ class LineProblem {
       if (i - 1 >= 1) d_poiseuille(i - 2) += em / (dx_ * dx_);
       jacobian->row(row).head(np) = (-scale * db) * (d_poiseuille - d_w);
       (*jacobian)(row, row) += da;
-      // ∂/∂H0: ∂ε_k/∂H0 = 3 ε_k/(H_k − H_c), ∂(ρ̄H)_k/∂H0 = ρ̄_k.
-      auto de0 = [&](int k) { return eps(k) > 0.0 ? 3.0 * eps(k) / mobile(k) : 0.0; };
-      const double dpois0 = (0.5 * gp * (de0(i) + de0(i + 1)) - 0.5 * gm * (de0(i - 1) + de0(i))) / (dx_ * dx_);
+      // ∂/∂H0: ∂m³_k/∂H0 = 3 m_k², ∂(ρ̄H)_k/∂H0 = ρ̄_k.
+      auto de0 = [&](int k, double dm3) { return dm3 * 3.0 * mobile(k) * mobile(k); };
+      const double dpois0 = (gp * (de0(i, fp.dm3_a) + de0(i + 1, fp.dm3_b)) - gm * (de0(i - 1, fm.dm3_a) + de0(i, fm.dm3_b))) / (dx_ * dx_);
       const double dw0 = second_order ? (3.0 * rho(i) - 4.0 * rho(i - 1) + rho(i - 2)) / (2.0 * dx_) : (rho(i) - rho(i - 1)) / dx_;
       (*jacobian)(row, np) = -scale * db * (dpois0 - dw0);
     }
@@ -187,19 +192,9 @@ class LineProblem {
 
   // The upwind wedge's weight on its own node: 3/2 second order, 1 first (with roughness).
   double wedge_diagonal() const { return rough() ? 1.0 : 1.5; }
-
-  // The profile's height at x (m), linear between its points, 0 outside them.
-  static double profile_at(const EhlLineRoughness& r, double x) {
-    if (x < r.x_m.front() || x > r.x_m.back()) return 0.0;
-    const auto hi = std::upper_bound(r.x_m.begin(), r.x_m.end(), x);
-    if (hi == r.x_m.end()) return r.height_m.back();
-    const auto k = static_cast<std::size_t>(hi - r.x_m.begin());
-    const double t = (x - r.x_m[k - 1]) / (r.x_m[k] - r.x_m[k - 1]);
-    return (1.0 - t) * r.height_m[k - 1] + t * r.height_m[k];
-  }
 };
 
-void validate(const EhlLineContact& c, const EhlLineRoughness* rough, const EhlLineOptions& o) {
+void validate(const EhlLineContact& c, const EhlRoughness* rough, const EhlLineOptions& o) {
   auto positive = [](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0)
       throw std::invalid_argument(std::string("EHL line contact: ") + name + " must be positive and finite, got " + shortest(v));
@@ -214,23 +209,11 @@ void validate(const EhlLineContact& c, const EhlLineRoughness* rough, const EhlL
                                 shortest(o.outlet_over_half_width) + "] (in Hertz half widths) must start before −1 and end after 0");
   if (o.nodes < 11) throw std::invalid_argument("EHL line contact: nodes must be ≥ 11, got " + std::to_string(o.nodes));
   if (!(o.tolerance > 0.0)) throw std::invalid_argument("EHL line contact: tolerance must be positive, got " + shortest(o.tolerance));
-  if (!rough) return;
-  const EhlLineRoughness& r = *rough;
-  if (r.x_m.size() < 2 || r.x_m.size() != r.height_m.size())
-    throw std::invalid_argument("EHL line contact: the roughness profile needs at least two points and as many heights as positions, got " +
-                                std::to_string(r.x_m.size()) + " positions and " + std::to_string(r.height_m.size()) + " heights");
-  for (std::size_t k = 0; k < r.x_m.size(); ++k) {
-    if (!std::isfinite(r.x_m[k]) || !std::isfinite(r.height_m[k]))
-      throw std::invalid_argument("EHL line contact: roughness point " + std::to_string(k) + " is not finite");
-    if (k > 0 && !(r.x_m[k] > r.x_m[k - 1]))
-      throw std::invalid_argument("EHL line contact: the roughness positions must increase, point " + std::to_string(k) + " at " +
-                                  shortest(r.x_m[k]) + " m does not");
-  }
-  positive(r.contact_film_m, "roughness contact_film_m");
+  if (rough) validate(*rough, "EHL line contact");
 }
 
 // Smooth (roughness null) or rough.
-EhlLineResult solve_line(const EhlLineContact& contact, const EhlLineRoughness* roughness, const PiezoviscousLubricant& lubricant,
+EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roughness, const PiezoviscousLubricant& lubricant,
                          const EhlLineOptions& options) {
   validate(contact, roughness, options);
   validate(lubricant);
@@ -288,11 +271,11 @@ EhlLineResult solve_line(const EhlLineContact& contact, const EhlLineRoughness* 
   result.converged = outcome.converged;
   result.residual = outcome.residual;
   if (roughness) {
-    const double closed = problem.contact_floor();
     double carried = 0.0;
     result.in_contact.assign(static_cast<std::size_t>(n), false);
     for (int i = 1; i <= np; ++i)
-      if (h(i) < closed) result.in_contact[static_cast<std::size_t>(i)] = true, ++result.contact_nodes, carried += p(i);
+      if (in_contact(*roughness, result.film_m[static_cast<std::size_t>(i)]))
+        result.in_contact[static_cast<std::size_t>(i)] = true, ++result.contact_nodes, carried += p(i);
     result.contact_load_share = problem.dx() * carried / (0.5 * kPi);
   }
   result.message = outcome.converged ? "converged: ‖F‖∞ = " + shortest(outcome.residual) + " after " +
@@ -307,7 +290,7 @@ EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLu
   return solve_line(contact, nullptr, lubricant, options);
 }
 
-EhlLineResult solve_ehl_line(const EhlLineContact& contact, const EhlLineRoughness& roughness, const PiezoviscousLubricant& lubricant,
+EhlLineResult solve_ehl_line(const EhlLineContact& contact, const EhlRoughness& roughness, const PiezoviscousLubricant& lubricant,
                              const EhlLineOptions& options) {
   return solve_line(contact, &roughness, lubricant, options);
 }

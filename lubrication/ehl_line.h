@@ -32,7 +32,7 @@
 // is continued in λ: from a thinner, more Hertzian film (λ lowered by decades) back to the target.
 // Cost: O(N²) per residual and Jacobian, O(N³) per step (N = 401: ≈ 0.05 s).
 //
-// Mixed lubrication (solve_ehl_line with an EhlLineRoughness): the stationary surface carries a profile r(x)
+// Mixed lubrication (solve_ehl_line with an EhlRoughness): the stationary surface carries a profile r(x)
 // (transverse ridges, uniform along the line; stationary, so that the problem stays steady — a rough
 // pin on a moving disc), the film is h − r, and where it closes the surfaces touch: the unified
 // treatment of Hu & Zhu (ASME J. Tribol. 122, 2000) — one pressure field, the Reynolds equation
@@ -52,19 +52,10 @@
 #include <vector>
 
 #include "lubrication/complementarity.h"
+#include "lubrication/ehl_roughness.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
-
-// The stationary surface's profile and what happens where the film closes (header: mixed lubrication).
-struct EhlLineRoughness {
-  // Heights r(x) of the stationary surface towards the other one (m) at increasing x_m (m, from the
-  // Hertz centre), interpolated linearly onto the nodes; zero outside the profile.
-  std::vector<double> x_m, height_m;
-  // The boundary layers' thickness H_c, below which the film passes no pressure flow (an adsorbed
-  // fatty-acid monolayer is ≈ 2.5 nm thick, Bowden & Tabor 1950; one on each surface, ≈ 5 nm). > 0.
-  double contact_film_m = 5e-9;
-};
 
 struct EhlLineContact {
   double load_per_length_N_per_m = 0.0;  // w > 0
@@ -115,7 +106,7 @@ EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLu
                              const EhlLineOptions& options = {});
 // The same contact with a rough or wavy stationary surface, where films may close (header: mixed
 // lubrication); also throws std::invalid_argument for a bad profile.
-EhlLineResult solve_ehl_line(const EhlLineContact& contact, const EhlLineRoughness& roughness,
+EhlLineResult solve_ehl_line(const EhlLineContact& contact, const EhlRoughness& roughness,
                              const PiezoviscousLubricant& lubricant, const EhlLineOptions& options = {});
 
 }  // namespace tribo::lubrication

@@ -32,7 +32,8 @@ double inverse_distance_antiderivative(double s, double t) {
 // The discrete problem in Hertz units (header): unknowns P at the interior nodes, then H0.
 class PointProblem {
  public:
-  PointProblem(const EhlPointContact& c, const PiezoviscousLubricant& l, const EhlPointOptions& o, bool dense)
+  PointProblem(const EhlPointContact& c, const EhlRoughness* rough, const PiezoviscousLubricant& l, const EhlPointOptions& o,
+               bool dense)
       : lub_(l), complementarity_(o.complementarity), dense_(dense), krylov_(o.krylov), tolerance_(o.tolerance), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
         dy_(2.0 * o.side_over_radius / (o.nodes_y - 1)), symmetric_(o.symmetric_in_y), first_row_(symmetric_ ? o.nodes_y / 2 : 1) {
     a_ = reference::hertz_point_radius_m(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
@@ -79,6 +80,14 @@ class PointProblem {
     rigid_.resize(nx_ * ny_);
     for (int j = 0; j < ny_; ++j)
       for (int i = 0; i < nx_; ++i) rigid_(node(i, j)) = 0.5 * (x_(i) * x_(i) + y_(j) * y_(j));
+    if (rough) {
+      // The ridges lower the film at every node of their column (H units).
+      for (int i = 0; i < nx_; ++i) {
+        const double r = ridge_height_m(*rough, x_(i) * a_) / film_scale_m();
+        for (int j = 0; j < ny_; ++j) rigid_(node(i, j)) -= r;
+      }
+      floor_ = rough->contact_film_m / film_scale_m();
+    }
     // The load row ΔXΔY Σ P over every interior node: an unknown counts once more for its mirror.
     load_weights_.resize(interior());
     for (int j = first_row_; j <= ny_ - 2; ++j)
@@ -128,7 +137,8 @@ class PointProblem {
     halfspace_->displacement(p, d);
     return d.reshaped();  // column-major: node (i, j) at i + nx j
   }
-  double contact_floor() const { return 0.0; }  // smooth surfaces never touch
+  double contact_floor() const { return floor_; }  // H_c, 0 without roughness (smooth surfaces never touch)
+  bool rough() const { return floor_ > 0.0; }      // (a profile's H_c is positive)
   Eigen::VectorXd film_change(const Eigen::VectorXd& du) const {
     return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + deflection(du.head(interior()));
   }
@@ -137,17 +147,22 @@ class PointProblem {
   }
 
   struct Nodal {
-    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w;
+    Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w, mobile, coef;  // ε = coef · mobile³
   };
   Nodal nodal(const Eigen::VectorXd& u, double lambda) const {
     const int n = nx_ * ny_;
-    Nodal s{pressures(u), film(u), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
+    Nodal s{pressures(u),       film(u),            Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n),
+            Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
     for (int k = 0; k < n; ++k) {
       const ViscosityAtPressure v = viscosity_ratio(lub_, s.p(k) * ph_);
       const DensityAtPressure r = density_ratio(lub_, s.p(k) * ph_);
       s.rho(k) = r.ratio;
       s.drho(k) = r.slope_per_Pa * ph_;
-      s.eps(k) = s.rho(k) * std::pow(s.h(k), 3) / (v.ratio * lambda);
+      // The pressure flow passes through the film above the boundary layers (all of it on smooth
+      // surfaces): none where the film has closed to H_c — Hu & Zhu's reduced equation there.
+      s.mobile(k) = std::max(s.h(k) - floor_, 0.0);
+      s.coef(k) = s.rho(k) / (v.ratio * lambda);
+      s.eps(k) = s.coef(k) * std::pow(s.mobile(k), 3);
       s.dlog_eps(k) = s.drho(k) / s.rho(k) - v.log_slope_per_Pa * ph_;  // ∂ ln ε/∂P at fixed H
       s.w(k) = s.rho(k) * s.h(k);
     }
@@ -163,7 +178,7 @@ class PointProblem {
         const auto e = [&](int ii, int jj) { return s.eps(node(ii, jj)); };
         const double xx = 0.5 * (e(i - 1, j) + 2.0 * e(i, j) + e(i + 1, j)) / (dx_ * dx_);
         const double yy = 0.5 * (e(i, j - 1) + 2.0 * e(i, j) + e(i, j + 1)) / (dy_ * dy_);
-        c(unknown(i, j)) = 1.0 / (xx + yy + 1.5 * s.rho(node(i, j)) * self_ / dx_);
+        c(unknown(i, j)) = 1.0 / (xx + yy + wedge_diagonal() * s.rho(node(i, j)) * self_ / dx_);
       }
     return c;
   }
@@ -192,12 +207,17 @@ class PointProblem {
       for (int i = 1; i <= nx_ - 2; ++i) {
         const int row = unknown(i, j), here = node(i, j);
         const int east = node(i + 1, j), west = node(i - 1, j), north = node(i, j + 1), south = node(i, j - 1);
-        const double epx = 0.5 * (s.eps(here) + s.eps(east)), emx = 0.5 * (s.eps(west) + s.eps(here));
-        const double epy = 0.5 * (s.eps(here) + s.eps(north)), emy = 0.5 * (s.eps(south) + s.eps(here));
+        const auto m3 = [&](int k) { return std::pow(s.mobile(k), 3); };
+        const auto face = [&](int a, int b) { return face_flow(s.coef(a), m3(a), s.coef(b), m3(b), rough()); };
+        // Each face from its lower node to its upper (a → b along x or y).
+        const FaceFlow fpx = face(here, east), fmx = face(west, here), fpy = face(here, north), fmy = face(south, here);
+        const double epx = fpx.value, emx = fmx.value, epy = fpy.value, emy = fmy.value;
         const double gpx = s.p(east) - s.p(here), gmx = s.p(here) - s.p(west);
         const double gpy = s.p(north) - s.p(here), gmy = s.p(here) - s.p(south);
         const double poiseuille = (epx * gpx - emx * gmx) / (dx_ * dx_) + (epy * gpy - emy * gmy) / (dy_ * dy_);
-        const bool second_order = i >= 2;
+        // Second-order upwind; first order with roughness (ehl_line.h: extrapolated from a converging
+        // inlet over two nodes, the transport would drive a contact's film through zero).
+        const bool second_order = i >= 2 && !rough();
         const double wedge = second_order ? (3.0 * s.w(here) - 4.0 * s.w(west) + s.w(node(i - 2, j))) / (2.0 * dx_)
                                           : (s.w(here) - s.w(west)) / dx_;
         const double scale = c(row);
@@ -207,31 +227,35 @@ class PointProblem {
         f(row) = phi.value;
         if (!jacobian) continue;
         const double da = phi.da, db = phi.db;
-        // ∂(poiseuille − wedge)/∂u: through ε and ρ̄H at the stencil's nodes (each a dense row of the
-        // kernel: ∂ε_k/∂P_q = ε_k (3 K_kq/H_k + δ_kq ∂ln ε_k/∂P_k), ∂(ρ̄H)_k/∂P_q = ρ̄_k K_kq +
-        // δ_kq ρ̄'_k H_k), and through the pressures of the five-point stencil.
+        // ∂(poiseuille − wedge)/∂u: through the faces' ε (by each node's c and m³: ∂c_k/∂P_q = δ_kq c_k
+        // ∂ln ε_k/∂P_k, ∂m³_k/∂P_q = 3 m_k² K_kq with m = H − H_c, 0 where closed) and ρ̄H at the
+        // stencil's nodes (∂(ρ̄H)_k/∂P_q = ρ̄_k K_kq + δ_kq ρ̄'_k H_k; K a dense row of the kernel), and
+        // through the pressures of the five-point stencil.
         struct Term {
           int i, j;
-          double through_eps, through_mass;  // coefficients of ∂ε_k and −∂(ρ̄H)_k
+          double through_c, through_m3, through_mass;  // coefficients of ∂c_k, ∂m³_k and −∂(ρ̄H)_k
         };
         const double wx = 1.0 / (2.0 * dx_);
-        Term terms[7] = {{i, j, 0.5 * (gpx - gmx) / (dx_ * dx_) + 0.5 * (gpy - gmy) / (dy_ * dy_), second_order ? 3.0 * wx : 1.0 / dx_},
-                         {i + 1, j, 0.5 * gpx / (dx_ * dx_), 0.0},
-                         {i - 1, j, -0.5 * gmx / (dx_ * dx_), second_order ? -4.0 * wx : -1.0 / dx_},
-                         {i, j + 1, 0.5 * gpy / (dy_ * dy_), 0.0},
-                         {i, j - 1, -0.5 * gmy / (dy_ * dy_), 0.0},
-                         {i - 2, j, 0.0, second_order ? wx : 0.0},
-                         {-1, -1, 0.0, 0.0}};
+        const double ix2 = 1.0 / (dx_ * dx_), iy2 = 1.0 / (dy_ * dy_);
+        Term terms[7] = {{i, j, (fpx.dc_a * gpx - fmx.dc_b * gmx) * ix2 + (fpy.dc_a * gpy - fmy.dc_b * gmy) * iy2,
+                          (fpx.dm3_a * gpx - fmx.dm3_b * gmx) * ix2 + (fpy.dm3_a * gpy - fmy.dm3_b * gmy) * iy2,
+                          second_order ? 3.0 * wx : 1.0 / dx_},
+                         {i + 1, j, fpx.dc_b * gpx * ix2, fpx.dm3_b * gpx * ix2, 0.0},
+                         {i - 1, j, -fmx.dc_a * gmx * ix2, -fmx.dm3_a * gmx * ix2, second_order ? -4.0 * wx : -1.0 / dx_},
+                         {i, j + 1, fpy.dc_b * gpy * iy2, fpy.dm3_b * gpy * iy2, 0.0},
+                         {i, j - 1, -fmy.dc_a * gmy * iy2, -fmy.dm3_a * gmy * iy2, 0.0},
+                         {i - 2, j, 0.0, 0.0, second_order ? wx : 0.0},
+                         {-1, -1, 0.0, 0.0, 0.0}};
         double d_h0 = 0.0;
         for (const Term& t : terms) {
           if (t.i < 0) continue;  // zero coefficients stay: a fixed pattern lets the Krylov preconditioner keep its analysis
           const int k = node(t.i, t.j);
-          const double dh = t.through_eps * 3.0 * s.eps(k) / s.h(k) - t.through_mass * s.rho(k);  // per unit ∂H_k
+          const double dh = t.through_m3 * 3.0 * s.mobile(k) * s.mobile(k) - t.through_mass * s.rho(k);  // per unit ∂H_k
           through_film.emplace_back(row, k, -scale * db * dh);
           d_h0 += dh;
           if (inside(t.i, t.j))
             stencil.emplace_back(row, unknown(t.i, t.j),
-                                 -scale * db * (t.through_eps * s.eps(k) * s.dlog_eps(k) - t.through_mass * s.drho(k) * s.h(k)));
+                                 -scale * db * (t.through_c * s.coef(k) * s.dlog_eps(k) - t.through_mass * s.drho(k) * s.h(k)));
         }
         // The pressures of the stencil.
         const auto pressure_term = [&](int ii, int jj, double coefficient) {
@@ -317,11 +341,15 @@ class PointProblem {
   double dx_, dy_, a_ = 0.0, ph_ = 0.0, radius_ = 0.0, self_ = 0.0;
   bool symmetric_;  // EhlPointOptions::symmetric_in_y
   int first_row_;   // the lowest row of unknowns (interior())
-  Eigen::VectorXd x_, y_, rigid_, load_weights_;
+  Eigen::VectorXd x_, y_, load_weights_;
+  Eigen::VectorXd rigid_;  // the film at H0 = 0 without deformation: the ball's crown less the ridges
+  double floor_ = 0.0;     // the boundary layers' H_c (0 for smooth surfaces)
   Eigen::MatrixXd kernel_;  // all nodes × interior nodes (dense method)
   Eigen::SparseMatrix<double, Eigen::RowMajor> near_kernel_;  // its entries within the reach (Krylov)
   std::unique_ptr<contact::ElasticHalfSpace> halfspace_;  // K by FFT (Krylov); its buffers make products non-const
   mutable int krylov_iterations_ = 0;
+  // The upwind wedge's weight on its own node: 3/2 second order, 1 first (with roughness).
+  double wedge_diagonal() const { return rough() ? 1.0 : 1.5; }
   // The Krylov preconditioner: its matrix (UMFPACK's solve reads it), factors and their state.
   mutable SparseMatrix factored_;
   mutable Eigen::VectorXd border_;  // A⁻¹ b: the film constant's column through the factors
@@ -462,7 +490,7 @@ double interpolate(const EhlPointResult& c, double x, double y) {
 // automatic: the dense LU up to 21 × 21 nodes, Newton–Krylov beyond (ehl_point.h).
 constexpr int kLargestDenseSystem = 19 * 19;
 
-void validate(const EhlPointContact& c, const EhlPointOptions& o) {
+void validate(const EhlPointContact& c, const EhlRoughness* rough, const EhlPointOptions& o) {
   auto positive = [](double v, const char* name) {
     if (!std::isfinite(v) || v <= 0.0)
       throw std::invalid_argument(std::string("EHL point contact: ") + name + " must be positive and finite, got " + shortest(v));
@@ -484,17 +512,18 @@ void validate(const EhlPointContact& c, const EhlPointOptions& o) {
     throw std::invalid_argument("EHL point contact: preconditioner_reach must be 0–16 nodes, got " + std::to_string(o.preconditioner_reach));
   if (!(o.krylov.relative_tolerance > 0.0 && o.krylov.relative_tolerance < 1.0) || o.krylov.krylov_dimension < 1 || o.krylov.max_restarts < 0)
     throw std::invalid_argument("EHL point contact: the Krylov tolerance must lie in (0, 1), the dimension ≥ 1, the restarts ≥ 0");
+  if (rough) validate(*rough, "EHL point contact");
 }
 
-}  // namespace
-
-EhlPointResult solve_ehl_point(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant, const EhlPointOptions& options) {
-  validate(contact, options);
+// Smooth (roughness null) or rough.
+EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* roughness, const PiezoviscousLubricant& lubricant,
+                           const EhlPointOptions& options) {
+  validate(contact, roughness, options);
   validate(lubricant);
   const int interior = (options.nodes_x - 2) * (options.nodes_y - 2);
   const bool dense = options.linear_solver == EhlPointLinearSolver::dense_lu ||
                      (options.linear_solver == EhlPointLinearSolver::automatic && interior <= kLargestDenseSystem);
-  const PointProblem problem(contact, lubricant, options, dense);
+  const PointProblem problem(contact, roughness, lubricant, options, dense);
   const double radius = contact.reduced_radius_m, a = problem.radius_m(), ph = problem.hertz_pressure_Pa();
   const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (a * a * a * ph);
 
@@ -515,11 +544,14 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
     }
   const int np = problem.pressure_unknowns();
   // H0 for the pressures in u: the central film at `central_m`, and where the pressures' deflection
-  // would close the film somewhere, raised until its lowest node is `lowest_m`.
+  // would close the film somewhere (to the boundary layers, with roughness), raised until its
+  // lowest node is `lowest_m` above them.
+  const double floor = problem.contact_floor();
   const auto place_film = [&](double central_m, double lowest_m) {
     u(np) = 0.0;
     u(np) = central_m / problem.film_scale_m() - problem.at_centre(problem.film(u));
-    if (const double lowest = problem.film(u).minCoeff(); lowest <= 0.0) u(np) += lowest_m / problem.film_scale_m() - lowest;
+    if (const double lowest = problem.film(u).minCoeff(); lowest <= floor)
+      u(np) += floor + lowest_m / problem.film_scale_m() - lowest;
   };
   place_film(h_start_m, 0.5 * h_start_m);
   // Nested iteration (EhlPointOptions::start_from_coarser_grid).
@@ -533,7 +565,7 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   coarser.max_continuation_steps = std::min(options.max_continuation_steps, 4);
   if (!dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y) {
     problem.start_analysis(u, lambda);
-    if (const EhlPointResult c = solve_ehl_point(contact, lubricant, coarser); c.converged) {
+    if (const EhlPointResult c = solve_point(contact, roughness, lubricant, coarser); c.converged) {
       for (int j = 1; j <= problem.ny() - 2; ++j)
         for (int i = 1; i <= problem.nx() - 2; ++i)
           u(problem.unknown(i, j)) = interpolate(c, problem.x()(i) * a, problem.y()(j) * a) / ph;
@@ -567,10 +599,30 @@ EhlPointResult solve_ehl_point(const EhlPointContact& contact, const Piezoviscou
   result.linear_solver = dense ? "dense LU" : "GMRES, sparse LU preconditioner";
   result.krylov_iterations = problem.krylov_iterations();
   result.preconditioner_factorisations = problem.factorisations();
+  if (roughness) {
+    double carried = 0.0;
+    result.in_contact.assign(static_cast<std::size_t>(h.size()), false);
+    for (int j = 1; j <= problem.ny() - 2; ++j)
+      for (int i = 1; i <= problem.nx() - 2; ++i)
+        if (const int k = problem.node(i, j); in_contact(*roughness, result.film_m[static_cast<std::size_t>(k)]))
+          result.in_contact[static_cast<std::size_t>(k)] = true, ++result.contact_nodes, carried += p(k);
+    result.contact_load_share = problem.dx() * problem.dy() * carried / (2.0 * std::numbers::pi / 3.0);
+  }
   result.message = result.converged ? "converged: ‖F‖∞ = " + shortest(result.residual) + " after " + std::to_string(result.iterations) +
                                           " Newton iterations"
                                     : "not converged: " + solved.newton.why + "; ‖F‖∞ = " + shortest(result.residual);
   return result;
+}
+
+}  // namespace
+
+EhlPointResult solve_ehl_point(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant, const EhlPointOptions& options) {
+  return solve_point(contact, nullptr, lubricant, options);
+}
+
+EhlPointResult solve_ehl_point(const EhlPointContact& contact, const EhlRoughness& roughness, const PiezoviscousLubricant& lubricant,
+                               const EhlPointOptions& options) {
+  return solve_point(contact, &roughness, lubricant, options);
 }
 
 }  // namespace tribo::lubrication

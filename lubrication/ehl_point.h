@@ -55,6 +55,7 @@
 #include <vector>
 
 #include "lubrication/complementarity.h"
+#include "lubrication/ehl_roughness.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
@@ -130,6 +131,11 @@ struct EhlPointResult {
   std::string linear_solver;      // "dense LU" or "GMRES, sparse LU preconditioner"
   int krylov_iterations = 0;      // GMRES iterations over the solve (0 for the dense LU)
   int preconditioner_factorisations = 0;  // sparse LUs of the Krylov preconditioner (reused while GMRES converges fast)
+  // With roughness: the nodes where the surfaces touch (film below contact_film_m; in_contact by
+  // node, x fastest, empty without), their count and the share of the load they carry (0 without).
+  std::vector<bool> in_contact;
+  int contact_nodes = 0;
+  double contact_load_share = 0.0;
   std::string message;
 };
 
@@ -138,5 +144,9 @@ struct EhlPointResult {
 // side); never throws for non-convergence (see `converged` and `message`).
 EhlPointResult solve_ehl_point(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant,
                                const EhlPointOptions& options = {});
+// The same contact with transverse ridges on the stationary surface, where films may close (header:
+// mixed lubrication); also throws std::invalid_argument for a bad profile.
+EhlPointResult solve_ehl_point(const EhlPointContact& contact, const EhlRoughness& roughness,
+                               const PiezoviscousLubricant& lubricant, const EhlPointOptions& options = {});
 
 }  // namespace tribo::lubrication

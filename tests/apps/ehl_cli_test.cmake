@@ -125,7 +125,7 @@ expect_refused(no_height "${rough_contact}${no_height}" "roughness.summit_height
 # With [profile]: a wavy stationary surface solved node by node (examples/ehl-wavy-pin.toml). Crawling,
 # every node of the Hertz strip is in contact, so the friction coefficient is the boundary friction;
 # the contact block splits the friction; the profile is the line's and needs a boundary friction.
-set(wavy_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1e-4\nslide_to_roll_ratio = 2.0\n")
+set(wavy_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1e-5\nslide_to_roll_ratio = 2.0\n")
 set(wavy_rest "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n[profile]\namplitude_m = 2.7e-8\nwavelength_m = 4.6e-5\nboundary_friction_coefficient = 0.1\n[solver]\nnodes = 401\n")
 run_ehl(wavy "wavy pin" "${wavy_contact}${wavy_rest}" --summary-only)
 execute_process(COMMAND ${PYTHON} -c "

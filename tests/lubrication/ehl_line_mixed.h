@@ -15,9 +15,9 @@ namespace tribo::lubrication::steel_rollers {
 constexpr double kCrawlLoad_N_per_m = 3e5;
 
 // A profile over [−6 b, 2 b] (the solver's domain and more) of heights a cos(2π x/wavelength).
-inline EhlLineRoughness wavy_profile(double w, double amplitude_m, double wavelength_m) {
+inline EhlRoughness wavy_profile(double w, double amplitude_m, double wavelength_m) {
   const double b = reference::hertz_line_half_width_m(w, kRadius_m, kModulus_Pa);
-  EhlLineRoughness r;
+  EhlRoughness r;
   constexpr int kPoints = 4001;
   for (int k = 0; k < kPoints; ++k) {
     const double x = -6.0 * b + 8.0 * b * k / (kPoints - 1);
@@ -27,6 +27,6 @@ inline EhlLineRoughness wavy_profile(double w, double amplitude_m, double wavele
   return r;
 }
 
-inline EhlLineRoughness flat_profile(double w) { return wavy_profile(w, 0.0, 1.0); }
+inline EhlRoughness flat_profile(double w) { return wavy_profile(w, 0.0, 1.0); }
 
 }  // namespace tribo::lubrication::steel_rollers

@@ -1,4 +1,4 @@
-// Mixed lubrication of a line contact (lubrication/ehl_line.h with an EhlLineRoughness), the
+// Mixed lubrication of a line contact (lubrication/ehl_line.h with an EhlRoughness), the
 // cases that need 801 nodes: a wavy stationary surface crawling in full contact against
 // Westergaard's solution, the contact lifting off as the speed rises, and a thick film that is the
 // smooth contact's.
@@ -50,14 +50,15 @@ TEST(EhlLineMixedSlow, WavyPinCrawlingIsWestergaardsFullContactOnHertz) {
 }
 
 // The Stribeck transition of the mixed model: the load the contact carries falls as the speed
-// rises — all of it at 10 µm/s, nearly all at 0.1 mm/s, none from 0.3 mm/s, and by 1 mm/s every
-// film has opened above the boundary layers (measured: 1.0000 at 10 µm/s, 0.9996 at 0.1 mm/s, none at 0.3 mm/s with a central film of
-// 5.03 nm over the layers' 5).
+// rises — all of it at 10 µm/s, nearly all at 0.1 mm/s, part of it at 0.3 mm/s, and by 1 mm/s every
+// film has opened past the contact margin above the boundary layers (measured: 1.0000 at 10 µm/s,
+// 0.9996 at 0.1 mm/s, 0.906 at 0.3 mm/s with a central film of 5.77 nm over the layers' 5 and the
+// margin's 1, none at 1 mm/s).
 TEST(EhlLineMixedSlow, ContactLiftsOffAsTheSpeedRises) {
   const double w = kCrawlLoad_N_per_m;
   double last = 1.0;
   for (const double u : {1e-5, 1e-4, 3e-4, 1e-3}) {
-    const EhlLineRoughness flat = flat_profile(w);
+    const EhlRoughness flat = flat_profile(w);
     const EhlLineResult r = solve_ehl_line({w, kRadius_m, kModulus_Pa, u}, flat, mineral_oil(), fine());
     ASSERT_TRUE(r.converged) << "u = " << u << ": " << r.message;
     std::printf("u_m %g m/s: contact share %.4f, %d nodes, central film %.3g m\n", u, r.contact_load_share, r.contact_nodes, r.central_film_m);
@@ -69,11 +70,12 @@ TEST(EhlLineMixedSlow, ContactLiftsOffAsTheSpeedRises) {
       EXPECT_GT(r.contact_load_share, 0.99);
     }
     if (u == 3e-4) {
-      EXPECT_EQ(r.contact_nodes, 0);
+      EXPECT_GT(r.contact_load_share, 0.5);
+      EXPECT_LT(r.contact_load_share, 0.99);
     }
     if (u == 1e-3) {
       EXPECT_EQ(r.contact_nodes, 0);
-      EXPECT_GT(r.minimum_film_m, flat.contact_film_m);
+      EXPECT_GT(r.minimum_film_m, flat.contact_film_m + flat.contact_margin_m);
     }
     last = r.contact_load_share;
   }

@@ -1,0 +1,31 @@
+// The mixed point contacts the tests share (ehl_point_mixed_test.cpp, ehl_point_mixed_slow_test.cpp):
+// the ball of ball_on_disc.h at 20 N (p_H ≈ 0.83 GPa, a ≈ 0.11 mm) on a stationary surface flat or
+// carrying transverse ridges.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+
+#include "lubrication/reference/ehl_point_film.h"
+#include "tests/lubrication/ball_on_disc.h"
+
+namespace tribo::lubrication::ball_on_disc {
+
+constexpr double kCrawlLoad_N = 20.0;
+
+// Ridges a cos(2π x/wavelength) over [−5 a, 3 a] (the solver's domain and more).
+inline EhlRoughness ridges(double amplitude_m, double wavelength_m) {
+  const double a = reference::hertz_point_radius_m(kCrawlLoad_N, kBallRadius_m, kBallModulus_Pa);
+  EhlRoughness r;
+  constexpr int kPoints = 4001;
+  for (int k = 0; k < kPoints; ++k) {
+    const double x = -5.0 * a + 8.0 * a * k / (kPoints - 1);
+    r.x_m.push_back(x);
+    r.height_m.push_back(amplitude_m * std::cos(2.0 * std::numbers::pi * x / wavelength_m));
+  }
+  return r;
+}
+
+inline EhlRoughness flat_surface() { return ridges(0.0, 1.0); }
+
+}  // namespace tribo::lubrication::ball_on_disc

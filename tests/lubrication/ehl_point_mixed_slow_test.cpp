@@ -1,0 +1,102 @@
+// Mixed lubrication of a point contact (lubrication/ehl_point.h with an EhlRoughness), the cases that
+// need fine grids: transverse ridges crawling in full contact against Westergaard's solution, the
+// contact lifting off as the speed rises, and a thick film that is the smooth contact's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "tests/lubrication/ehl_point_mixed.h"
+
+namespace tribo::lubrication {
+namespace {
+
+using namespace ball_on_disc;
+
+// Ridges a cos(2πx/λ), uniform across the track, pressed flat by a half-space carry p̄ + p* cos(2πx/λ)
+// with p* = π E* Δ/λ wherever p̄ ≥ p* (Westergaard 1939; Johnson, Contact Mechanics, 1985, ch. 13 —
+// the load is uniform in y, so the half-space deforms in plane strain). A ball crawling on its
+// boundary layers over ridges of λ = a/4, Δ for p* = 0.2 p_H, carries Hertz's semi-ellipsoid plus that
+// ripple: within r < a/2 (where p̄ > p*) to 1 % of p_H — 5 % of the ripple, on 161 × 61 nodes (20
+// along a wavelength; measured 0.48 %). Without the ridges in the film the ripple is missing (0.2 p_H).
+TEST(EhlPointMixedSlow, RidgedBallCrawlingIsWestergaardsFullContactOnHertz) {
+  const double a = reference::hertz_point_radius_m(kCrawlLoad_N, kBallRadius_m, kBallModulus_Pa);
+  const double ph = reference::hertz_point_peak_pressure_Pa(kCrawlLoad_N, kBallRadius_m, kBallModulus_Pa);
+  const double wavelength = a / 4.0, ripple = 0.2;
+  const double amplitude = ripple * ph * wavelength / (std::numbers::pi * 0.5 * kBallModulus_Pa);  // E* = E'/2
+  EhlPointOptions o = ball_grid(161);
+  o.nodes_y = 61;
+  const EhlPointResult r = solve_ehl_point(ball_contact(kCrawlLoad_N, 1e-5), ridges(amplitude, wavelength), ball_oil(), o);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_GT(r.contact_load_share, 0.99);
+  const std::size_t nx = r.x_m.size();
+  int inside = 0;
+  for (std::size_t j = 0; j < r.y_m.size(); ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double x = r.x_m[i] / a, y = r.y_m[j] / a;
+      if (x * x + y * y > 0.25) continue;
+      ++inside;
+      const double westergaard = std::sqrt(1.0 - x * x - y * y) + ripple * std::cos(2.0 * std::numbers::pi * r.x_m[i] / wavelength);
+      EXPECT_NEAR(r.pressure_Pa[i + nx * j] / ph, westergaard, 0.01) << "x/a = " << x << ", y/a = " << y;
+    }
+  EXPECT_GT(inside, 200);
+}
+
+// The Stribeck transition of the mixed model on 41²: the load the contact carries falls as the speed
+// rises — nearly all of it at 1 µm/s, part at 10 and 100 µm/s, none by 1 mm/s, where every film is
+// open past the margin (measured: 0.997, 0.805, 0.031, 0). The smooth solver on the same grid stalls
+// below 0.1 m/s (its side lobes close through zero); the boundary layers hold them.
+TEST(EhlPointMixedSlow, ContactLiftsOffAsTheSpeedRises) {
+  const EhlRoughness flat = flat_surface();
+  double last = 1.0;
+  for (const double u : {1e-6, 1e-5, 1e-4, 1e-3}) {
+    const EhlPointResult r = solve_ehl_point(ball_contact(kCrawlLoad_N, u), flat, ball_oil(), ball_grid(41));
+    ASSERT_TRUE(r.converged) << "u = " << u << ": " << r.message;
+    std::printf("u_m %g m/s: contact share %.4f, %d nodes, central film %.3g m, minimum %.3g m\n", u, r.contact_load_share,
+                r.contact_nodes, r.central_film_m, r.minimum_film_m);
+    EXPECT_LE(r.contact_load_share, last + 1e-9) << "u = " << u;
+    if (u == 1e-6) {
+      EXPECT_GT(r.contact_load_share, 0.99);
+    }
+    if (u == 1e-5 || u == 1e-4) {
+      EXPECT_GT(r.contact_load_share, 0.01) << "u = " << u;
+      EXPECT_LT(r.contact_load_share, 0.9) << "u = " << u;
+    }
+    if (u == 1e-3) {
+      EXPECT_EQ(r.contact_nodes, 0);
+      EXPECT_GT(r.minimum_film_m, flat.contact_film_m + flat.contact_margin_m);
+    }
+    last = r.contact_load_share;
+  }
+}
+
+// A film 30 times the boundary layers (0.5 m/s: ≈ 0.15 µm) is the smooth contact's but for the
+// rough contact's first-order wedge: the central film's difference falls with the spacing (measured
+// +14 % on 129², +7.7 % on 257²; the minimum film's +16 % and +10 %), the peak pressure within 1 %
+// (+0.6 %, +0.2 %).
+TEST(EhlPointMixedSlow, ThickFilmIsTheSmoothContactsToTheFirstOrderWedge) {
+  const EhlPointContact c = ball_contact(kCrawlLoad_N, 0.5);
+  double previous = 0.0;
+  for (const int n : {129, 257}) {
+    const EhlPointResult smooth = solve_ehl_point(c, ball_oil(), ball_grid(n));
+    const EhlPointResult rough = solve_ehl_point(c, flat_surface(), ball_oil(), ball_grid(n));
+    ASSERT_TRUE(smooth.converged) << smooth.message;
+    ASSERT_TRUE(rough.converged) << rough.message;
+    const double central = rough.central_film_m / smooth.central_film_m - 1.0, minimum = rough.minimum_film_m / smooth.minimum_film_m - 1.0;
+    std::printf("%d²: central film %+.3f, minimum %+.3f, peak pressure %+.4f against the smooth contact\n", n, central, minimum,
+                rough.max_pressure_Pa / smooth.max_pressure_Pa - 1.0);
+    EXPECT_EQ(rough.contact_nodes, 0);
+    EXPECT_GT(central, 0.0);
+    EXPECT_LT(central, 0.2);
+    EXPECT_LT(std::abs(minimum), 0.2);
+    EXPECT_NEAR(rough.max_pressure_Pa / smooth.max_pressure_Pa, 1.0, 0.01);
+    if (previous > 0.0) {
+      EXPECT_LT(central, 0.7 * previous);
+    }
+    previous = central;
+  }
+}
+
+}  // namespace
+}  // namespace tribo::lubrication

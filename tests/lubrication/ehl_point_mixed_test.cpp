@@ -1,0 +1,55 @@
+// Mixed lubrication of a point contact by Hu & Zhu's unified treatment (lubrication/ehl_point.h
+// with an EhlRoughness): bad input, and a smooth ball crawling on its boundary layers — the film
+// closed over the Hertz circle, the pressure Hertz's, the load carried in contact. Ridges against
+// Westergaard's full contact, the lift-off and the thick film are ehl_point_mixed_slow_test.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "tests/lubrication/ehl_point_mixed.h"
+
+namespace tribo::lubrication {
+namespace {
+
+using namespace ball_on_disc;
+
+// Crawling (1 µm/s at 20 N; Hamrock–Dowson's smooth film there is ≈ 0.05 nm, against the boundary
+// layers' 5 nm): the nodes of the Hertz circle are in contact and carry Hertz's semi-ellipsoid —
+// the dry contact of the same ball — to 1 % of p_H within 0.5 a (measured 0.33 % on 31²) and 3 %
+// within 0.9 a, where the grid's cells cut the square-root edge (measured 1.8 %). The film there is
+// the layers' to within the contact margin.
+TEST(EhlPointMixed, SmoothBallCrawlingOnItsBoundaryLayersIsHertzsDryContact) {
+  const EhlRoughness flat = flat_surface();
+  const EhlPointResult r = solve_ehl_point(ball_contact(kCrawlLoad_N, 1e-6), flat, ball_oil(), ball_grid(31));
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_GT(r.contact_load_share, 0.98);
+  EXPECT_NEAR(r.load_balance_error, 0.0, 1e-9);
+  const std::size_t nx = r.x_m.size();
+  int inner = 0;
+  for (std::size_t j = 0; j < r.y_m.size(); ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double x = r.x_m[i] / r.hertz_radius_m, y = r.y_m[j] / r.hertz_radius_m, r2 = x * x + y * y;
+      if (r2 > 0.81) continue;
+      const double p = r.pressure_Pa[i + nx * j] / r.hertz_pressure_Pa;
+      EXPECT_NEAR(p, std::sqrt(1.0 - r2), r2 < 0.25 ? 0.01 : 0.03) << "x/a = " << x << ", y/a = " << y;
+      EXPECT_TRUE(r.in_contact[i + nx * j]) << "x/a = " << x << ", y/a = " << y;
+      EXPECT_NEAR(r.film_m[i + nx * j], flat.contact_film_m, flat.contact_margin_m) << "x/a = " << x << ", y/a = " << y;
+      inner += r2 < 0.25;
+    }
+  EXPECT_GE(inner, 20);
+}
+
+// A bad profile is refused by the shared check (ehl_roughness_test.cpp), named as the point contact's.
+TEST(EhlPointMixed, BadRoughnessIsRejectedAsThePointContacts) {
+  try {
+    solve_ehl_point(ball_contact(kCrawlLoad_N, 1e-3), EhlRoughness{{0.0, 1e-3}, {0.0, 0.0}, 5e-9, -1e-9}, ball_oil());
+    ADD_FAILURE() << "accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("EHL point contact: roughness contact_margin_m", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tribo::lubrication

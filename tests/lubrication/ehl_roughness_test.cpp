@@ -1,0 +1,84 @@
+// The stationary surface of the mixed EHL contacts (lubrication/ehl_roughness.h): the profile's
+// interpolation, its checks, and the pressure-flow coefficient at a face with boundary layers.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "lubrication/ehl_roughness.h"
+
+namespace tribo::lubrication {
+namespace {
+
+// Linear between the points (the midpoint of a 2 nm rise is 1 nm, to round-off), the end points
+// themselves, and zero outside the profile.
+TEST(EhlRoughness, HeightIsLinearBetweenPointsAndZeroOutside) {
+  const EhlRoughness r{{-1e-4, 0.0, 2e-4}, {0.0, 2e-9, -4e-9}};
+  EXPECT_NEAR(ridge_height_m(r, -5e-5), 1e-9, 1e-24);
+  EXPECT_NEAR(ridge_height_m(r, 1e-4), -1e-9, 1e-24);
+  EXPECT_EQ(ridge_height_m(r, 2e-4), -4e-9);
+  EXPECT_EQ(ridge_height_m(r, -1e-4), 0.0);
+  EXPECT_EQ(ridge_height_m(r, -1.1e-4), 0.0);
+  EXPECT_EQ(ridge_height_m(r, 2.1e-4), 0.0);
+}
+
+TEST(EhlRoughness, BadProfileIsRejectedWithItsReason) {
+  const auto message = [](const EhlRoughness& r) {
+    try {
+      validate(r, "who");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message({{0.0, 1e-3}, {0.0, 0.0}}), "accepted");
+  EXPECT_NE(message({{0.0}, {0.0}}).find("who: the roughness profile needs at least two points"), std::string::npos);
+  EXPECT_NE(message({{0.0, 1e-3}, {0.0}}).find("as many heights"), std::string::npos);
+  EXPECT_NE(message({{0.0, 0.0}, {0.0, 1e-9}}).find("must increase, point 1"), std::string::npos);
+  EXPECT_NE(message({{0.0, 1e-3}, {0.0, NAN}}).find("point 1 is not finite"), std::string::npos);
+  EXPECT_NE(message({{0.0, 1e-3}, {0.0, 0.0}, 0.0}).find("contact_film_m must be positive"), std::string::npos);
+  EXPECT_NE(message({{0.0, 1e-3}, {0.0, 0.0}, 5e-9, -1e-9}).find("contact_margin_m must be finite and not negative"),
+            std::string::npos);
+}
+
+// In contact below H_c + the margin, open at or above it.
+TEST(EhlRoughness, ContactIsAFilmWithinTheMarginOfTheBoundaryLayers) {
+  const EhlRoughness r{{0.0, 1.0}, {0.0, 0.0}, 5e-9, 1e-9};
+  EXPECT_TRUE(in_contact(r, 3e-9));
+  EXPECT_TRUE(in_contact(r, 5.9e-9));
+  EXPECT_FALSE(in_contact(r, 6e-9));
+}
+
+// On smooth surfaces the face's ε is the mean of the nodes' c m³; with boundary layers the mean of c
+// times the harmonic mean of m³: zero once either film has closed, c m³ where both are equal, and
+// between the two nodes' values otherwise. The derivatives match central differences to 1e-7
+// relative (a step of 1e-6 of each value: the truncation error is ~1e-12).
+TEST(EhlRoughness, FaceFlowClosesWithEitherFilmAndCarriesItsDerivatives) {
+  const FaceFlow smooth = face_flow(2.0, 3.0, 5.0, 7.0, false);
+  EXPECT_DOUBLE_EQ(smooth.value, 0.5 * (2.0 * 3.0 + 5.0 * 7.0));
+  EXPECT_DOUBLE_EQ(face_flow(2.0, 0.0, 5.0, 7.0, true).value, 0.0);
+  EXPECT_DOUBLE_EQ(face_flow(2.0, 3.0, 5.0, 0.0, true).value, 0.0);
+  EXPECT_DOUBLE_EQ(face_flow(0.0, 0.0, 5.0, 0.0, true).dm3_a, 0.0);
+  EXPECT_DOUBLE_EQ(face_flow(2.0, 3.0, 2.0, 3.0, true).value, 6.0);
+  const FaceFlow f = face_flow(2.0, 3.0, 5.0, 7.0, true);
+  EXPECT_GT(f.value, 2.0 * 3.0);
+  EXPECT_LT(f.value, 5.0 * 7.0);
+  for (const bool layers : {false, true}) {
+    const double v[4] = {2.0, 3.0, 5.0, 7.0};
+    const FaceFlow at = face_flow(v[0], v[1], v[2], v[3], layers);
+    const double analytic[4] = {at.dc_a, at.dm3_a, at.dc_b, at.dm3_b};
+    for (int k = 0; k < 4; ++k) {
+      double up[4] = {v[0], v[1], v[2], v[3]}, down[4] = {v[0], v[1], v[2], v[3]};
+      const double step = 1e-6 * v[k];
+      up[k] += step;
+      down[k] -= step;
+      const double numeric = (face_flow(up[0], up[1], up[2], up[3], layers).value - face_flow(down[0], down[1], down[2], down[3], layers).value) /
+                             (2.0 * step);
+      EXPECT_NEAR(analytic[k], numeric, 1e-7 * std::abs(numeric)) << "layers " << layers << ", derivative " << k;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tribo::lubrication
