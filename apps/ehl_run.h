@@ -45,7 +45,7 @@ struct EhlRun {
   // The profile is a waviness a cos(2π x/λ) or a measured trace (`file`): levelled, Gaussian-filtered
   // at `cutoff_m` (contact/profile.h) and placed with its point `centre_m` at the Hertz centre.
   struct Profile {
-    lubrication::EhlLineRoughness surface;  // the samples the solver interpolates
+    lubrication::EhlRoughness surface;  // the samples the solver interpolates
     double amplitude_m = 0.0, wavelength_m = 0.0;
     double boundary_friction_coefficient = 0.0;
     std::filesystem::path file;     // empty for a waviness
