@@ -165,7 +165,6 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     run.roughness = rough;
   }
   if (auto pr = root.table("profile")) {
-    if (run.point) root.fail("profile", "is a line contact's (geometry = \"line\")");
     if (run.roughness) root.fail("profile", "give [roughness] (load sharing) or [profile] (node by node), not both");
     EhlRun::Profile profile;
     if (pr->has("file")) {
@@ -177,6 +176,7 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
       profile.wavelength_m = pr->required_number("wavelength_m", Range::positive);
     }
     profile.surface.contact_film_m = pr->number("contact_film_m", profile.surface.contact_film_m, Range::positive);
+    profile.surface.contact_margin_m = pr->number("contact_margin_m", profile.surface.contact_margin_m, Range::non_negative);
     profile.boundary_friction_coefficient = pr->required_number("boundary_friction_coefficient", Range::non_negative);
     pr->finish();
     run.profile = profile;
@@ -223,26 +223,35 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     lub::validate(run.lubricant);
     return 0;
   });
+  // The solver's domain along x (m from the Hertz centre) and its nodes there, for the profile.
+  double domain_from = 0.0, domain_to = 0.0;
+  int nodes_along_x = 0;
   if (run.point) {
     if (!(run.point_options.inlet_over_radius < -1.0)) root.fail("solver.inlet_over_radius", "must lie before the contact, below -1");
     if (!(run.point_options.outlet_over_radius > 1.0)) root.fail("solver.outlet_over_radius", "must lie past the contact, above 1");
     if (!(run.point_options.side_over_radius > 1.0)) root.fail("solver.side_over_radius", "must reach past the contact, above 1");
-    return run;
+    const lub::EhlPointContact& c = *run.point;
+    const double a = lub::reference::hertz_point_radius_m(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
+    domain_from = run.point_options.inlet_over_radius * a, domain_to = run.point_options.outlet_over_radius * a;
+    nodes_along_x = run.point_options.nodes_x;
+  } else {
+    if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
+    if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
+    const double b = lub::reference::hertz_line_half_width_m(run.contact.load_per_length_N_per_m, run.contact.reduced_radius_m,
+                                                             run.contact.reduced_modulus_Pa);
+    domain_from = run.options.inlet_over_half_width * b, domain_to = run.options.outlet_over_half_width * b;
+    nodes_along_x = run.options.nodes;
   }
-  if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
-  if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
   run.input_files = root.input_files();
   if (run.profile) {
     EhlRun::Profile& pr = *run.profile;
-    const double b = lub::reference::hertz_line_half_width_m(run.contact.load_per_length_N_per_m, run.contact.reduced_radius_m,
-                                                             run.contact.reduced_modulus_Pa);
-    const double spacing = (run.options.outlet_over_half_width - run.options.inlet_over_half_width) * b / (run.options.nodes - 1);
+    const double spacing = (domain_to - domain_from) / (nodes_along_x - 1);
     if (!pr.file.empty()) {
-      place_measured_profile(root, run.options.inlet_over_half_width * b, run.options.outlet_over_half_width * b, spacing, pr);
+      place_measured_profile(root, domain_from, domain_to, spacing, pr);
       return run;
     }
     // The waviness a cos(2π x/λ) sampled over the solver's domain, 64 points a wavelength.
-    const double from = run.options.inlet_over_half_width * b - pr.wavelength_m, to = run.options.outlet_over_half_width * b + pr.wavelength_m;
+    const double from = domain_from - pr.wavelength_m, to = domain_to + pr.wavelength_m;
     if (!(pr.wavelength_m >= 8.0 * spacing))
       root.fail("profile.wavelength_m", numerics::shortest(pr.wavelength_m) + " m spans fewer than 8 of the solver's node spacings (" +
                                             numerics::shortest(spacing) + " m): refine solver.nodes");
@@ -349,6 +358,86 @@ void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed*
   }
 }
 
+// ehl.json's inputs.profile: the waviness, or the measured trace and what the filter kept of it.
+nlohmann::json profile_inputs(const EhlRun::Profile& pr) {
+  nlohmann::json j;
+  if (pr.file.empty()) {
+    j = {{"amplitude_m", pr.amplitude_m}, {"wavelength_m", pr.wavelength_m}};
+  } else {
+    j = {{"file", pr.file.string()},
+         {"sample_spacing_m", pr.spacing_m},
+         {"cutoff_m", *pr.cutoff_m},
+         {"centre_m", *pr.centre_m},
+         {"rq_m", pr.rq_m},
+         {"filtered_rq_m", pr.filtered_rq_m}};
+  }
+  j["contact_film_m"] = pr.surface.contact_film_m;
+  j["contact_margin_m"] = pr.surface.contact_margin_m;
+  j["boundary_friction_coefficient"] = pr.boundary_friction_coefficient;
+  return j;
+}
+
+// A film solved with [profile] (node by node, Hu & Zhu's unified model): ehl.json's "contact" block
+// and the whole contact's friction. The film's traction (`traction_of`, into `traction`, its force in
+// the member `force`) is taken over the nodes whose film is open — the contact nodes' pressure taken
+// out, so that their nanometre films are not sheared as oil — and the boundary friction on the load
+// the contact nodes carry is added: ehl.json's traction, friction coefficient and largest shear stress
+// are the whole contact's (the temperature rise stays the film's: the contacts' flash heating is not
+// modelled). Loads and forces per unit length for a line ("per_length_N_per_m", "N_per_m"), in N for
+// a point ("N", "N"); null where the solve did not converge (an iterate, not a solution).
+template <class Film, class Traction, class TractionOf>
+void profile_friction(const Film& film, bool converged, double load, double boundary_coefficient, TractionOf&& traction_of,
+                      Traction& traction, double Traction::*force, const std::string& load_unit, const std::string& force_unit,
+                      nlohmann::json& j) {
+  const std::string load_key = "contact_load_" + load_unit, boundary_key = "boundary_friction_" + force_unit,
+                    film_key = "film_friction_" + force_unit;
+  if (!converged) {
+    j["contact"] = {{"contact_nodes", nullptr}, {"contact_load_share", nullptr}, {load_key, nullptr}, {boundary_key, nullptr}, {film_key, nullptr}};
+    return;
+  }
+  const double contact_load = film.contact_load_share * load;
+  Film open = film;
+  double contact_pressure = 0.0;
+  for (std::size_t k = 0; k < open.film_m.size(); ++k)
+    if (open.in_contact[k]) contact_pressure = std::max(contact_pressure, open.pressure_Pa[k]), open.pressure_Pa[k] = 0.0;
+  traction = traction_of(open);
+  const double boundary = boundary_coefficient * contact_load, sheared = traction.*force;
+  j["contact"] = {{"contact_nodes", film.contact_nodes},
+                  {"contact_load_share", film.contact_load_share},
+                  {load_key, contact_load},
+                  {boundary_key, boundary},
+                  {film_key, sheared}};
+  traction.*force = sheared + boundary;
+  traction.friction_coefficient = (sheared + boundary) / load;
+  traction.max_shear_stress_Pa = std::max(traction.max_shear_stress_Pa, boundary_coefficient * contact_pressure);
+}
+
+// A line contact with [profile] (ehl_line.h).
+void solve_profile(const EhlRun& run, EhlSolve& out) {
+  const double w = run.contact.load_per_length_N_per_m;
+  out.film = lub::solve_ehl_line(run.contact, run.profile->surface, run.lubricant, run.options);
+  out.converged = out.film.converged;
+  out.summary["regime"] = "mixed (node by node, lubrication/ehl_line.h: Hu & Zhu's unified model)";
+  const auto traction_of = [&](const lub::EhlLineResult& f) {
+    return lub::ehl_line_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating);
+  };
+  profile_friction(out.film, out.converged, w, run.profile->boundary_friction_coefficient, traction_of, out.traction,
+                   &lub::EhlTraction::force_per_length_N_per_m, "per_length_N_per_m", "N_per_m", out.summary);
+}
+
+// A point contact with [profile]: ridges across the track (ehl_point.h).
+void solve_point_profile(const EhlRun& run, EhlSolve& out) {
+  const lub::EhlPointContact& c = *run.point;
+  out.point_film = lub::solve_ehl_point(c, run.profile->surface, run.lubricant, run.point_options);
+  out.converged = out.point_film->converged;
+  out.summary["regime"] = "mixed (node by node, lubrication/ehl_point.h: Hu & Zhu's unified model, ridges across the track)";
+  const auto traction_of = [&](const lub::EhlPointResult& f) {
+    return lub::ehl_point_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating);
+  };
+  profile_friction(*out.point_film, out.converged, c.load_N, run.profile->boundary_friction_coefficient, traction_of, out.point_traction,
+                   &lub::EhlPointTraction::force_N, "N", "N", out.summary);
+}
+
 // The point contact's solve and summary (geometry = "point").
 void solve_point(const EhlRun& run, EhlSolve& out) {
   nlohmann::json& j = out.summary;
@@ -363,6 +452,8 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
     out.converged = m.converged;
     j["regime"] = "mixed (load sharing, lubrication/mixed_point.h): the film fields are the film's share of the load";
     j["mixed"] = mixed_json(m, {m.film_load_N, m.asperity_load_N, m.boundary_friction_N, m.film_friction_N}, "N", "N");
+  } else if (run.profile) {
+    solve_point_profile(run, out);
   } else {
     out.point_film = lub::solve_ehl_point(c, run.lubricant, run.point_options);
     out.converged = out.point_film->converged;
@@ -393,58 +484,7 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
                  {"nodes_y", run.point_options.nodes_y}};
   j["inputs"].update(lubricant_inputs(run));
   if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
-}
-
-// ehl.json's inputs.profile: the waviness, or the measured trace and what the filter kept of it.
-nlohmann::json profile_inputs(const EhlRun::Profile& pr) {
-  nlohmann::json j;
-  if (pr.file.empty()) {
-    j = {{"amplitude_m", pr.amplitude_m}, {"wavelength_m", pr.wavelength_m}};
-  } else {
-    j = {{"file", pr.file.string()},
-         {"sample_spacing_m", pr.spacing_m},
-         {"cutoff_m", *pr.cutoff_m},
-         {"centre_m", *pr.centre_m},
-         {"rq_m", pr.rq_m},
-         {"filtered_rq_m", pr.filtered_rq_m}};
-  }
-  j["contact_film_m"] = pr.surface.contact_film_m;
-  j["boundary_friction_coefficient"] = pr.boundary_friction_coefficient;
-  return j;
-}
-
-// A line contact with [profile]: films and contacts node by node (ehl_line.h). Friction: the film's
-// traction over the nodes whose film is open (the solver's contact nodes' pressure taken out, so that
-// their nanometre films are not sheared as oil) plus the boundary friction on the load they carry.
-void solve_profile(const EhlRun& run, EhlSolve& out) {
-  nlohmann::json& j = out.summary;
-  const EhlRun::Profile& pr = *run.profile;
-  const double w = run.contact.load_per_length_N_per_m;
-  out.film = lub::solve_ehl_line(run.contact, pr.surface, run.lubricant, run.options);
-  out.converged = out.film.converged;
-  j["regime"] = "mixed (node by node, lubrication/ehl_line.h: Hu & Zhu's unified model)";
-  if (!out.converged) {  // an iterate, not a solution: no contact numbers
-    j["contact"] = {{"contact_nodes", nullptr}, {"contact_load_share", nullptr}, {"contact_load_per_length_N_per_m", nullptr},
-                    {"boundary_friction_N_per_m", nullptr}, {"film_friction_N_per_m", nullptr}};
-    return;
-  }
-  const double contact_load = out.film.contact_load_share * w;
-  lub::EhlLineResult open = out.film;
-  double contact_pressure = 0.0;
-  for (std::size_t i = 0; i < open.film_m.size(); ++i)
-    if (open.in_contact[i]) contact_pressure = std::max(contact_pressure, open.pressure_Pa[i]), open.pressure_Pa[i] = 0.0;
-  out.traction = lub::ehl_line_traction(open, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating);
-  const double boundary = pr.boundary_friction_coefficient * contact_load, film = out.traction.force_per_length_N_per_m;
-  j["contact"] = {{"contact_nodes", out.film.contact_nodes},
-                  {"contact_load_share", out.film.contact_load_share},
-                  {"contact_load_per_length_N_per_m", contact_load},
-                  {"boundary_friction_N_per_m", boundary},
-                  {"film_friction_N_per_m", film}};
-  // ehl.json's traction, friction coefficient and largest shear stress are the whole contact's (the
-  // temperature rise stays the film's: the contacts' flash heating is not modelled).
-  out.traction.force_per_length_N_per_m = film + boundary;
-  out.traction.friction_coefficient = (film + boundary) / w;
-  out.traction.max_shear_stress_Pa = std::max(out.traction.max_shear_stress_Pa, pr.boundary_friction_coefficient * contact_pressure);
+  if (run.profile) j["inputs"]["profile"] = profile_inputs(*run.profile);
 }
 
 }  // namespace

@@ -36,13 +36,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       TRIBO_FUZZ_CHECK(std::isfinite(r.summit_height_m) && r.summit_height_m >= 0.0);
       TRIBO_FUZZ_CHECK(std::isfinite(r.boundary_friction_coefficient) && r.boundary_friction_coefficient >= 0.0);
     }
-    if (run.profile) {  // a line's waviness: a profile the solver accepts (ehl_line.h)
-      TRIBO_FUZZ_CHECK(!run.point);
+    if (run.profile) {  // a waviness or trace, either geometry (a ridged ball since 2026-12-02): a profile the solvers accept
       const auto& r = run.profile->surface;
       TRIBO_FUZZ_CHECK(r.x_m.size() >= 2 && r.x_m.size() == r.height_m.size() && r.x_m.size() <= 1000001);
       for (std::size_t k = 0; k < r.x_m.size(); ++k)
         TRIBO_FUZZ_CHECK(std::isfinite(r.x_m[k]) && std::isfinite(r.height_m[k]) && (k == 0 || r.x_m[k] > r.x_m[k - 1]));
       TRIBO_FUZZ_CHECK(std::isfinite(r.contact_film_m) && r.contact_film_m > 0.0);
+      TRIBO_FUZZ_CHECK(std::isfinite(r.contact_margin_m) && r.contact_margin_m >= 0.0);
       TRIBO_FUZZ_CHECK(std::isfinite(run.profile->boundary_friction_coefficient) && run.profile->boundary_friction_coefficient >= 0.0);
     }
     TRIBO_FUZZ_CHECK(std::isfinite(run.sliding_speed_m_per_s));

@@ -14,7 +14,7 @@
 // Reynolds d/dX(ε dP/dX) = d(ρ̄H)/dX with ε = ρ̄ H³/(η̄ λ), λ = 12 η0 u_m R²/(b³ p_H).
 //
 // Discretisation: N nodes on [X_in, X_out], P = 0 at both ends; the Poiseuille term by central
-// differences with ε at the half nodes (the mean of its neighbours), the wedge term by second-order
+// differences with ε at the half nodes (the mean of its neighbours; with roughness, below), the wedge term by second-order
 // upwind differences (first order at the first interior node), the deformation with P constant on
 // each node's cell (the exact integral of ln|t| over the cell). Second order in ΔX where the
 // solution is smooth — observed in the tests.
@@ -39,13 +39,16 @@
 // everywhere, the pressure flow through the part of the film above the boundary layers
 // (ε = ρ (H − H_c)₊³/(η̄λ), H_c = contact_film_m), so that where the film has closed to H_c only the
 // surfaces' transport is left (Hu & Zhu's reduced equation, d(ρH)/dX = 0) and the pressure there is
-// the contact's, whatever holds the surfaces together. The wedge term is then first-order upwind
-// (second order extrapolates a converging inlet through zero at a contact's edge); Newton's steps
-// may close a film to H_c/2 in one step, and the continuation in λ also runs from a thicker film
-// (ehl_newton.h). A node whose film is below H_c is in contact (EhlLineResult::contact_nodes); its
-// film is what the transport leaves (≈ 1–4 nm in the tests), a number the model does not resolve —
-// it resolves the pressure. No plastic cap: a capped pressure lets a film close through zero, which
-// this formulation cannot hold (tried: Newton stalls).
+// the contact's, whatever holds the surfaces together. ε at a half node is then the mean of ρ̄/(η̄λ)
+// times the harmonic mean of (H − H_c)₊³, so that no flow passes a face once either side has closed
+// (ehl_roughness.h: face_flow), and the wedge term is first-order upwind (second order extrapolates a
+// converging inlet through zero at a contact's edge); Newton's steps may close a film to H_c/2 in one
+// step, and the continuation in λ also runs from a thicker film (ehl_newton.h). The film settles onto
+// the layers only asymptotically; a node whose film lies within EhlRoughness::contact_margin_m of them
+// is in contact (EhlLineResult::contact_nodes) — its film, what the transport leaves (≈ 4.5–6 nm in
+// the tests), is a number the model does not resolve; it resolves the pressure. No plastic cap: a
+// capped pressure lets a film close through zero, which this formulation cannot hold (tried: Newton
+// stalls).
 #pragma once
 
 #include <string>
@@ -87,8 +90,8 @@ struct EhlLineResult {
   double max_pressure_Pa = 0.0;
   double hertz_half_width_m = 0.0, hertz_pressure_Pa = 0.0;
   double load_balance_error = 0.0;  // (∫p dx − w)/w
-  // With roughness: the nodes where the surfaces touch (film below contact_film_m; in_contact by
-  // node, empty without), their count and the share of the load they carry (0 without).
+  // With roughness: the nodes where the surfaces touch (film below contact_film_m + contact_margin_m;
+  // in_contact by node, empty without), their count and the share of the load they carry (0 without).
   std::vector<bool> in_contact;
   int contact_nodes = 0;
   double contact_load_share = 0.0;

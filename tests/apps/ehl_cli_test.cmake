@@ -145,7 +145,6 @@ if(NOT check EQUAL 0)
 endif()
 string(REPLACE "boundary_friction_coefficient = 0.1\n" "" no_fc "${wavy_rest}")
 expect_refused(wavy_no_fc "${wavy_contact}${no_fc}" "profile.boundary_friction_coefficient")
-expect_refused(wavy_point "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-5\nboundary_friction_coefficient = 0.1\n" "profile")
 expect_refused(wavy_and_rough "${rough_contact}${rough_rest}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-5\nboundary_friction_coefficient = 0.1\n" "profile")
 string(REPLACE "wavelength_m = 4.6e-5" "wavelength_m = 4e-6" short_wave "${wavy_rest}")
 expect_refused(wavy_short "${wavy_contact}${short_wave}" "profile.wavelength_m")
@@ -170,3 +169,26 @@ assert len(inputs) == 2 and inputs[1]['path'].endswith('dektak-1.csv') and len(i
 if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo ehl, measured pin: ehl.json is not as documented: ${why}")
 endif()
+
+# [profile] on a point contact: examples/ehl-ridged-ball.toml, the ball held still over a sliding disc
+# with ridges across the track. Crawling, the Hertz circle is in contact, so the friction coefficient
+# is the boundary friction; the contact block in N; the margin among the inputs.
+run_ehl_config(ridged "ridged ball" ${EXAMPLES}/ehl-ridged-ball.toml --summary-only)
+execute_process(COMMAND ${PYTHON} -c "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+c, p = s['contact'], s['inputs']['profile']
+assert s['converged'] and s['geometry'] == 'point', s['message']
+assert c['contact_load_share'] > 0.99 and c['contact_nodes'] > 500, c
+assert abs(c['contact_load_N'] - c['contact_load_share'] * 20.0) <= 1e-9 * 20.0, c
+assert abs(c['boundary_friction_N'] - 0.1 * c['contact_load_N']) <= 1e-9 * 2.0, c
+mu = (c['boundary_friction_N'] + c['film_friction_N']) / 20.0
+assert abs(s['friction_coefficient'] - mu) <= 1e-12 and abs(mu - 0.1) < 1e-3, (s['friction_coefficient'], mu)
+assert abs(s['traction_N'] - mu * 20.0) <= 1e-9, s['traction_N']
+assert p['contact_film_m'] == 5e-9 and p['contact_margin_m'] == 1e-9 and p['wavelength_m'] == 2.7e-5, p
+" ${WORK}/out_ridged RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, ridged ball: ehl.json is not as documented: ${why}")
+endif()
+expect_refused(ridged_short "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-6\nboundary_friction_coefficient = 0.1\n" "profile.wavelength_m")
+expect_refused(ridged_margin "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-4\ncontact_margin_m = -1e-9\nboundary_friction_coefficient = 0.1\n" "profile.contact_margin_m")
