@@ -259,12 +259,9 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     if (!std::isfinite(from) || !std::isfinite(to) || !(points <= 1e6))
       root.fail("profile.wavelength_m", "the solver's domain would need " + numerics::shortest(points) +
                                             " profile points (64 a wavelength), more than 1e6");
-    const auto n = static_cast<std::size_t>(points);
-    for (std::size_t k = 0; k < n; ++k) {
-      const double x = from + (to - from) * static_cast<double>(k) / static_cast<double>(n - 1);
-      pr.surface.x_m.push_back(x);
-      pr.surface.height_m.push_back(pr.amplitude_m * std::cos(2.0 * std::numbers::pi * x / pr.wavelength_m));
-    }
+    const double layers_m = pr.surface.contact_film_m, margin_m = pr.surface.contact_margin_m;
+    pr.surface = lub::cosine_ridges(from, to, pr.amplitude_m, pr.wavelength_m, static_cast<std::size_t>(points));
+    pr.surface.contact_film_m = layers_m, pr.surface.contact_margin_m = margin_m;
   }
   return run;
 }

@@ -39,9 +39,9 @@ struct EhlRun {
     double boundary_friction_coefficient = 0.0;
   };
   std::optional<Roughness> roughness;
-  // With [profile] (a line contact): a wavy stationary surface and its asperity contact, solved node by
-  // node (ehl_line.h, Hu & Zhu's unified model); the contact nodes shear at the boundary friction, the
-  // others as the film.
+  // With [profile]: a wavy stationary surface and its asperity contact, solved node by node (ehl_line.h,
+  // ehl_point.h — ridges across the track; Hu & Zhu's unified model); the contact nodes shear at the
+  // boundary friction, the others as the film.
   // The profile is a waviness a cos(2π x/λ) or a measured trace (`file`): levelled, Gaussian-filtered
   // at `cutoff_m` (contact/profile.h) and placed with its point `centre_m` at the Hertz centre.
   struct Profile {
@@ -62,8 +62,8 @@ struct EhlRun {
 // Reads and checks `path`: [contact] (geometry = "line" with load_per_length_N_per_m, or "point"
 // with load_N; radius, modulus, entrainment, and the sliding speed or the slide-to-roll ratio), [lubricant] (η0, α, law, compressible,
 // eyring_stress_Pa, the film's heating), optionally [roughness] (summit density, radius, standard
-// deviation and mean height, boundary friction coefficient) or, for a line, [profile] (a waviness's
-// amplitude and wavelength or a measured trace's file, the boundary layers' thickness, boundary
+// deviation and mean height, boundary friction coefficient) or [profile] (a waviness's amplitude and
+// wavelength or a measured trace's file, the boundary layers' thickness and contact margin, boundary
 // friction coefficient), and
 // [solver] (docs/lubrication.md).
 // Bad input is an InputError naming file, key and reason.

@@ -278,9 +278,7 @@ EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roug
         result.in_contact[static_cast<std::size_t>(i)] = true, ++result.contact_nodes, carried += p(i);
     result.contact_load_share = problem.dx() * carried / (0.5 * kPi);
   }
-  result.message = outcome.converged ? "converged: ‖F‖∞ = " + shortest(outcome.residual) + " after " +
-                                           std::to_string(result.iterations) + " Newton iterations"
-                                     : "not converged: " + outcome.why + "; ‖F‖∞ = " + shortest(outcome.residual);
+  result.message = ehl::outcome_message(outcome, result.iterations);
   return result;
 }
 

@@ -127,6 +127,13 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
   return out;
 }
 
+// The solvers' one-line summary of an outcome: "converged: ‖F‖∞ = … after N Newton iterations" or
+// "not converged: why; ‖F‖∞ = …".
+inline std::string outcome_message(const NewtonOutcome& n, int iterations) {
+  return n.converged ? "converged: ‖F‖∞ = " + numerics::shortest(n.residual) + " after " + std::to_string(iterations) + " Newton iterations"
+                     : "not converged: " + n.why + "; ‖F‖∞ = " + numerics::shortest(n.residual);
+}
+
 struct SolveOutcome {
   NewtonOutcome newton;  // the last Newton solve (at the target λ when it converged)
   int iterations = 0;    // Newton iterations, continuation steps included

@@ -608,9 +608,7 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
           result.in_contact[static_cast<std::size_t>(k)] = true, ++result.contact_nodes, carried += p(k);
     result.contact_load_share = problem.dx() * problem.dy() * carried / (2.0 * std::numbers::pi / 3.0);
   }
-  result.message = result.converged ? "converged: ‖F‖∞ = " + shortest(result.residual) + " after " + std::to_string(result.iterations) +
-                                          " Newton iterations"
-                                    : "not converged: " + solved.newton.why + "; ‖F‖∞ = " + shortest(result.residual);
+  result.message = ehl::outcome_message(solved.newton, result.iterations);
   return result;
 }
 

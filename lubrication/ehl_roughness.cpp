@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "numerics/format.h"
@@ -15,6 +16,20 @@ double ridge_height_m(const EhlRoughness& r, double x) {
   const auto k = static_cast<std::size_t>(hi - r.x_m.begin());
   const double t = (x - r.x_m[k - 1]) / (r.x_m[k] - r.x_m[k - 1]);
   return (1.0 - t) * r.height_m[k - 1] + t * r.height_m[k];
+}
+
+EhlRoughness cosine_ridges(double from_m, double to_m, double amplitude_m, double wavelength_m, std::size_t points) {
+  if (points < 2 || !(to_m > from_m) || !(wavelength_m > 0.0))
+    throw std::invalid_argument("cosine_ridges: needs at least two points over an interval and a positive wavelength");
+  EhlRoughness r;
+  r.x_m.reserve(points);
+  r.height_m.reserve(points);
+  for (std::size_t k = 0; k < points; ++k) {
+    const double x = from_m + (to_m - from_m) * static_cast<double>(k) / static_cast<double>(points - 1);
+    r.x_m.push_back(x);
+    r.height_m.push_back(amplitude_m * std::cos(2.0 * std::numbers::pi * x / wavelength_m));
+  }
+  return r;
 }
 
 void validate(const EhlRoughness& r, const std::string& who) {

@@ -4,6 +4,7 @@
 // below which a film passes no pressure flow (Hu & Zhu's unified treatment; the headers).
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -52,6 +53,10 @@ inline FaceFlow face_flow(double c_a, double m3_a, double c_b, double m3_b, bool
   const double film = 2.0 * m3_a * m3_b / sum;
   return {c * film, 0.5 * film, c * 2.0 * m3_b * m3_b / (sum * sum), 0.5 * film, c * 2.0 * m3_a * m3_a / (sum * sum)};
 }
+
+// A waviness a cos(2π x/λ) sampled on [from_m, to_m] (m from the Hertz centre), `points` samples
+// evenly spaced (≥ 2), the boundary layers at their default.
+EhlRoughness cosine_ridges(double from_m, double to_m, double amplitude_m, double wavelength_m, std::size_t points);
 
 // The profile's height at x (m): linear between its points, 0 outside them.
 double ridge_height_m(const EhlRoughness& roughness, double x_m);

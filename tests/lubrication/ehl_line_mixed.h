@@ -3,9 +3,6 @@
 // surface flat or wavy.
 #pragma once
 
-#include <cmath>
-#include <numbers>
-
 #include "lubrication/ehl_line.h"
 #include "lubrication/reference/ehl_film.h"
 #include "steel_roller_pair.h"
@@ -17,14 +14,7 @@ constexpr double kCrawlLoad_N_per_m = 3e5;
 // A profile over [−6 b, 2 b] (the solver's domain and more) of heights a cos(2π x/wavelength).
 inline EhlRoughness wavy_profile(double w, double amplitude_m, double wavelength_m) {
   const double b = reference::hertz_line_half_width_m(w, kRadius_m, kModulus_Pa);
-  EhlRoughness r;
-  constexpr int kPoints = 4001;
-  for (int k = 0; k < kPoints; ++k) {
-    const double x = -6.0 * b + 8.0 * b * k / (kPoints - 1);
-    r.x_m.push_back(x);
-    r.height_m.push_back(amplitude_m * std::cos(2.0 * std::numbers::pi * x / wavelength_m));
-  }
-  return r;
+  return cosine_ridges(-6.0 * b, 2.0 * b, amplitude_m, wavelength_m, 4001);
 }
 
 inline EhlRoughness flat_profile(double w) { return wavy_profile(w, 0.0, 1.0); }

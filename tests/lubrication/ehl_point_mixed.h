@@ -3,9 +3,6 @@
 // carrying transverse ridges.
 #pragma once
 
-#include <cmath>
-#include <numbers>
-
 #include "lubrication/reference/ehl_point_film.h"
 #include "tests/lubrication/ball_on_disc.h"
 
@@ -16,14 +13,7 @@ constexpr double kCrawlLoad_N = 20.0;
 // Ridges a cos(2π x/wavelength) over [−5 a, 3 a] (the solver's domain and more).
 inline EhlRoughness ridges(double amplitude_m, double wavelength_m) {
   const double a = reference::hertz_point_radius_m(kCrawlLoad_N, kBallRadius_m, kBallModulus_Pa);
-  EhlRoughness r;
-  constexpr int kPoints = 4001;
-  for (int k = 0; k < kPoints; ++k) {
-    const double x = -5.0 * a + 8.0 * a * k / (kPoints - 1);
-    r.x_m.push_back(x);
-    r.height_m.push_back(amplitude_m * std::cos(2.0 * std::numbers::pi * x / wavelength_m));
-  }
-  return r;
+  return cosine_ridges(-5.0 * a, 3.0 * a, amplitude_m, wavelength_m, 4001);
 }
 
 inline EhlRoughness flat_surface() { return ridges(0.0, 1.0); }

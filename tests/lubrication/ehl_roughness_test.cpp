@@ -23,6 +23,19 @@ TEST(EhlRoughness, HeightIsLinearBetweenPointsAndZeroOutside) {
   EXPECT_EQ(ridge_height_m(r, 2.1e-4), 0.0);
 }
 
+// a cos(2πx/λ) at evenly spaced points from `from` to `to`: a crest at x = 0, a trough at λ/2.
+TEST(EhlRoughness, CosineRidgesSampleTheWaviness) {
+  const EhlRoughness r = cosine_ridges(-1e-4, 1e-4, 2e-8, 4e-5, 201);
+  ASSERT_EQ(r.x_m.size(), 201u);
+  EXPECT_EQ(r.x_m.front(), -1e-4);
+  EXPECT_EQ(r.x_m.back(), 1e-4);
+  EXPECT_NEAR(ridge_height_m(r, 0.0), 2e-8, 1e-22);
+  EXPECT_NEAR(ridge_height_m(r, 2e-5), -2e-8, 1e-22);
+  EXPECT_NEAR(r.x_m[1] - r.x_m[0], 1e-6, 1e-18);
+  EXPECT_EQ(r.contact_film_m, EhlRoughness{}.contact_film_m);
+  EXPECT_THROW(cosine_ridges(0.0, 1e-4, 1e-8, 1e-5, 1), std::invalid_argument);
+}
+
 TEST(EhlRoughness, BadProfileIsRejectedWithItsReason) {
   const auto message = [](const EhlRoughness& r) {
     try {
