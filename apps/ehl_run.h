@@ -2,6 +2,7 @@
 // shared by the CLI (apps/cmd_ehl.cpp writes ehl.json and the profiles) and any other front end.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -56,6 +57,21 @@ struct EhlRun {
     double rq_m = 0.0, filtered_rq_m = 0.0;  // Rq over the solver's domain: as measured (levelled), as solved
   };
   std::optional<Profile> profile;
+  // With [surface] (a point contact, beside [profile], whose ridges then are optional): a height map,
+  // generated (kind = "gaussian", the reader of `tribo contact`) or measured (kind = "file"),
+  // levelled, filtered at `cutoff_m` by the areal Gaussian filter (contact/profile.h) and placed with
+  // its point (centre_x_m, centre_y_m) at the Hertz centre; it becomes profile->surface.map.
+  struct SurfaceMap {
+    std::string kind;               // "gaussian" | "file"
+    std::filesystem::path file;     // kind = "file"
+    std::uint64_t seed = 0;         // kind = "gaussian"
+    Eigen::ArrayXXd levelled_m;     // rows along x (the entrainment direction), columns along y
+    double dx_m = 0.0, dy_m = 0.0;  // its sample spacings
+    // As given, else unset; once loaded, the values used (the map's middle, 8 node spacings).
+    std::optional<double> centre_x_m, centre_y_m, cutoff_m;
+    double rq_m = 0.0, filtered_rq_m = 0.0;  // Rq over the solver's domain: as measured (levelled), as solved
+  };
+  std::optional<SurfaceMap> surface_map;
   std::vector<std::filesystem::path> input_files;  // files the config names (a measured profile)
 };
 
@@ -64,7 +80,7 @@ struct EhlRun {
 // eyring_stress_Pa, the film's heating), optionally [roughness] (summit density, radius, standard
 // deviation and mean height, boundary friction coefficient) or [profile] (a waviness's amplitude and
 // wavelength or a measured trace's file, the boundary layers' thickness and contact margin, boundary
-// friction coefficient), and
+// friction coefficient) and, for a point, [surface] (a generated or measured height map), and
 // [solver] (docs/lubrication.md).
 // Bad input is an InputError naming file, key and reason.
 EhlRun load_ehl_run(const std::filesystem::path& path);

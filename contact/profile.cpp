@@ -50,4 +50,36 @@ double gaussian_filter_transmission(double wavelength_m, double cutoff_m) {
   return std::exp(-std::numbers::pi * r * r);
 }
 
+Eigen::ArrayXXd level_map(const Eigen::ArrayXXd& z) {
+  if (z.rows() < 2 || z.cols() < 2)
+    throw std::invalid_argument("a map to level needs at least 2 x 2 samples, not " + std::to_string(z.rows()) + " x " + std::to_string(z.cols()));
+  // z = c + a i + b j by least squares over the regular grid: i and j are orthogonal about their means.
+  const Eigen::ArrayXd i = Eigen::ArrayXd::LinSpaced(z.rows(), 0.0, static_cast<double>(z.rows() - 1)) - 0.5 * static_cast<double>(z.rows() - 1);
+  const Eigen::ArrayXd j = Eigen::ArrayXd::LinSpaced(z.cols(), 0.0, static_cast<double>(z.cols() - 1)) - 0.5 * static_cast<double>(z.cols() - 1);
+  const double mean = z.mean();
+  const double a = (z.colwise() * i).sum() / (i.square().sum() * static_cast<double>(z.cols()));
+  const double b = (z.rowwise() * j.transpose()).sum() / (j.square().sum() * static_cast<double>(z.rows()));
+  Eigen::ArrayXXd out = z - mean;
+  out.colwise() -= a * i;
+  out.rowwise() -= b * j.transpose();
+  return out;
+}
+
+FilteredMap gaussian_areal_filter(const Eigen::ArrayXXd& z, double dx_m, double dy_m, double cutoff_m) {
+  // Along y (each row of the map holds the samples of one x), then along x.
+  FilteredMap out;
+  Eigen::ArrayXXd along_y;
+  for (Eigen::Index r = 0; r < z.rows(); ++r) {
+    const FilteredProfile f = gaussian_profile_filter(z.row(r).transpose(), dy_m, cutoff_m);
+    if (r == 0) along_y.resize(z.rows(), f.height_m.size()), out.first_y = f.first;
+    along_y.row(r) = f.height_m.transpose();
+  }
+  for (Eigen::Index c = 0; c < along_y.cols(); ++c) {
+    const FilteredProfile f = gaussian_profile_filter(along_y.col(c), dx_m, cutoff_m);
+    if (c == 0) out.height_m.resize(f.height_m.size(), along_y.cols()), out.first_x = f.first;
+    out.height_m.col(c) = f.height_m;
+  }
+  return out;
+}
+
 }  // namespace tribo::contact

@@ -38,12 +38,20 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if (run.profile) {  // a waviness or trace, either geometry (a ridged ball since 2026-12-02): a profile the solvers accept
       const auto& r = run.profile->surface;
-      TRIBO_FUZZ_CHECK(r.x_m.size() >= 2 && r.x_m.size() == r.height_m.size() && r.x_m.size() <= 1000001);
+      TRIBO_FUZZ_CHECK((r.x_m.empty() && r.height_m.empty() && r.map) ||
+                       (r.x_m.size() >= 2 && r.x_m.size() == r.height_m.size() && r.x_m.size() <= 1000001));
       for (std::size_t k = 0; k < r.x_m.size(); ++k)
         TRIBO_FUZZ_CHECK(std::isfinite(r.x_m[k]) && std::isfinite(r.height_m[k]) && (k == 0 || r.x_m[k] > r.x_m[k - 1]));
       TRIBO_FUZZ_CHECK(std::isfinite(r.contact_film_m) && r.contact_film_m > 0.0);
       TRIBO_FUZZ_CHECK(std::isfinite(r.contact_margin_m) && r.contact_margin_m >= 0.0);
       TRIBO_FUZZ_CHECK(std::isfinite(run.profile->boundary_friction_coefficient) && run.profile->boundary_friction_coefficient >= 0.0);
+    }
+    if (run.surface_map) {  // a point contact's map, placed: finite, within the solver's resolution
+      TRIBO_FUZZ_CHECK(run.point && run.profile && run.profile->surface.map);
+      const auto& m = *run.profile->surface.map;
+      TRIBO_FUZZ_CHECK(m.height_m.rows() >= 2 && m.height_m.cols() >= 2 && m.height_m.allFinite());
+      TRIBO_FUZZ_CHECK(m.dx_m > 0.0 && m.dy_m > 0.0 && std::isfinite(m.x0_m) && std::isfinite(m.y0_m));
+      TRIBO_FUZZ_CHECK(run.surface_map->cutoff_m && *run.surface_map->cutoff_m > 0.0);
     }
     TRIBO_FUZZ_CHECK(std::isfinite(run.sliding_speed_m_per_s));
     TRIBO_FUZZ_CHECK(run.eyring_stress_Pa > 0.0);

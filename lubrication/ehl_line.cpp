@@ -209,7 +209,9 @@ void validate(const EhlLineContact& c, const EhlRoughness* rough, const EhlLineO
                                 shortest(o.outlet_over_half_width) + "] (in Hertz half widths) must start before −1 and end after 0");
   if (o.nodes < 11) throw std::invalid_argument("EHL line contact: nodes must be ≥ 11, got " + std::to_string(o.nodes));
   if (!(o.tolerance > 0.0)) throw std::invalid_argument("EHL line contact: tolerance must be positive, got " + shortest(o.tolerance));
-  if (rough) validate(*rough, "EHL line contact");
+  if (!rough) return;
+  validate(*rough, "EHL line contact");
+  if (rough->map) throw std::invalid_argument("EHL line contact: a roughness map is a point contact's (the line takes ridges)");
 }
 
 // Smooth (roughness null) or rough.

@@ -81,11 +81,9 @@ class PointProblem {
     for (int j = 0; j < ny_; ++j)
       for (int i = 0; i < nx_; ++i) rigid_(node(i, j)) = 0.5 * (x_(i) * x_(i) + y_(j) * y_(j));
     if (rough) {
-      // The ridges lower the film at every node of their column (H units).
-      for (int i = 0; i < nx_; ++i) {
-        const double r = ridge_height_m(*rough, x_(i) * a_) / film_scale_m();
-        for (int j = 0; j < ny_; ++j) rigid_(node(i, j)) -= r;
-      }
+      // The surface's heights lower the film (H units).
+      for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) rigid_(node(i, j)) -= surface_height_m(*rough, x_(i) * a_, y_(j) * a_) / film_scale_m();
       floor_ = rough->contact_film_m / film_scale_m();
     }
     // The load row ΔXΔY Σ P over every interior node: an unknown counts once more for its mirror.
@@ -517,8 +515,10 @@ void validate(const EhlPointContact& c, const EhlRoughness* rough, const EhlPoin
 
 // Smooth (roughness null) or rough.
 EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* roughness, const PiezoviscousLubricant& lubricant,
-                           const EhlPointOptions& options) {
-  validate(contact, roughness, options);
+                           const EhlPointOptions& given) {
+  validate(contact, roughness, given);
+  EhlPointOptions options = given;
+  if (roughness && roughness->map) options.symmetric_in_y = false;  // a map is not symmetric across the track
   validate(lubricant);
   const int interior = (options.nodes_x - 2) * (options.nodes_y - 2);
   const bool dense = options.linear_solver == EhlPointLinearSolver::dense_lu ||

@@ -48,7 +48,8 @@
 //
 // Mixed lubrication (solve_ehl_point with an EhlRoughness): the stationary surface carries ridges
 // r(x) uniform across the track (a ball held still over a sliding disc keeps the problem steady;
-// the contact stays symmetric in y), the film is h − r, and where it closes the surfaces touch —
+// the contact stays symmetric in y) and, if given, a height map r(x, y) (then the full grid is
+// solved: symmetric_in_y is overridden), the film is h − r, and where it closes the surfaces touch —
 // Hu & Zhu's unified treatment as in ehl_line.h: ε = ρ̄ (H − H_c)₊³/(η̄λ), at a half node the mean of
 // ρ̄/(η̄λ) times the harmonic mean of (H − H_c)₊³ (ehl_roughness.h: face_flow — with the mean of ε a
 // node closed at a side edge of the contact drained into its open neighbour and Newton stalled at

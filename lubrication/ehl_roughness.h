@@ -1,19 +1,30 @@
 // The stationary surface of a deterministic mixed-EHL contact (ehl_line.h, ehl_point.h): a profile
 // r(x) of transverse ridges — uniform across the entrainment direction, stationary so that the
-// problem stays steady (a rough pin or ball on a moving disc) — and the boundary layers' thickness
-// below which a film passes no pressure flow (Hu & Zhu's unified treatment; the headers).
+// problem stays steady (a rough pin or ball on a moving disc) — and, for the point contact, a height
+// map r(x, y) on top; and the boundary layers' thickness below which a film passes no pressure flow
+// (Hu & Zhu's unified treatment; the headers).
 #pragma once
 
+#include <Eigen/Core>
+
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace tribo::lubrication {
 
+// Heights of the stationary surface towards the other one (m) at (x0 + i dx, y0 + j dy), m from the
+// Hertz centre, i along the entrainment direction; bilinear between the samples, zero outside them.
+struct EhlHeightMap {
+  double x0_m = 0.0, y0_m = 0.0, dx_m = 0.0, dy_m = 0.0;
+  Eigen::ArrayXXd height_m;  // nx × ny, at least 2 × 2
+};
+
 struct EhlRoughness {
   // Heights r(x) of the stationary surface towards the other one (m) at increasing x_m (m, from the
   // Hertz centre along the entrainment direction), interpolated linearly onto the nodes; zero
-  // outside the profile.
+  // outside the profile. May be empty where a map is given.
   std::vector<double> x_m, height_m;
   // The boundary layers' thickness H_c, below which the film passes no pressure flow (an adsorbed
   // fatty-acid monolayer is ≈ 2.5 nm thick, Bowden & Tabor 1950; one on each surface, ≈ 5 nm). > 0.
@@ -24,6 +35,9 @@ struct EhlRoughness {
   // layers of a hydrocarbon (≈ 0.5 nm each) does not shear as a fluid — confined films turn solid-like
   // at several layers already (Gee, McGuiggan, Israelachvili & Homola, J. Chem. Phys. 93, 1990).
   double contact_margin_m = 1e-9;
+  // A point contact's surface across the track as well, added to the ridges (the line contact
+  // refuses it): the contact is then no longer symmetric in y, and the whole grid is solved.
+  std::optional<EhlHeightMap> map = std::nullopt;
 };
 
 // Whether a film h (m) leaves the surfaces in contact (EhlRoughness::contact_margin_m).
@@ -58,12 +72,15 @@ inline FaceFlow face_flow(double c_a, double m3_a, double c_b, double m3_b, bool
 // evenly spaced (≥ 2), the boundary layers at their default.
 EhlRoughness cosine_ridges(double from_m, double to_m, double amplitude_m, double wavelength_m, std::size_t points);
 
-// The profile's height at x (m): linear between its points, 0 outside them.
+// The profile's height at x (m): linear between its points, 0 outside them (and without points).
 double ridge_height_m(const EhlRoughness& roughness, double x_m);
+// The surface's height at (x, y) (m): the ridges' plus the map's.
+double surface_height_m(const EhlRoughness& roughness, double x_m, double y_m);
 
-// Throws std::invalid_argument, the message starting with `who`, for fewer than two points, unequal
-// lengths, a non-finite point, positions that do not increase, a contact film that is not positive or
-// a negative margin.
+// Throws std::invalid_argument, the message starting with `who`, for fewer than two points (unless a
+// map stands alone), unequal lengths, a non-finite point, positions that do not increase, a map with
+// fewer than 2 × 2 samples, a spacing that is not positive or a height that is not finite, a contact
+// film that is not positive or a negative margin.
 void validate(const EhlRoughness& roughness, const std::string& who);
 
 }  // namespace tribo::lubrication

@@ -192,3 +192,36 @@ if(NOT check EQUAL 0)
 endif()
 expect_refused(ridged_short "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-6\nboundary_friction_coefficient = 0.1\n" "profile.wavelength_m")
 expect_refused(ridged_margin "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-4\ncontact_margin_m = -1e-9\nboundary_friction_coefficient = 0.1\n" "profile.contact_margin_m")
+
+# [surface] on a point contact: a generated height map (the reader of `tribo contact`), levelled,
+# filtered at 8 node spacings and placed at the Hertz centre, with no ridges. Crawling on 65² nodes
+# (the full grid: a map has no symmetry), the Hertz circle is in contact; the map's Rq over the domain
+# as generated and as filtered, the cut-off and the seed among the inputs. Refused: a map on a line, a
+# map without [profile], a map coarser than the nodes, a cut-off below 8 node spacings, a map smaller
+# than the domain.
+set(map_ball "[contact]\ngeometry = \"point\"\nload_N = 20\nreduced_radius_m = 9.525e-3\nreduced_modulus_Pa = 2.308e11\nmean_speed_m_per_s = 1e-5\nslide_to_roll_ratio = 2.0\n[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n[solver]\nnodes_x = 65\nnodes_y = 65\n")
+set(map_profile "[profile]\nboundary_friction_coefficient = 0.1\n")
+set(map_surface "[surface]\nkind = \"gaussian\"\ncorrelation_length_m = 4e-5\nrms_height_m = 2e-8\nseed = 3\nsize_m = 8e-4\ngrid = 128\n")
+run_ehl(map "rough ball map" "${map_ball}${map_profile}${map_surface}" --summary-only)
+execute_process(COMMAND ${PYTHON} -c "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+c, m = s['contact'], s['inputs']['surface']
+assert s['converged'] and s['geometry'] == 'point', s['message']
+assert c['contact_load_share'] > 0.99, c
+assert abs(s['friction_coefficient'] - 0.1) < 1e-3, s['friction_coefficient']
+a = s['hertz_radius_m']
+assert abs(m['cutoff_m'] - 8 * 5 * a / 64) <= 1e-9 * m['cutoff_m'], (m, a)
+assert 0.0 < m['filtered_rq_m'] <= m['rq_m'] < 4e-8 and m['seed'] == 3 and m['sample_spacing_x_m'] == 8e-4 / 128, m
+" ${WORK}/out_map RESULT_VARIABLE check ERROR_VARIABLE why)
+if(NOT check EQUAL 0)
+  message(FATAL_ERROR "tribo ehl, rough ball map: ehl.json is not as documented: ${why}")
+endif()
+expect_refused(map_line "${wavy_contact}${wavy_rest}${map_surface}" "surface")
+expect_refused(map_no_profile "${map_ball}${map_surface}" "profile")
+string(REPLACE "grid = 128" "grid = 64" coarse_map "${map_surface}")
+expect_refused(map_coarse "${map_ball}${map_profile}${coarse_map}" "surface")
+expect_refused(map_cutoff "${map_ball}${map_profile}${map_surface}cutoff_m = 1e-5\n" "surface.cutoff_m")
+string(REPLACE "size_m = 8e-4" "size_m = 4e-4" small_map "${map_surface}")
+string(REPLACE "grid = 128" "grid = 64" small_map "${small_map}")
+expect_refused(map_small "${map_ball}${map_profile}${small_map}" "surface.centre_x_m")

@@ -48,6 +48,41 @@ TEST(GaussianProfileFilter, LinesPassUnchangedAndLevellingRemovesThem) {
   EXPECT_LT((level_profile(wave + line) - level_profile(wave)).abs().maxCoeff(), 1e-20);
 }
 
+// ISO 16610-61's areal Gaussian filter is the profile filter along x times along y: the surface
+// cos(2πx/λx) cos(2πy/λy) passes with T(λx) T(λy), T the profile transmission (λx = λc, λy = 2 λc:
+// 0.5 × 0.8409), read at a crest in the middle of the map to 1e-5 (as the profile's, above), on a
+// 20 × 30-sample cut-off grid with unequal spacings; the valid region starts a window's half width
+// in along each direction.
+TEST(GaussianArealFilter, WavySurfacePassesWithTheProductOfTheProfileTransmissions) {
+  const double dx = 5e-7, dy = 1e-6 / 3.0, cutoff = 1e-5, lx = cutoff, ly = 2.0 * cutoff;
+  const Eigen::Index nx = 241, ny = 361;
+  Eigen::ArrayXXd z(nx, ny);
+  for (Eigen::Index j = 0; j < ny; ++j)
+    for (Eigen::Index i = 0; i < nx; ++i)
+      z(i, j) = std::cos(2.0 * std::numbers::pi * static_cast<double>(i) * dx / lx) * std::cos(2.0 * std::numbers::pi * static_cast<double>(j) * dy / ly);
+  const FilteredMap f = gaussian_areal_filter(z, dx, dy, cutoff);
+  ASSERT_EQ(f.first_x, 20);
+  ASSERT_EQ(f.first_y, 30);
+  ASSERT_EQ(f.height_m.rows(), nx - 40);
+  ASSERT_EQ(f.height_m.cols(), ny - 60);
+  const Eigen::Index ci = 120 - f.first_x, cj = 180 - f.first_y;  // x = 6 λx, y = 3 λy: a crest
+  EXPECT_NEAR(f.height_m(ci, cj), gaussian_filter_transmission(lx, cutoff) * gaussian_filter_transmission(ly, cutoff), 1e-5);
+}
+
+// Levelling a map takes out a plane added to it (rounding only) and leaves a zero-mean surface.
+TEST(GaussianArealFilter, LevellingRemovesAPlane) {
+  Eigen::ArrayXXd wave(40, 30), plane(40, 30);
+  for (Eigen::Index j = 0; j < 30; ++j)
+    for (Eigen::Index i = 0; i < 40; ++i) {
+      wave(i, j) = 1e-8 * std::sin(0.3 * static_cast<double>(i)) * std::cos(0.2 * static_cast<double>(j));
+      plane(i, j) = 2e-6 + 3e-8 * static_cast<double>(i) - 5e-8 * static_cast<double>(j);
+    }
+  EXPECT_LT(level_map(plane).abs().maxCoeff(), 1e-19);
+  EXPECT_LT((level_map(wave + plane) - level_map(wave)).abs().maxCoeff(), 1e-20);
+  EXPECT_LT(std::abs(level_map(wave).mean()), 1e-22);
+  EXPECT_THROW(level_map(Eigen::ArrayXXd::Zero(1, 5)), std::invalid_argument);
+}
+
 TEST(GaussianProfileFilter, BadArgumentsNameTheReason) {
   const Eigen::ArrayXd z = Eigen::ArrayXd::Zero(100);
   auto expect_error = [&](double spacing, double cutoff, const std::string& word) {

@@ -48,6 +48,14 @@ TEST(EhlLineMixed, BadRoughnessIsRejectedAsTheLineContacts) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()).rfind("EHL line contact: the roughness positions must increase", 0), 0u) << e.what();
   }
+  EhlRoughness mapped = flat_profile(kCrawlLoad_N_per_m);
+  mapped.map = EhlHeightMap{0.0, 0.0, 1e-6, 1e-6, Eigen::ArrayXXd::Zero(2, 2)};
+  try {
+    solve_ehl_line({kCrawlLoad_N_per_m, kRadius_m, kModulus_Pa, 1e-3}, mapped, mineral_oil());
+    ADD_FAILURE() << "a map accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("a roughness map is a point contact's"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

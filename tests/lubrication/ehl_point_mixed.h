@@ -3,6 +3,8 @@
 // carrying transverse ridges.
 #pragma once
 
+#include <utility>
+
 #include "lubrication/reference/ehl_point_film.h"
 #include "tests/lubrication/ball_on_disc.h"
 
@@ -17,5 +19,20 @@ inline EhlRoughness ridges(double amplitude_m, double wavelength_m) {
 }
 
 inline EhlRoughness flat_surface() { return ridges(0.0, 1.0); }
+
+// A map of heights f(x, y) over [−5 a, 3 a] × [−4 a, 4 a], sampled every a/200 (no profile).
+template <class Height>
+EhlRoughness height_map(Height&& f) {
+  const double a = reference::hertz_point_radius_m(kCrawlLoad_N, kBallRadius_m, kBallModulus_Pa);
+  EhlHeightMap m;
+  m.x0_m = -5.0 * a, m.y0_m = -4.0 * a, m.dx_m = m.dy_m = a / 200.0;
+  m.height_m.resize(1601, 1601);
+  for (Eigen::Index j = 0; j < m.height_m.cols(); ++j)
+    for (Eigen::Index i = 0; i < m.height_m.rows(); ++i)
+      m.height_m(i, j) = f(m.x0_m + static_cast<double>(i) * m.dx_m, m.y0_m + static_cast<double>(j) * m.dy_m);
+  EhlRoughness r;
+  r.map = std::move(m);
+  return r;
+}
 
 }  // namespace tribo::lubrication::ball_on_disc

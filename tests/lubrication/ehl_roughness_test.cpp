@@ -55,6 +55,40 @@ TEST(EhlRoughness, BadProfileIsRejectedWithItsReason) {
             std::string::npos);
 }
 
+// A map adds to the ridges, bilinear between its samples (exact for a plane), zero outside; a map may
+// stand without ridges; a map too small, with a spacing that is not positive or a height that is not
+// finite is refused.
+TEST(EhlRoughness, HeightMapAddsToTheRidgesBilinearlyAndIsChecked) {
+  EhlRoughness r{{-1.0, 1.0}, {1e-9, 1e-9}};
+  EhlHeightMap m;
+  m.x0_m = 0.0, m.y0_m = -1e-4, m.dx_m = 1e-5, m.dy_m = 2e-5;
+  m.height_m.resize(3, 4);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 3; ++i) m.height_m(i, j) = 1e-9 * (2.0 * i + 3.0 * j);  // a plane in the indices
+  r.map = m;
+  EXPECT_NEAR(surface_height_m(r, 1.5e-5, -1e-4 + 3e-5), 1e-9 + 1e-9 * (2.0 * 1.5 + 3.0 * 1.5), 1e-22);
+  EXPECT_NEAR(surface_height_m(r, -1e-6, 0.0), 1e-9, 1e-24);  // outside the map: the ridges alone
+  const auto message = [](const EhlRoughness& bad) {
+    try {
+      validate(bad, "who");
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EhlRoughness alone;
+  alone.map = m;
+  EXPECT_EQ(message(alone), "accepted");
+  alone.map->height_m.resize(1, 4);
+  EXPECT_NE(message(alone).find("at least 2 x 2 samples"), std::string::npos);
+  alone.map = m;
+  alone.map->dy_m = 0.0;
+  EXPECT_NE(message(alone).find("spacings positive"), std::string::npos);
+  alone.map = m;
+  alone.map->height_m(1, 1) = NAN;
+  EXPECT_NE(message(alone).find("not finite"), std::string::npos);
+}
+
 // In contact below H_c + the margin, open at or above it.
 TEST(EhlRoughness, ContactIsAFilmWithinTheMarginOfTheBoundaryLayers) {
   const EhlRoughness r{{0.0, 1.0}, {0.0, 0.0}, 5e-9, 1e-9};
