@@ -11,6 +11,16 @@
 namespace tribo::lubrication {
 namespace {
 
+// validate()'s message for `r`, or "accepted".
+std::string message(const EhlRoughness& r) {
+  try {
+    validate(r, "who");
+  } catch (const std::invalid_argument& e) {
+    return std::string(e.what());
+  }
+  return "accepted";
+}
+
 // Linear between the points (the midpoint of a 2 nm rise is 1 nm, to round-off), the end points
 // themselves, and zero outside the profile.
 TEST(EhlRoughness, HeightIsLinearBetweenPointsAndZeroOutside) {
@@ -37,14 +47,6 @@ TEST(EhlRoughness, CosineRidgesSampleTheWaviness) {
 }
 
 TEST(EhlRoughness, BadProfileIsRejectedWithItsReason) {
-  const auto message = [](const EhlRoughness& r) {
-    try {
-      validate(r, "who");
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
   EXPECT_EQ(message({{0.0, 1e-3}, {0.0, 0.0}}), "accepted");
   EXPECT_NE(message({{0.0}, {0.0}}).find("who: the roughness profile needs at least two points"), std::string::npos);
   EXPECT_NE(message({{0.0, 1e-3}, {0.0}}).find("as many heights"), std::string::npos);
@@ -68,14 +70,6 @@ TEST(EhlRoughness, HeightMapAddsToTheRidgesBilinearlyAndIsChecked) {
   r.map = m;
   EXPECT_NEAR(surface_height_m(r, 1.5e-5, -1e-4 + 3e-5), 1e-9 + 1e-9 * (2.0 * 1.5 + 3.0 * 1.5), 1e-22);
   EXPECT_NEAR(surface_height_m(r, -1e-6, 0.0), 1e-9, 1e-24);  // outside the map: the ridges alone
-  const auto message = [](const EhlRoughness& bad) {
-    try {
-      validate(bad, "who");
-    } catch (const std::invalid_argument& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
   EhlRoughness alone;
   alone.map = m;
   EXPECT_EQ(message(alone), "accepted");
