@@ -450,7 +450,9 @@ void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed*
 // ehl.json's inputs.profile: the waviness, or the measured trace and what the filter kept of it.
 nlohmann::json profile_inputs(const EhlRun::Profile& pr) {
   nlohmann::json j;
-  if (pr.file.empty()) {
+  if (pr.file.empty() && pr.wavelength_m == 0.0) {
+    j = {{"ridges", nullptr}};  // none: a [surface] map alone
+  } else if (pr.file.empty()) {
     j = {{"amplitude_m", pr.amplitude_m}, {"wavelength_m", pr.wavelength_m}};
   } else {
     j = {{"file", pr.file.string()},

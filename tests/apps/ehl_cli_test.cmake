@@ -213,6 +213,7 @@ assert abs(s['friction_coefficient'] - 0.1) < 1e-3, s['friction_coefficient']
 a = s['hertz_radius_m']
 assert abs(m['cutoff_m'] - 8 * 5 * a / 64) <= 1e-9 * m['cutoff_m'], (m, a)
 assert 0.0 < m['filtered_rq_m'] <= m['rq_m'] < 4e-8 and m['seed'] == 3 and m['sample_spacing_x_m'] == 8e-4 / 128, m
+assert s['inputs']['profile']['ridges'] is None, s['inputs']['profile']
 " ${WORK}/out_map RESULT_VARIABLE check ERROR_VARIABLE why)
 if(NOT check EQUAL 0)
   message(FATAL_ERROR "tribo ehl, rough ball map: ehl.json is not as documented: ${why}")
