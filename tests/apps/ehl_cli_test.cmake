@@ -20,6 +20,14 @@ function(run_ehl_config name what config)
     message(FATAL_ERROR "tribo ehl, ${what}, failed (${status}): ${out} ${err}")
   endif()
 endfunction()
+# The python `script` must pass on out_NAME (its sys.argv[1]): its assertions are what the docs say
+# of ehl.json and the written fields.
+function(expect_outputs name what script)
+  execute_process(COMMAND ${PYTHON} -c "${script}" ${WORK}/out_${name} RESULT_VARIABLE check ERROR_VARIABLE why)
+  if(NOT check EQUAL 0)
+    message(FATAL_ERROR "tribo ehl, ${what}: ehl.json or the fields are not as documented: ${why}")
+  endif()
+endfunction()
 # Config `text` must run: written to NAME.toml, solved into out_NAME (ARGN: more options).
 function(run_ehl name what text)
   file(WRITE ${WORK}/${name}.toml "${text}")
@@ -27,7 +35,7 @@ function(run_ehl name what text)
 endfunction()
 set(contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e6\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1.0\nsliding_speed_m_per_s = 0.05\n")
 run_ehl(ehl "line contact" "${contact}[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n")
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(ehl "line contact" "
 import json, math, sys
 import numpy as np
 d = sys.argv[1]
@@ -45,10 +53,7 @@ x, p, h = (np.load(d + '/' + s['fields'][k]) for k in ('x_m', 'pressure_Pa', 'fi
 assert x.shape == p.shape == h.shape == (s['inputs']['nodes'],), (x.shape, p.shape, h.shape)
 assert abs(np.trapz(p, x) / 3e6 - 1) < 1e-9, np.trapz(p, x)  # the load balance, from the written profile
 assert s['provenance']['config_hash'], s['provenance']
-" ${WORK}/out_ehl RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl: ehl.json or the profiles are not as documented: ${why}")
-endif()
+")
 
 # No Eyring stress: the lubricant's τ0 has no default; a point contact takes load_N, not a load per length.
 expect_refused(no_tau "${contact}[lubricant]\nviscosity_Pa_s = 0.04\n" "lubricant.eyring_stress_Pa")
@@ -59,7 +64,7 @@ expect_refused(point "${point}[lubricant]\neyring_stress_Pa = 5e6\n" "contact.lo
 # Dowson's fits and the traction; the fields as (nx, ny) arrays whose integral is the load.
 set(ball "[contact]\ngeometry = \"point\"\nload_N = 20\nreduced_radius_m = 9.525e-3\nreduced_modulus_Pa = 2.308e11\nmean_speed_m_per_s = 0.5\nslide_to_roll_ratio = 0.05\n[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n")
 run_ehl(ball "point contact" "${ball}[solver]\nnodes_x = 31\nnodes_y = 25\n")
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(ball "point contact" "
 import json, math, sys
 import numpy as np
 d = sys.argv[1]
@@ -73,14 +78,11 @@ x, y, p, h = (np.load(d + '/' + s['fields'][k]) for k in ('x_m', 'y_m', 'pressur
 assert x.shape == (31,) and y.shape == (25,) and p.shape == h.shape == (31, 25), (x.shape, y.shape, p.shape)
 load = p.sum() * (x[1] - x[0]) * (y[1] - y[0])
 assert abs(load / 20 - 1) < 1e-9, load  # the load balance, from the written field
-" ${WORK}/out_ball RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, point contact: ehl.json or the fields are not as documented: ${why}")
-endif()
+")
 # The rough ball: the mixed regime over the Hertz circle (lubrication/mixed_point.h), its load split
 # and friction as the line's.
 run_ehl(ball_rough "rough ball" "${ball}[roughness]\nsummit_density_per_m2 = 4e10\nsummit_radius_m = 1e-5\nsummit_std_m = 1e-7\nsummit_height_m = 1e-7\nboundary_friction_coefficient = 0.1\n[solver]\nnodes_x = 31\nnodes_y = 25\n" --summary-only)
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(ball_rough "rough ball" "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
 m = s['mixed']
@@ -90,10 +92,7 @@ assert abs(m['film_load_N'] + m['asperity_load_N'] - 20) <= 1e-6 * 20, m
 mu = (m['boundary_friction_N'] + m['film_friction_N']) / 20
 assert abs(s['friction_coefficient'] - mu) <= 1e-12, (s['friction_coefficient'], mu)
 assert s['inputs']['roughness']['summit_std_m'] == 1e-7, s['inputs']
-" ${WORK}/out_ball_rough RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, rough ball: ehl.json is not as documented: ${why}")
-endif()
+")
 expect_refused(ball_nodes "${ball}[solver]\nnodes = 41\n" "solver.nodes")
 
 # With [roughness]: the mixed regime by load sharing. ehl.json splits the load between film and
@@ -102,7 +101,7 @@ expect_refused(ball_nodes "${ball}[solver]\nnodes = 41\n" "solver.nodes")
 set(rough_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 1e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 0.3\nslide_to_roll_ratio = 0.05\n")
 set(rough_rest "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n[roughness]\nsummit_density_per_m2 = 4e10\nsummit_radius_m = 1e-5\nsummit_std_m = 1e-7\nsummit_height_m = 1e-7\nboundary_friction_coefficient = 0.1\n[solver]\nnodes = 151\n")
 run_ehl(rough "rough contact" "${rough_contact}${rough_rest}" --summary-only)
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(rough "rough contact" "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
 m = s['mixed']
@@ -114,10 +113,7 @@ mu = (m['boundary_friction_N_per_m'] + m['film_friction_N_per_m']) / 1e5
 assert abs(s['friction_coefficient'] - mu) <= 1e-12, (s['friction_coefficient'], mu)
 assert s['inputs']['sliding_speed_m_per_s'] == 0.05 * 0.3, s['inputs']
 assert s['inputs']['roughness']['summit_height_m'] == 1e-7, s['inputs']
-" ${WORK}/out_rough RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, rough contact: ehl.json is not as documented: ${why}")
-endif()
+")
 expect_refused(both_sliding "${rough_contact}sliding_speed_m_per_s = 0.01\n${rough_rest}" "contact.slide_to_roll_ratio")
 string(REPLACE "summit_height_m = 1e-7\n" "" no_height "${rough_rest}")
 expect_refused(no_height "${rough_contact}${no_height}" "roughness.summit_height_m")
@@ -128,7 +124,7 @@ expect_refused(no_height "${rough_contact}${no_height}" "roughness.summit_height
 set(wavy_contact "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 3e5\nreduced_radius_m = 0.01\nreduced_modulus_Pa = 2.26e11\nmean_speed_m_per_s = 1e-5\nslide_to_roll_ratio = 2.0\n")
 set(wavy_rest "[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\n[profile]\namplitude_m = 2.7e-8\nwavelength_m = 4.6e-5\nboundary_friction_coefficient = 0.1\n[solver]\nnodes = 401\n")
 run_ehl(wavy "wavy pin" "${wavy_contact}${wavy_rest}" --summary-only)
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(wavy "wavy pin" "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
 c = s['contact']
@@ -139,10 +135,7 @@ assert abs(c['boundary_friction_N_per_m'] - 0.1 * c['contact_load_per_length_N_p
 mu = (c['boundary_friction_N_per_m'] + c['film_friction_N_per_m']) / 3e5
 assert abs(s['friction_coefficient'] - mu) <= 1e-12 and abs(mu - 0.1) < 1e-3, (s['friction_coefficient'], mu)
 assert s['minimum_film_m'] < s['inputs']['profile']['contact_film_m'] == 5e-9, s
-" ${WORK}/out_wavy RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, wavy pin: ehl.json is not as documented: ${why}")
-endif()
+")
 string(REPLACE "boundary_friction_coefficient = 0.1\n" "" no_fc "${wavy_rest}")
 expect_refused(wavy_no_fc "${wavy_contact}${no_fc}" "profile.boundary_friction_coefficient")
 expect_refused(wavy_and_rough "${rough_contact}${rough_rest}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-5\nboundary_friction_coefficient = 0.1\n" "profile")
@@ -154,7 +147,7 @@ expect_refused(wavy_short "${wavy_contact}${short_wave}" "profile.wavelength_m")
 # alone); the trace's Rq over the domain as measured and as filtered; the trace among provenance's
 # inputs with its hash.
 run_ehl_config(measured "measured pin" ${EXAMPLES}/ehl-measured-pin.toml --summary-only)
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(measured "measured pin" "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
 p, c = s['inputs']['profile'], s['contact']
@@ -165,16 +158,13 @@ assert p['file'].endswith('dektak-1.csv') and abs(p['sample_spacing_m'] - 1.5e-3
 assert 0.0 < p['filtered_rq_m'] <= p['rq_m'] < 1e-6, p
 inputs = s['provenance']['inputs']
 assert len(inputs) == 2 and inputs[1]['path'].endswith('dektak-1.csv') and len(inputs[1]['hash']) == 16, inputs
-" ${WORK}/out_measured RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, measured pin: ehl.json is not as documented: ${why}")
-endif()
+")
 
 # [profile] on a point contact: examples/ehl-ridged-ball.toml, the ball held still over a sliding disc
 # with ridges across the track. Crawling, the Hertz circle is in contact, so the friction coefficient
 # is the boundary friction; the contact block in N; the margin among the inputs.
 run_ehl_config(ridged "ridged ball" ${EXAMPLES}/ehl-ridged-ball.toml --summary-only)
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(ridged "ridged ball" "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
 c, p = s['contact'], s['inputs']['profile']
@@ -186,10 +176,7 @@ mu = (c['boundary_friction_N'] + c['film_friction_N']) / 20.0
 assert abs(s['friction_coefficient'] - mu) <= 1e-12 and abs(mu - 0.1) < 1e-3, (s['friction_coefficient'], mu)
 assert abs(s['traction_N'] - mu * 20.0) <= 1e-9, s['traction_N']
 assert p['contact_film_m'] == 5e-9 and p['contact_margin_m'] == 1e-9 and p['wavelength_m'] == 2.7e-5, p
-" ${WORK}/out_ridged RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, ridged ball: ehl.json is not as documented: ${why}")
-endif()
+")
 expect_refused(ridged_short "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-6\nboundary_friction_coefficient = 0.1\n" "profile.wavelength_m")
 expect_refused(ridged_margin "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-4\ncontact_margin_m = -1e-9\nboundary_friction_coefficient = 0.1\n" "profile.contact_margin_m")
 
@@ -203,7 +190,7 @@ set(map_ball "[contact]\ngeometry = \"point\"\nload_N = 20\nreduced_radius_m = 9
 set(map_profile "[profile]\nboundary_friction_coefficient = 0.1\n")
 set(map_surface "[surface]\nkind = \"gaussian\"\ncorrelation_length_m = 4e-5\nrms_height_m = 2e-8\nseed = 3\nsize_m = 8e-4\ngrid = 128\n")
 run_ehl(map "rough ball map" "${map_ball}${map_profile}${map_surface}" --summary-only)
-execute_process(COMMAND ${PYTHON} -c "
+expect_outputs(map "rough ball map" "
 import json, sys
 s = json.load(open(sys.argv[1] + '/ehl.json'))
 c, m = s['contact'], s['inputs']['surface']
@@ -214,10 +201,7 @@ a = s['hertz_radius_m']
 assert abs(m['cutoff_m'] - 8 * 5 * a / 64) <= 1e-9 * m['cutoff_m'], (m, a)
 assert 0.0 < m['filtered_rq_m'] <= m['rq_m'] < 4e-8 and m['seed'] == 3 and m['sample_spacing_x_m'] == 8e-4 / 128, m
 assert s['inputs']['profile']['ridges'] is None, s['inputs']['profile']
-" ${WORK}/out_map RESULT_VARIABLE check ERROR_VARIABLE why)
-if(NOT check EQUAL 0)
-  message(FATAL_ERROR "tribo ehl, rough ball map: ehl.json is not as documented: ${why}")
-endif()
+")
 expect_refused(map_line "${wavy_contact}${wavy_rest}${map_surface}" "surface")
 expect_refused(map_no_profile "${map_ball}${map_surface}" "profile")
 string(REPLACE "grid = 128" "grid = 64" coarse_map "${map_surface}")
