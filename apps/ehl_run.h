@@ -55,6 +55,9 @@ struct EhlRun {
     // As given, else unset; once loaded, the values used (the domain mid-trace, 8 node spacings).
     std::optional<double> centre_m, cutoff_m;
     double rq_m = 0.0, filtered_rq_m = 0.0;  // Rq over the solver's domain: as measured (levelled), as solved
+    // A waviness or a trace; without either, [profile] holds only the boundary layers and the
+    // contacts' friction for a [surface] map.
+    bool has_ridges() const { return !file.empty() || wavelength_m > 0.0; }
   };
   std::optional<Profile> profile;
   // With [surface] (a point contact, beside [profile], whose ridges then are optional): a height map,
