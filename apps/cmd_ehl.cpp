@@ -94,7 +94,7 @@ void run_ehl(const EhlArgs& args) {
 void add_ehl_command(CLI::App& app) {
   auto args = std::make_shared<EhlArgs>();
   CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line or point contact: film, pressure and traction (TOML config)");
-  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime by load sharing or [profile] (a waviness or a measured trace; on a ball, ridges across the track) for it node by node, on a ball [surface] (a generated or measured height map), [solver])")->required();
+  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime by load sharing or [profile] (a waviness or a measured trace; on a ball, ridges across the track) for it node by node, on a ball [surface] (a generated or measured height map), [material] hardness_Pa with [profile] (the pressure cap where the surfaces touch), [solver])")->required();
   cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy; a point contact y_m.npy too)")->capture_default_str();
   CLI::Option* plot = cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
   add_summary_only_flag(cmd, args->summary_only, "ehl.json")->excludes(plot);

@@ -271,6 +271,13 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     pr->finish();
     run.profile = profile;
   }
+  if (auto m = root.table("material")) {
+    // The touching surface's hardness (EhlRoughness::hardness_Pa): node by node only.
+    if (!run.profile) root.fail("material", "a hardness caps the pressure where surfaces touch node by node: it needs [profile]");
+    if (!run.point) root.fail("material", "a hardness is a point contact's (geometry = \"point\"): the line contact is elastic");
+    run.profile->surface.hardness_Pa = m->required_number("hardness_Pa", Range::positive);
+    m->finish();
+  }
   if (auto sf = root.table("surface")) {
     if (!run.point) root.fail("surface", "a height map is a point contact's (geometry = \"point\"); a line takes [profile]");
     if (!run.profile) root.fail("profile", "[surface] needs [profile] for the boundary layers and the boundary friction coefficient");
@@ -473,6 +480,12 @@ nlohmann::json profile_inputs(const EhlRun::Profile& pr) {
   j["contact_film_m"] = pr.surface.contact_film_m;
   j["contact_margin_m"] = pr.surface.contact_margin_m;
   j["boundary_friction_coefficient"] = pr.boundary_friction_coefficient;
+  // [material]: the hardness, null for an elastic surface.
+  if (std::isfinite(pr.surface.hardness_Pa)) {
+    j["hardness_Pa"] = pr.surface.hardness_Pa;
+  } else {
+    j["hardness_Pa"] = nullptr;
+  }
   return j;
 }
 
@@ -553,6 +566,10 @@ void solve_point_profile(const EhlRun& run, EhlSolve& out) {
   };
   profile_friction(*out.point_film, out.converged, c.load_N, run.profile->boundary_friction_coefficient, traction_of, out.point_traction,
                    &lub::EhlPointTraction::force_N, "N", "N", out.summary);
+  // The contact nodes at the hardness ([material]; none without) and the share of the load they carry.
+  nlohmann::json& contact = out.summary["contact"];
+  contact["plastic_nodes"] = out.converged ? nlohmann::json(out.point_film->plastic_nodes) : nlohmann::json(nullptr);
+  contact["plastic_load_share"] = out.converged ? nlohmann::json(out.point_film->plastic_load_share) : nlohmann::json(nullptr);
 }
 
 // The point contact's solve and summary (geometry = "point").

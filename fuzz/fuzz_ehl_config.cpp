@@ -44,6 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         TRIBO_FUZZ_CHECK(std::isfinite(r.x_m[k]) && std::isfinite(r.height_m[k]) && (k == 0 || r.x_m[k] > r.x_m[k - 1]));
       TRIBO_FUZZ_CHECK(std::isfinite(r.contact_film_m) && r.contact_film_m > 0.0);
       TRIBO_FUZZ_CHECK(std::isfinite(r.contact_margin_m) && r.contact_margin_m >= 0.0);
+      TRIBO_FUZZ_CHECK(r.hardness_Pa > 0.0);  // +∞ without [material]
       TRIBO_FUZZ_CHECK(std::isfinite(run.profile->boundary_friction_coefficient) && run.profile->boundary_friction_coefficient >= 0.0);
     }
     if (run.surface_map) {  // a point contact's map, placed: finite, within the solver's resolution

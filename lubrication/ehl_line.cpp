@@ -68,7 +68,7 @@ class LineProblem {
     return (1.0 - t) * v(i) + t * v(i + 1);
   }
   // The film's change for a change du of the unknowns (linear: H0 + K P).
-  Eigen::VectorXd film_change(const Eigen::VectorXd& du) const {
+  Eigen::VectorXd film_change(const Eigen::VectorXd& /*u*/, const Eigen::VectorXd& du) const {
     return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + kernel_ * pressures(du);
   }
   Eigen::VectorXd film(const Eigen::VectorXd& u) const {
@@ -212,6 +212,10 @@ void validate(const EhlLineContact& c, const EhlRoughness* rough, const EhlLineO
   if (!rough) return;
   validate(*rough, "EHL line contact");
   if (rough->map) throw std::invalid_argument("EHL line contact: a roughness map is a point contact's (the line takes ridges)");
+  // The cap is the point contact's, checked against the elastic–perfectly-plastic sphere; the line
+  // has no reference for it yet (a plane-strain capped cylinder).
+  if (std::isfinite(rough->hardness_Pa))
+    throw std::invalid_argument("EHL line contact: roughness hardness_Pa (a pressure cap) is the point contact's; the line contact is elastic");
 }
 
 // Smooth (roughness null) or rough.

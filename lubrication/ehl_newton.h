@@ -10,8 +10,10 @@
 //   type Jacobian                          what residual() linearises into
 //   VectorXd residual(const Nodal&, c, Jacobian*)
 //   bool solve_step(Jacobian&, rhs, step, std::string& why)   step = J⁻¹ rhs, or false and why
-//   VectorXd film_change(du)               the film's (linear) change for a step du
+//   VectorXd film_change(u, du)            the film's change for a step du from u (linearised)
 //   double contact_floor()                 the film H_c at which surfaces touch (0: they never do)
+//   void set_cap(double)                   the pressure cap (the hardness in the problem's pressure
+//                                          unit, +∞: none; lower_cap)
 //   int pressure_unknowns()                the pressures among the unknowns (first), then H0
 // and Options the fields tolerance, max_newton_iterations and max_continuation_steps.
 #pragma once
@@ -70,7 +72,7 @@ NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, 
     // With boundary layers H_c > 0 (mixed lubrication) a closing film may fall to H_c/2 in one step
     // (below H_c it passes no pressure flow, and ε ~ H³ cannot collapse), and one near H_c may open
     // by 2 H_c.
-    const Eigen::VectorXd dh = problem.film_change(step);
+    const Eigen::VectorXd dh = problem.film_change(u, step);
     const double floor = problem.contact_floor();
     double t = 1.0;
     for (int i = 0; i < dh.size(); ++i) {
@@ -208,6 +210,42 @@ SolveOutcome solve_with_continuation(const Problem& problem, double lambda, cons
   if (!continuation(first, why) && floor > 0.0) continuation(-first, why);
   if (!out.newton.converged) out.newton.why = why;
   return out;
+}
+
+// Continuation in the hardness (EhlRoughness::hardness_Pa; `cap` in the problem's pressure unit):
+// from the elastic answer u, the cap lowered from its peak pressure to `cap` geometrically, at most
+// a tenth of the way (in the log) a solve, each Newton from the last answer — the yielded zone grows
+// from the peak outwards and the contact widens, so each solve moves the active sets at their edges
+// only (on the tests' ball at 0.8 p_H: 61² in 8 solves). A solve that does not converge is retried
+// at half the stride, down to 1/320 of the way; the stride doubles again (up to a tenth) after a
+// success. Adds to `out`'s counts; `out.newton` is the last solve.
+template <class Problem, class Options>
+void lower_cap(const Problem& problem, double lambda, double cap, Eigen::VectorXd& u, const Options& o, SolveOutcome& out) {
+  const double peak = u.head(problem.pressure_unknowns()).maxCoeff();
+  problem.set_cap(cap);
+  if (!(peak > cap)) return;  // the cap does not bind
+  constexpr double kLargest = 0.1, kSmallest = kLargest / 32.0;
+  double done = 0.0, stride = kLargest;  // fractions of ln(peak/cap)
+  while (done < 1.0) {
+    const double next = std::min(1.0, done + stride), at = peak * std::pow(cap / peak, next);
+    problem.set_cap(at);
+    Eigen::VectorXd trial = u;
+    const NewtonOutcome n = newton(problem, lambda, trial, o);
+    out.iterations += n.iterations;
+    ++out.continuation_steps;
+    out.newton = n;
+    if (n.converged) {
+      u = trial, done = next, stride = std::min(2.0 * stride, kLargest);
+      continue;
+    }
+    if (stride <= kSmallest) {
+      out.newton.why += " (lowering the pressure cap from the elastic peak stopped at " + numerics::shortest(at / peak) +
+                        " of it, the hardness " + numerics::shortest(cap / peak) + ")";
+      u = trial;
+      return;
+    }
+    stride *= 0.5;
+  }
 }
 
 }  // namespace tribo::lubrication::ehl

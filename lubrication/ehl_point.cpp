@@ -6,8 +6,11 @@
 #include <array>
 #include <cmath>
 #include <future>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 #include "contact/grid.h"
@@ -112,11 +115,33 @@ class PointProblem {
   double hertz_pressure_Pa() const { return ph_; }
   double film_scale_m() const { return a_ * a_ / radius_; }  // h = H a²/R
 
+  // With a pressure cap (EhlRoughness::hardness_Pa, set_cap) an unknown q is the pressure below the
+  // cap, P = min(q, P_cap), and above it the surface's plastic flow, the film raised by
+  // K_self (q − P_cap) at its node — K_self the deflection of a node's own cell per unit pressure,
+  // so that q moves the film alike on both sides. The map is continuous: a node yields and keeps its
+  // flow balance (the film its neighbours bring in sets the flow), and Newton's rows stay the same
+  // rows. Without a cap q = P.
   Eigen::VectorXd pressures(const Eigen::VectorXd& u) const {
     Eigen::VectorXd p = Eigen::VectorXd::Zero(nx_ * ny_);
     for (int j = 1; j <= ny_ - 2; ++j)
-      for (int i = 1; i <= nx_ - 2; ++i) p(node(i, j)) = u(unknown(i, j));
+      for (int i = 1; i <= nx_ - 2; ++i) p(node(i, j)) = std::min(u(unknown(i, j)), cap_);
     return p;
+  }
+  void set_cap(double cap) const { cap_ = cap; }
+  bool yields(double q) const { return q >= cap_; }  // the unknown's pressure at the cap
+  // The interior pressures and the plastic flow of the unknowns of u.
+  Eigen::VectorXd capped(const Eigen::VectorXd& interior_q) const { return interior_q.cwiseMin(cap_); }
+  // The films' change from the unknowns' interior part v at the branch of u: K (v where u is below
+  // the cap) + K_self (v where it yields), at each node.
+  Eigen::VectorXd film_from(const Eigen::VectorXd& u, const Eigen::VectorXd& v) const {
+    Eigen::VectorXd below = v;
+    for (int k = 0; k < interior(); ++k)
+      if (yields(u(k))) below(k) = 0.0;
+    Eigen::VectorXd out = deflection(below);
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i)
+        if (const int k = unknown(i, j); yields(u(k))) out(node(i, j)) += self_ * v(k);
+    return out;
   }
   // A nodal field bilinearly interpolated at X = Y = 0.
   double at_centre(const Eigen::VectorXd& v) const {
@@ -137,20 +162,26 @@ class PointProblem {
   }
   double contact_floor() const { return floor_; }  // H_c, 0 without roughness (smooth surfaces never touch)
   bool rough() const { return floor_ > 0.0; }      // (a profile's H_c is positive)
-  Eigen::VectorXd film_change(const Eigen::VectorXd& du) const {
-    return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + deflection(du.head(interior()));
+  Eigen::VectorXd film_change(const Eigen::VectorXd& u, const Eigen::VectorXd& du) const {
+    return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + film_from(u, du.head(interior()));
   }
   Eigen::VectorXd film(const Eigen::VectorXd& u) const {
-    return (Eigen::VectorXd::Constant(nx_ * ny_, u(interior())) + rigid_) + deflection(u.head(interior()));
+    Eigen::VectorXd h = (Eigen::VectorXd::Constant(nx_ * ny_, u(interior())) + rigid_) + deflection(capped(u.head(interior())));
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i)
+        if (const int k = unknown(i, j); yields(u(k))) h(node(i, j)) += self_ * (u(k) - cap_);
+    return h;
   }
 
   struct Nodal {
     Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w, mobile, coef;  // ε = coef · mobile³
+    std::vector<bool> yielded;  // by unknown: q at or above the cap
   };
   Nodal nodal(const Eigen::VectorXd& u, double lambda) const {
     const int n = nx_ * ny_;
     Nodal s{pressures(u),       film(u),            Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n),
-            Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n)};
+            Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), Eigen::VectorXd(n), std::vector<bool>(interior())};
+    for (int k = 0; k < interior(); ++k) s.yielded[static_cast<std::size_t>(k)] = yields(u(k));
     for (int k = 0; k < n; ++k) {
       const ViscosityAtPressure v = viscosity_ratio(lub_, s.p(k) * ph_);
       const DensityAtPressure r = density_ratio(lub_, s.p(k) * ph_);
@@ -190,7 +221,30 @@ class PointProblem {
     Eigen::MatrixXd dense;
     Eigen::SparseMatrix<double, Eigen::RowMajor> stencil, through_film;
     Eigen::VectorXd h0_column;
+    std::vector<bool> yielded;  // Nodal::yielded: the columns that move the film by K_self, not P
+    Eigen::VectorXd load_row;   // ∂(ΔXΔY ΣP)/∂q: the load weights, 0 where yielded
   };
+
+  // ∂H/∂q of the film at every node by unknown: K's columns where the unknown is below the cap,
+  // K_self at the unknown's node (and its mirror image) where it yields — the same pattern as K
+  // (whose entries include every node's own cell).
+  template <class Kernel>
+  Kernel yielding_kernel(const Kernel& kernel, const std::vector<bool>& yielded) const {
+    Kernel out = kernel;
+    if (std::none_of(yielded.begin(), yielded.end(), [](bool y) { return y; })) return out;
+    if constexpr (std::is_same_v<Kernel, Eigen::MatrixXd>) {
+      for (int k = 0; k < interior(); ++k)
+        if (yielded[static_cast<std::size_t>(k)]) out.col(k).setZero();
+    } else {
+      for (int k = 0; k < out.outerSize(); ++k)
+        for (typename Kernel::InnerIterator it(out, k); it; ++it)
+          if (yielded[static_cast<std::size_t>(it.col())]) it.valueRef() = 0.0;
+    }
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i)
+        if (const int k = unknown(i, j); yielded[static_cast<std::size_t>(k)]) out.coeffRef(node(i, j), k) += self_;
+    return out;
+  }
 
   Eigen::VectorXd residual(const Nodal& s, const Eigen::VectorXd& c, Jacobian* jacobian) const {
     const int np = interior();
@@ -270,6 +324,15 @@ class PointProblem {
     if (jacobian) {
       jacobian->stencil.resize(np, np);
       jacobian->stencil.setFromTriplets(stencil.begin(), stencil.end());
+      // The stencil's entries are ∂/∂P: none for a yielded unknown (its pressure is the cap). Kept
+      // as zeros: the Krylov preconditioner's analysis holds for one pattern.
+      jacobian->yielded = s.yielded;
+      jacobian->load_row = load_weights_;
+      for (int k = 0; k < np; ++k)
+        if (s.yielded[static_cast<std::size_t>(k)]) jacobian->load_row(k) = 0.0;
+      for (int r = 0; r < np; ++r)
+        for (Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(jacobian->stencil, r); it; ++it)
+          if (s.yielded[static_cast<std::size_t>(it.col())]) it.valueRef() = 0.0;
       jacobian->through_film.resize(np, nx_ * ny_);
       jacobian->through_film.setFromTriplets(through_film.begin(), through_film.end());
     }
@@ -283,9 +346,9 @@ class PointProblem {
       Eigen::MatrixXd& m = jacobian->dense;
       m.setZero(np + 1, np + 1);
       m.topLeftCorner(np, np) = jacobian->stencil;
-      m.topLeftCorner(np, np).noalias() += jacobian->through_film * kernel_;
+      m.topLeftCorner(np, np).noalias() += jacobian->through_film * yielding_kernel(kernel_, s.yielded);
       m.col(np).head(np) = jacobian->h0_column;
-      m.row(np).head(np) = load_weights_.transpose();
+      m.row(np).head(np) = jacobian->load_row.transpose();
     }
     return f;
   }
@@ -321,7 +384,7 @@ class PointProblem {
   }
   // A = S + D K_near of the preconditioner (krylov_step), compressed as UMFPACK reads it.
   SparseMatrix local_matrix(const Jacobian& jac) const {
-    Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * near_kernel_;
+    Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * yielding_kernel(near_kernel_, jac.yielded);
     local += jac.stencil;
     return SparseMatrix(local);
   }
@@ -342,6 +405,7 @@ class PointProblem {
   Eigen::VectorXd x_, y_, load_weights_;
   Eigen::VectorXd rigid_;  // the film at H0 = 0 without deformation: the ball's crown less the ridges
   double floor_ = 0.0;     // the boundary layers' H_c (0 for smooth surfaces)
+  mutable double cap_ = std::numeric_limits<double>::infinity();  // the pressure cap / p_H (set_cap)
   Eigen::MatrixXd kernel_;  // all nodes × interior nodes (dense method)
   Eigen::SparseMatrix<double, Eigen::RowMajor> near_kernel_;  // its entries within the reach (Krylov)
   std::unique_ptr<contact::ElasticHalfSpace> halfspace_;  // K by FFT (Krylov); its buffers make products non-const
@@ -399,7 +463,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
       why = "the preconditioner's solve failed: " + status.message;
       return false;
     }
-    schur_ = load_weights_.dot(border_);
+    schur_ = jac.load_row.dot(border_);
     if (!std::isfinite(schur_) || schur_ == 0.0) {
       why = "the preconditioner is singular: the load does not depend on the film constant through it";
       return false;
@@ -409,10 +473,16 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
   };
   std::string failure;
   const numerics::LinearMap apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd& y) {
-    const Eigen::VectorXd film = deflection(v.head(np));
+    Eigen::VectorXd below = v.head(np);
+    for (int k = 0; k < np; ++k)
+      if (jac.yielded[static_cast<std::size_t>(k)]) below(k) = 0.0;
+    Eigen::VectorXd film = deflection(below);
+    for (int j = 1; j <= ny_ - 2; ++j)
+      for (int i = 1; i <= nx_ - 2; ++i)
+        if (const int k = unknown(i, j); jac.yielded[static_cast<std::size_t>(k)]) film(node(i, j)) += self_ * v(k);
     y.resize(np + 1);
     y.head(np) = jac.stencil * v.head(np) + jac.through_film * film + jac.h0_column * v(np);
-    y(np) = load_weights_.dot(v.head(np));
+    y(np) = jac.load_row.dot(v.head(np));
     return true;
   };
   // z = M⁻¹ r: A z_p + b z_H0 = r_p and wᵀz_p = r_H0, so z_H0 = (wᵀA⁻¹r_p − r_H0) / (wᵀA⁻¹b).
@@ -424,7 +494,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
       return false;
     }
     z.resize(np + 1);
-    z(np) = (load_weights_.dot(y) - r(np)) / schur_;
+    z(np) = (jac.load_row.dot(y) - r(np)) / schur_;
     z.head(np) = y - border_ * z(np);
     return true;
   };
@@ -563,9 +633,12 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   // A coarse grid that cannot hold the contact (high M: no film-positive solution past a fold in λ)
   // would spend the whole continuation finding that out; the Hertz start on this grid is then cheaper.
   coarser.max_continuation_steps = std::min(options.max_continuation_steps, 4);
+  // With a hardness the elastic answer first (and on the coarser grid), then the cap lowered onto it.
+  std::optional<EhlRoughness> elastic;
+  if (roughness) elastic = *roughness, elastic->hardness_Pa = std::numeric_limits<double>::infinity();
   if (!dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y) {
     problem.start_analysis(u, lambda);
-    if (const EhlPointResult c = solve_point(contact, roughness, lubricant, coarser); c.converged) {
+    if (const EhlPointResult c = solve_point(contact, elastic ? &*elastic : nullptr, lubricant, coarser); c.converged) {
       for (int j = 1; j <= problem.ny() - 2; ++j)
         for (int i = 1; i <= problem.nx() - 2; ++i)
           u(problem.unknown(i, j)) = interpolate(c, problem.x()(i) * a, problem.y()(j) * a) / ph;
@@ -574,7 +647,8 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   }
 
   const Eigen::VectorXd start = u;
-  const ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+  ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+  if (solved.newton.converged && roughness) ehl::lower_cap(problem, lambda, roughness->hardness_Pa / ph, u, options, solved);
 
   EhlPointResult result;
   const Eigen::VectorXd p = problem.pressures(u), h = problem.film(u);
@@ -600,13 +674,18 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   result.krylov_iterations = problem.krylov_iterations();
   result.preconditioner_factorisations = problem.factorisations();
   if (roughness) {
-    double carried = 0.0;
+    double carried = 0.0, yielded = 0.0;
     result.in_contact.assign(static_cast<std::size_t>(h.size()), false);
     for (int j = 1; j <= problem.ny() - 2; ++j)
-      for (int i = 1; i <= problem.nx() - 2; ++i)
-        if (const int k = problem.node(i, j); in_contact(*roughness, result.film_m[static_cast<std::size_t>(k)]))
+      for (int i = 1; i <= problem.nx() - 2; ++i) {
+        const int k = problem.node(i, j);
+        if (in_contact(*roughness, result.film_m[static_cast<std::size_t>(k)]))
           result.in_contact[static_cast<std::size_t>(k)] = true, ++result.contact_nodes, carried += p(k);
-    result.contact_load_share = problem.dx() * problem.dy() * carried / (2.0 * std::numbers::pi / 3.0);
+        if (problem.yields(u(problem.unknown(i, j)))) ++result.plastic_nodes, yielded += p(k);
+      }
+    const double share = problem.dx() * problem.dy() / (2.0 * std::numbers::pi / 3.0);
+    result.contact_load_share = share * carried;
+    result.plastic_load_share = share * yielded;
   }
   result.message = ehl::outcome_message(solved.newton, result.iterations);
   return result;

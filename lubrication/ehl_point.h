@@ -62,6 +62,14 @@
 // stalled), while 41² converges in 7 steps — refine when it says so. Where a coarse grid does
 // converge its error can be large (20 N, M ≈ 100: h_c 46 nm on 25², 80 nm on 31 × 25, 109 nm on
 // 41²): refine until the film settles.
+// With a hardness (EhlRoughness::hardness_Pa) the touching surface is elastic–perfectly-plastic, as
+// the BEM's: an unknown q is the pressure up to the cap, P = min(q, P_cap), and beyond it the plastic
+// flow that raises the node's film by K_self (q − P_cap) — so each node keeps its flow-balance row
+// and the map from q is continuous (a yielded node's film is what its neighbours carry in). Solved
+// from the elastic answer by lowering the cap onto the hardness (ehl_newton.h: lower_cap). On the
+// tests' ball crawling at 0.8 p_H: the elastic–plastic sphere of contact/reference/capped_sphere.h —
+// the yielded nodes its plastic disc to half a node, the elastic ring to 2.6 % of p_H on 31²
+// (ehl_point_mixed_test.cpp), 2.6 s; down to 0.6 p_H on 31², not at 0.4 (Newton stalls).
 #pragma once
 
 #include <string>
@@ -149,6 +157,10 @@ struct EhlPointResult {
   std::vector<bool> in_contact;
   int contact_nodes = 0;
   double contact_load_share = 0.0;
+  // The nodes whose pressure is at the hardness (EhlRoughness::hardness_Pa: their surface yielded) and
+  // the share of the load they carry.
+  int plastic_nodes = 0;
+  double plastic_load_share = 0.0;
   std::string message;
 };
 

@@ -71,6 +71,7 @@ void validate(const EhlRoughness& r, const std::string& who) {
   }
   if (!std::isfinite(r.contact_film_m) || r.contact_film_m <= 0.0)
     throw std::invalid_argument(who + ": roughness contact_film_m must be positive and finite, got " + shortest(r.contact_film_m));
+  if (!(r.hardness_Pa > 0.0)) throw std::invalid_argument(who + ": roughness hardness_Pa must be positive, got " + shortest(r.hardness_Pa));
   if (!std::isfinite(r.contact_margin_m) || r.contact_margin_m < 0.0)
     throw std::invalid_argument(who + ": roughness contact_margin_m must be finite and not negative, got " + shortest(r.contact_margin_m));
 }

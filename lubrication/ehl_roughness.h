@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,12 @@ struct EhlRoughness {
   // layers of a hydrocarbon (≈ 0.5 nm each) does not shear as a fluid — confined films turn solid-like
   // at several layers already (Gee, McGuiggan, Israelachvili & Homola, J. Chem. Phys. 93, 1990).
   double contact_margin_m = 1e-9;
+  // The pressure at which the touching surface yields (Pa; > 0, +∞: elastic; the point contact
+  // only — the line contact refuses it): where the flow balance would need more, the pressure stays
+  // at it and the surface flows plastically instead (ehl_point.cpp: pressures()) — the
+  // elastic–perfectly-plastic surface of contact/'s BEM (normal_contact.h), about the softer body's
+  // indentation hardness (Tabor 1951). The bulk below deflects elastically under the capped pressure.
+  double hardness_Pa = std::numeric_limits<double>::infinity();
   // A point contact's surface across the track as well, added to the ridges (the line contact
   // refuses it): the contact is then no longer symmetric in y, and the whole grid is solved.
   std::optional<EhlHeightMap> map = std::nullopt;
@@ -80,7 +87,7 @@ double surface_height_m(const EhlRoughness& roughness, double x_m, double y_m);
 // Throws std::invalid_argument, the message starting with `who`, for fewer than two points (unless a
 // map stands alone), unequal lengths, a non-finite point, positions that do not increase, a map with
 // fewer than 2 × 2 samples, a spacing that is not positive or a height that is not finite, a contact
-// film that is not positive or a negative margin.
+// film that is not positive, a negative margin or a hardness that is not positive.
 void validate(const EhlRoughness& roughness, const std::string& who);
 
 }  // namespace tribo::lubrication

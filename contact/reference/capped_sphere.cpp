@@ -118,6 +118,8 @@ CappedSphereContact capped_sphere_contact(double load_N, double radius_m, double
   CappedSphereContact out;
   out.approach_m = approach;
   for (int i = 0; i < n; ++i) {
+    out.ring_radius_m.push_back((i + 0.5) * dr);
+    out.ring_pressure_Pa.push_back(s.pressure(i));
     if (s.pressure(i) <= 0.0) continue;
     out.area_m2 += ring_area(i);
     out.contact_radius_m = (i + 1) * dr;
@@ -125,6 +127,15 @@ CappedSphereContact capped_sphere_contact(double load_N, double radius_m, double
     out.peak_pressure_Pa = std::max(out.peak_pressure_Pa, s.pressure(i));
   }
   return out;
+}
+
+double pressure_at_Pa(const CappedSphereContact& c, double r_m) {
+  const std::vector<double>&r = c.ring_radius_m, &p = c.ring_pressure_Pa;
+  if (r.empty() || r_m > r.back()) return 0.0;
+  if (r_m <= r.front()) return p.front();
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(r.begin(), r.end(), r_m) - r.begin());
+  const double t = (r_m - r[i - 1]) / (r[i] - r[i - 1]);
+  return (1.0 - t) * p[i - 1] + t * p[i];
 }
 
 }  // namespace tribo::contact::reference

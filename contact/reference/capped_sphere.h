@@ -15,6 +15,8 @@
 // W/p_cap for a fully plastic contact.
 #pragma once
 
+#include <vector>
+
 namespace tribo::contact::reference {
 
 struct CappedSphereContact {
@@ -23,7 +25,11 @@ struct CappedSphereContact {
   double area_m2 = 0.0;           // loaded rings' area
   double approach_m = 0.0;        // δ
   double peak_pressure_Pa = 0.0;
+  std::vector<double> ring_radius_m, ring_pressure_Pa;  // each ring's mid-radius and pressure, out to r_max
 };
+
+// The pressure at radius r (m): linear between the rings' mid-radii, the first ring's inside it, 0 past the last.
+double pressure_at_Pa(const CappedSphereContact& c, double r_m);
 
 // Throws std::invalid_argument for non-positive arguments or rings < 20, and std::runtime_error if
 // the active-set iteration cycles or the domain r_max (4 × the Hertz radius, or the fully plastic

@@ -210,3 +210,23 @@ expect_refused(map_cutoff "${map_ball}${map_profile}${map_surface}cutoff_m = 1e-
 string(REPLACE "size_m = 8e-4" "size_m = 4e-4" small_map "${map_surface}")
 string(REPLACE "grid = 128" "grid = 64" small_map "${small_map}")
 expect_refused(map_small "${map_ball}${map_profile}${small_map}" "surface.centre_x_m")
+
+# [material] hardness_Pa on a crawling ball (a flat profile, 31² nodes): the pressure capped at the
+# hardness (0.8 of Hertz's 0.828 GPa), the centre yielded — the plastic nodes and their share of the
+# load in the contact block (the ring reference is tests/lubrication/ehl_point_mixed_test.cpp) — and
+# the hardness among the profile's inputs. Refused: a hardness without [profile], one not positive, on a line.
+string(REPLACE "mean_speed_m_per_s = 0.5" "mean_speed_m_per_s = 1e-6" crawling_ball "${ball}")
+set(flat_profile "[profile]\namplitude_m = 0.0\nwavelength_m = 1e-3\nboundary_friction_coefficient = 0.1\n[solver]\nnodes_x = 31\nnodes_y = 31\n")
+run_ehl(yielding "yielding ball" "${crawling_ball}${flat_profile}[material]\nhardness_Pa = 6.656e8\n" --summary-only)
+expect_outputs(yielding "yielding ball" "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+c, p = s['contact'], s['inputs']['profile']
+assert s['converged'], s['message']
+assert p['hardness_Pa'] == 6.656e8 and s['max_pressure_Pa'] == 6.656e8, (p, s['max_pressure_Pa'])
+assert abs(s['hertz_pressure_Pa'] / 8.282e8 - 1) < 1e-3, s['hertz_pressure_Pa']
+assert c['plastic_nodes'] > 40 and 0.6 < c['plastic_load_share'] < 0.7 and c['contact_load_share'] > 0.98, c
+")
+expect_refused(hardness_alone "${ball}[material]\nhardness_Pa = 6.656e8\n" "material")
+expect_refused(hardness_negative "${crawling_ball}${flat_profile}[material]\nhardness_Pa = -1\n" "material.hardness_Pa")
+expect_refused(hardness_line "${wavy_contact}${wavy_rest}[material]\nhardness_Pa = 1e9\n" "material")

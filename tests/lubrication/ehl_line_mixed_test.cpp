@@ -56,6 +56,14 @@ TEST(EhlLineMixed, BadRoughnessIsRejectedAsTheLineContacts) {
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("a roughness map is a point contact's"), std::string::npos) << e.what();
   }
+  EhlRoughness hard = flat_profile(kCrawlLoad_N_per_m);
+  hard.hardness_Pa = 1e9;
+  try {
+    solve_ehl_line({kCrawlLoad_N_per_m, kRadius_m, kModulus_Pa, 1e-3}, hard, mineral_oil());
+    ADD_FAILURE() << "a hardness accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("hardness_Pa (a pressure cap) is the point contact's"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

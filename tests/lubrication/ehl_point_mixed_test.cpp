@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "contact/reference/capped_sphere.h"
 #include "tests/lubrication/ehl_point_mixed.h"
 
 namespace tribo::lubrication {
@@ -42,6 +43,55 @@ TEST(EhlPointMixed, SmoothBallCrawlingOnItsBoundaryLayersIsHertzsDryContact) {
       inner += r2 < 0.25;
     }
   EXPECT_GE(inner, 20);
+}
+
+// A hardness below Hertz's peak, 0.8 p_H: crawling, the centre of the contact yields — its pressure
+// held at the hardness, its surface flowed plastically under the boundary layers — and the contact
+// is the elastic–perfectly-plastic sphere, here by the ring solution of
+// contact/reference/capped_sphere.h (Johnson's disc deflections with the cap, axisymmetric, 400
+// rings: independent of the EHL solver's cell kernel and grid; plastic radius 0.740 a, contact
+// radius 1.010 a). On 31² (a node every a/6): the yielded nodes are the disc's to half a node (45
+// within it, none beyond), and the elastic ring between the plastic edge and 0.9 of the contact
+// radius follows the rings to 4 % of p_H (measured 2.6 %; 1.1 % on 41²) — one or two cells wide,
+// where the fall from the cap and the square-root edge are both cut by the cells (the elastic
+// contact's edge test above allows 3 %).
+TEST(EhlPointMixed, CrawlingBallAboveItsHardnessIsTheElasticPlasticSphere) {
+  EhlRoughness flat = flat_surface();
+  const EhlPointContact contact = ball_contact(kCrawlLoad_N, 1e-6);
+  const double ph = reference::hertz_point_peak_pressure_Pa(contact.load_N, contact.reduced_radius_m, contact.reduced_modulus_Pa);
+  flat.hardness_Pa = 0.8 * ph;
+  const contact::reference::CappedSphereContact dry = contact::reference::capped_sphere_contact(
+      contact.load_N, contact.reduced_radius_m, 0.5 * contact.reduced_modulus_Pa, flat.hardness_Pa);
+  const EhlPointResult r = solve_ehl_point(contact, flat, ball_oil(), ball_grid(31));
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_NEAR(r.load_balance_error, 0.0, 1e-9);
+  EXPECT_NEAR(r.max_pressure_Pa / flat.hardness_Pa, 1.0, 1e-12);
+  const std::size_t nx = r.x_m.size();
+  const double half_node = 0.5 * (r.x_m[1] - r.x_m[0]);
+  int yielded_inside = 0, elastic_compared = 0;
+  double worst = 0.0;
+  for (std::size_t j = 0; j < r.y_m.size(); ++j)
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double radius = std::hypot(r.x_m[i], r.y_m[j]), p = r.pressure_Pa[i + nx * j];
+      const bool yielded = p == flat.hardness_Pa;
+      if (radius < dry.plastic_radius_m - half_node) {
+        EXPECT_TRUE(yielded) << "r/a = " << radius / r.hertz_radius_m;
+        yielded_inside += yielded;
+      } else if (radius > dry.plastic_radius_m + half_node) {
+        EXPECT_FALSE(yielded) << "r/a = " << radius / r.hertz_radius_m;
+        if (radius < 0.9 * dry.contact_radius_m) {
+          const double error = std::abs(p - contact::reference::pressure_at_Pa(dry, radius)) / ph;
+          EXPECT_LT(error, 0.04) << "r/a = " << radius / r.hertz_radius_m;
+          worst = std::max(worst, error), ++elastic_compared;
+        }
+      }
+    }
+  std::printf("plastic radius %.3f a, contact radius %.3f a; %d nodes yielded (%d within the disc), plastic load share %.3f; "
+              "elastic ring: %d nodes, worst %.4f p_H; %d Newton iterations, %d continuation steps\n",
+              dry.plastic_radius_m / r.hertz_radius_m, dry.contact_radius_m / r.hertz_radius_m, r.plastic_nodes, yielded_inside,
+              r.plastic_load_share, elastic_compared, worst, r.iterations, r.continuation_steps);
+  EXPECT_GE(yielded_inside, 40);
+  EXPECT_GE(elastic_compared, 8);
 }
 
 // The same ridges given as a height map: the map's bilinear samples (a/200 apart) are the profile's

@@ -55,6 +55,8 @@ TEST(EhlRoughness, BadProfileIsRejectedWithItsReason) {
   EXPECT_NE(message({{0.0, 1e-3}, {0.0, 0.0}, 0.0}).find("contact_film_m must be positive"), std::string::npos);
   EXPECT_NE(message({{0.0, 1e-3}, {0.0, 0.0}, 5e-9, -1e-9}).find("contact_margin_m must be finite and not negative"),
             std::string::npos);
+  EXPECT_NE(message({{0.0, 1e-3}, {0.0, 0.0}, 5e-9, 1e-9, 0.0}).find("hardness_Pa must be positive"), std::string::npos);
+  EXPECT_NE(message({{0.0, 1e-3}, {0.0, 0.0}, 5e-9, 1e-9, NAN}).find("hardness_Pa must be positive"), std::string::npos);
 }
 
 // A map adds to the ridges, bilinear between its samples (exact for a plane), zero outside; a map may
