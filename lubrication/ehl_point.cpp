@@ -129,7 +129,7 @@ class PointProblem {
   }
   void set_cap(double cap) const { cap_ = cap; }
   bool yields(double q) const { return q >= cap_; }  // the unknown's pressure at the cap
-  // The interior pressures and the plastic flow of the unknowns of u.
+  // The interior pressures of the unknowns q: min(q, P_cap).
   Eigen::VectorXd capped(const Eigen::VectorXd& interior_q) const { return interior_q.cwiseMin(cap_); }
   // The films' change from the unknowns' interior part v at the branch of u: K (v where u is below
   // the cap) + K_self (v where it yields), at each node.
@@ -138,10 +138,16 @@ class PointProblem {
     for (int k = 0; k < interior(); ++k)
       if (yields(u(k))) below(k) = 0.0;
     Eigen::VectorXd out = deflection(below);
+    add_plastic_flow([&](int k) { return yields(u(k)); }, [&](int k) { return v(k); }, out);
+    return out;
+  }
+  // K_self · amount(k) added to the film at every node whose unknown k yields (`yielded(k)`; a mirror
+  // image too: it shares the unknown).
+  template <class Yielded, class Amount>
+  void add_plastic_flow(Yielded&& yielded, Amount&& amount, Eigen::VectorXd& film) const {
     for (int j = 1; j <= ny_ - 2; ++j)
       for (int i = 1; i <= nx_ - 2; ++i)
-        if (const int k = unknown(i, j); yields(u(k))) out(node(i, j)) += self_ * v(k);
-    return out;
+        if (const int k = unknown(i, j); yielded(k)) film(node(i, j)) += self_ * amount(k);
   }
   // A nodal field bilinearly interpolated at X = Y = 0.
   double at_centre(const Eigen::VectorXd& v) const {
@@ -167,9 +173,7 @@ class PointProblem {
   }
   Eigen::VectorXd film(const Eigen::VectorXd& u) const {
     Eigen::VectorXd h = (Eigen::VectorXd::Constant(nx_ * ny_, u(interior())) + rigid_) + deflection(capped(u.head(interior())));
-    for (int j = 1; j <= ny_ - 2; ++j)
-      for (int i = 1; i <= nx_ - 2; ++i)
-        if (const int k = unknown(i, j); yields(u(k))) h(node(i, j)) += self_ * (u(k) - cap_);
+    add_plastic_flow([&](int k) { return yields(u(k)); }, [&](int k) { return u(k) - cap_; }, h);
     return h;
   }
 
@@ -477,9 +481,7 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
     for (int k = 0; k < np; ++k)
       if (jac.yielded[static_cast<std::size_t>(k)]) below(k) = 0.0;
     Eigen::VectorXd film = deflection(below);
-    for (int j = 1; j <= ny_ - 2; ++j)
-      for (int i = 1; i <= nx_ - 2; ++i)
-        if (const int k = unknown(i, j); jac.yielded[static_cast<std::size_t>(k)]) film(node(i, j)) += self_ * v(k);
+    add_plastic_flow([&](int k) { return jac.yielded[static_cast<std::size_t>(k)]; }, [&](int k) { return v(k); }, film);
     y.resize(np + 1);
     y.head(np) = jac.stencil * v.head(np) + jac.through_film * film + jac.h0_column * v(np);
     y(np) = jac.load_row.dot(v.head(np));
