@@ -274,7 +274,6 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   if (auto m = root.table("material")) {
     // The touching surface's hardness (EhlRoughness::hardness_Pa): node by node only.
     if (!run.profile) root.fail("material", "a hardness caps the pressure where surfaces touch node by node: it needs [profile]");
-    if (!run.point) root.fail("material", "a hardness is a point contact's (geometry = \"point\"): the line contact is elastic");
     run.profile->surface.hardness_Pa = m->required_number("hardness_Pa", Range::positive);
     m->finish();
   }
@@ -542,6 +541,14 @@ void profile_friction(const Film& film, bool converged, double load, double boun
   traction.max_shear_stress_Pa = std::max(traction.max_shear_stress_Pa, boundary_coefficient * contact_pressure);
 }
 
+// ehl.json's contact block, continued: the nodes at the hardness ([material]; none without) and the
+// share of the load they carry; null where the solve did not converge.
+template <class Film>
+void plastic_contact(const Film& film, bool converged, nlohmann::json& j) {
+  j["contact"]["plastic_nodes"] = converged ? nlohmann::json(film.plastic_nodes) : nlohmann::json(nullptr);
+  j["contact"]["plastic_load_share"] = converged ? nlohmann::json(film.plastic_load_share) : nlohmann::json(nullptr);
+}
+
 // A line contact with [profile] (ehl_line.h).
 void solve_profile(const EhlRun& run, EhlSolve& out) {
   const double w = run.contact.load_per_length_N_per_m;
@@ -553,6 +560,7 @@ void solve_profile(const EhlRun& run, EhlSolve& out) {
   };
   profile_friction(out.film, out.converged, w, run.profile->boundary_friction_coefficient, traction_of, out.traction,
                    &lub::EhlTraction::force_per_length_N_per_m, "per_length_N_per_m", "N_per_m", out.summary);
+  plastic_contact(out.film, out.converged, out.summary);
 }
 
 // A point contact with [profile]: ridges across the track (ehl_point.h).
@@ -566,10 +574,7 @@ void solve_point_profile(const EhlRun& run, EhlSolve& out) {
   };
   profile_friction(*out.point_film, out.converged, c.load_N, run.profile->boundary_friction_coefficient, traction_of, out.point_traction,
                    &lub::EhlPointTraction::force_N, "N", "N", out.summary);
-  // The contact nodes at the hardness ([material]; none without) and the share of the load they carry.
-  nlohmann::json& contact = out.summary["contact"];
-  contact["plastic_nodes"] = out.converged ? nlohmann::json(out.point_film->plastic_nodes) : nlohmann::json(nullptr);
-  contact["plastic_load_share"] = out.converged ? nlohmann::json(out.point_film->plastic_load_share) : nlohmann::json(nullptr);
+  plastic_contact(*out.point_film, out.converged, out.summary);
 }
 
 // The point contact's solve and summary (geometry = "point").

@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -56,10 +57,25 @@ class LineProblem {
   double contact_floor() const { return floor_; }             // H_c, 0 without roughness
   bool rough() const { return floor_ > 0.0; }                  // (a profile's H_c is positive)
 
+  // With a pressure cap (EhlRoughness::hardness_Pa, set_cap) an unknown q is the pressure below the
+  // cap, P = min(q, P_cap), and above it the surface's plastic flow, the film raised by
+  // K_self (q − P_cap) at its node (as the point contact's, ehl_point.cpp). Without a cap q = P.
   Eigen::VectorXd pressures(const Eigen::VectorXd& u) const {
     Eigen::VectorXd p = Eigen::VectorXd::Zero(n_);
-    p.segment(1, n_ - 2) = u.head(n_ - 2);
+    p.segment(1, n_ - 2) = u.head(n_ - 2).cwiseMin(cap_);
     return p;
+  }
+  void set_cap(double cap) const { cap_ = cap; }
+  bool yields(double q) const { return q >= cap_; }
+  bool any_yield(const Eigen::VectorXd& u) const { return (u.head(n_ - 2).array() >= cap_).any(); }
+  // ∂H/∂q by node and unknown at the branch of u: K's columns below the cap, K_self at the node where
+  // the unknown yields (empty where none does: K itself).
+  Eigen::MatrixXd yielding_kernel(const Eigen::VectorXd& u) const {
+    if (!any_yield(u)) return {};
+    Eigen::MatrixXd k = kernel_.middleCols(1, n_ - 2);
+    for (int j = 0; j < n_ - 2; ++j)
+      if (yields(u(j))) k.col(j).setZero(), k(j + 1, j) = kernel_(j + 1, j + 1);
+    return k;
   }
   // A nodal field linearly interpolated at X = 0.
   double at_centre(const Eigen::VectorXd& v) const {
@@ -68,21 +84,28 @@ class LineProblem {
     return (1.0 - t) * v(i) + t * v(i + 1);
   }
   // The film's change for a change du of the unknowns (linear: H0 + K P).
-  Eigen::VectorXd film_change(const Eigen::VectorXd& /*u*/, const Eigen::VectorXd& du) const {
-    return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + kernel_ * pressures(du);
+  Eigen::VectorXd film_change(const Eigen::VectorXd& u, const Eigen::VectorXd& du) const {
+    if (!any_yield(u)) return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + kernel_ * pressures(du);
+    return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + yielding_kernel(u) * du.head(n_ - 2);
   }
   Eigen::VectorXd film(const Eigen::VectorXd& u) const {
-    return (u(n_ - 2) + 0.5 * x_.array().square() - rough_.array()).matrix() + kernel_ * pressures(u);
+    Eigen::VectorXd h = (u(n_ - 2) + 0.5 * x_.array().square() - rough_.array()).matrix() + kernel_ * pressures(u);
+    for (int j = 0; j < n_ - 2; ++j)
+      if (yields(u(j))) h(j + 1) += kernel_(j + 1, j + 1) * (u(j) - cap_);
+    return h;
   }
 
   // Pressures, film and the lubricant's state at every node, computed once per iterate and read by
   // the row scales and the residual alike.
   struct Nodal {
     Eigen::VectorXd p, h, rho, drho, eps, dlog_eps, w, mobile, coef;  // ε = coef · mobile³
+    Eigen::MatrixXd film_by_unknown;  // ∂H/∂q (yielding_kernel; empty: K's interior columns)
+    Eigen::VectorXd below_cap;        // ∂P/∂q by unknown: 1, or 0 where it yields
   };
   Nodal nodal(const Eigen::VectorXd& u, double lambda) const {
-    Nodal s{pressures(u), film(u), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_),
-            Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_)};
+    Nodal s{pressures(u),        film(u),             Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_),
+            Eigen::VectorXd(n_), Eigen::VectorXd(n_), Eigen::VectorXd(n_), yielding_kernel(u),  Eigen::VectorXd(n_ - 2)};
+    for (int j = 0; j < n_ - 2; ++j) s.below_cap(j) = yields(u(j)) ? 0.0 : 1.0;
     for (int i = 0; i < n_; ++i) {
       const ViscosityAtPressure v = viscosity_ratio(lub_, s.p(i) * ph_);
       const DensityAtPressure r = density_ratio(lub_, s.p(i) * ph_);
@@ -144,14 +167,20 @@ class LineProblem {
       const double da = phi.da, db = phi.db;
       // A face's ε through node k's c and m³: ∂c_k/∂P_j = δ_kj c_k ∂ln ε_k/∂P_k, ∂m³_k/∂P_j = 3 m_k² K_kj
       // (m = H − H_c, 0 where closed); ∂(ρ̄H)_k/∂P_j = ρ̄_k K_kj + δ_kj ρ̄'_k H_k.
+      // (∂/∂q: the film through s.film_by_unknown, a pressure's own terms times s.below_cap.)
+      const Eigen::VectorXd& dp = s.below_cap;
+      const auto dfilm = [&](int k) -> Eigen::RowVectorXd {
+        if (s.film_by_unknown.size() == 0) return kernel_.row(k).segment(1, np);
+        return s.film_by_unknown.row(k);
+      };
       auto d_eps = [&](int k, double dc, double dm3) {
-        Eigen::RowVectorXd d = (dm3 * 3.0 * mobile(k) * mobile(k)) * kernel_.row(k).segment(1, np);
-        if (k >= 1 && k <= n_ - 2) d(k - 1) += dc * coef(k) * dlog_eps(k);
+        Eigen::RowVectorXd d = (dm3 * 3.0 * mobile(k) * mobile(k)) * dfilm(k);
+        if (k >= 1 && k <= n_ - 2) d(k - 1) += dc * coef(k) * dlog_eps(k) * dp(k - 1);
         return d;
       };
       auto d_mass = [&](int k) {
-        Eigen::RowVectorXd d = rho(k) * kernel_.row(k).segment(1, np);
-        if (k >= 1 && k <= n_ - 2) d(k - 1) += drho(k) * h(k);
+        Eigen::RowVectorXd d = rho(k) * dfilm(k);
+        if (k >= 1 && k <= n_ - 2) d(k - 1) += drho(k) * h(k) * dp(k - 1);
         return d;
       };
       d_eps_p = gp * (d_eps(i, fp.dc_a, fp.dm3_a) + d_eps(i + 1, fp.dc_b, fp.dm3_b)) -
@@ -161,11 +190,11 @@ class LineProblem {
       else
         d_w = (d_mass(i) - d_mass(i - 1)) / dx_;
       Eigen::RowVectorXd d_poiseuille = d_eps_p / (dx_ * dx_);
-      if (i + 1 <= n_ - 2) d_poiseuille(i) += ep / (dx_ * dx_);
-      d_poiseuille(i - 1) -= (ep + em) / (dx_ * dx_);
-      if (i - 1 >= 1) d_poiseuille(i - 2) += em / (dx_ * dx_);
+      if (i + 1 <= n_ - 2) d_poiseuille(i) += ep / (dx_ * dx_) * dp(i);
+      d_poiseuille(i - 1) -= (ep + em) / (dx_ * dx_) * dp(i - 1);
+      if (i - 1 >= 1) d_poiseuille(i - 2) += em / (dx_ * dx_) * dp(i - 2);
       jacobian->row(row).head(np) = (-scale * db) * (d_poiseuille - d_w);
-      (*jacobian)(row, row) += da;
+      (*jacobian)(row, row) += da * dp(row);
       // ∂/∂H0: ∂m³_k/∂H0 = 3 m_k², ∂(ρ̄H)_k/∂H0 = ρ̄_k.
       auto de0 = [&](int k, double dm3) { return dm3 * 3.0 * mobile(k) * mobile(k); };
       const double dpois0 = (gp * (de0(i, fp.dm3_a) + de0(i + 1, fp.dm3_b)) - gm * (de0(i - 1, fm.dm3_a) + de0(i, fm.dm3_b))) / (dx_ * dx_);
@@ -174,7 +203,7 @@ class LineProblem {
     }
     // Load balance: ΔX Σ P = π/2 (trapezoidal rule, P = 0 at both ends).
     f(np) = dx_ * p.sum() - 0.5 * kPi;
-    if (jacobian) jacobian->row(np).head(np).setConstant(dx_);
+    if (jacobian) jacobian->row(np).head(np) = dx_ * s.below_cap.transpose();
     return f;
   }
 
@@ -189,6 +218,7 @@ class LineProblem {
   // the boundary layers' H_c (0 for smooth surfaces).
   Eigen::VectorXd rough_;
   double floor_ = 0.0;
+  mutable double cap_ = std::numeric_limits<double>::infinity();  // the pressure cap / p_H (set_cap)
 
   // The upwind wedge's weight on its own node: 3/2 second order, 1 first (with roughness).
   double wedge_diagonal() const { return rough() ? 1.0 : 1.5; }
@@ -212,10 +242,6 @@ void validate(const EhlLineContact& c, const EhlRoughness* rough, const EhlLineO
   if (!rough) return;
   validate(*rough, "EHL line contact");
   if (rough->map) throw std::invalid_argument("EHL line contact: a roughness map is a point contact's (the line takes ridges)");
-  // The cap is the point contact's, checked against the elastic–perfectly-plastic sphere; the line
-  // has no reference for it yet (a plane-strain capped cylinder).
-  if (std::isfinite(rough->hardness_Pa))
-    throw std::invalid_argument("EHL line contact: roughness hardness_Pa (a pressure cap) is the point contact's; the line contact is elastic");
 }
 
 // Smooth (roughness null) or rough.
@@ -254,7 +280,9 @@ EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roug
 
   EhlLineResult result;
   const Eigen::VectorXd start = u;
-  const ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+  ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+  // With a hardness the elastic answer first, then the cap lowered onto it.
+  if (solved.newton.converged && roughness) ehl::lower_cap(problem, lambda, roughness->hardness_Pa / ph, u, options, solved);
   const ehl::NewtonOutcome& outcome = solved.newton;
   result.iterations = solved.iterations;
   result.continuation_steps = solved.continuation_steps;
@@ -277,12 +305,15 @@ EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roug
   result.converged = outcome.converged;
   result.residual = outcome.residual;
   if (roughness) {
-    double carried = 0.0;
+    double carried = 0.0, yielded = 0.0;
     result.in_contact.assign(static_cast<std::size_t>(n), false);
-    for (int i = 1; i <= np; ++i)
+    for (int i = 1; i <= np; ++i) {
       if (in_contact(*roughness, result.film_m[static_cast<std::size_t>(i)]))
         result.in_contact[static_cast<std::size_t>(i)] = true, ++result.contact_nodes, carried += p(i);
+      if (problem.yields(u(i - 1))) ++result.plastic_nodes, yielded += p(i);
+    }
     result.contact_load_share = problem.dx() * carried / (0.5 * kPi);
+    result.plastic_load_share = problem.dx() * yielded / (0.5 * kPi);
   }
   result.message = ehl::outcome_message(outcome, result.iterations);
   return result;

@@ -46,9 +46,13 @@
 // step, and the continuation in λ also runs from a thicker film (ehl_newton.h). The film settles onto
 // the layers only asymptotically; a node whose film lies within EhlRoughness::contact_margin_m of them
 // is in contact (EhlLineResult::contact_nodes) — its film, what the transport leaves (≈ 4.5–6 nm in
-// the tests), is a number the model does not resolve; it resolves the pressure. No plastic cap: a
-// capped pressure lets a film close through zero, which this formulation cannot hold (tried: Newton
-// stalls).
+// the tests), is a number the model does not resolve; it resolves the pressure.
+// With a hardness (EhlRoughness::hardness_Pa) the surface yields as the point contact's does
+// (ehl_point.h: an unknown is the pressure up to the cap and the plastic flow beyond it — so a film
+// no longer has to close through zero under a capped pressure, which stalled Newton when the cap
+// was a bound on P alone): crawling at 0.8 p_H on 401 nodes the plane-strain elastic–perfectly-
+// plastic cylinder of contact/reference/capped_cylinder.h to 0.20 % of p_H, 4.5 s
+// (ehl_line_mixed_test.cpp).
 #pragma once
 
 #include <string>
@@ -95,6 +99,10 @@ struct EhlLineResult {
   std::vector<bool> in_contact;
   int contact_nodes = 0;
   double contact_load_share = 0.0;
+  // The nodes whose pressure is at the hardness (EhlRoughness::hardness_Pa: their surface yielded) and
+  // the share of the load they carry.
+  int plastic_nodes = 0;
+  double plastic_load_share = 0.0;
   bool converged = false;
   int iterations = 0;             // Newton iterations, continuation steps included
   int continuation_steps = 0;

@@ -69,7 +69,8 @@
 // from the elastic answer by lowering the cap onto the hardness (ehl_newton.h: lower_cap). On the
 // tests' ball crawling at 0.8 p_H: the elastic–plastic sphere of contact/reference/capped_sphere.h —
 // the yielded nodes its plastic disc to half a node, the elastic ring to 2.6 % of p_H on 31²
-// (ehl_point_mixed_test.cpp), 2.6 s; down to 0.6 p_H on 31², not at 0.4 (Newton stalls).
+// (ehl_point_mixed_test.cpp), 2.6 s; down to 0.6 p_H on 31², not at 0.4 (Newton stalls). The line
+// contact likewise (ehl_line.h).
 #pragma once
 
 #include <string>

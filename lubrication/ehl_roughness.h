@@ -36,9 +36,9 @@ struct EhlRoughness {
   // layers of a hydrocarbon (≈ 0.5 nm each) does not shear as a fluid — confined films turn solid-like
   // at several layers already (Gee, McGuiggan, Israelachvili & Homola, J. Chem. Phys. 93, 1990).
   double contact_margin_m = 1e-9;
-  // The pressure at which the touching surface yields (Pa; > 0, +∞: elastic; the point contact
-  // only — the line contact refuses it): where the flow balance would need more, the pressure stays
-  // at it and the surface flows plastically instead (ehl_point.cpp: pressures()) — the
+  // The pressure at which the touching surface yields (Pa; > 0, +∞: elastic): where the flow
+  // balance would need more, the pressure stays at it and the surface flows plastically instead
+  // (ehl_point.cpp, ehl_line.cpp: pressures()) — the
   // elastic–perfectly-plastic surface of contact/'s BEM (normal_contact.h), about the softer body's
   // indentation hardness (Tabor 1951). The bulk below deflects elastically under the capped pressure.
   double hardness_Pa = std::numeric_limits<double>::infinity();
