@@ -67,7 +67,9 @@ class LineProblem {
   }
   void set_cap(double cap) const { cap_ = cap; }
   bool yields(double q) const { return q >= cap_; }
-  bool any_yield(const Eigen::VectorXd& u) const { return (u.head(n_ - 2).array() >= cap_).any(); }
+  bool any_yield(const Eigen::VectorXd& u) const {
+    return std::any_of(u.data(), u.data() + (n_ - 2), [&](double q) { return yields(q); });
+  }
   // ∂H/∂q by node and unknown at the branch of u: K's columns below the cap, K_self at the node where
   // the unknown yields (empty where none does: K itself).
   Eigen::MatrixXd yielding_kernel(const Eigen::VectorXd& u) const {
@@ -83,10 +85,12 @@ class LineProblem {
     const double t = -x_(i) / dx_;
     return (1.0 - t) * v(i) + t * v(i + 1);
   }
-  // The film's change for a change du of the unknowns (linear: H0 + K P).
+  // The film's change for a change du of the unknowns from u (linear: H0 + K dq, K_self where u yields;
+  // du is a step, never clipped at the cap).
   Eigen::VectorXd film_change(const Eigen::VectorXd& u, const Eigen::VectorXd& du) const {
-    if (!any_yield(u)) return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + kernel_ * pressures(du);
-    return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + yielding_kernel(u) * du.head(n_ - 2);
+    const Eigen::VectorXd change = any_yield(u) ? Eigen::VectorXd(yielding_kernel(u) * du.head(n_ - 2))
+                                                : Eigen::VectorXd(kernel_.middleCols(1, n_ - 2) * du.head(n_ - 2));
+    return Eigen::VectorXd::Constant(n_, du(n_ - 2)) + change;
   }
   Eigen::VectorXd film(const Eigen::VectorXd& u) const {
     Eigen::VectorXd h = (u(n_ - 2) + 0.5 * x_.array().square() - rough_.array()).matrix() + kernel_ * pressures(u);

@@ -229,13 +229,14 @@ class PointProblem {
     Eigen::VectorXd load_row;   // ∂(ΔXΔY ΣP)/∂q: the load weights, 0 where yielded
   };
 
-  // ∂H/∂q of the film at every node by unknown: K's columns where the unknown is below the cap,
-  // K_self at the unknown's node (and its mirror image) where it yields — the same pattern as K
-  // (whose entries include every node's own cell).
+  static bool any_yielded(const std::vector<bool>& yielded) { return std::any_of(yielded.begin(), yielded.end(), [](bool y) { return y; }); }
+  // ∂H/∂q of the film at every node by unknown, where some unknown yields (any_yielded; else K
+  // itself, not copied): K's columns where the unknown is below the cap, K_self at the unknown's node
+  // (and its mirror image) where it yields — the same pattern as K (whose entries include every
+  // node's own cell).
   template <class Kernel>
   Kernel yielding_kernel(const Kernel& kernel, const std::vector<bool>& yielded) const {
     Kernel out = kernel;
-    if (std::none_of(yielded.begin(), yielded.end(), [](bool y) { return y; })) return out;
     if constexpr (std::is_same_v<Kernel, Eigen::MatrixXd>) {
       for (int k = 0; k < interior(); ++k)
         if (yielded[static_cast<std::size_t>(k)]) out.col(k).setZero();
@@ -350,7 +351,10 @@ class PointProblem {
       Eigen::MatrixXd& m = jacobian->dense;
       m.setZero(np + 1, np + 1);
       m.topLeftCorner(np, np) = jacobian->stencil;
-      m.topLeftCorner(np, np).noalias() += jacobian->through_film * yielding_kernel(kernel_, s.yielded);
+      if (any_yielded(s.yielded))
+        m.topLeftCorner(np, np).noalias() += jacobian->through_film * yielding_kernel(kernel_, s.yielded);
+      else
+        m.topLeftCorner(np, np).noalias() += jacobian->through_film * kernel_;
       m.col(np).head(np) = jacobian->h0_column;
       m.row(np).head(np) = jacobian->load_row.transpose();
     }
@@ -388,7 +392,8 @@ class PointProblem {
   }
   // A = S + D K_near of the preconditioner (krylov_step), compressed as UMFPACK reads it.
   SparseMatrix local_matrix(const Jacobian& jac) const {
-    Eigen::SparseMatrix<double, Eigen::RowMajor> local = jac.through_film * yielding_kernel(near_kernel_, jac.yielded);
+    Eigen::SparseMatrix<double, Eigen::RowMajor> local =
+        any_yielded(jac.yielded) ? jac.through_film * yielding_kernel(near_kernel_, jac.yielded) : jac.through_film * near_kernel_;
     local += jac.stencil;
     return SparseMatrix(local);
   }
