@@ -1,5 +1,7 @@
 #include "contact/reference/capped_cylinder.h"
 
+#include "contact/reference/active_set.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -12,8 +14,6 @@ namespace tribo::contact::reference {
 namespace {
 
 double strip_antiderivative(double t) { return t == 0.0 ? 0.0 : t * std::log(std::abs(t)) - t; }
-
-enum class Strip { free, elastic, plastic };
 
 }  // namespace
 
@@ -35,9 +35,9 @@ CappedCylinderContact capped_cylinder_contact(double load_per_length_N_per_m, do
     }
   const Eigen::VectorXd crown = (mid.array().square() / (2.0 * radius_m)).matrix();
 
-  std::vector<Strip> state(n);
-  for (int i = 0; i < n; ++i) state[i] = std::abs(mid(i)) < half_width ? Strip::elastic : Strip::free;
-  std::set<std::vector<Strip>> seen;
+  std::vector<Element> state(n);
+  for (int i = 0; i < n; ++i) state[i] = std::abs(mid(i)) < half_width ? Element::elastic : Element::free;
+  std::set<std::vector<Element>> seen;
   Eigen::VectorXd p = Eigen::VectorXd::Zero(n);
   double approach = 0.0;
   for (int sweep = 0; sweep < 4 * n; ++sweep) {
@@ -46,8 +46,8 @@ CappedCylinderContact capped_cylinder_contact(double load_per_length_N_per_m, do
     p.setZero();
     int capped = 0;
     for (int i = 0; i < n; ++i) {
-      if (state[i] == Strip::plastic) p(i) = cap_Pa, ++capped;
-      if (state[i] == Strip::elastic) e.push_back(i);
+      if (state[i] == Element::plastic) p(i) = cap_Pa, ++capped;
+      if (state[i] == Element::elastic) e.push_back(i);
     }
     const int m = static_cast<int>(e.size());
     const Eigen::VectorXd from_plastic = influence * p;
@@ -66,10 +66,10 @@ CappedCylinderContact capped_cylinder_contact(double load_per_length_N_per_m, do
       approach = solved(m);
     } else if (dx * capped * cap_Pa < w) {
       // Every loaded strip at the cap and the load not carried: the contact widens by a strip each side.
-      std::vector<Strip> next = state;
+      std::vector<Element> next = state;
       for (int i = 0; i < n; ++i)
-        if (state[i] == Strip::free && ((i > 0 && state[i - 1] == Strip::plastic) || (i + 1 < n && state[i + 1] == Strip::plastic)))
-          next[i] = Strip::elastic;
+        if (state[i] == Element::free && ((i > 0 && state[i - 1] == Element::plastic) || (i + 1 < n && state[i + 1] == Element::plastic)))
+          next[i] = Element::elastic;
       if (next == state) throw std::runtime_error("capped_cylinder_contact: the domain cannot carry the load under the cap");
       state = next;
       continue;
@@ -77,26 +77,12 @@ CappedCylinderContact capped_cylinder_contact(double load_per_length_N_per_m, do
       // All the load at the cap: δ where the gap closes at the contact's edge.
       int edge = 0;
       for (int i = 0; i < n; ++i)
-        if (state[i] == Strip::plastic) edge = i;
+        if (state[i] == Element::plastic) edge = i;
       approach = crown(edge) + from_plastic(edge);
     }
-    // Removals first, then additions (as capped_sphere.cpp: both at once make the edge strip cycle).
     const Eigen::VectorXd gap = crown + influence * p - Eigen::VectorXd::Constant(n, approach);  // ≥ 0 free, 0 elastic, ≤ 0 plastic
     const double p_tol = 1e-10 * cap_Pa, gap_tol = 1e-10 * half_width * half_width / radius_m;
-    bool changed = false;
-    for (int i = 0; i < n; ++i) {
-      if (state[i] != Strip::elastic) continue;
-      const Strip next = p(i) < -p_tol ? Strip::free : p(i) > cap_Pa + p_tol ? Strip::plastic : Strip::elastic;
-      changed |= next != state[i];
-      state[i] = next;
-    }
-    if (!changed)
-      for (int i = 0; i < n; ++i) {
-        const bool wrong = (state[i] == Strip::free && gap(i) < -gap_tol) || (state[i] == Strip::plastic && gap(i) > gap_tol);
-        if (wrong) state[i] = Strip::elastic;
-        changed |= wrong;
-      }
-    if (changed && !seen.insert(state).second) changed = false;  // the edge strip alternating: the edge lies in it
+    const bool changed = update_active_sets(state, p, gap, cap_Pa, p_tol, gap_tol, seen);
     if (changed) continue;
     CappedCylinderContact out;
     for (int i = 0; i < n; ++i) {

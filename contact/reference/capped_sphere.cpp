@@ -1,5 +1,7 @@
 #include "contact/reference/capped_sphere.h"
 
+#include "contact/reference/active_set.h"
+
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
@@ -19,8 +21,6 @@ double disc_deflection(double r, double a) {
   const double k = a / r;
   return c * r * (std::comp_ellint_2(k) - (1.0 - k * k) * std::comp_ellint_1(k));
 }
-
-enum class Ring { free, elastic, plastic };
 
 struct Loaded {
   Eigen::VectorXd pressure;
@@ -49,16 +49,16 @@ CappedSphereContact capped_sphere_contact(double load_N, double radius_m, double
   // The pressure for the approach δ: active sets on the target deflection t = δ − r²/2R.
   auto solve = [&](double approach) {
     const Eigen::VectorXd target = (approach - mid.array().square() / (2.0 * radius_m)).matrix();
-    std::vector<Ring> state(n);
-    for (int i = 0; i < n; ++i) state[i] = target(i) > 0.0 ? Ring::elastic : Ring::free;
+    std::vector<Element> state(n);
+    for (int i = 0; i < n; ++i) state[i] = target(i) > 0.0 ? Element::elastic : Element::free;
     Eigen::VectorXd p = Eigen::VectorXd::Zero(n);
-    std::set<std::vector<Ring>> seen;
+    std::set<std::vector<Element>> seen;
     for (int sweep = 0; sweep < 4 * n; ++sweep) {
       std::vector<int> e;
       p.setZero();
       for (int i = 0; i < n; ++i) {
-        if (state[i] == Ring::plastic) p(i) = cap_Pa;
-        if (state[i] == Ring::elastic) e.push_back(i);
+        if (state[i] == Element::plastic) p(i) = cap_Pa;
+        if (state[i] == Element::elastic) e.push_back(i);
       }
       if (!e.empty()) {
         const int m = static_cast<int>(e.size());
@@ -72,28 +72,11 @@ CappedSphereContact capped_sphere_contact(double load_N, double radius_m, double
         const Eigen::VectorXd pe = a.partialPivLu().solve(b);
         for (int r = 0; r < m; ++r) p(e[r]) = pe(r);
       }
-      // Removals first (a ring leaving the elastic set, its pressure out of [0, p_cap]); only when
-      // none is due, additions (a free ring penetrated, a capped ring clear): updating both at once
-      // makes the edge ring cycle. Tolerances of 1e-10 of the scales keep round-off from flipping it.
+      // Tolerances of 1e-10 of the scales keep round-off from flipping a ring (active_set.h); on a
+      // cycle the clipped pressures of this state are returned.
       const Eigen::VectorXd gap = influence * p - target;  // ≥ 0 free, = 0 elastic, ≤ 0 plastic
       const double p_tol = 1e-10 * cap_Pa, gap_tol = 1e-10 * std::max(approach, 1e-300);
-      bool changed = false;
-      for (int i = 0; i < n; ++i) {
-        if (state[i] != Ring::elastic) continue;
-        const Ring next = p(i) < -p_tol ? Ring::free : p(i) > cap_Pa + p_tol ? Ring::plastic : Ring::elastic;
-        changed |= next != state[i];
-        state[i] = next;
-      }
-      if (!changed)
-        for (int i = 0; i < n; ++i) {
-          const bool wrong = (state[i] == Ring::free && gap(i) < -gap_tol) || (state[i] == Ring::plastic && gap(i) > gap_tol);
-          if (wrong) state[i] = Ring::elastic;
-          changed |= wrong;
-        }
-      // A set seen before: the edge ring alternates between two states whose solutions each put it
-      // on the other side — the discrete edge lies inside it. Either is the answer to within that
-      // ring (the clipped pressures of this one are returned).
-      if (changed && !seen.insert(state).second) changed = false;
+      const bool changed = update_active_sets(state, p, gap, cap_Pa, p_tol, gap_tol, seen);
       if (!changed) {
         const Eigen::VectorXd clipped = p.cwiseMax(0.0).cwiseMin(cap_Pa);
         return Loaded{clipped, ring_area.dot(clipped)};
