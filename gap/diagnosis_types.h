@@ -92,6 +92,7 @@ struct Candidate {
   rig::FrictionModel model;
   rig::RigParameters rig;
   std::vector<double> residuals;
+  std::vector<double> parameter_variance;  // per item, gap units² (gap/laplace.h); empty: none
   FitTermination fit;  // the last fit that made it (search, or refinement for the leaders)
 };
 

@@ -76,10 +76,17 @@ struct Baseline {
   FitResult fit;
   std::map<std::string, double> params;  // values(base_space)
   std::vector<double> simulated, residuals, lpd;
+  std::vector<double> parameter_variance;  // per item (gap/laplace.h), over base_space
   double train_gap = 0.0;
   GapBreakdown all, heldout;
 };
 Baseline baseline_at(const FitProblem& p, const FitResult& f);
+
+// A fit's parameter variance on every item (gap/laplace.h) over the coordinates `space` at
+// `setup`, where it leaves `residuals`: the model's full parameter set (the rig included), whether
+// or not its last fit moved all of them, so that every model is charged for all it was fitted by.
+std::vector<double> parameter_variance_at(const FitProblem& p, const std::vector<FitParameter>& space, const FitSetup& setup,
+                                          const std::vector<double>& residuals);
 
 // A candidate's evidence over the baseline among `comparisons` candidates (verdict.h standing_of):
 // sets heldout_gap_before, evidence_nats, evidence_se_nats and earns.

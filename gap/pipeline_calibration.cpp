@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "gap/calibration.h"
+#include "gap/laplace.h"
 #include "gap/parallel.h"
 #include "gap/pipeline.h"
 #include "numerics/median.h"
@@ -181,6 +182,12 @@ Calibration calibrate(const FitProblem& p) {
   return out;
 }
 
+std::vector<double> parameter_variance_at(const FitProblem& p, const std::vector<FitParameter>& space, const FitSetup& setup,
+                                          const std::vector<double>& residuals) {
+  const Linearisation l = linearise(*p.comparison, {{space, setup}}, p.options.seed).front();
+  return parameter_variance(l.jacobian, predictive(p.items, residuals, p.item_sd, p.train).sd, p.train);
+}
+
 Baseline baseline_at(const FitProblem& p, const FitResult& f) {
   const Comparison& comparison = *p.comparison;
   Baseline b;
@@ -192,7 +199,8 @@ Baseline baseline_at(const FitProblem& p, const FitResult& f) {
   b.train_gap = breakdown(p.items, b.residuals, p.train).gap;
   b.all = breakdown(p.items, b.residuals, p.all);
   b.heldout = breakdown(p.items, b.residuals, p.heldout);
-  b.lpd = log_density(b.residuals, predictive(p.items, b.residuals, p.item_sd, p.train));
+  b.parameter_variance = parameter_variance_at(p, p.base_space, b.setup, b.residuals);
+  b.lpd = log_density(b.residuals, predictive(p.items, b.residuals, p.item_sd, p.train, b.parameter_variance));
   return b;
 }
 

@@ -45,6 +45,7 @@ Candidate candidate_from(const FitProblem& p, const Baseline& b, const std::vect
   const GapBreakdown held = breakdown(p.items, c.residuals, p.heldout);
   c.heldout_gap_after = held.gap;
   c.heldout_after_by_observable = held.by_observable;
+  c.parameter_variance = parameter_variance_at(p, p.space_of(effects, true), fitted.setup, c.residuals);
   judge(p, b, comparisons, c);
   return c;
 }
@@ -113,7 +114,7 @@ FitSetup search_start(const FitProblem& p, const Baseline& b, const std::vector<
 
 void judge(const FitProblem& p, const Baseline& b, int comparisons, Candidate& c) {
   c.heldout_gap_before = b.heldout.gap;
-  const Standing st = standing_of(p.items, c.residuals, p.item_sd, p.train, b.lpd, b.heldout.gap, p.held_m, comparisons);
+  const Standing st = standing_of(p.items, c.residuals, c.parameter_variance, p.item_sd, p.train, b.lpd, b.heldout.gap, p.held_m, comparisons);
   c.evidence_nats = st.evidence.gain, c.evidence_se_nats = st.evidence.se;
   c.earns = st.earns;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 
+#include "gap/laplace.h"
 #include "gap/parallel.h"
 #include "gap/pipeline.h"
 #include "gap/refit.h"
@@ -30,15 +31,9 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
                                                                  const std::vector<bool>& train, const std::vector<double>& noise_r,
                                                                  int samples, std::uint64_t seed) {
   const std::size_t n = train.size();
-  // Each fit's coordinates where it stopped, and the task that simulates it there.
-  std::vector<std::vector<double>> at_fit;
-  std::vector<std::size_t> centre_task;
-  std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (fit, coordinate); coordinate = size: at the fit itself
-  for (std::size_t f = 0; f < fits.size(); ++f) {
-    at_fit.push_back(coordinates(fits[f].space, fits[f].setup, false));
-    for (std::size_t j = 0; j <= fits[f].space.size(); ++j) tasks.emplace_back(f, j);
-    centre_task.push_back(tasks.size() - 1);
-  }
+  std::vector<FitPoint> points;
+  for (const Fitted& f : fits) points.push_back({f.space, f.setup});
+  const std::vector<Linearisation> at = linearise(c, points, seed);
   // Simulates fit f at coordinates u: its residuals on every item, empty where it cannot be simulated.
   const auto residuals_at = [&](std::size_t f, const std::vector<double>& u) {
     FitSetup s = fits[f].setup;
@@ -49,14 +44,6 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
       return std::vector<double>{};
     }
   };
-  std::vector<std::vector<double>> at(tasks.size());
-  std::vector<double> step(tasks.size(), 0.0);
-  parallel_for(tasks.size(), [&](std::size_t t) {
-    const auto [f, j] = tasks[t];
-    std::vector<double> u = at_fit[f];
-    if (j < u.size()) step[t] = u[j] + kSearchStep <= 2.0 ? kSearchStep : -kSearchStep, u[j] += step[t];
-    at[t] = residuals_at(f, u);  // empty: that column stays 0
-  });
   // Each fit linearised; each direction whose redraw steps reach past the difference step is
   // probed two standard deviations of its step away (clipped to the box), and kept when the
   // training residuals change there as J predicts, within half (refit.h).
@@ -68,17 +55,10 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
   std::vector<Probe> probes;
   std::vector<LinearisedRefit> linear;
   for (std::size_t f = 0; f < fits.size(); ++f) {
-    const std::size_t p = fits[f].space.size(), first = centre_task[f] - p;
-    const std::vector<double>& centre = at[centre_task[f]];
-    const std::vector<double>& u = at_fit[f];
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(p));
-    for (std::size_t j = 0; j < p; ++j)
-      if (!at[first + j].empty() && !centre.empty())
-        for (std::size_t i = 0; i < n; ++i)
-          J(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (at[first + j][i] - centre[i]) / step[first + j];
+    const std::vector<double>& u = at[f].u;
     std::vector<double> below, above;
     for (double x : u) below.push_back(x - 1.0), above.push_back(2.0 - x);
-    linear.emplace_back(std::move(J), *fits[f].residuals, fits[f].weights, below, above);
+    linear.emplace_back(at[f].jacobian, *fits[f].residuals, fits[f].weights, below, above);
     const Eigen::VectorXd sd = linear[f].step_std(noise_r);
     for (Eigen::Index k = 0; k < sd.size(); ++k) {
       // Within the difference step J is the secant the fit itself follows; probing shorter steps
@@ -92,8 +72,8 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
   std::vector<char> linear_enough(probes.size(), 0);  // 0 also where the fit or the probe cannot be simulated
   parallel_for(probes.size(), [&](std::size_t q) {
     const Probe& pr = probes[q];
-    const std::vector<double>& centre = at[centre_task[pr.fit]];
-    std::vector<double> u = at_fit[pr.fit];
+    const std::vector<double>& centre = at[pr.fit].centre;
+    std::vector<double> u = at[pr.fit].u;
     for (std::size_t j = 0; j < u.size(); ++j) u[j] += pr.du(static_cast<Eigen::Index>(j));
     const std::vector<double> r = centre.empty() ? std::vector<double>{} : residuals_at(pr.fit, u);
     if (r.empty()) return;
@@ -123,7 +103,7 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
 Choice choose(const FitProblem& p, const Baseline& b, const std::vector<Candidate>& candidates, int comparisons, double noise_floor) {
   std::vector<Standing> standing;
   for (const Candidate& c : candidates)
-    standing.push_back(standing_of(p.items, c.residuals, p.item_sd, p.train, b.lpd, b.heldout.gap, p.held_m, comparisons));
+    standing.push_back(standing_of(p.items, c.residuals, c.parameter_variance, p.item_sd, p.train, b.lpd, b.heldout.gap, p.held_m, comparisons));
   const Decision decision = decide(candidates, standing, p.held_m, p.options, b.heldout.gap, noise_floor);
   Choice out;
   out.index = decision.index;
@@ -162,9 +142,9 @@ ConfidenceStage confidence(const FitProblem& p, const Calibration& cal, const Ba
     out.refitted.push_back("baseline");
     for (std::size_t k : leaders) out.refitted.push_back(verdict_name(candidates[k].effects));
   }
-  out.fixed = bootstrap_confidence(p.items, p.heldout, p.noise_r, b.residuals, candidates, chosen, verdict, o);
+  out.fixed = bootstrap_confidence(p.items, p.heldout, p.noise_r, b.residuals, b.parameter_variance, candidates, chosen, verdict, o);
   out.with_refits = refits.empty() ? out.fixed
-                                   : bootstrap_confidence(p.items, p.heldout, p.noise_r, b.residuals, candidates, chosen, verdict, o, refits);
+                                   : bootstrap_confidence(p.items, p.heldout, p.noise_r, b.residuals, b.parameter_variance, candidates, chosen, verdict, o, refits);
   return out;
 }
 

@@ -89,7 +89,8 @@ std::vector<double> item_noise(const std::vector<Item>& items, const std::vector
 }
 
 Predictive predictive(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                      const std::vector<bool>& train) {
+                      const std::vector<bool>& train, const std::vector<double>& parameter_variance) {
+  assert(parameter_variance.empty() || parameter_variance.size() == items.size());
   std::map<std::string, std::pair<double, int>> in_train, in_all;
   for (std::size_t i = 0; i < items.size(); ++i) {
     const double excess = r[i] * r[i] - s[i] * s[i];
@@ -105,7 +106,8 @@ Predictive predictive(const std::vector<Item>& items, const std::vector<double>&
     const auto t = in_train.find(items[i].observable);
     const auto& acc = t != in_train.end() ? t->second : in_all.at(items[i].observable);
     const double tau2 = std::max(0.0, acc.first / acc.second);
-    p.sd.push_back(std::max(std::sqrt(s[i] * s[i] + tau2), Predictive::kResolution));
+    const double v = parameter_variance.empty() ? 0.0 : parameter_variance[i];
+    p.sd.push_back(std::max(std::sqrt(s[i] * s[i] + tau2 + v), Predictive::kResolution));
     p.dof.push_back(acc.second);
   }
   return p;
@@ -152,11 +154,11 @@ bool decisive(const Evidence& e, double heldout_gap_a, double heldout_gap_b, int
   return e.gain > Evidence::kStrong && (e.gain > decisive_z(comparisons) * e.se || heldout_gap_a <= 0.5 * heldout_gap_b);
 }
 
-Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m,
+Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& v,
+                     const std::vector<double>& s, const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m,
                      int comparisons) {
   Standing st;
-  st.lpd = log_density(r, predictive(items, r, s, train));
+  st.lpd = log_density(r, predictive(items, r, s, train, v));
   st.heldout_gap = gap(items, r, m);
   st.evidence = evidence(st.lpd, baseline_lpd, m);
   st.earns = decisive(st.evidence, st.heldout_gap, baseline_gap, comparisons);
@@ -222,8 +224,9 @@ std::vector<Localization> localize(const std::vector<Item>& items, const std::ve
 }
 
 Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vector<bool>& heldout, const std::vector<double>& noise_r,
-                                const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates, int chosen,
-                                const std::string& verdict, const DiagnosisOptions& o, const std::vector<Refit>& refits) {
+                                const std::vector<double>& baseline_residuals, const std::vector<double>& baseline_variance,
+                                const std::vector<Candidate>& candidates, int chosen, const std::string& verdict, const DiagnosisOptions& o,
+                                const std::vector<Refit>& refits) {
   const std::size_t n = items.size();
   std::vector<int> units;
   for (std::size_t i = 0; i < n; ++i)
@@ -267,10 +270,10 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
     };
     const std::vector<double> before = shifted(fitted(-1));
     const double gap_before = gap(items, before, m), floor = gap(items, noise_r, m);
-    const std::vector<double> baseline_lpd = log_density(before, predictive(items, before, s, train));
+    const std::vector<double> baseline_lpd = log_density(before, predictive(items, before, s, train, baseline_variance));
     std::vector<Standing> standing;
     for (std::size_t c = 0; c < candidates.size(); ++c)
-      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), s, train, baseline_lpd, gap_before, m,
+      standing.push_back(standing_of(items, shifted(fitted(static_cast<int>(c))), candidates[c].parameter_variance, s, train, baseline_lpd, gap_before, m,
                                      static_cast<int>(candidates.size())));
     const Decision k = decide(candidates, standing, m, o, gap_before, floor);
     const std::string winner =

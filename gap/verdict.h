@@ -47,6 +47,11 @@ double weighted_sse(const std::vector<double>& r, const std::vector<double>& w, 
 // error is kept 1e-3 below the data's noise). The held-out log predictive density Σ_held m_i
 // ln t_ν(r_i; σ_i) rewards a model for predicting held-out items within what it claimed and
 // charges one that fitted its training noise; noise-free observables weigh more than noisy ones.
+// A fitted model's σ_i² also carries what its fit leaves unknown about its parameters, v_i
+// (gap/laplace.h: the Laplace variance J_i Σ_u J_iᵀ; empty: none): a model that fits its training
+// items below their noise with parameters those items fix loosely is not, for that, sure of the
+// held-out items (set 9092's Kato case, docs/gap.md: fitted to 0.015, σ the noise alone, 0.001 on
+// one held-out item it then missed by 0.029).
 std::vector<double> item_noise(const std::vector<Item>& items, const std::vector<double>& noise_r);
 struct Predictive {
   static constexpr double kResolution = 1e-3;
@@ -54,7 +59,7 @@ struct Predictive {
 };
 // The predictive of a model with residuals `r` (its τ_o and ν from the items in `train`).
 Predictive predictive(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                      const std::vector<bool>& train);
+                      const std::vector<bool>& train, const std::vector<double>& parameter_variance = {});
 // The weights the fits use once the calibration has a first answer (diagnosis.h step 1): item i
 // on train weighs 1/σ_i, σ_i the predictive scale of the model with residuals `r` (its noise s_i
 // plus the error τ_o that model leaves on its observable), 0 elsewhere. A least-squares fit with
@@ -97,10 +102,10 @@ struct Standing {
   Evidence evidence;  // over the baseline
 };
 
-// A model's standing from its residuals `r` on every item (its σ from the items in `train`)
-// against the baseline's pointwise log density and held-out gap, on the held-out multiplicity `m`.
-Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& s,
-                     const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m,
+// A model's standing from its residuals `r` and parameter variances `v` on every item (its σ from
+// the items in `train`, predictive) against the baseline's pointwise log density and held-out gap, on the held-out multiplicity `m`.
+Standing standing_of(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& v,
+                     const std::vector<double>& s, const std::vector<bool>& train, const std::vector<double>& baseline_lpd, double baseline_gap, const Multiplicity& m,
                      int comparisons);
 
 // The verdict's index among `cs` (standings `st`, held-out multiplicity `m`), or −1 when none
@@ -151,14 +156,16 @@ struct Refit {
 // either the agreement is NaN (not estimable). Seeded: the same inputs give the same confidence.
 // With `refits`, resample b takes the baseline's and the refitted candidates' residuals from
 // refits[b mod R] (the training redraws and the held-out redraws are independent, so pairing them
-// in turn samples both); the other candidates keep their fitted residuals.
+// in turn samples both); the other candidates keep their fitted residuals. Every model keeps its
+// parameter variances (the baseline's `baseline_variance`, a candidate's its own).
 struct Confidence {
   double agreement = 0.0;
   double heldout_gap_after_std = 0.0;
 };
 Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vector<bool>& heldout, const std::vector<double>& noise_r,
-                                const std::vector<double>& baseline_residuals, const std::vector<Candidate>& candidates, int chosen,
-                                const std::string& verdict, const DiagnosisOptions& o, const std::vector<Refit>& refits = {});
+                                const std::vector<double>& baseline_residuals, const std::vector<double>& baseline_variance,
+                                const std::vector<Candidate>& candidates, int chosen, const std::string& verdict, const DiagnosisOptions& o,
+                                const std::vector<Refit>& refits = {});
 
 // The verdict's confidence from its bootstrap agreement: for "none" the agreement times
 // DiagnosisOptions::none_reliability (the bootstrap cannot see an effect below the noise), else the

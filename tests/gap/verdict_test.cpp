@@ -104,6 +104,8 @@ TEST(Verdict, LikelihoodScoresEachItemByItsNoisePlusTheErrorTheModelClaimsOnTrai
   // A perfect training fit of a noise-free observable claims σ = 0: it is held at the
   // resolution, 1e-3 of the observable's size.
   EXPECT_EQ(predictive(items, {0.0, 0.0, 0.3, 0.3, 0.0}, std::vector<double>(5, 0.0), train).sd[2], Predictive::kResolution);
+  // A fitted model's parameter variance (gap/laplace.h) adds to σ²: 0.05 + 0.03.
+  EXPECT_NEAR(predictive(items, r, s, train, {0.0, 0.0, 0.03, 0.0, 0.0}).sd[2], std::sqrt(0.08), 1e-15);
 }
 
 // One step of iteratively reweighted least squares for a level L seen by two observables: A reads
@@ -236,14 +238,14 @@ TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
   o.bootstrap_samples = 400;
   std::vector<double> uniform(n, 0.02);
   const std::vector<Candidate> one{candidate("uniform", 1, uniform)};
-  const Confidence sure = bootstrap_confidence(items, held, noise, baseline, one, 0, "uniform", o);
+  const Confidence sure = bootstrap_confidence(items, held, noise, baseline, {}, one, 0, "uniform", o);
   EXPECT_EQ(sure.agreement, 1.0);
   EXPECT_NEAR(sure.heldout_gap_after_std, 0.0, 1e-8);  // a constant 0.02, up to the sums' rounding
 
   std::vector<double> local = baseline;
   local[0] = local[1] = 0.0;  // unit 0 only
   const std::vector<Candidate> other{candidate("local", 1, local)};
-  const Confidence weak = bootstrap_confidence(items, held, noise, baseline, other, 0, "local", o);
+  const Confidence weak = bootstrap_confidence(items, held, noise, baseline, {}, other, 0, "local", o);
   // Nothing is trained, so each model's σ² is its own mean r² per observable (ν = 8) and, in the
   // Gaussian limit, the quadratic terms cancel: with unit 0 drawn k times of eight the evidence
   // is about 8 ln(8 / (8 − k)) nats — 1.1 (k = 1), 2.3 (k = 2), 3.8 (k = 3, se 1.6): decisive from
@@ -252,7 +254,7 @@ TEST(Verdict, BootstrapConfidenceIsOneForAUniformWinAndLowForAOneUnitWin) {
   EXPECT_LT(weak.agreement, 0.15);
   EXPECT_GT(weak.heldout_gap_after_std, 0.0);
   // No held-out unit: no confidence.
-  EXPECT_EQ(bootstrap_confidence(items, std::vector<bool>(n, false), noise, baseline, one, 0, "uniform", o).agreement, 0.0);
+  EXPECT_EQ(bootstrap_confidence(items, std::vector<bool>(n, false), noise, baseline, {}, one, 0, "uniform", o).agreement, 0.0);
 }
 
 // A resample measures the held-out items again within their own standard error. A candidate
@@ -288,14 +290,14 @@ TEST(Verdict, BootstrapMeasuresTheHeldOutItemsAgainWithinTheirNoise) {
   DiagnosisOptions o;
   o.bootstrap_samples = 400;
   o.unexplained_floors = 1e6;  // the floor rises with the noise; judge the evidence alone here
-  const Confidence exact = bootstrap_confidence(items, held, std::vector<double>(n, 0.0), baseline, one, 0, "cut", o);
+  const Confidence exact = bootstrap_confidence(items, held, std::vector<double>(n, 0.0), baseline, {}, one, 0, "cut", o);
   EXPECT_EQ(exact.agreement, 1.0);
-  const Confidence noisy = bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, 0, "cut", o);
+  const Confidence noisy = bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, {}, one, 0, "cut", o);
   std::printf("confidence %.3f without noise, %.3f with\n", exact.agreement, noisy.agreement);
   EXPECT_GT(noisy.agreement, 0.5);
   EXPECT_LT(noisy.agreement, 0.94);
   EXPECT_GT(noisy.heldout_gap_after_std, exact.heldout_gap_after_std);
-  EXPECT_EQ(bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, one, 0, "cut", o).agreement, noisy.agreement);
+  EXPECT_EQ(bootstrap_confidence(items, held, std::vector<double>(n, 0.1), baseline, {}, one, 0, "cut", o).agreement, noisy.agreement);
 
   // One held-out block: without its noise nothing varies — not estimable. With it, two items
   // cannot carry strong evidence: σ² from the 14 trained items is 0.04 and 0.0225, and in the
@@ -304,9 +306,9 @@ TEST(Verdict, BootstrapMeasuresTheHeldOutItemsAgainWithinTheirNoise) {
   // below 3, so every resample says "none".
   std::vector<bool> one_block(n, false);
   one_block[0] = one_block[1] = true;
-  EXPECT_TRUE(std::isnan(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.0), baseline, one, 0, "cut", o).agreement));
-  EXPECT_EQ(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.1), baseline, one, 0, "cut", o).agreement, 0.0);
-  EXPECT_EQ(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.1), baseline, one, 0, "none", o).agreement, 1.0);
+  EXPECT_TRUE(std::isnan(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.0), baseline, {}, one, 0, "cut", o).agreement));
+  EXPECT_EQ(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.1), baseline, {}, one, 0, "cut", o).agreement, 0.0);
+  EXPECT_EQ(bootstrap_confidence(items, one_block, std::vector<double>(n, 0.1), baseline, {}, one, 0, "none", o).agreement, 1.0);
 }
 
 // Refits in the resamples: resample b judges the candidate by its refit on training redraw b mod R.
@@ -323,14 +325,14 @@ TEST(Verdict, BootstrapJudgesTheLeadersByTheirRefitsOnTheTrainingRedraws) {
   DiagnosisOptions o;
   o.bootstrap_samples = 400;
   const std::vector<Refit> half{{baseline, {{0, cut}}}, {baseline, {{0, baseline}}}};
-  const Confidence c = bootstrap_confidence(items, held, noise, baseline, one, 0, "cut", o, half);
+  const Confidence c = bootstrap_confidence(items, held, noise, baseline, {}, one, 0, "cut", o, half);
   EXPECT_EQ(c.agreement, 0.5);
   // The chosen candidate's gap alternates between 0.15 and 0.2: its standard deviation is 0.025
   // (times sqrt(400/399) for the sample estimate).
   EXPECT_NEAR(c.heldout_gap_after_std, 0.025 * std::sqrt(400.0 / 399.0), 1e-9);
   const std::vector<Refit> level{{cut, {{0, cut}}}};
-  EXPECT_EQ(bootstrap_confidence(items, held, noise, baseline, one, 0, "cut", o, level).agreement, 0.0);
-  EXPECT_EQ(bootstrap_confidence(items, held, noise, baseline, one, 0, "none", o, level).agreement, 1.0);
+  EXPECT_EQ(bootstrap_confidence(items, held, noise, baseline, {}, one, 0, "cut", o, level).agreement, 0.0);
+  EXPECT_EQ(bootstrap_confidence(items, held, noise, baseline, {}, one, 0, "none", o, level).agreement, 1.0);
 }
 
 }  // namespace
