@@ -151,6 +151,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   d.calibration.train_gap = baseline.train_gap;
   d.baseline = baseline.all;
   d.baseline_heldout = baseline.heldout;
+  d.baseline_heldout_parameter_sd = rms_parameter_sd(baseline.parameter_variance, p.heldout);
   // Localization: share of the baseline's squared residuals by observable, phase and speed class.
   d.localization = localize(d.items, d.baseline_residuals);
 

@@ -93,6 +93,7 @@ struct Candidate {
   rig::RigParameters rig;
   std::vector<double> residuals;
   std::vector<double> parameter_variance;  // per item, gap units² (gap/laplace.h); empty: none
+  double heldout_parameter_sd = 0.0;        // rms_parameter_sd of it on the held-out items
   FitTermination fit;  // the last fit that made it (search, or refinement for the leaders)
 };
 
@@ -158,6 +159,7 @@ struct Diagnosis {
   CalibrationSummary calibration;
   StageTimes stage_times;
   GapBreakdown baseline, baseline_heldout;
+  double baseline_heldout_parameter_sd = 0.0;  // the baseline's parameter uncertainty on the held-out items (gap/laplace.h)
   std::vector<double> baseline_residuals, measured, baseline_simulated, best_simulated;
   std::vector<Localization> localization;
   std::vector<Candidate> candidates;  // best first

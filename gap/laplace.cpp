@@ -51,6 +51,14 @@ std::vector<Linearisation> linearise(const Comparison& c, const std::vector<FitP
   return out;
 }
 
+double rms_parameter_sd(const std::vector<double>& v, const std::vector<bool>& mask) {
+  double sum = 0.0;
+  int n = 0;
+  for (std::size_t i = 0; i < v.size(); ++i)
+    if (mask[i]) sum += v[i], ++n;
+  return n > 0 ? std::sqrt(sum / n) : 0.0;
+}
+
 std::vector<double> parameter_variance(const Eigen::MatrixXd& J, const std::vector<double>& sd, const std::vector<bool>& train) {
   assert(static_cast<std::size_t>(J.rows()) == sd.size() && sd.size() == train.size());
   constexpr double kPriorPrecision = 12.0;  // 1 / variance of a uniform coordinate on [1, 2]

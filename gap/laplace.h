@@ -39,6 +39,10 @@ struct Linearisation {
 // Every fit's linearisation, the simulations of all of them side by side (gap/parallel.h).
 std::vector<Linearisation> linearise(const Comparison& c, const std::vector<FitPoint>& fits, std::uint64_t seed);
 
+// √(mean v_i) over the items of `mask` (0 for none or an empty v): how far a model's parameter
+// uncertainty reaches on them, in gap units (gap_report.json `heldout_parameter_sd`).
+double rms_parameter_sd(const std::vector<double>& v, const std::vector<bool>& mask);
+
 // v_i above for every item, from the Jacobian `J` (rows: items) and the predictive scale `sd` on
 // the items of `train`.
 std::vector<double> parameter_variance(const Eigen::MatrixXd& J, const std::vector<double>& sd, const std::vector<bool>& train);

@@ -4,6 +4,7 @@
 
 #include "contact/junction_locus.h"
 #include "gap/calibration.h"
+#include "gap/laplace.h"
 #include "gap/parallel.h"
 #include "gap/pipeline.h"
 #include "gap/verdict.h"
@@ -46,6 +47,7 @@ Candidate candidate_from(const FitProblem& p, const Baseline& b, const std::vect
   c.heldout_gap_after = held.gap;
   c.heldout_after_by_observable = held.by_observable;
   c.parameter_variance = parameter_variance_at(p, p.space_of(effects, true), fitted.setup, c.residuals);
+  c.heldout_parameter_sd = rms_parameter_sd(c.parameter_variance, p.heldout);
   judge(p, b, comparisons, c);
   return c;
 }

@@ -130,6 +130,7 @@ nlohmann::json report_json(const Diagnosis& d) {
       "feature; gap_o = sqrt(mean r_i^2) over the items of o; gap = mean over observables of gap_o";
   j["baseline"] = breakdown_json(d.baseline);
   j["baseline"]["heldout"] = breakdown_json(d.baseline_heldout);
+  j["baseline"]["heldout_parameter_sd"] = d.baseline_heldout_parameter_sd;
   j["baseline"]["calibrated"] = d.calibrated_params;
   j["baseline"]["rig_relative_uncertainty"] = d.rig_relative_uncertainty;  // refined within ± u of the bundle's value
   j["baseline"]["fit"] = fit_json(d.calibration_fit);
@@ -154,6 +155,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                                {"heldout_gap_before", c.heldout_gap_before},
                                {"heldout_gap_after", c.heldout_gap_after},
                                {"heldout_after_by_observable", c.heldout_after_by_observable},
+                               {"heldout_parameter_sd", c.heldout_parameter_sd},
                                {"heldout_evidence_nats", c.evidence_nats}, {"heldout_evidence_se_nats", c.evidence_se_nats},
                                {"earns_parameters", c.earns},
                                {"fit", fit_json(c.fit)}});
