@@ -10,6 +10,16 @@
 
 namespace tribo::gap {
 
+std::vector<double> residuals_at(const Comparison& c, const FitPoint& fit, const std::vector<double>& u, std::uint64_t seed) {
+  FitSetup s = fit.setup;
+  apply(fit.space, u, s);
+  try {
+    return c.residuals(c.predict(s.rig, s.model, seed));
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+}
+
 std::vector<Linearisation> linearise(const Comparison& c, const std::vector<FitPoint>& fits, std::uint64_t seed) {
   std::vector<Linearisation> out(fits.size());
   std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (fit, coordinate); coordinate = size: the fit itself
@@ -26,13 +36,7 @@ std::vector<Linearisation> linearise(const Comparison& c, const std::vector<FitP
       out[f].step[j] = u[j] + kSearchStep <= 2.0 ? kSearchStep : -kSearchStep;
       u[j] += out[f].step[j];
     }
-    FitSetup s = fits[f].setup;
-    apply(fits[f].space, u, s);
-    try {
-      at[t] = c.residuals(c.predict(s.rig, s.model, seed));
-    } catch (const std::invalid_argument&) {
-      at[t].clear();  // cannot be simulated there: the column stays 0
-    }
+    at[t] = residuals_at(c, fits[f], u, seed);  // empty: the column stays 0
   });
   std::size_t t = 0;
   for (std::size_t f = 0; f < fits.size(); ++f) {

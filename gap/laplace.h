@@ -28,6 +28,10 @@ struct FitPoint {
   FitSetup setup;
 };
 
+// The residuals of `fit`'s model on every item with its coordinates set to `u`; empty where it
+// cannot be simulated there.
+std::vector<double> residuals_at(const Comparison& c, const FitPoint& fit, const std::vector<double>& u, std::uint64_t seed);
+
 // A fit's residuals on every item at its coordinates u and their Jacobian ∂r_i/∂u_j by forward
 // differences of kSearchStep (backward at the upper bound) — the step the search takes, coarse
 // enough to see through the small jumps of event-based observables. A column whose simulation

@@ -34,16 +34,6 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
   std::vector<FitPoint> points;
   for (const Fitted& f : fits) points.push_back({f.space, f.setup});
   const std::vector<Linearisation> at = linearise(c, points, seed);
-  // Simulates fit f at coordinates u: its residuals on every item, empty where it cannot be simulated.
-  const auto residuals_at = [&](std::size_t f, const std::vector<double>& u) {
-    FitSetup s = fits[f].setup;
-    apply(fits[f].space, u, s);
-    try {
-      return c.residuals(c.predict(s.rig, s.model, seed));
-    } catch (const std::invalid_argument&) {
-      return std::vector<double>{};
-    }
-  };
   // Each fit linearised; each direction whose redraw steps reach past the difference step is
   // probed two standard deviations of its step away (clipped to the box), and kept when the
   // training residuals change there as J predicts, within half (refit.h).
@@ -75,7 +65,7 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
     const std::vector<double>& centre = at[pr.fit].centre;
     std::vector<double> u = at[pr.fit].u;
     for (std::size_t j = 0; j < u.size(); ++j) u[j] += pr.du(static_cast<Eigen::Index>(j));
-    const std::vector<double> r = centre.empty() ? std::vector<double>{} : residuals_at(pr.fit, u);
+    const std::vector<double> r = centre.empty() ? std::vector<double>{} : residuals_at(c, points[pr.fit], u, seed);
     if (r.empty()) return;
     const Eigen::VectorXd predicted = linear[pr.fit].predicted_change(pr.du);
     Eigen::VectorXd miss(static_cast<Eigen::Index>(n));
