@@ -898,7 +898,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         std::vector<std::pair<double, double>> breakaways;  // (t_s, reading)
         rig::SimulationObserver observer;
         observer.on_event = [&](const rig::Event& e) {
-          if (e.kind == rig::EventKind::breakaway) breakaways.emplace_back(e.t_s, rig::breakaway_reading(instrument, e.mu));
+          if (e.kind == rig::EventKind::breakaway) breakaways.emplace_back(e.t_s, rig::breakaway_reading(instrument, e.mu, e.load_rate_per_s));
         };
         const rig::SimulationSummary run = rig::simulate(rig, rig::Drive::constant(v), law, options, observer);
         if (const auto mu = static_point_reading(breakaways, run, options.max_events, rig::analysis_start_s(0.0, plan.duration_s)))

@@ -82,7 +82,7 @@ ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::Fri
     for (const rig::Event& e : r.events) {
       if (e.kind != rig::EventKind::breakaway || e.t_s < rig::analysis_start_s(0.0, o.duration_s)) continue;
       phi_sum += e.load_rate_per_s;
-      mu_sum += rig::breakaway_reading(instrument, e.mu) + noise(rng) / rig.normal_load_N;
+      mu_sum += rig::breakaway_reading(instrument, e.mu, e.load_rate_per_s) + noise(rng) / rig.normal_load_N;
       ++breakaways;
     }
     if (breakaways) b.static_points.push_back({phi_sum / breakaways, mu_sum / breakaways});

@@ -99,10 +99,12 @@ std::vector<EffectInfo> build_catalogue() {
         {"thermal_speed_m_per_s", "m/s", 0.0254, 1e-4, 10.0, "speed of the traction maximum, 1/(gamma theta); thesis 1 in/s",
          FitRange{1e-4, 10.0, true}}}},
       {"instrument",
-       "sensor gain, lag of the acceleration channel behind displacement, and noise of the measured friction",
+       "sensor gain, lag of the acceleration channel behind displacement, first-order lag of the whole signal, and noise of the measured friction",
        "thesis (4.2.3), sections 4.2-4.3, Appendix IV",
        {{"gain", "1", 1.0, 0.5, 2.0, "scale error of the summed friction signal", FitRange{0.5, 2.0, false}},
         {"lag_s", "s", 0.0, 0.0, 0.01, "delay of the accelerometer channel behind the displacement channel", FitRange{0.0, 0.01, false}},
+        {"time_constant_s", "s", 0.0, 0.0, 0.05,
+         "first-order lag of the whole friction signal, tau dy/dt + y = u (a load cell with its amplifier)", FitRange{0.0, 0.01, false}},
         {"noise_N", "N", 0.0, 0.0, 10.0, "rms white noise on the measured friction"}}},
   };
 }

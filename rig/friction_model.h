@@ -13,7 +13,7 @@
 //   hydrodynamic_lift      rugosity lift unloads the solid contact as U rises, thesis §5.2a
 //   thermal_thinning       viscous traction with η falling as the film heats, (3.2.3)–(3.2.5), (5.2.2)
 // and, not a friction effect but catalogued alike (configs list it, the diagnosis fits it):
-//   instrument             gain, phase lag, noise of the measured friction, thesis §4.2–4.3
+//   instrument             gain, phase lag, sensor lag, noise of the measured friction, thesis §4.2–4.3
 #pragma once
 
 #include <map>

@@ -1,6 +1,7 @@
 #include "rig/instrument.h"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 namespace tribo::rig {
@@ -11,6 +12,7 @@ InstrumentModel instrument_from(const FrictionModel& model, std::uint64_t seed) 
   if (model.instrument) {
     m.gain = model.get(kInstrument, "gain");
     m.lag_s = model.get(kInstrument, "lag_s");
+    m.time_constant_s = model.get(kInstrument, "time_constant_s");
     m.noise_N = model.get(kInstrument, "noise_N");
   }
   return m;
@@ -34,8 +36,21 @@ std::vector<double> measure_friction_N(const RigParameters& rig, const Instrumen
     }
     if (ins.lag_s == 0.0) a = samples[i].xddot_m_per_s2;
     out[i] = ins.gain * rig.stiffness_N_per_m * (samples[i].x_m + a / wn2);  // thesis (4.2.3)
-    if (ins.noise_N > 0.0) out[i] += ins.noise_N * noise(rng);
   }
+  if (ins.time_constant_s > 0.0) {
+    // τ ẏ + y = u with u linear over [t0, t0 + h], slope m: y(h) = u0 + m (h − τ) + (y0 − u0 + m τ) e^{−h/τ}.
+    double u0 = out.empty() ? 0.0 : out.front(), y = u0;
+    for (std::size_t i = 1; i < out.size(); ++i) {
+      const double h = samples[i].t_s - samples[i - 1].t_s, u1 = out[i];
+      if (h > 0.0) {
+        const double m = (u1 - u0) / h, tau = ins.time_constant_s;
+        y = u0 + m * (h - tau) + (y - u0 + m * tau) * std::exp(-h / tau);
+      }
+      out[i] = y, u0 = u1;
+    }
+  }
+  if (ins.noise_N > 0.0)
+    for (double& f : out) f += ins.noise_N * noise(rng);
   return out;
 }
 

@@ -248,8 +248,8 @@ TEST(Instrument, GainScalesAndNoiseHasTheRequestedRms) {
   rig.damping_N_s_per_m = 0.0;
   const auto r = run(rig, coulomb(0.3, 0.2), 1e-3, 3.0);
   const auto ideal = measure_friction_N(rig, InstrumentModel{}, r.samples);
-  const auto scaled = measure_friction_N(rig, InstrumentModel{1.1, 0.0, 0.0, 1}, r.samples);
-  const auto noisy = measure_friction_N(rig, InstrumentModel{1.0, 0.0, 0.5, 7}, r.samples);
+  const auto scaled = measure_friction_N(rig, InstrumentModel{.gain = 1.1, .seed = 1}, r.samples);
+  const auto noisy = measure_friction_N(rig, InstrumentModel{.noise_N = 0.5, .seed = 7}, r.samples);
   double ss = 0.0;
   for (std::size_t i = 0; i < ideal.size(); ++i) {
     ASSERT_NEAR(scaled[i], 1.1 * ideal[i], 1e-12 * std::abs(ideal[i]) + 1e-12);
@@ -259,6 +259,49 @@ TEST(Instrument, GainScalesAndNoiseHasTheRequestedRms) {
   // N ≈ 5000 samples: the rms estimate has a relative standard error 1/√(2N) ≈ 1 %; allow 5 %.
   ASSERT_GT(ideal.size(), 2000u);
   EXPECT_NEAR(rms, 0.5, 0.025);
+}
+
+// A first-order sensor τ ẏ + y = u fed a ramp u = a t from rest reads y = a (t − τ (1 − e^{−t/τ}))
+// (its closed form); the exact discretisation holds it to round-off on any sample spacing, here
+// an uneven one coarser than τ in places.
+TEST(Instrument, SensorLagFollowsARampAsItsClosedForm) {
+  RigParameters rig;  // x(t) = a t with ẍ = 0: the channel's input is g k a t
+  const double a = 2e-4, tau = 3e-3;
+  std::vector<Sample> samples;
+  for (double t = 0.0; t < 0.05; t += (samples.size() % 3 == 0 ? 0.4e-3 : 4.1e-3)) {
+    Sample s;
+    s.t_s = t, s.x_m = a * t;
+    samples.push_back(s);
+  }
+  const auto read = measure_friction_N(rig, InstrumentModel{.gain = 1.2, .time_constant_s = tau}, samples);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const double t = samples[i].t_s;
+    const double expected = 1.2 * rig.stiffness_N_per_m * a * (t - tau * (1.0 - std::exp(-t / tau)));
+    ASSERT_NEAR(read[i], expected, 1e-12 * rig.stiffness_N_per_m * a * 0.05) << "t = " << t;
+  }
+  // The breakaway reading is that steady response: g (μ − τ μ̇).
+  EXPECT_DOUBLE_EQ(breakaway_reading(InstrumentModel{.gain = 1.2, .time_constant_s = tau}, 0.3, 2.0), 1.2 * (0.3 - tau * 2.0));
+}
+
+// A sinusoid through the sensor comes out scaled by 1/√(1 + (ωτ)²) and late by atan(ωτ)/ω (its
+// frequency response); sampled 200 times a period, the linear interpolation between samples is
+// exact to O((ωh)²) ≈ 1e-3 of the amplitude, the tolerance.
+TEST(Instrument, SensorLagAttenuatesAndDelaysASinusoidAsItsFrequencyResponse) {
+  const RigParameters rig;
+  const double w = 2.0 * std::numbers::pi * 20.0, tau = 4e-3, h = 2.0 * std::numbers::pi / w / 200.0;
+  std::vector<Sample> samples;
+  for (int i = 0; i < 4000; ++i) {
+    Sample s;
+    s.t_s = i * h, s.x_m = std::sin(w * s.t_s);  // ẍ left 0: the channel reads k x
+    samples.push_back(s);
+  }
+  const auto read = measure_friction_N(rig, InstrumentModel{.time_constant_s = tau}, samples);
+  const double amp = rig.stiffness_N_per_m / std::sqrt(1.0 + w * tau * w * tau), phase = std::atan(w * tau);
+  for (std::size_t i = 2000; i < samples.size(); ++i) {  // after 10 periods, 20 τ: the start has decayed
+    const double t = samples[i].t_s;
+    const double expected = amp * std::sin(w * t - phase);
+    ASSERT_NEAR(read[i], expected, 1e-3 * rig.stiffness_N_per_m) << "t = " << t;
+  }
 }
 
 TEST(Composition, EffectsAtZeroStrengthLeaveTheBaselineTraceUnchanged) {
