@@ -2,6 +2,7 @@
 // input with the file, line and reason.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -44,6 +45,30 @@ TEST_F(BundleTest, RoundTripKeepsEveryValue) {
   ASSERT_EQ(c.regimes.size(), 1u);
   EXPECT_EQ(c.regimes[0].regime, "stick_slip");
   EXPECT_TRUE(c.warnings.empty());
+}
+
+// A written bundle reads back bit for bit, so that `tribo gap generate`'s files are the case the
+// selftest diagnosed in memory: values that need all 17 significant digits of a double.
+TEST_F(BundleTest, RoundTripIsExactToTheLastBit) {
+  ExperimentBundle b;
+  b.mass_kg = 1.0 / 3.0;
+  b.stiffness_N_per_m = std::nextafter(1.0e4, 2.0e4);
+  b.static_points = {{std::nextafter(0.5, 1.0), 0.1 + 0.2}};
+  gap::Run r;
+  r.run_id = "a";
+  r.v_m_per_s = 0.01 / 3.0;
+  r.trace.t_s = {0.0, 0.1 / 3.0, 0.2 / 3.0};
+  r.trace.friction_N = {20.0 / 7.0, std::nextafter(25.0, 0.0), 18.5 / 3.0};
+  b.runs.push_back(r);
+  write_bundle(b, dir_);
+  const ExperimentBundle c = read_bundle(dir_);
+  EXPECT_EQ(*c.mass_kg, *b.mass_kg);
+  EXPECT_EQ(*c.stiffness_N_per_m, *b.stiffness_N_per_m);
+  EXPECT_EQ(c.static_points[0].phi_dot_per_s, b.static_points[0].phi_dot_per_s);
+  EXPECT_EQ(c.static_points[0].mu_s, b.static_points[0].mu_s);
+  EXPECT_EQ(c.runs[0].v_m_per_s, r.v_m_per_s);
+  EXPECT_EQ(c.runs[0].trace.t_s, r.trace.t_s);
+  EXPECT_EQ(c.runs[0].trace.friction_N, r.trace.friction_N);
 }
 
 TEST_F(BundleTest, OnlyStaticPointsOrOnlyTracesAreBundles) {
