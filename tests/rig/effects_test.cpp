@@ -297,7 +297,7 @@ TEST(Instrument, SensorLagAttenuatesAndDelaysASinusoidAsItsFrequencyResponse) {
   }
   const auto read = measure_friction_N(rig, InstrumentModel{.time_constant_s = tau}, samples);
   const double amp = rig.stiffness_N_per_m / std::sqrt(1.0 + w * tau * w * tau), phase = std::atan(w * tau);
-  for (std::size_t i = 2000; i < samples.size(); ++i) {  // after 10 periods, 20 τ: the start has decayed
+  for (std::size_t i = 2000; i < samples.size(); ++i) {  // after 10 periods, 125 τ: the start has decayed
     const double t = samples[i].t_s;
     const double expected = amp * std::sin(w * t - phase);
     ASSERT_NEAR(read[i], expected, 1e-3 * rig.stiffness_N_per_m) << "t = " << t;
