@@ -276,6 +276,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
                           {"earns", c.earns}});
   j["candidates"] = candidates;
   j["indistinguishable_from"] = row.indistinguishable_from;
+  j["alike_mechanisms"] = row.alike_mechanisms;
   j["proposal_checks"] = nlohmann::json::array();
   for (const gap::ProposalCheck& k : row.proposal_checks)
     j["proposal_checks"].push_back({{"against", k.against}, {"test", k.test}, {"separation_floors", gap::finite_or_null(k.floors)},

@@ -50,6 +50,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.correct = r.verdict == r.c.true_effect;
       r.git_commit = j.value("git_commit", std::string());
       r.indistinguishable_from = j.value("indistinguishable_from", std::vector<std::string>{});
+      r.alike_mechanisms = j.value("alike_mechanisms", std::vector<std::string>{});
       for (const nlohmann::json& k : j.value("proposal_checks", nlohmann::json::array()))
         r.proposal_checks.push_back({k.at("against").get<std::string>(), k.at("test").get<std::string>(), number(k, "separation_floors"),
                                      number(k, "gap_verdict"), number(k, "gap_against"), k.value("truth_nearer", false)});

@@ -31,8 +31,8 @@ class NestedParallelism {
   int levels_;
 };
 
-// The tests that would tell the verdict's candidate from each one the held-out data do not
-// (discriminate.h), around the bundle's constant-speed runs: their driven speeds and median length
+// The tests that would tell the verdict's candidate from each one named beside it (Verdict::beside,
+// discriminate.h), around the bundle's constant-speed runs: their driven speeds and median length
 // (1–5 s), at the rig generator's friction noise of 1 % of μk W. Drive histories are left out.
 std::vector<ProposedSeparation> propose_tests(const ExperimentBundle& bundle, const Candidate& chosen, const std::vector<Candidate>& candidates,
                                               const std::vector<std::string>& others, std::uint64_t seed) {
@@ -159,6 +159,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   const Choice choice = choose(p, baseline, d.candidates, comparisons, d.verdict.noise_floor);
   const Candidate* chosen = choice.index >= 0 ? &d.candidates[static_cast<std::size_t>(choice.index)] : nullptr;
   d.verdict.indistinguishable = choice.indistinguishable;
+  if (!parts_alike_mechanisms(bundle))
+    d.verdict.alike_mechanisms = alike_mechanisms(d.candidates, choice.index, d.baseline_heldout.gap, d.verdict.noise_floor);
   d.verdict.unexplained = choice.unexplained;
   d.verdict.heldout_gap_before = d.baseline_heldout.gap;
   d.verdict.heldout_gap_after = chosen ? chosen->heldout_gap_after : d.baseline_heldout.gap;
@@ -175,13 +177,13 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       d.verdict.remaining_where = l.front().observable + " (" + l.front().where + ", worst " + l.front().worst_item + ")";
   }
 
-  if (chosen) d.proposed_tests = propose_tests(bundle, *chosen, d.candidates, d.verdict.indistinguishable, o.seed);
+  if (chosen) d.proposed_tests = propose_tests(bundle, *chosen, d.candidates, d.verdict.beside(), o.seed);
 
   // 4. Confidence.
   const ConfidenceStage conf = confidence(p, cal, baseline, d.candidates, choice.index, verdict_name(d.verdict));
   d.verdict.refitted = conf.refitted;
   d.verdict.confidence_bootstrap = conf.with_refits.agreement;
-  d.verdict.confidence = verdict_confidence(conf.with_refits.agreement, verdict_name(d.verdict), o);
+  d.verdict.confidence = verdict_confidence(conf.with_refits.agreement, verdict_name(d.verdict), o, !d.verdict.alike_mechanisms.empty());
   d.verdict.confidence_fixed_fits = conf.fixed.agreement;
   d.verdict.heldout_gap_after_std = conf.with_refits.heldout_gap_after_std;
   d.stage_times.confidence_s = lap();

@@ -5,6 +5,7 @@
 // this header alone and the includes run one way: types ← verdict, report ← diagnosis.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -105,12 +106,24 @@ struct Verdict {
   double remaining_floors = 0.0;     // heldout_gap_after / noise_floor (NaN without a floor)
   std::string remaining_where;       // observable and place holding most of what remains
   // How likely the verdict is right: the bootstrap's agreement, for "none" times
-  // DiagnosisOptions::none_reliability.
+  // DiagnosisOptions::none_reliability, halved when alike_mechanisms is not empty (verdict.h).
   double confidence = 0.0;
   double confidence_bootstrap = 0.0;   // the agreement alone: the share of resamples giving this verdict
   double confidence_fixed_fits = 0.0;  // that bootstrap with every fit held where it is
   std::vector<std::string> refitted;   // refitted in the resamples: "baseline" and the leaders
   std::vector<std::string> indistinguishable;  // earning candidates the held-out data do not tell from the verdict's
+  // On a record of constant-speed runs at one normal load, candidates of another mechanism that
+  // explain the gap as well and that such runs cannot tell from the verdict's (verdict.h
+  // alike_mechanisms): they share the confidence; a hold or a load change parts them.
+  std::vector<std::string> alike_mechanisms;
+  // The candidates named beside the verdict: the indistinguishable ones, then the alike ones not
+  // among them — those the proposed tests are run against (discriminate.h).
+  std::vector<std::string> beside() const {
+    std::vector<std::string> out = indistinguishable;
+    for (const std::string& a : alike_mechanisms)
+      if (std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+    return out;
+  }
   std::string conclusion;            // one sentence a tribologist can act on
 };
 
@@ -164,7 +177,7 @@ struct Diagnosis {
   std::vector<Localization> localization;
   std::vector<Candidate> candidates;  // best first
   Verdict verdict;
-  // For each candidate in verdict.indistinguishable, every proposed test (discriminate.h) with the
+  // For each candidate in verdict.beside(), every proposed test (discriminate.h) with the
   // verdict's model as the record, largest separation first per candidate; empty when there is
   // none to tell apart or the bundle is not of constant-speed runs.
   std::vector<ProposedSeparation> proposed_tests;

@@ -24,6 +24,21 @@ rig::RigParameters ProposedTest::rig_for(rig::RigParameters rig) const {
   return rig;
 }
 
+bool parts_alike_mechanisms(const ExperimentBundle& b) {
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const Run& r : b.runs) {
+    if (r.trace.has_drive_history()) return true;
+    for (double s : r.trace.normal_stress_Pa)
+      if (s > 0.0) lo = std::min(lo, s), hi = std::max(hi, s);
+  }
+  return hi >= kHeavierLoadFactor * lo;
+}
+
+bool can_decide(const Verdict& v, const std::string& other, const std::string& test) {
+  const bool alike = std::find(v.alike_mechanisms.begin(), v.alike_mechanisms.end(), other) != v.alike_mechanisms.end();
+  return !alike || test == "slide_hold_slide" || test == "heavier_load";
+}
+
 double Separation::floors() const { return noise_floor > 0.0 ? gap / noise_floor : std::numeric_limits<double>::quiet_NaN(); }
 
 std::vector<ProposedTest> proposed_tests(const std::vector<double>& speeds_m_per_s, double duration_s, double noise_fraction) {
@@ -51,7 +66,7 @@ std::vector<ProposedTest> proposed_tests(const std::vector<double>& speeds_m_per
   out.push_back(stiffer);
 
   ProposedTest heavier{"heavier_load", "the present speeds at twice the normal load", present};
-  heavier.load_factor = 2.0;
+  heavier.load_factor = kHeavierLoadFactor;
   out.push_back(heavier);
   return out;
 }

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "gap/compare.h"
+#include "gap/diagnosis_types.h"
 #include "gap/synthesize.h"
 #include "rig/friction_model.h"
 #include "rig/parameters.h"
@@ -43,6 +44,22 @@ struct ProposedTest {
 // The four tests around the present constant-speed runs (their driven speeds, each `duration_s`
 // long), at a friction-sensor noise of `noise_fraction` of μk W.
 std::vector<ProposedTest> proposed_tests(const std::vector<double>& speeds_m_per_s, double duration_s, double noise_fraction);
+
+// The load factor of the heavier_load test: two records this far apart in normal load part the
+// mechanisms a squeeze film and the junction locus share at one load (rig::EffectInfo::
+// alike_at_constant_speed).
+inline constexpr double kHeavierLoadFactor = 2.0;
+
+// Whether a bundle holds what parts alike mechanisms (rig::EffectInfo::alike_at_constant_speed): a
+// run with a drive history (a hold, a velocity step) or traces whose normal_stress_Pa spans a factor
+// kHeavierLoadFactor. A pin-on-disc bundle of constant-speed runs at its one normal_load_N does not.
+bool parts_alike_mechanisms(const ExperimentBundle& b);
+
+// Whether proposed test `test` can decide between the verdict `v` and `other`, a candidate named
+// beside it (Verdict::beside): any test for one the held-out data do not tell apart; for an alike
+// mechanism only slide_hold_slide and heavier_load — the other two part the two fitted forms, not
+// the mechanisms (a stiffer spring shortens the stick time as a faster drive does).
+bool can_decide(const Verdict& v, const std::string& other, const std::string& test);
 
 // A separation that decides: two floors, as a signal is visible at two (selftest.h kVisibleSignalFloors).
 inline constexpr double kDecidingFloors = 2.0;

@@ -27,12 +27,13 @@ std::string baseline_text(const rig::FrictionModel& m) {
   return buf;
 }
 
-// What the conclusion says of each candidate the held-out data do not tell from the verdict: the
-// proposed test (discriminate.h) that separates their predictions most, if by two noise floors.
-std::string deciding_tests_text(const Diagnosis& d) {
+// What the conclusion says of each of `others`, candidates the data do not tell from the verdict:
+// the proposed test (discriminate.h) that separates their predictions most, if by two noise floors.
+std::string deciding_tests_text(const Diagnosis& d, const std::vector<std::string>& others) {
   std::string text;
-  for (const std::string& other : d.verdict.indistinguishable) {
-    const auto best = std::find_if(d.proposed_tests.begin(), d.proposed_tests.end(), [&](const auto& t) { return t.other == other; });
+  for (const std::string& other : others) {
+    const auto best = std::find_if(d.proposed_tests.begin(), d.proposed_tests.end(),
+                                   [&](const auto& t) { return t.other == other && can_decide(d.verdict, other, t.test); });
     char b[512];
     if (best == d.proposed_tests.end() || !std::isfinite(best->floors))
       std::snprintf(b, sizeof b, "against %s no test was proposed (constant-speed runs are needed to start from)", other.c_str());
@@ -84,9 +85,16 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   floor_text, 100.0 * (1.0 - d.verdict.heldout_gap_after / std::max(d.verdict.heldout_gap_before, 1e-300)),
                   confidence_text(d.verdict.confidence).c_str(), top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
                   top ? 100.0 * top->share : 0.0);
+    std::string text = buf;
+    if (!d.verdict.alike_mechanisms.empty())
+      text += " Runs at constant speed and one normal load cannot tell its mechanism from " +
+              std::string(d.verdict.alike_mechanisms.size() > 1 ? "those of " : "that of ") + join(d.verdict.alike_mechanisms, ", ") +
+              ", which explain" + (d.verdict.alike_mechanisms.size() > 1 ? "" : "s") +
+              " the gap as well: the confidence is shared between the two mechanisms; " + deciding_tests_text(d, d.verdict.alike_mechanisms) + ".";
     if (!d.verdict.indistinguishable.empty())
-      return std::string(buf) + " The held-out data do not tell it from " + join(d.verdict.indistinguishable, ", ") + ": " +
-             deciding_tests_text(d) + ".";
+      text += " The held-out data do not tell it from " + join(d.verdict.indistinguishable, ", ") + ": " +
+              deciding_tests_text(d, d.verdict.indistinguishable) + ".";
+    return text;
   } else if (d.verdict.unexplained) {
     std::snprintf(buf, sizeof buf,
                   "Unexplained: %s leaves a held-out gap of %.3g%s, and no catalogue "
@@ -170,6 +178,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"confidence_fixed_fits", finite_or_null(d.verdict.confidence_fixed_fits)},
                   {"refitted_in_resamples", d.verdict.refitted},
                   {"indistinguishable_from", d.verdict.indistinguishable},
+                  {"alike_mechanisms", d.verdict.alike_mechanisms},
                   {"noise_floor", d.verdict.noise_floor},
                   {"remaining_gap_in_floors", finite_or_null(d.verdict.remaining_floors)},
                   {"remaining_where", d.verdict.remaining_where},

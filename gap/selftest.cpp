@@ -210,12 +210,14 @@ std::vector<ProposalCheck> check_proposals(const SelftestCase& sc, const Synthet
   std::vector<ProposalCheck> out;
   const std::string verdict = verdict_name(d.verdict);
   std::map<std::string, ExperimentBundle> records;
-  for (const std::string& other : d.verdict.indistinguishable) {
+  for (const std::string& other : d.verdict.beside()) {
     if (sc.true_effect != verdict && sc.true_effect != other) continue;
     if (records.empty()) records = make_proposed_test_bundles(sc, synthetic);
     // d.proposed_tests holds each candidate's tests largest separation first.
     const auto best = std::find_if(d.proposed_tests.begin(), d.proposed_tests.end(),
-                                   [&](const ProposedSeparation& t) { return t.other == other && records.count(t.test); });
+                                   [&](const ProposedSeparation& t) {
+                                     return t.other == other && records.count(t.test) && can_decide(d.verdict, other, t.test);
+                                   });
     if (best == d.proposed_tests.end()) continue;
     const ExperimentBundle& record = records.at(best->test);
     const TestBlockGap t = test_block_gap(record, apply_bundle_rig(record, rig::RigParameters{}), d, sc.seed, diagnosed_rig);
@@ -248,6 +250,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.confidence_bootstrap = d.verdict.confidence_bootstrap;
   row.correct = row.verdict == sc.true_effect;
   row.indistinguishable_from = d.verdict.indistinguishable;
+  row.alike_mechanisms = d.verdict.alike_mechanisms;
   for (const Candidate& k : d.candidates)
     row.candidates.push_back({verdict_name(k.effects), k.evidence_nats, k.evidence_se_nats, k.heldout_gap_after, k.earns});
   if (!synthetic.test_speeds_m_per_s.empty()) {

@@ -94,6 +94,7 @@ struct SelftestRow {
   StageTimes stage_times;  // where that time went (Diagnosis::stage_times); zeros: not recorded
   std::vector<CandidateFigures> candidates;  // in the diagnosis' ranking; empty in journals from before
   std::vector<std::string> indistinguishable_from;  // earning candidates the held-out data do not tell from the verdict
+  std::vector<std::string> alike_mechanisms;        // Verdict::alike_mechanisms (empty in journals from before)
   std::vector<ProposalCheck> proposal_checks;       // pairs that hold the truth (empty in journals from before)
   std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
 };

@@ -286,8 +286,25 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
   return {agree / B, B > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / B) / (B - 1))) : 0.0};
 }
 
-double verdict_confidence(double agreement, const std::string& verdict, const DiagnosisOptions& o) {
-  return verdict == "none" ? agreement * o.none_reliability : agreement;
+std::vector<std::string> alike_mechanisms(const std::vector<Candidate>& cs, int chosen, double gap_before, double floor) {
+  std::vector<std::string> out;
+  if (chosen < 0 || !(floor > 0.0)) return out;
+  const std::vector<std::string>& verdict = cs[static_cast<std::size_t>(chosen)].effects;
+  const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
+  for (const Candidate& c : cs) {
+    if (c.effects.size() != 1 || std::count(verdict.begin(), verdict.end(), c.effects.front())) continue;
+    const bool twin = std::any_of(verdict.begin(), verdict.end(), [&](const std::string& e) {
+      const std::vector<std::string>& t = rig::effect_info(e).alike_at_constant_speed;
+      return std::count(t.begin(), t.end(), c.effects.front()) > 0;
+    });
+    if (twin && excess(c.heldout_gap_after) <= 0.5 * excess(gap_before)) out.push_back(c.effects.front());
+  }
+  return out;
+}
+
+double verdict_confidence(double agreement, const std::string& verdict, const DiagnosisOptions& o, bool shared) {
+  if (verdict == "none") return agreement * o.none_reliability;
+  return shared && verdict != "unexplained" ? 0.5 * agreement : agreement;
 }
 
 }  // namespace tribo::gap

@@ -167,9 +167,24 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
                                 const std::vector<Candidate>& candidates, int chosen, const std::string& verdict, const DiagnosisOptions& o,
                                 const std::vector<Refit>& refits = {});
 
+// The candidates of another mechanism that explain the held-out gap as the verdict's does and that
+// runs at constant speed and one normal load cannot tell from it (rig::EffectInfo::
+// alike_at_constant_speed), by name: single effects listed there for an effect of the verdict
+// (`chosen`, its index in `cs`; none for −1), not in the verdict, whose held-out gap halves the
+// baseline's excess over the noise floor — decide's rule for a gap explained. The caller asks only
+// of such a record. There the data cannot attribute the gap between the two mechanisms whichever
+// form fits better: set 9122's stick-time ageing (Kato's) was named squeeze_film at 100 %, the
+// film's form at +40 nats and the junction locus' at −67, though the locus, too, cut the gap by two
+// thirds; over twelve sets the independent generator's ageing and squeeze film were named as each
+// other 13 times in 26 (docs/gap.md). Without a floor: none.
+std::vector<std::string> alike_mechanisms(const std::vector<Candidate>& cs, int chosen, double gap_before, double floor);
+
 // The verdict's confidence from its bootstrap agreement: for "none" the agreement times
-// DiagnosisOptions::none_reliability (the bootstrap cannot see an effect below the noise), else the
-// agreement. NaN (not estimable) stays NaN.
-double verdict_confidence(double agreement, const std::string& verdict, const DiagnosisOptions& o);
+// DiagnosisOptions::none_reliability (the bootstrap cannot see an effect below the noise); for a
+// named verdict whose gap a candidate of another mechanism explains as well on a record that cannot
+// part them (`shared`: alike_mechanisms not empty), the agreement shared equally
+// between the two mechanisms — half of it, a uniform prior over what the data cannot decide; else
+// the agreement. NaN (not estimable) stays NaN.
+double verdict_confidence(double agreement, const std::string& verdict, const DiagnosisOptions& o, bool shared = false);
 
 }  // namespace tribo::gap

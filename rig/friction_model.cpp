@@ -30,6 +30,16 @@ double default_location_per_s() {
   return contact::location_through_point_per_s(shape, kAnchorLoadRate_per_s, kAnchorMuS);
 }
 
+// In stick-slip at constant driven speed v and one normal load W the breakaway rises with the stick
+// time t and falls with the load rate φ̇ = k v / W alike (t φ̇ = 2 (μs − μk) for an undamped
+// cycle), under two mechanisms: the junctions' growth, whose locus μs(φ̇) is rate_dependent_static's
+// and strain_rate_hardening's, and a squeeze film thinning at rest, whose share φ0 e^{−t/τ_sq} is
+// Kato's stick-time ageing with m = 1 (docs/gap.md). A hold parts them (the film heals with the
+// hold time, the locus reads the reloading rate) and so does a load change (τ_sq ∝ 1/W: at 2 W the
+// film's t/τ_sq grows fourfold, the locus' t φ̇ not at all): gap/discriminate.h's slide_hold_slide
+// and heavier_load.
+const std::vector<std::string> kAlikeToSqueezeFilm = {"squeeze_film"};
+
 std::vector<EffectInfo> build_catalogue() {
   return {
       {"rate_dependent_static",
@@ -40,13 +50,17 @@ std::vector<EffectInfo> build_catalogue() {
         {"n", "1", 1.25, 1.0, 1.5, "area exponent of the anelastic damping b A^n (3.1.12)"},
         {"location_per_s", "1/s", default_location_per_s(), 1e-6, 1e6,
          "location parameter sigma0^(1+n)/(W^n b) of (3.1.24); default puts mu_s = 0.26 at phi_dot = 0.0785 1/s",
-         FitRange{1e-5, 1e5, true}}}},
+         FitRange{1e-5, 1e5, true}}},
+       {},
+       kAlikeToSqueezeFilm},
       {"strain_rate_hardening",
        "flow stress sigma0 = kappa phi_dot^m reshapes the static-friction locus (implies the locus)",
        "thesis (5.1.2), (3.1.25); Fig 5.1.5",
        {{"m", "1", 0.1, 0.0, 0.35, "strain-rate index: brass about 0.1, copper about 0.02", FitRange{0.0, 0.35, false}},
         {"reference_load_rate_per_s", "1/s", kAnchorLoadRate_per_s, 1e-6, 1e3,
-         "load rate at which the locus keeps its location parameter"}}},
+         "load rate at which the locus keeps its location parameter"}},
+       {},
+       kAlikeToSqueezeFilm},
       {"slip_transient",
        "after slip onset friction decays from the breakaway level with slip distance (not time)",
        "thesis section 5.2a, Figs 5.2.3-5.2.6",
@@ -86,7 +100,9 @@ std::vector<EffectInfo> build_catalogue() {
         {"build_up_distance_m", "m", 2e-3, 1e-7, 1e-1, "slip distance over which lift builds the film", FitRange{1e-6, 1e-1, true}},
         {"film_thickness_m", "m", 1e-6, 1e-8, 1e-4, "film thickness h at which squeeze-out starts (time to h/2)", FitRange{1e-7, 1e-4, true}},
         {"patch_radius_m", "m", 2e-3, 1e-5, 1e-2, "radius R of the region the oil is squeezed from (<= slider radius)"},
-        {"viscosity_Pa_s", "Pa s", 0.021, 1e-4, 10.0, "lubricant viscosity; thesis oil 120 SSU at 80 F"}}},
+        {"viscosity_Pa_s", "Pa s", 0.021, 1e-4, 10.0, "lubricant viscosity; thesis oil 120 SSU at 80 F"}},
+       {},
+       {"rate_dependent_static", "strain_rate_hardening"}},
       {"hydrodynamic_lift",
        "rugosity lift carries a share f_max U/(U + U_half) of the load, unloading the solid contact",
        "thesis section 3.2, section 5.2a",

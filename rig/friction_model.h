@@ -36,6 +36,10 @@ struct EffectInfo {
   std::vector<ParameterSpec> parameters;
   // Experiment kinds (gap/bundle.h) whose data the diagnosis tries it on; empty: every kind.
   std::vector<std::string> diagnosed_in = {};
+  // Effects of another mechanism that runs at constant driven speed and one normal load cannot tell
+  // this one's from, whatever form fits best: there they act through the same channel; a hold or a
+  // change of the load parts them (the diagnosis shares its confidence between them, gap/verdict.h).
+  std::vector<std::string> alike_at_constant_speed = {};
 };
 
 // All effects of the catalogue, in a fixed order.

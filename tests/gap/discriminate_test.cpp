@@ -165,5 +165,43 @@ TEST(ProposedTests, TheConclusionNamesTheTestThatDecidesOrSaysNoneDoes) {
       << text;
 }
 
+// An alike mechanism (verdict.h alike_mechanisms) is named with why the confidence is shared, and
+// with the proposed test that parts it from the verdict's.
+TEST(ProposedTests, TheConclusionSaysWhichMechanismShareTheConfidenceAndWhatPartsThem) {
+  Diagnosis d;
+  Candidate chosen;
+  chosen.effects = {"squeeze_film"};
+  d.candidates = {chosen};
+  d.verdict.effects = chosen.effects;
+  d.verdict.heldout_gap_before = 0.42, d.verdict.heldout_gap_after = 0.03;
+  d.verdict.alike_mechanisms = {"rate_dependent_static"};
+  // The stiffer spring separates the two fitted forms more, but not the mechanisms: not proposed.
+  d.proposed_tests = {{"rate_dependent_static", "stiffer_spring", "the present speeds with a spring twice as stiff", 0.4, 0.02, 20.0},
+                      {"rate_dependent_static", "slide_hold_slide", "a slide-hold-slide at 0.014 m/s", 0.3, 0.02, 15.0}};
+  const std::string text = conclusion(d, &d.candidates.front());
+  EXPECT_NE(text.find("cannot tell its mechanism from that of rate_dependent_static, which explains the gap as well: the confidence is "
+                      "shared between the two mechanisms; to decide against rate_dependent_static: a slide-hold-slide at 0.014 m/s "
+                      "(slide_hold_slide)"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("held-out data do not tell"), std::string::npos) << text;
+}
+
+// Constant-speed runs at one normal load do not part a squeeze film from the junction locus; a
+// drive history (here the holds) or traces a factor 2 apart in normal stress do. 1.5 is not 2.
+TEST(ProposedTests, OnlyAHoldOrATwofoldLoadPartsTheMechanismsAlikeAtConstantSpeed) {
+  const rig::RigParameters rig;
+  SyntheticOptions constant = noiseless_holds();
+  constant.hold_times_s.clear();
+  ExperimentBundle b = synthesize_bundle(rig, squeeze_model(), constant, 1);
+  EXPECT_FALSE(parts_alike_mechanisms(b));
+  EXPECT_TRUE(parts_alike_mechanisms(synthesize_bundle(rig, squeeze_model(), noiseless_holds(), 1)));
+  b.runs[0].trace.normal_stress_Pa.assign(b.runs[0].trace.t_s.size(), 1.0e6);
+  b.runs[1].trace.normal_stress_Pa.assign(b.runs[1].trace.t_s.size(), 1.5e6);
+  EXPECT_FALSE(parts_alike_mechanisms(b));
+  b.runs[1].trace.normal_stress_Pa.back() = 2.0e6;
+  EXPECT_TRUE(parts_alike_mechanisms(b));
+}
+
 }  // namespace
 }  // namespace tribo::gap
