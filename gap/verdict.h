@@ -175,8 +175,8 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
 // of such a record. There the data cannot attribute the gap between the two mechanisms whichever
 // form fits better: set 9122's stick-time ageing (Kato's) was named squeeze_film at 100 %, the
 // film's form at +40 nats and the junction locus' at −67, though the locus, too, cut the gap by two
-// thirds; over twelve sets the independent generator's ageing and squeeze film were named as each
-// other 13 times in 26 (docs/gap.md). Without a floor: none.
+// thirds; over the 21 validation sets before it the independent generator's ageing and squeeze film
+// were named as each other's mechanism in 14 of 42 cases (docs/gap.md). Without a floor: none.
 std::vector<std::string> alike_mechanisms(const std::vector<Candidate>& cs, int chosen, double gap_before, double floor);
 
 // The verdict's confidence from its bootstrap agreement: for "none" the agreement times
