@@ -131,6 +131,12 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
      << gap::confidence_text(d.verdict.confidence);
   if (gap::verdict_name(d.verdict) == "none" && std::isfinite(d.verdict.confidence))
     md << " (bootstrap agreement " << gap::confidence_text(d.verdict.confidence_bootstrap) << " times the reliability of \"none\")";
+  if (!d.verdict.alike_mechanisms.empty()) {
+    std::string alike;
+    for (const auto& a : d.verdict.alike_mechanisms) alike += (alike.empty() ? "" : ", ") + a;
+    md << " (half the bootstrap agreement " << gap::confidence_text(d.verdict.confidence_bootstrap) << ": " << alike
+       << " explains the gap as well, by a mechanism constant-speed runs at one normal load cannot tell from the verdict's)";
+  }
   if (!d.verdict.refitted.empty()) {
     std::string refitted;
     for (const auto& r : d.verdict.refitted) refitted += (refitted.empty() ? "" : ", ") + r;
@@ -138,13 +144,14 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   }
   md << ".\n\n";
   if (!d.proposed_tests.empty()) {
-    md << "## Tests that would decide\n\nThe held-out data do not tell `" << gap::verdict_name(d.verdict) << "` from "
-       << "the candidates below. Each test is simulated with the verdict's model as the record (the rig's simulator, 1 % friction noise), "
+    md << "## Tests that would decide\n\nThe data do not tell `" << gap::verdict_name(d.verdict) << "` from "
+       << "the candidates below (a mechanism alike at constant speed: only a hold or a heavier load can, and only those are listed for it). Each test is simulated with the verdict's model as the record (the rig's simulator, 1 % friction noise), "
           "analysed as a bundle and predicted with both fitted models; the separation is the gap between the predictions over the test's "
           "items in that test's floors — its noise, or what the verdict's model misses on its own record when that is more (two or more: the test decides).\n\n| against | test | what to run | separation (gap) | "
           "noise floor | separation (floors) |\n|---|---|---|---|---|---|\n";
     for (const auto& t : d.proposed_tests)
-      md << "| " << t.other << " | " << t.test << " | " << t.description << " | " << fmt(t.gap, "%.3g") << " | " << fmt(t.noise_floor, "%.3g") << " | "
+      if (gap::can_decide(d.verdict, t.other, t.test))
+        md << "| " << t.other << " | " << t.test << " | " << t.description << " | " << fmt(t.gap, "%.3g") << " | " << fmt(t.noise_floor, "%.3g") << " | "
          << fmt(t.floors, "%.1f") << " |\n";
     md << "\n";
   }

@@ -199,10 +199,8 @@ Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& s
                 double gap_before, double floor) {
   const int k = verdict_index(cs, st, m);
   if (!(floor > 0.0)) return {k, false};
-  const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
   const auto real = [&](double g) { return beyond_noise(g, floor, o); };
-  if (k >= 0 && (!real(st[static_cast<std::size_t>(k)].heldout_gap) ||
-                 excess(st[static_cast<std::size_t>(k)].heldout_gap) <= 0.5 * excess(gap_before)))
+  if (k >= 0 && (!real(st[static_cast<std::size_t>(k)].heldout_gap) || halves_excess(st[static_cast<std::size_t>(k)].heldout_gap, gap_before, floor)))
     return {k, false};
   return {-1, real(gap_before)};
 }
@@ -290,14 +288,13 @@ std::vector<std::string> alike_mechanisms(const std::vector<Candidate>& cs, int 
   std::vector<std::string> out;
   if (chosen < 0 || !(floor > 0.0)) return out;
   const std::vector<std::string>& verdict = cs[static_cast<std::size_t>(chosen)].effects;
-  const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
   for (const Candidate& c : cs) {
     if (c.effects.size() != 1 || std::count(verdict.begin(), verdict.end(), c.effects.front())) continue;
     const bool twin = std::any_of(verdict.begin(), verdict.end(), [&](const std::string& e) {
       const std::vector<std::string>& t = rig::effect_info(e).alike_at_constant_speed;
       return std::count(t.begin(), t.end(), c.effects.front()) > 0;
     });
-    if (twin && excess(c.heldout_gap_after) <= 0.5 * excess(gap_before)) out.push_back(c.effects.front());
+    if (twin && halves_excess(c.heldout_gap_after, gap_before, floor)) out.push_back(c.effects.front());
   }
   return out;
 }

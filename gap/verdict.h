@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -122,6 +123,13 @@ std::vector<int> indistinguishable(const std::vector<Standing>& st, int chosen, 
 // verdict calls such a gap `unexplained` when no earning candidate halves it (decide), and only
 // such a gap is worth a pair (pipeline.h pair).
 inline bool beyond_noise(double gap, double noise_floor, const DiagnosisOptions& o) { return gap > o.unexplained_floors * noise_floor; }
+
+// Whether a model's held-out gap `after` explains the baseline's `before`: it halves the excess
+// over the noise floor, √(g² − floor²) — decide's rule, and alike_mechanisms'.
+inline bool halves_excess(double after, double before, double floor) {
+  const auto excess = [floor](double g) { return std::sqrt(std::max(g * g - floor * floor, 0.0)); };
+  return excess(after) <= 0.5 * excess(before);
+}
 
 // The verdict rule with the open world: `index` ≥ 0 names a candidate; else `unexplained` when
 // the held-out gap lies above unexplained_floors noise floors and no earning candidate halves its

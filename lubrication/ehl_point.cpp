@@ -128,6 +128,7 @@ class PointProblem {
     return p;
   }
   void set_cap(double cap) const { cap_ = cap; }
+  double cap() const { return cap_; }
   bool yields(double q) const { return q >= cap_; }  // the unknown's pressure at the cap
   // The interior pressures of the unknowns q: min(q, P_cap).
   Eigen::VectorXd capped(const Eigen::VectorXd& interior_q) const { return interior_q.cwiseMin(cap_); }
@@ -167,6 +168,7 @@ class PointProblem {
     return d.reshaped();  // column-major: node (i, j) at i + nx j
   }
   double contact_floor() const { return floor_; }  // H_c, 0 without roughness (smooth surfaces never touch)
+  double self_compliance() const { return self_; }  // K_self: a node's own cell's deflection per unit pressure
   bool rough() const { return floor_ > 0.0; }      // (a profile's H_c is positive)
   Eigen::VectorXd film_change(const Eigen::VectorXd& u, const Eigen::VectorXd& du) const {
     return Eigen::VectorXd::Constant(nx_ * ny_, du(interior())) + film_from(u, du.head(interior()));
@@ -539,10 +541,10 @@ bool PointProblem::krylov_step(Jacobian& jac, const Eigen::VectorXd& rhs, Eigen:
   return false;
 }
 
-// A coarser solve's pressure at (x, y) (m) by Catmull–Rom cubics in x and y (bilinear left a fine
-// grid's start 25 % further from its answer: 0.084 against 0.068 in ‖F‖∞ on 257² at 10 N, 85 GMRES
-// iterations against 73), not below 0; 0 outside its domain.
-double interpolate(const EhlPointResult& c, double x, double y) {
+// A coarser solve's nodal field (its pressure, or its plastic flow) at (x, y) (m) by Catmull–Rom
+// cubics in x and y (bilinear left a fine grid's start 25 % further from its answer: 0.084 against
+// 0.068 in ‖F‖∞ on 257² at 10 N, 85 GMRES iterations against 73), not below 0; 0 outside its domain.
+double interpolate(const EhlPointResult& c, const std::vector<double>& field, double x, double y) {
   const int nx = static_cast<int>(c.x_m.size()), ny = static_cast<int>(c.y_m.size());
   const double dx = c.x_m[1] - c.x_m[0], dy = c.y_m[1] - c.y_m[0];
   const double fi = (x - c.x_m[0]) / dx, fj = (y - c.y_m[0]) / dy;
@@ -557,7 +559,7 @@ double interpolate(const EhlPointResult& c, double x, double y) {
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a) {
       const int ii = std::clamp(i - 1 + a, 0, nx - 1), jj = std::clamp(j - 1 + b, 0, ny - 1);
-      v += wx[a] * wy[b] * c.pressure_Pa[static_cast<std::size_t>(ii + nx * jj)];
+      v += wx[a] * wy[b] * field[static_cast<std::size_t>(ii + nx * jj)];
     }
   return std::max(0.0, v);
 }
@@ -640,22 +642,59 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   // A coarse grid that cannot hold the contact (high M: no film-positive solution past a fold in λ)
   // would spend the whole continuation finding that out; the Hertz start on this grid is then cheaper.
   coarser.max_continuation_steps = std::min(options.max_continuation_steps, 4);
-  // With a hardness the elastic answer first (and on the coarser grid), then the cap lowered onto it.
-  std::optional<EhlRoughness> elastic;
-  if (roughness) elastic = *roughness, elastic->hardness_Pa = std::numeric_limits<double>::infinity();
-  if (!dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y) {
-    problem.start_analysis(u, lambda);
-    if (const EhlPointResult c = solve_point(contact, elastic ? &*elastic : nullptr, lubricant, coarser); c.converged) {
-      for (int j = 1; j <= problem.ny() - 2; ++j)
-        for (int i = 1; i <= problem.nx() - 2; ++i)
-          u(problem.unknown(i, j)) = interpolate(c, problem.x()(i) * a, problem.y()(j) * a) / ph;
-      place_film(c.central_film_m, c.minimum_film_m);
-    }
+  const bool nested = !dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y;
+  if (nested) problem.start_analysis(u, lambda);
+  // The coarser grid's answer (with `rough` as the surface) interpolated into u; inside its yielded
+  // zone (the pressure interpolated at the cap) the unknown carries its plastic flow on this grid,
+  // q = P_cap + flow / K_self. Where the flow alone reaches past that zone (its interpolation spreads a
+  // node further) the node starts elastic: started yielded, an edge node's flow row can vanish while
+  // the residual is large (the minimum picks the capped pressure), and the Newton matrix with it
+  // (the crawling ball of tests/lubrication/ehl_point_mixed_test.cpp on 31² and 61²: singular at the
+  // first step; without the flow at all, 29 and > 30 Newton steps against 11 and 20 with it). False,
+  // u kept, where the coarser solve did not converge.
+  const auto start_from_coarser = [&](const EhlRoughness* rough) {
+    const EhlPointResult c = solve_point(contact, rough, lubricant, coarser);
+    if (!c.converged) return false;
+    const bool flowed = rough && c.plastic_nodes > 0;
+    const double cap = rough ? rough->hardness_Pa / ph : std::numeric_limits<double>::infinity();
+    const double per_flow = 1.0 / (problem.self_compliance() * problem.film_scale_m());
+    problem.set_cap(cap);  // the film placed below reads the plastic flow off the unknowns
+    for (int j = 1; j <= problem.ny() - 2; ++j)
+      for (int i = 1; i <= problem.nx() - 2; ++i) {
+        const double x = problem.x()(i) * a, y = problem.y()(j) * a;
+        double& q = u(problem.unknown(i, j));
+        q = interpolate(c, c.pressure_Pa, x, y) / ph;
+        if (const double flow = flowed ? interpolate(c, c.plastic_flow_m, x, y) : 0.0; flow > 0.0 && q >= cap * (1.0 - 1e-12))
+          q = cap + flow * per_flow;
+      }
+    place_film(c.central_film_m, c.minimum_film_m);
+    return true;
+  };
+  const Eigen::VectorXd hertz_start = u;
+  ehl::SolveOutcome solved;
+  // With a hardness the cap is lowered onto an elastic answer (ehl::lower_cap) on the coarsest grid
+  // alone: a finer grid starts from its coarser grid's capped answer and Newton takes it there with
+  // the cap set, as the elastic nesting does (the rough map example at 0.7 GPa: 44 s and 60 cap
+  // steps on 129² → 8 s, 25 Newton steps, the same answer). Where the coarser capped solve or this
+  // Newton does not converge (a coarse grid that cannot hold a cap far below p_H), the coarser
+  // grid's elastic answer and the cap lowered on this grid, as before 2026-12-02, the Newton steps
+  // of the attempt counted too.
+  const bool capped = roughness && std::isfinite(roughness->hardness_Pa);
+  if (nested && capped && start_from_coarser(roughness)) {
+    solved.newton = ehl::newton(problem, lambda, u, options);
+    solved.iterations = solved.newton.iterations;
+    if (!solved.newton.converged) problem.set_cap(std::numeric_limits<double>::infinity()), u = hertz_start;
   }
-
-  const Eigen::VectorXd start = u;
-  ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
-  if (solved.newton.converged && roughness) ehl::lower_cap(problem, lambda, roughness->hardness_Pa / ph, u, options, solved);
+  if (!solved.newton.converged) {
+    std::optional<EhlRoughness> elastic;
+    if (roughness) elastic = *roughness, elastic->hardness_Pa = std::numeric_limits<double>::infinity();
+    if (nested) start_from_coarser(elastic ? &*elastic : nullptr);
+    const int tried = solved.iterations;
+    const Eigen::VectorXd start = u;
+    solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+    solved.iterations += tried;
+    if (solved.newton.converged && capped) ehl::lower_cap(problem, lambda, roughness->hardness_Pa / ph, u, options, solved);
+  }
 
   EhlPointResult result;
   const Eigen::VectorXd p = problem.pressures(u), h = problem.film(u);
@@ -683,12 +722,16 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   if (roughness) {
     double carried = 0.0, yielded = 0.0;
     result.in_contact.assign(static_cast<std::size_t>(h.size()), false);
+    result.plastic_flow_m.assign(static_cast<std::size_t>(h.size()), 0.0);
     for (int j = 1; j <= problem.ny() - 2; ++j)
       for (int i = 1; i <= problem.nx() - 2; ++i) {
         const int k = problem.node(i, j);
         if (in_contact(*roughness, result.film_m[static_cast<std::size_t>(k)]))
           result.in_contact[static_cast<std::size_t>(k)] = true, ++result.contact_nodes, carried += p(k);
-        if (problem.yields(u(problem.unknown(i, j)))) ++result.plastic_nodes, yielded += p(k);
+        if (const double q = u(problem.unknown(i, j)); problem.yields(q)) {
+          ++result.plastic_nodes, yielded += p(k);
+          result.plastic_flow_m[static_cast<std::size_t>(k)] = problem.self_compliance() * (q - problem.cap()) * problem.film_scale_m();
+        }
       }
     const double share = problem.dx() * problem.dy() / (2.0 * std::numbers::pi / 3.0);
     result.contact_load_share = share * carried;

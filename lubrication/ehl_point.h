@@ -162,6 +162,9 @@ struct EhlPointResult {
   // the share of the load they carry.
   int plastic_nodes = 0;
   double plastic_load_share = 0.0;
+  // By node (x fastest; empty without roughness): how far the surface's plastic flow raised the
+  // film, K_self (q − P_cap) of a yielded node (ehl_point.cpp PointProblem), 0 where it is elastic.
+  std::vector<double> plastic_flow_m;
   std::string message;
 };
 

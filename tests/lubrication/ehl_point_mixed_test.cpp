@@ -94,6 +94,37 @@ TEST(EhlPointMixed, CrawlingBallAboveItsHardnessIsTheElasticPlasticSphere) {
   EXPECT_GE(elastic_compared, 8);
 }
 
+// Two routes to the capped ball of the test above, 0.8 p_H on 31²: the cap lowered onto this grid's
+// elastic answer from the Hertz start (start_from_coarser_grid off: 49 cap steps), and the nesting —
+// 16² capped (the dense LU, the cap lowered onto its elastic answer), its pressures and plastic flow
+// interpolated, and Newton on 31² with the cap set, no cap step there. One discrete problem, so one
+// answer: every pressure to 1e-5 of p_H (Newton's tolerance 1e-7 on the residual, the pressures'
+// error left below 1e-6), the yielded nodes the same, the load on them to 1e-5.
+TEST(EhlPointMixed, ACappedCoarserGridStartsTheCappedSolveAtItsAnswer) {
+  EhlRoughness flat = flat_surface();
+  const EhlPointContact contact = ball_contact(kCrawlLoad_N, 1e-6);
+  flat.hardness_Pa = 0.8 * reference::hertz_point_peak_pressure_Pa(contact.load_N, contact.reduced_radius_m, contact.reduced_modulus_Pa);
+  EhlPointOptions direct = ball_grid(31);
+  direct.start_from_coarser_grid = false;
+  const EhlPointResult lowered = solve_ehl_point(contact, flat, ball_oil(), direct);
+  const EhlPointResult nested = solve_ehl_point(contact, flat, ball_oil(), ball_grid(31));
+  ASSERT_TRUE(lowered.converged) << lowered.message;
+  ASSERT_TRUE(nested.converged) << nested.message;
+  EXPECT_GT(lowered.continuation_steps, 5);
+  EXPECT_EQ(nested.continuation_steps, 0);
+  ASSERT_EQ(nested.pressure_Pa.size(), lowered.pressure_Pa.size());
+  double worst = 0.0;
+  for (std::size_t k = 0; k < nested.pressure_Pa.size(); ++k) {
+    worst = std::max(worst, std::abs(nested.pressure_Pa[k] - lowered.pressure_Pa[k]) / lowered.hertz_pressure_Pa);
+    EXPECT_EQ(nested.pressure_Pa[k] == flat.hardness_Pa, lowered.pressure_Pa[k] == flat.hardness_Pa) << "node " << k;
+  }
+  EXPECT_LT(worst, 1e-5);
+  EXPECT_EQ(nested.plastic_nodes, lowered.plastic_nodes);
+  EXPECT_NEAR(nested.plastic_load_share, lowered.plastic_load_share, 1e-5);
+  std::printf("lowered on 31²: %d Newton iterations, %d cap steps; nested: %d on 31², %d steps there; worst pressure difference %.2g p_H\n",
+              lowered.iterations, lowered.continuation_steps, nested.iterations, nested.continuation_steps, worst);
+}
+
 // The same ridges given as a height map: the map's bilinear samples (a/200 apart) are the profile's
 // at the nodes to 1e-9 of the ridges' depth, and the full grid the map needs (no symmetry assumed)
 // solves the problem the half grid solves — the pressures equal to 1e-5 of p_H (Newton's tolerance
