@@ -645,9 +645,9 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   const bool nested = !dense && options.start_from_coarser_grid && coarser.nodes_x * coarser.nodes_y < options.nodes_x * options.nodes_y;
   if (nested) problem.start_analysis(u, lambda);
   // The coarser grid's answer (with `rough` as the surface) interpolated into u; inside its yielded
-  // zone (the pressure interpolated at the cap) the unknown carries its plastic flow on this grid,
-  // q = P_cap + flow / K_self. Where the flow alone reaches past that zone (its interpolation spreads a
-  // node further) the node starts elastic: started yielded, an edge node's flow row can vanish while
+  // zone (the pressure interpolated at the cap, to rounding: the cubics' weights sum to 1) the
+  // unknown carries its plastic flow on this grid, q = P_cap + flow / K_self. Where the flow alone
+  // reaches past that zone (its interpolation spreads a node further) the node starts elastic: started yielded, an edge node's flow row can vanish while
   // the residual is large (the minimum picks the capped pressure), and the Newton matrix with it
   // (the crawling ball of tests/lubrication/ehl_point_mixed_test.cpp on 31² and 61²: singular at the
   // first step; without the flow at all, 29 and > 30 Newton steps against 11 and 20 with it). False,
@@ -674,8 +674,8 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   ehl::SolveOutcome solved;
   // With a hardness the cap is lowered onto an elastic answer (ehl::lower_cap) on the coarsest grid
   // alone: a finer grid starts from its coarser grid's capped answer and Newton takes it there with
-  // the cap set, as the elastic nesting does (the rough map example at 0.7 GPa: 44 s and 60 cap
-  // steps on 129² → 8 s, 25 Newton steps, the same answer). Where the coarser capped solve or this
+  // the cap set, as the elastic nesting does (the rough map example at 0.7 GPa: 44 s, 297 Newton
+  // and 60 cap steps on 129² → 4.8 s, 17 and none, the same answer). Where the coarser capped solve or this
   // Newton does not converge (a coarse grid that cannot hold a cap far below p_H), the coarser
   // grid's elastic answer and the cap lowered on this grid, as before 2026-12-02, the Newton steps
   // of the attempt counted too.
