@@ -647,11 +647,12 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   // The coarser grid's answer (with `rough` as the surface) interpolated into u; inside its yielded
   // zone (the pressure interpolated at the cap, to rounding: the cubics' weights sum to 1) the
   // unknown carries its plastic flow on this grid, q = P_cap + flow / K_self. Where the flow alone
-  // reaches past that zone (its interpolation spreads a node further) the node starts elastic: started yielded, an edge node's flow row can vanish while
-  // the residual is large (the minimum picks the capped pressure), and the Newton matrix with it
-  // (the crawling ball of tests/lubrication/ehl_point_mixed_test.cpp on 31² and 61²: singular at the
-  // first step; without the flow at all, 29 and > 30 Newton steps against 11 and 20 with it). False,
-  // u kept, where the coarser solve did not converge.
+  // reaches past that zone (its interpolation spreads a node further) the node starts elastic:
+  // started yielded, an edge node's flow row can vanish while the residual is large (the minimum
+  // picks the capped pressure), and the Newton matrix with it (the crawling ball of
+  // tests/lubrication/ehl_point_mixed_test.cpp on 31² and 61²: singular at the first step; without
+  // the flow at all, 29 and > 30 Newton steps against 11 and 20 with it). False, u kept, where the
+  // coarser solve did not converge.
   const auto start_from_coarser = [&](const EhlRoughness* rough) {
     const EhlPointResult c = solve_point(contact, rough, lubricant, coarser);
     if (!c.converged) return false;
