@@ -42,7 +42,7 @@ void run_ehl(const EhlArgs& args) {
                    {"pressure_Pa", "pressure_Pa.npy"},
                    {"film_m", "film_m.npy"},
                    {"layout", "float64 arrays; x_m (nx,) in the rolling direction and y_m (ny,) across it, from the contact centre; "
-                              "pressure_Pa and film_m of shape (nx, ny): [i, j] is the node at x_m[i], y_m[j]"}};
+                              "pressure_Pa, film_m (and with a hardness plastic_flow_m) of shape (nx, ny): [i, j] is the node at x_m[i], y_m[j]"}};
     write_npy_atomically(dir / "x_m.npy", f.x_m);
     write_npy_atomically(dir / "y_m.npy", f.y_m);
     const auto field = [&](const std::vector<double>& v) {
@@ -50,6 +50,11 @@ void run_ehl(const EhlArgs& args) {
     };
     write_npy_atomically(dir / "pressure_Pa.npy", Eigen::ArrayXXd(field(f.pressure_Pa)));
     write_npy_atomically(dir / "film_m.npy", Eigen::ArrayXXd(field(f.film_m)));
+    // With a hardness: how far the yielded surface flowed, the film raised by it (0 where elastic).
+    if (run.profile && std::isfinite(run.profile->surface.hardness_Pa) && !f.plastic_flow_m.empty()) {
+      j["fields"]["plastic_flow_m"] = "plastic_flow_m.npy";
+      write_npy_atomically(dir / "plastic_flow_m.npy", Eigen::ArrayXXd(field(f.plastic_flow_m)));
+    }
   } else if (!args.summary_only) {
     j["fields"] = {{"x_m", "x_m.npy"},
                    {"pressure_Pa", "pressure_Pa.npy"},

@@ -217,15 +217,22 @@ expect_refused(map_small "${map_ball}${map_profile}${small_map}" "surface.centre
 # the hardness among the profile's inputs. Refused: a hardness without [profile], one not positive.
 string(REPLACE "mean_speed_m_per_s = 0.5" "mean_speed_m_per_s = 1e-6" crawling_ball "${ball}")
 set(flat_profile "[profile]\namplitude_m = 0.0\nwavelength_m = 1e-3\nboundary_friction_coefficient = 0.1\n[solver]\nnodes_x = 31\nnodes_y = 31\n")
-run_ehl(yielding "yielding ball" "${crawling_ball}${flat_profile}[material]\nhardness_Pa = 6.656e8\n" --summary-only)
+run_ehl(yielding "yielding ball" "${crawling_ball}${flat_profile}[material]\nhardness_Pa = 6.656e8\n")
 expect_outputs(yielding "yielding ball" "
 import json, sys
+import numpy as np
 s = json.load(open(sys.argv[1] + '/ehl.json'))
 c, p = s['contact'], s['inputs']['profile']
 assert s['converged'], s['message']
 assert p['hardness_Pa'] == 6.656e8 and s['max_pressure_Pa'] == 6.656e8, (p, s['max_pressure_Pa'])
 assert abs(s['hertz_pressure_Pa'] / 8.282e8 - 1) < 1e-3, s['hertz_pressure_Pa']
 assert c['plastic_nodes'] > 40 and 0.6 < c['plastic_load_share'] < 0.7 and c['contact_load_share'] > 0.98, c
+# The plastic flow: positive only where the pressure is at the hardness, 0 wherever it is below,
+# on every yielded node but those exactly at the cap's edge (q = P_cap: flow 0).
+pr, flow = (np.load(sys.argv[1] + '/' + s['fields'][k]) for k in ('pressure_Pa', 'plastic_flow_m'))
+assert flow.shape == pr.shape == (31, 31), (flow.shape, pr.shape)
+assert np.all(flow[pr < 6.656e8] == 0) and np.all(pr[flow > 0] == 6.656e8), (flow.max(), pr.max())
+assert c['plastic_nodes'] - 4 <= np.count_nonzero(flow) <= c['plastic_nodes'], (np.count_nonzero(flow), c['plastic_nodes'])
 ")
 expect_refused(hardness_alone "${ball}[material]\nhardness_Pa = 6.656e8\n" "material")
 expect_refused(hardness_negative "${crawling_ball}${flat_profile}[material]\nhardness_Pa = -1\n" "material.hardness_Pa")
