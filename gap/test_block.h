@@ -23,8 +23,8 @@ struct TestBlockGap {
   double gap_before = 0.0;   // the calibrated baseline's gap over all the test bundle's items
   double gap_after = 0.0;    // the verdict candidate's (= gap_before for "none" and "unexplained")
   double noise_floor = 0.0;  // the gap of the test items' own standard errors (Item::noise)
-  // The gap of each candidate named beside the verdict (Verdict::beside), by name: on a test the diagnosis proposed (discriminate.h), the
-  // one nearest the record is the one the test decides for.
+  // The gap of each candidate named beside the verdict (Verdict::beside), by name: on a test the
+  // diagnosis proposed (discriminate.h), the one nearest the record is the one the test decides for.
   std::map<std::string, double> gap_indistinguishable;
   double shrink() const { return gap_before > 0.0 ? 1.0 - gap_after / gap_before : 0.0; }
 };

@@ -676,10 +676,10 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   // With a hardness the cap is lowered onto an elastic answer (ehl::lower_cap) on the coarsest grid
   // alone: a finer grid starts from its coarser grid's capped answer and Newton takes it there with
   // the cap set, as the elastic nesting does (the rough map example at 0.7 GPa: 44 s, 297 Newton
-  // and 60 cap steps on 129² → 4.8 s, 17 and none, the same answer). Where the coarser capped solve or this
-  // Newton does not converge (a coarse grid that cannot hold a cap far below p_H), the coarser
-  // grid's elastic answer and the cap lowered on this grid, as before 2026-12-02, the Newton steps
-  // of the attempt counted too.
+  // and 60 cap steps on 129² → 4.8 s, 17 and none, the same answer). Where the coarser capped solve
+  // or this Newton does not converge (a coarse grid that cannot hold a cap far below p_H), the
+  // coarser grid's elastic answer and the cap lowered on this grid, as before 2026-12-02, the Newton
+  // steps of the attempt counted too.
   const bool capped = roughness && std::isfinite(roughness->hardness_Pa);
   if (nested && capped && start_from_coarser(roughness)) {
     solved.newton = ehl::newton(problem, lambda, u, options);
