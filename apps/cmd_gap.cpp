@@ -150,18 +150,17 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
           "items in that test's floors — its noise, or what the verdict's model misses on its own record when that is more (two or more: the test decides).\n\n| against | test | what to run | separation (gap) | "
           "noise floor | separation (floors) |\n|---|---|---|---|---|---|\n";
     for (const auto& t : d.proposed_tests)
-      if (gap::can_decide(d.verdict, t.other, t.test))
-        md << "| " << t.other << " | " << t.test << " | " << t.description << " | " << fmt(t.gap, "%.3g") << " | " << fmt(t.noise_floor, "%.3g") << " | "
-         << fmt(t.floors, "%.1f") << " |\n";
+      md << "| " << t.other << " | " << t.test << " | " << t.description << " | " << fmt(t.gap, "%.3g") << " | " << fmt(t.noise_floor, "%.3g") << " | "
+       << fmt(t.floors, "%.1f") << " |\n";
     md << "\n";
   }
   if (test) {
     md << "On the test block `" << args.test << "` (" << test->items << " items, neither fitted nor used to choose the verdict): gap "
        << fmt(test->gap_before, "%.4g") << " -> " << fmt(test->gap_after, "%.4g") << ", shrink " << fmt(100.0 * test->shrink(), "%.0f %%")
        << ", its noise floor " << fmt(test->noise_floor, "%.2g") << ".";
-    if (!test->gap_indistinguishable.empty()) {
+    if (!test->gap_beside.empty()) {
       md << " The candidates the held-out data did not tell from the verdict, on it:";
-      for (const auto& [name, g] : test->gap_indistinguishable) md << " " << name << " " << fmt(g, "%.4g") << ";";
+      for (const auto& [name, g] : test->gap_beside) md << " " << name << " " << fmt(g, "%.4g") << ";";
       md << " the one nearest the record is the one this test decides for.";
     }
     md << "\n\n";
@@ -240,7 +239,7 @@ void run_diagnose(const DiagnoseArgs& args) {
     provenance["test"] = std::filesystem::absolute(args.test).string();
     j["provenance"] = provenance;
     j["test_block"] = {{"bundle", args.test}, {"items", tb->items}, {"gap_before", tb->gap_before}, {"gap_after", tb->gap_after},
-                       {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}, {"gap_indistinguishable", tb->gap_indistinguishable}};
+                       {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}, {"gap_beside", tb->gap_beside}};
   }
   write_file_atomically(dir / "gap_report.json", j.dump(2) + "\n");
   write_file_atomically(dir / "report.md", markdown_report(d, args, j, tb));
@@ -256,7 +255,7 @@ void run_diagnose(const DiagnoseArgs& args) {
               gap::confidence_text(d.verdict.confidence).c_str(), args.out.c_str());
   if (tb) {
     std::printf("test block %s: gap %.4g -> %.4g (shrink %.0f %%)", args.test.c_str(), tb->gap_before, tb->gap_after, 100.0 * tb->shrink());
-    for (const auto& [name, g] : tb->gap_indistinguishable) std::printf("; %s %.4g", name.c_str(), g);
+    for (const auto& [name, g] : tb->gap_beside) std::printf("; %s %.4g", name.c_str(), g);
     std::printf("\n");
   }
   if (args.plot && run_plot_script("gap", args.out) != 0)

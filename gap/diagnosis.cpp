@@ -32,11 +32,12 @@ class NestedParallelism {
 };
 
 // The tests that would tell the verdict's candidate from each one named beside it (Verdict::beside,
-// discriminate.h), around the bundle's constant-speed runs: their driven speeds and median length
+// discriminate.h) and can decide between them (can_decide), around the bundle's constant-speed runs: their driven speeds and median length
 // (1–5 s), at the rig generator's friction noise of 1 % of μk W. Drive histories are left out.
 std::vector<ProposedSeparation> propose_tests(const ExperimentBundle& bundle, const Candidate& chosen, const std::vector<Candidate>& candidates,
-                                              const std::vector<std::string>& others, std::uint64_t seed) {
+                                              const Verdict& verdict, std::uint64_t seed) {
   std::vector<ProposedSeparation> out;
+  const std::vector<std::string> others = verdict.beside();
   if (others.empty() || bundle.kind != "pin_on_disc") return out;
   std::vector<double> speeds, spans;
   for (const Run& r : bundle.runs)
@@ -51,9 +52,15 @@ std::vector<ProposedSeparation> propose_tests(const ExperimentBundle& bundle, co
   }
   // Each test recorded once from the verdict's model; rows[k] collects candidate k's separations.
   std::vector<std::vector<ProposedSeparation>> rows(beside.size());
+  // Only the tests that can decide (can_decide) are simulated: a test that parts two fitted forms
+  // of mechanisms alike at constant speed says nothing of the mechanisms.
   for (const ProposedTest& t : tests) {
+    std::vector<std::size_t> deciding;
+    for (std::size_t k = 0; k < beside.size(); ++k)
+      if (can_decide(verdict, verdict_name(beside[k]->effects), t.name)) deciding.push_back(k);
+    if (deciding.empty()) continue;
     const TestRecord record(t, chosen.rig, chosen.model, seed);
-    for (std::size_t k = 0; k < beside.size(); ++k) {
+    for (const std::size_t k : deciding) {
       const Separation s = record.against(beside[k]->rig, beside[k]->model);
       rows[k].push_back({verdict_name(beside[k]->effects), s.test, s.description, s.gap, s.noise_floor, s.floors()});
     }
@@ -177,7 +184,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
       d.verdict.remaining_where = l.front().observable + " (" + l.front().where + ", worst " + l.front().worst_item + ")";
   }
 
-  if (chosen) d.proposed_tests = propose_tests(bundle, *chosen, d.candidates, d.verdict.beside(), o.seed);
+  if (chosen) d.proposed_tests = propose_tests(bundle, *chosen, d.candidates, d.verdict, o.seed);
 
   // 4. Confidence.
   const ConfidenceStage conf = confidence(p, cal, baseline, d.candidates, choice.index, verdict_name(d.verdict));

@@ -216,14 +216,14 @@ std::vector<ProposalCheck> check_proposals(const SelftestCase& sc, const Synthet
     // d.proposed_tests holds each candidate's tests largest separation first.
     const auto best = std::find_if(d.proposed_tests.begin(), d.proposed_tests.end(),
                                    [&](const ProposedSeparation& t) {
-                                     return t.other == other && records.count(t.test) && can_decide(d.verdict, other, t.test);
+                                     return t.other == other && records.count(t.test);
                                    });
     if (best == d.proposed_tests.end()) continue;
     const ExperimentBundle& record = records.at(best->test);
     const TestBlockGap t = test_block_gap(record, apply_bundle_rig(record, rig::RigParameters{}), d, sc.seed, diagnosed_rig);
     ProposalCheck k;
     k.against = other, k.test = best->test, k.floors = best->floors;
-    k.gap_verdict = t.gap_after, k.gap_against = t.gap_indistinguishable.at(other);
+    k.gap_verdict = t.gap_after, k.gap_against = t.gap_beside.at(other);
     k.truth_nearer = sc.true_effect == verdict ? k.gap_verdict < k.gap_against : k.gap_against < k.gap_verdict;
     out.push_back(k);
   }

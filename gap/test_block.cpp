@@ -33,7 +33,7 @@ TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParamete
   out.gap_after = chosen ? gap_of(chosen->rig, chosen->model) : out.gap_before;
   for (const std::string& name : d.verdict.beside())
     for (const Candidate& c : d.candidates)
-      if (verdict_name(c.effects) == name) out.gap_indistinguishable[name] = gap_of(c.rig, c.model);
+      if (verdict_name(c.effects) == name) out.gap_beside[name] = gap_of(c.rig, c.model);
   out.noise_floor = breakdown(items, comparison.relative_noise(), all).gap;
   return out;
 }

@@ -25,7 +25,7 @@ struct TestBlockGap {
   double noise_floor = 0.0;  // the gap of the test items' own standard errors (Item::noise)
   // The gap of each candidate named beside the verdict (Verdict::beside), by name: on a test the
   // diagnosis proposed (discriminate.h), the one nearest the record is the one the test decides for.
-  std::map<std::string, double> gap_indistinguishable;
+  std::map<std::string, double> gap_beside;
   double shrink() const { return gap_before > 0.0 ? 1.0 - gap_after / gap_before : 0.0; }
 };
 

@@ -95,7 +95,7 @@ TEST(TestBlock, ATestOnAStifferSpringIsPredictedOnTheCalibratedRigScaledAsTheTol
   ASSERT_DOUBLE_EQ(told.stiffness_N_per_m, stiffer.stiffness_N_per_m);
   const TestBlockGap scaled = test_block_gap(test, told, d, 1, rig::RigParameters{});
   EXPECT_LT(scaled.gap_after, 1e-4);
-  EXPECT_EQ(scaled.gap_indistinguishable.at("thermal_thinning"), scaled.gap_before);
+  EXPECT_EQ(scaled.gap_beside.at("thermal_thinning"), scaled.gap_before);
   const TestBlockGap unscaled = test_block_gap(test, told, d, 1);
   std::printf("stiffer spring: truth on the scaled rig %.2e, on the diagnosed one %.4f\n", scaled.gap_after, unscaled.gap_after);
   EXPECT_GT(unscaled.gap_after, 0.1);
