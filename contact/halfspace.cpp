@@ -240,7 +240,7 @@ int ElasticHalfSpace::row_threads() const {
 }
 
 double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPass& make_row,
-                                              const std::function<bool(double)>& decide, const RowPass& use_row) {
+                                              const std::function<bool(double)>& decide, const UseRow& use_row) {
   if (!periodic_) throw std::logic_error("displacement_by_rows needs a periodic half-space");
   assert(s != u && "displacement_by_rows cannot work in place");
   const Eigen::Index nx = grid_.nx, ny = grid_.ny, mxh = lines_->nx_half();
@@ -249,7 +249,7 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
   std::complex<double>* spectrum = fft_.spectrum();  // the [ny][nx/2 + 1] half spectrum (aligned rows)
   const int threads = row_threads();
   // Per thread: a block of columns, and a line of nx doubles for lines of s and u that do not have
-  // the plans' alignment (odd nx: every other line).
+  // the plans' alignment (odd nx: every other line) and for the lines of u when u is not kept.
   const Eigen::Index scratch = kb * ny + nx / 2 + 1;
   scratch_.resize(static_cast<std::size_t>(threads * scratch));
   const bool even_x = nx % 2 == 0;
@@ -296,14 +296,14 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
   {
     const int t = omp_get_thread_num(), m = omp_get_num_threads();
     for (Eigen::Index j = ny * t / m; j < ny * (t + 1) / m; ++j) {
-      double* line = u + j * nx;
+      double* line = u != nullptr ? u + j * nx : line_buffer(t);
       if (RowColumnFft::aligned(line)) {
         f.row_inverse(spectrum + j * mxh, line);
       } else {
         f.row_inverse(spectrum + j * mxh, line_buffer(t));
-        std::copy_n(line_buffer(t), nx, line);
+        line = std::copy_n(line_buffer(t), nx, line) - nx;
       }
-      use_row(t, j);
+      use_row(t, j, line);
     }
   }
   return energy;

@@ -63,13 +63,16 @@ class ElasticHalfSpace {
   //   2. the columns of the half spectrum are transformed along y, multiplied by the kernel
   //      (summing the energy s·G s) and transformed back, a block of columns at a time;
   //   3. decide(energy) says whether u is wanted; if so each line of u = G s is transformed back
-  //      along x into u and use_row(t, j) is called on it while it is in cache.
+  //      along x and use_row(t, j, u_line) is called on it while it is in cache: u_line is line j
+  //      of `u`, or, with u = nullptr, a line buffer of thread t's that the next line overwrites —
+  //      for a caller that uses each line once and keeps none (the solve's w: no grid written).
   // Every line j is made and used by the same thread t < row_threads() (its accumulators can be
   // kept per thread and merged in thread order). Returns the energy. `s` and `u` are nx × ny
   // arrays (x contiguous) and must not alias.
   using RowPass = std::function<void(int thread, Eigen::Index line)>;
+  using UseRow = std::function<void(int thread, Eigen::Index line, const double* u_line)>;
   double displacement_by_rows(double* s, double* u, const RowPass& make_row, const std::function<bool(double)>& decide,
-                              const RowPass& use_row);
+                              const UseRow& use_row);
   int row_threads() const;
   // Number of r2c + c2r pairs per displacement() — one on the (padded) FFT grid.
   const RealFft2d& fft() const { return fft_; }

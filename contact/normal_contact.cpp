@@ -342,10 +342,13 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
                                  : 1000 + 4 * static_cast<int>(std::max(grid.nx, grid.ny));
 
   // State: the pressure p (feasible: 0 ≤ p ≤ cap, Σ p = target), v = h + u with u = G p exact
-  // (every change of p is a multiple of a step whose product was taken), the last step s and
-  // w = G s. s also holds the trial values between passes B and C.
-  Eigen::ArrayXXd p(grid.nx, grid.ny), v(grid.nx, grid.ny), s = Eigen::ArrayXXd::Zero(grid.nx, grid.ny),
-      w(grid.nx, grid.ny);
+  // (every change of p is a multiple of a step whose product was taken) and the last step s; s
+  // also holds the trial values between passes B and C. w = G s is a grid only on a padded
+  // half-space: on a periodic one each line of w is used as the product makes it and kept nowhere
+  // (ElasticHalfSpace::displacement_by_rows), which saves writing a grid and reading it back.
+  const Eigen::Index nx = grid.nx;
+  Eigen::ArrayXXd p(grid.nx, grid.ny), v(grid.nx, grid.ny), s = Eigen::ArrayXXd::Zero(grid.nx, grid.ny), w;
+  if (!hs.periodic()) w.resize(grid.nx, grid.ny);
   if (warm != nullptr) {
     p = warm->max(0.0).min(cap);
   } else if (load_control) {
@@ -362,14 +365,14 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   double* vp = v.data();
   double* sp = s.data();
   double* wp = w.data();
+  const std::vector<double> zero_line(static_cast<std::size_t>(nx), 0.0);
   const double hscale = (h0 - h0.mean()).matrix().norm();
   const double c0 = hs.self_compliance_m_per_Pa();
   int fft_pairs = 0;
 
-  hs.displacement_and_energy(p, w);  // u of the start; w is scratch until the first step
+  hs.displacement_and_energy(p, v);  // u of the start
   ++fft_pairs;
-  v = h0 + w;
-  w.setZero();
+  v += h0;
 
   // What the next direction needs from the state: δ (load control: the free cells' mean of v),
   // Σ_F g², and, against the last step, Σ_F g w, Σ_F s w, Σ_F s, Σ_F g s (g = v − δ); and the
@@ -402,17 +405,34 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     s_free = st.s_sum;
     return !(std::abs(dref * st.s1) > 1e8 * std::abs(g2));
   };
-  // Pass D (update_cells).
+  // Pass D (update_cells) on a padded half-space.
   auto update_pass = [&](double alpha, double ref) {
     return grid_chunks<StateStats>(
         n, [&](Eigen::Index lo, Eigen::Index hi) { return update_cells(pp, vp, sp, wp, hp, lo, hi, alpha, ref, cap); });
   };
-  // The state's sums from an update pass about ref; where Σ (v − ref)² ≫ Σ (v − δ)² leaves too
-  // few digits, taken again about the new δ (rare: ref is the previous δ).
-  auto take_state = [&](const StateStats& st, double ref) {
-    if (!sums_about(st, ref)) sums_about(update_pass(0.0, delta), delta);
+  // Pass D without a step (α = 0): the state's sums about ref, against w = 0 (each line segment
+  // against a line of zeros, so that no w grid is needed).
+  auto state_pass = [&](double ref) {
+    return grid_chunks<StateStats>(n, [&](Eigen::Index lo, Eigen::Index hi) {
+      StateStats acc;
+      for (Eigen::Index a = lo; a < hi;) {
+        const Eigen::Index b = std::min(hi, (a / nx + 1) * nx);
+        acc.merge(update_cells(pp + a, vp + a, sp + a, zero_line.data(), hp + a, 0, b - a, 0.0, ref, cap));
+        a = b;
+      }
+      return acc;
+    });
   };
-  take_state(update_pass(0.0, delta), delta);
+  // The state's sums from an update pass about ref; where Σ (v − ref)² ≫ Σ (v − δ)² leaves too
+  // few digits, taken again about the new δ (rare: ref is the previous δ). The sums with w are
+  // linear in the reference and are moved to δ instead: w is not kept.
+  auto take_state = [&](const StateStats& st, double ref) {
+    if (sums_about(st, ref)) return;
+    StateStats again = state_pass(delta);
+    again.w_sum = st.w_sum, again.sw = st.sw, again.vw = st.vw - (delta - ref) * st.w_sum;
+    sums_about(again, delta);
+  };
+  take_state(state_pass(delta), delta);
 
   double tau = 1.0 / c0;  // trial step length (m/Pa → Pa per m of gap)
   double residual = 0.0;
@@ -483,19 +503,19 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     if (hs.periodic()) {
       // Passes C and D fused into the product's line stages (ElasticHalfSpace::displacement_by_rows):
       // each line of s is transformed while in cache, and each line of w used as it comes back.
-      const Eigen::Index nx = grid.nx;
       const auto threads = static_cast<std::size_t>(hs.row_threads());
       std::vector<StepStats> steps(threads);
       std::vector<StateStats> states(threads);
       hs.displacement_by_rows(
-          sp, wp,
+          sp, nullptr,
           [&](int t, Eigen::Index j) {
             steps[static_cast<std::size_t>(t)].merge(step_cells(pp, sp, step_v, j * nx, (j + 1) * nx, cap, c, delta));
           },
           [&](double den) { return descent = line_minimum(merged(steps), den); },
-          [&](int t, Eigen::Index j) {
+          [&](int t, Eigen::Index j, const double* w_line) {
+            const Eigen::Index a = j * nx;
             states[static_cast<std::size_t>(t)].merge(
-                update_cells(pp, vp, sp, wp, hp, j * nx, (j + 1) * nx, alpha, ref, cap));
+                update_cells(pp + a, vp + a, sp + a, w_line, hp + a, 0, nx, alpha, ref, cap));
           });
       if (descent) updated = merged(states);
     } else {
@@ -512,8 +532,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       tau *= 0.5;
       have_step = false;
       s.setZero();
-      w.setZero();
-      take_state(update_pass(0.0, delta), delta);
+      take_state(state_pass(delta), delta);
       continue;
     }
     take_state(updated, ref);

@@ -56,9 +56,10 @@ TEST_P(LineProduct, EqualsTheTwoDimensionalProductAndItsEnergy) {
         decided = e;
         return true;
       },
-      [&](int t, Eigen::Index j) {
+      [&](int t, Eigen::Index j, const double* u_line) {
         used_by[j] = t;
         ++used[j];
+        EXPECT_EQ(u_line, u.data() + j * c.nx) << "line " << j << ": the line of u itself";
       });
   EXPECT_NEAR(energy, energy_ref, 1e-12 * energy_ref);
   EXPECT_EQ(decided, energy);
@@ -71,6 +72,14 @@ TEST_P(LineProduct, EqualsTheTwoDimensionalProductAndItsEnergy) {
     ASSERT_GE(made_by[j], 0);
     ASSERT_LT(made_by[j], threads);
   }
+
+  // Without u the lines come in a buffer of the thread's and are the same values.
+  Eigen::ArrayXXd lines = Eigen::ArrayXXd::Zero(c.nx, c.ny);
+  const double energy_unkept = by_rows.displacement_by_rows(
+      s.data(), nullptr, [&](int, Eigen::Index) {}, [&](double) { return true; },
+      [&](int, Eigen::Index j, const double* u_line) { lines.col(j) = Eigen::Map<const Eigen::ArrayXd>(u_line, c.nx); });
+  EXPECT_EQ(energy_unkept, energy);
+  EXPECT_LE((lines - u_ref).abs().maxCoeff(), 1e-12 * u_ref.abs().maxCoeff());
   omp_set_num_threads(saved);
 }
 
@@ -89,7 +98,7 @@ TEST(LineProductDeclined, LeavesTheDisplacementUntouched) {
   int used = 0;
   const double energy = hs.displacement_by_rows(
       s.data(), u.data(), [](int, Eigen::Index) {}, [](double) { return false; },
-      [&](int, Eigen::Index) { ++used; });
+      [&](int, Eigen::Index, const double*) { ++used; });
   EXPECT_GT(energy, 0.0);
   EXPECT_EQ(used, 0);
   EXPECT_TRUE((u == 7.0).all());
