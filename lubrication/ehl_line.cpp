@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -157,10 +158,22 @@ class LineProblem {
       const double ep = fp.value, em = fm.value;
       const double gp = p(i + 1) - p(i), gm = p(i) - p(i - 1);
       const double poiseuille = (ep * gp - em * gm) / (dx_ * dx_);
-      // Second-order upwind; first order with roughness, where films close: extrapolated from a
-      // converging inlet over two nodes, the transport would drive a contact's film through zero.
-      const bool second_order = i >= 2 && !rough();
-      const double wedge = second_order ? (3.0 * w(i) - 4.0 * w(i - 1) + w(i - 2)) / (2.0 * dx_) : (w(i) - w(i - 1)) / dx_;
+      // The wedge d(ρ̄H)/dX at node i and its weights cw on w_{i−2} … w_{i+1}: second-order upwind
+      // on smooth surfaces; with roughness, where films close, through the limited upwind faces
+      // (ehl_roughness.h limited_mass_face: the unlimited scheme, extrapolated from a converging
+      // inlet over two nodes, would drive a contact's film through zero). First order at node 1.
+      double wedge;
+      std::array<double, 4> cw{};  // with roughness: ∂wedge/∂w_k, k = i − 2 … i + 1
+      if (rough()) {
+        const MassFace fo = limited_mass_face(w(i - 1), w(i), w(i + 1));
+        const MassFace fi = i >= 2 ? limited_mass_face(w(i - 2), w(i - 1), w(i)) : MassFace{w(i - 1), 0.0, 1.0, 0.0};
+        wedge = (fo.value - fi.value) / dx_;
+        cw = {-fi.d_prev / dx_, (fo.d_prev - fi.d_here) / dx_, (fo.d_here - fi.d_next) / dx_, fo.d_next / dx_};
+      } else if (i >= 2) {
+        wedge = (3.0 * w(i) - 4.0 * w(i - 1) + w(i - 2)) / (2.0 * dx_);
+      } else {
+        wedge = (w(i) - w(i - 1)) / dx_;
+      }
       const int row = i - 1;
       const double scale = c(row);
       const double r = -scale * (poiseuille - wedge);
@@ -189,20 +202,30 @@ class LineProblem {
       };
       d_eps_p = gp * (d_eps(i, fp.dc_a, fp.dm3_a) + d_eps(i + 1, fp.dc_b, fp.dm3_b)) -
                 gm * (d_eps(i - 1, fm.dc_a, fm.dm3_a) + d_eps(i, fm.dc_b, fm.dm3_b));
-      if (second_order)
+      // The wedge through ρ̄H at its nodes (∂(ρ̄H)_k/∂H0 = ρ̄_k for dw0). The smooth schemes' sums
+      // are written out as they were before the limited one joined them: Newton's path on a light,
+      // hydrodynamic contact (mixed_line_slow_test's film at a share of 1.5e-4) turns on their bits.
+      double dw0 = 0.0;
+      if (rough()) {
+        d_w.setZero();
+        for (int k = 0; k < 4; ++k)
+          if (cw[k] != 0.0) d_w += cw[k] * d_mass(i - 2 + k), dw0 += cw[k] * rho(i - 2 + k);
+      } else if (i >= 2) {
         d_w = (3.0 * d_mass(i) - 4.0 * d_mass(i - 1) + d_mass(i - 2)) / (2.0 * dx_);
-      else
+        dw0 = (3.0 * rho(i) - 4.0 * rho(i - 1) + rho(i - 2)) / (2.0 * dx_);
+      } else {
         d_w = (d_mass(i) - d_mass(i - 1)) / dx_;
+        dw0 = (rho(i) - rho(i - 1)) / dx_;
+      }
       Eigen::RowVectorXd d_poiseuille = d_eps_p / (dx_ * dx_);
       if (i + 1 <= n_ - 2) d_poiseuille(i) += ep / (dx_ * dx_) * dp(i);
       d_poiseuille(i - 1) -= (ep + em) / (dx_ * dx_) * dp(i - 1);
       if (i - 1 >= 1) d_poiseuille(i - 2) += em / (dx_ * dx_) * dp(i - 2);
       jacobian->row(row).head(np) = (-scale * db) * (d_poiseuille - d_w);
       (*jacobian)(row, row) += da * dp(row);
-      // ∂/∂H0: ∂m³_k/∂H0 = 3 m_k², ∂(ρ̄H)_k/∂H0 = ρ̄_k.
+      // ∂/∂H0: ∂m³_k/∂H0 = 3 m_k².
       auto de0 = [&](int k, double dm3) { return dm3 * 3.0 * mobile(k) * mobile(k); };
       const double dpois0 = (gp * (de0(i, fp.dm3_a) + de0(i + 1, fp.dm3_b)) - gm * (de0(i - 1, fm.dm3_a) + de0(i, fm.dm3_b))) / (dx_ * dx_);
-      const double dw0 = second_order ? (3.0 * rho(i) - 4.0 * rho(i - 1) + rho(i - 2)) / (2.0 * dx_) : (rho(i) - rho(i - 1)) / dx_;
       (*jacobian)(row, np) = -scale * db * (dpois0 - dw0);
     }
     // Load balance: ΔX Σ P = π/2 (trapezoidal rule, P = 0 at both ends).
@@ -248,19 +271,12 @@ void validate(const EhlLineContact& c, const EhlRoughness* rough, const EhlLineO
   if (rough->map) throw std::invalid_argument("EHL line contact: a roughness map is a point contact's (the line takes ridges)");
 }
 
-// Smooth (roughness null) or rough.
-EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roughness, const PiezoviscousLubricant& lubricant,
-                         const EhlLineOptions& options) {
-  validate(contact, roughness, options);
-  validate(lubricant);
-  const LineProblem problem(contact, roughness, lubricant, options);
-  const double radius = contact.reduced_radius_m, b = problem.half_width_m(), ph = problem.hertz_pressure_Pa();
-  const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (b * b * b * ph);
-
-  // Start: H0 placing the central film at the larger of Martin's rigid film and Pan–Hamrock's EHL
-  // estimate, and a semi-ellipse of the load's area over the wider of the Hertz contact and the
-  // rigid film's pressure zone √(2 R h) (in a light, hydrodynamic contact the pressure spreads
-  // over many Hertz widths); Newton corrects both.
+// The analytical start: H0 placing the central film at the larger of Martin's rigid film and
+// Pan–Hamrock's EHL estimate, and a semi-ellipse of the load's area over the wider of the Hertz
+// contact and the rigid film's pressure zone √(2 R h) (in a light, hydrodynamic contact the pressure
+// spreads over many Hertz widths); Newton corrects both.
+Eigen::VectorXd analytical_start(const LineProblem& problem, const EhlLineContact& contact, const PiezoviscousLubricant& lubricant) {
+  const double radius = contact.reduced_radius_m, b = problem.half_width_m();
   const reference::LineContactGroups g =
       reference::line_contact_groups(contact.load_per_length_N_per_m, radius, contact.reduced_modulus_Pa,
                                      contact.mean_speed_m_per_s, lubricant.viscosity_Pa_s, lubricant.pressure_viscosity_per_Pa);
@@ -268,7 +284,7 @@ EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roug
       std::max(reference::martin_minimum_film_m(contact.load_per_length_N_per_m, radius, contact.mean_speed_m_per_s,
                                                 lubricant.viscosity_Pa_s),
                g.material > 0.0 ? reference::pan_hamrock_central_film(g) * radius : 0.0);
-  const int n = problem.nodes(), np = n - 2;
+  const int np = problem.pressure_unknowns();
   Eigen::VectorXd u = Eigen::VectorXd::Zero(problem.unknowns());
   const double spread = std::max(1.0, std::sqrt(2.0 * radius * h_start_m) / b);
   for (int i = 1; i <= np; ++i) {
@@ -281,10 +297,66 @@ EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roug
   // Keep the starting film open everywhere (above the contact film with roughness).
   const double lowest = problem.film(u).minCoeff(), floor = problem.contact_floor();
   if (lowest <= floor) u(np) += 0.5 * h_start_m / problem.film_scale_m() + floor - lowest;
+  return u;
+}
+
+// Grids of at least this many nodes start from the answer on a grid about half as fine (nested
+// iteration): Newton then starts next to its answer, where from the analytical start a fine grid's
+// thin films crawled (the thick film over boundary layers on 1601 nodes: 772 Newton steps).
+constexpr int kNestedMinNodes = 801;
+
+struct ElasticSolve {
+  Eigen::VectorXd u;
+  ehl::SolveOutcome outcome;
+};
+
+// The contact without its hardness (the cap is lowered afterwards, on the finest grid alone), from
+// the coarser grid's answer where there is one that converged, else from the analytical start.
+ElasticSolve solve_elastic(const LineProblem& problem, const EhlLineContact& contact, const EhlRoughness* roughness,
+                           const PiezoviscousLubricant& lubricant, const EhlLineOptions& options, double lambda) {
+  ElasticSolve out;
+  if (options.nodes >= kNestedMinNodes) {
+    EhlLineOptions coarse = options;
+    coarse.nodes = (options.nodes + 1) / 2;
+    const LineProblem coarse_problem(contact, roughness, lubricant, coarse);
+    const ElasticSolve c = solve_elastic(coarse_problem, contact, roughness, lubricant, coarse, lambda);
+    if (c.outcome.newton.converged) {
+      // Pressures linear in X between the coarse nodes (0 at both ends), H0 as it is (Hertz units).
+      const Eigen::VectorXd pc = coarse_problem.pressures(c.u);
+      const int np = problem.pressure_unknowns();
+      Eigen::VectorXd start(problem.unknowns());
+      for (int i = 1; i <= np; ++i) {
+        const double at = (problem.x()(i) - coarse_problem.x()(0)) / coarse_problem.dx();
+        const int k = std::clamp(static_cast<int>(std::floor(at)), 0, coarse_problem.nodes() - 2);
+        const double t = at - k;
+        start(i - 1) = (1.0 - t) * pc(k) + t * pc(k + 1);
+      }
+      start(np) = c.u(coarse_problem.pressure_unknowns());
+      out.outcome = ehl::solve_with_continuation(problem, lambda, start, out.u, options);
+      out.outcome.iterations += c.outcome.iterations;
+      if (out.outcome.newton.converged) return out;
+    }
+  }
+  const int spent = out.outcome.iterations;
+  out.outcome = ehl::solve_with_continuation(problem, lambda, analytical_start(problem, contact, lubricant), out.u, options);
+  out.outcome.iterations += spent;
+  return out;
+}
+
+// Smooth (roughness null) or rough.
+EhlLineResult solve_line(const EhlLineContact& contact, const EhlRoughness* roughness, const PiezoviscousLubricant& lubricant,
+                         const EhlLineOptions& options) {
+  validate(contact, roughness, options);
+  validate(lubricant);
+  const LineProblem problem(contact, roughness, lubricant, options);
+  const double radius = contact.reduced_radius_m, b = problem.half_width_m(), ph = problem.hertz_pressure_Pa();
+  const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (b * b * b * ph);
+  const int n = problem.nodes(), np = n - 2;
 
   EhlLineResult result;
-  const Eigen::VectorXd start = u;
-  ehl::SolveOutcome solved = ehl::solve_with_continuation(problem, lambda, start, u, options);
+  ElasticSolve elastic = solve_elastic(problem, contact, roughness, lubricant, options, lambda);
+  Eigen::VectorXd& u = elastic.u;
+  ehl::SolveOutcome& solved = elastic.outcome;
   // With a hardness the elastic answer first, then the cap lowered onto it.
   if (solved.newton.converged && roughness) ehl::lower_cap(problem, lambda, roughness->hardness_Pa / ph, u, options, solved);
   const ehl::NewtonOutcome& outcome = solved.newton;

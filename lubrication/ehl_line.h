@@ -41,8 +41,11 @@
 // surfaces' transport is left (Hu & Zhu's reduced equation, d(ρH)/dX = 0) and the pressure there is
 // the contact's, whatever holds the surfaces together. ε at a half node is then the mean of ρ̄/(η̄λ)
 // times the harmonic mean of (H − H_c)₊³, so that no flow passes a face once either side has closed
-// (ehl_roughness.h: face_flow), and the wedge term is first-order upwind (second order extrapolates a
-// converging inlet through zero at a contact's edge); Newton's steps may close a film to H_c/2 in one
+// (ehl_roughness.h: face_flow), and the wedge term takes the upwind faces' mass with a limited slope
+// (limited_mass_face: second order where the film is smooth, first-order upwind where it closes — the
+// unlimited second-order upwind extrapolates a converging inlet through zero at a contact's edge;
+// until 2026-12-02 it was first order throughout, its films ≈ 7 % thick at 801 nodes near the
+// layers, which moved the Stribeck transition with the grid); Newton's steps may close a film to H_c/2 in one
 // step, and the continuation in λ also runs from a thicker film (ehl_newton.h). The film settles onto
 // the layers only asymptotically; a node whose film lies within EhlRoughness::contact_margin_m of them
 // is in contact (EhlLineResult::contact_nodes) — its film, what the transport leaves (≈ 4.5–6 nm in
