@@ -21,6 +21,7 @@
 #include <numbers>
 
 #include "lubrication/ehl_line.h"
+#include "lubrication/ehl_roughness.h"
 #include "lubrication/ehl_point.h"
 #include "lubrication/flow_factors.h"
 #include "lubrication/reynolds.h"
@@ -170,6 +171,27 @@ void BM_EhlLine(benchmark::State& state) {
 }
 BENCHMARK(BM_EhlLine)->Args({201, 300000})->Args({401, 300000})->Args({401, 3000000})->Args({801, 3000000})
     ->Unit(benchmark::kSecond)->Iterations(1);
+
+// The same rollers at 3e5 N/m with boundary layers (lubrication/ehl_line.h, mixed: a flat stationary
+// profile, 5 nm layers) at u_m = 0.5 mm/s, where 0.92 of the load is in contact on 801 nodes — the
+// transition, the hardest speed of a Stribeck study — on N nodes, each grid of 801 and more started
+// from the answer on a grid half as fine (nested iteration).
+void BM_EhlLineMixed(benchmark::State& state) {
+  const double w = 3e5;
+  lub::PiezoviscousLubricant oil;
+  oil.viscosity_Pa_s = 0.04;
+  oil.pressure_viscosity_per_Pa = 2.2e-8;
+  lub::EhlLineOptions o;
+  o.nodes = static_cast<int>(state.range(0));
+  const double b = std::sqrt(8.0 * w * 0.01 / (std::numbers::pi * 2.26e11));
+  const lub::EhlRoughness flat = lub::cosine_ridges(-6.0 * b, 2.0 * b, 0.0, 1.0, 4001);
+  lub::EhlLineResult r;
+  for (auto _ : state) r = lub::solve_ehl_line({w, 0.01, 2.26e11, 5e-4}, flat, oil, o);
+  if (!r.converged) state.SkipWithError(r.message.c_str());
+  state.counters["newton_iterations"] = r.iterations;
+  state.counters["contact_load_share"] = r.contact_load_share;
+}
+BENCHMARK(BM_EhlLineMixed)->Arg(801)->Arg(1601)->Arg(3201)->Unit(benchmark::kSecond)->Iterations(1);
 
 // EHL point contact (lubrication/ehl_point.h): the ball on a disc of tests/lubrication/ball_on_disc.h
 // (R = 9.525 mm, E' = 2.31e11 Pa, η0 = 0.04 Pa·s, α = 2e-8 1/Pa, Roelands and Dowson–Higginson,
