@@ -132,15 +132,12 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
   if (gap::verdict_name(d.verdict) == "none" && std::isfinite(d.verdict.confidence))
     md << " (bootstrap agreement " << gap::confidence_text(d.verdict.confidence_bootstrap) << " times the reliability of \"none\")";
   if (!d.verdict.alike_mechanisms.empty()) {
-    std::string alike;
-    for (const auto& a : d.verdict.alike_mechanisms) alike += (alike.empty() ? "" : ", ") + a;
-    md << " (half the bootstrap agreement " << gap::confidence_text(d.verdict.confidence_bootstrap) << ": " << alike
+    md << " (half the bootstrap agreement " << gap::confidence_text(d.verdict.confidence_bootstrap) << ": "
+       << numerics::join(d.verdict.alike_mechanisms, ", ")
        << " explains the gap as well, by a mechanism constant-speed runs at one normal load cannot tell from the verdict's)";
   }
   if (!d.verdict.refitted.empty()) {
-    std::string refitted;
-    for (const auto& r : d.verdict.refitted) refitted += (refitted.empty() ? "" : ", ") + r;
-    md << " (refitted in every resample: " << refitted << "; with every fit held: " << gap::confidence_text(d.verdict.confidence_fixed_fits) << ")";
+    md << " (refitted in every resample: " << numerics::join(d.verdict.refitted, ", ") << "; with every fit held: " << gap::confidence_text(d.verdict.confidence_fixed_fits) << ")";
   }
   md << ".\n\n";
   if (!d.proposed_tests.empty()) {
@@ -381,8 +378,7 @@ void run_selftest(const SelftestArgs& args) {
   std::printf("%-12s %-24s %-18s %-40s %10s %10s %7s %6s %22s\n", "generator", "true effect", "model has", "verdict", "gap before", "gap after",
               "floors", "conf", "test block before/after");
   for (const auto& row : r.rows) {
-    std::string has;
-    for (const auto& e : row.c.model_effects) has += (has.empty() ? "" : "+") + e;
+    const std::string has = numerics::join(row.c.model_effects, "+");
     std::printf("%-12s %-24s %-18s %-40s %10.4f %10.4f %7.1f %5.0f%% %10.4f/%-11.4f%s\n", row.c.generator.c_str(), row.c.true_effect.c_str(),
                 has.empty() ? "-" : has.c_str(), row.verdict.c_str(), row.heldout_gap_before, row.heldout_gap_after, row.signal_floors(),
                 100.0 * row.confidence,

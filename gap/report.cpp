@@ -5,15 +5,12 @@
 #include <cstdio>
 
 #include "gap/discriminate.h"
+#include "numerics/format.h"
 
 namespace tribo::gap {
 namespace {
 
-std::string join(const std::vector<std::string>& v, const std::string& sep) {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : sep) + x;
-  return s;
-}
+using numerics::join;
 
 nlohmann::json fit_json(const FitTermination& f) {
   return {{"termination", f.termination}, {"iterations", f.iterations}, {"max_iterations", f.max_iterations}, {"wall_s", f.wall_s}};

@@ -21,4 +21,10 @@ std::string shortest(double v) {
   return std::string(buf, end);
 }
 
+std::string join(const std::vector<std::string>& parts, const std::string& separator) {
+  std::string out;
+  for (const std::string& p : parts) out += (out.empty() ? "" : separator) + p;
+  return out;
+}
+
 }  // namespace tribo::numerics

@@ -1,8 +1,9 @@
-// How a number is printed in reports, labels and CSV fields — one rule for every library and
-// command.
+// How a number — or a list of names — is printed in reports, labels and CSV fields: one rule for
+// every library and command.
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace tribo::numerics {
 
@@ -14,5 +15,8 @@ std::string fmt(double v, const char* format = "%.4g");
 // "inf", "-inf"): the numbers of error and status messages, where std::to_string's fixed six
 // decimals print a height of -2e-7 m as "-0.000000".
 std::string shortest(double v);
+
+// `parts` with `separator` between them ("" for none): effect lists ("a+b"), names in prose ("a, b").
+std::string join(const std::vector<std::string>& parts, const std::string& separator);
 
 }  // namespace tribo::numerics
