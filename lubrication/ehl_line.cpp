@@ -158,8 +158,8 @@ class LineProblem {
       const double ep = fp.value, em = fm.value;
       const double gp = p(i + 1) - p(i), gm = p(i) - p(i - 1);
       const double poiseuille = (ep * gp - em * gm) / (dx_ * dx_);
-      // The wedge d(ρ̄H)/dX at node i and its weights cw on w_{i−2} … w_{i+1}: second-order upwind
-      // on smooth surfaces; with roughness, where films close, through the limited upwind faces
+      // The wedge d(ρ̄H)/dX at node i: second-order upwind on smooth surfaces; with roughness, where
+      // films close, through the limited upwind faces, with its weights cw on w_{i−2} … w_{i+1}
       // (ehl_roughness.h limited_mass_face: the unlimited scheme, extrapolated from a converging
       // inlet over two nodes, would drive a contact's film through zero). First order at node 1.
       double wedge;
