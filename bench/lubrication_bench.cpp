@@ -24,6 +24,7 @@
 #include "lubrication/ehl_roughness.h"
 #include "lubrication/ehl_point.h"
 #include "lubrication/flow_factors.h"
+#include "lubrication/reference/ehl_film.h"
 #include "lubrication/reynolds.h"
 
 namespace {
@@ -156,11 +157,15 @@ BENCHMARK(BM_FlowFactors)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRea
 // Dowson–Higginson) at w = 3e5 N/m (W = 1.3e-4, p_H ≈ 1.04 GPa) and 3e6 N/m (W = 1.3e-3,
 // p_H ≈ 3.3 GPa), on N nodes; counters: Newton iterations and continuation steps. Each Newton step
 // factorises the dense (N + 1)² Jacobian: O(N³).
-void BM_EhlLine(benchmark::State& state) {
-  const double w = static_cast<double>(state.range(1));
+lub::PiezoviscousLubricant roller_oil() {
   lub::PiezoviscousLubricant oil;
   oil.viscosity_Pa_s = 0.04;
   oil.pressure_viscosity_per_Pa = 2.2e-8;
+  return oil;
+}
+void BM_EhlLine(benchmark::State& state) {
+  const double w = static_cast<double>(state.range(1));
+  const lub::PiezoviscousLubricant oil = roller_oil();
   lub::EhlLineOptions o;
   o.nodes = static_cast<int>(state.range(0));
   lub::EhlLineResult r;
@@ -178,12 +183,10 @@ BENCHMARK(BM_EhlLine)->Args({201, 300000})->Args({401, 300000})->Args({401, 3000
 // from the answer on a grid half as fine (nested iteration).
 void BM_EhlLineMixed(benchmark::State& state) {
   const double w = 3e5;
-  lub::PiezoviscousLubricant oil;
-  oil.viscosity_Pa_s = 0.04;
-  oil.pressure_viscosity_per_Pa = 2.2e-8;
+  const lub::PiezoviscousLubricant oil = roller_oil();
   lub::EhlLineOptions o;
   o.nodes = static_cast<int>(state.range(0));
-  const double b = std::sqrt(8.0 * w * 0.01 / (std::numbers::pi * 2.26e11));
+  const double b = lub::reference::hertz_line_half_width_m(w, 0.01, 2.26e11);
   const lub::EhlRoughness flat = lub::cosine_ridges(-6.0 * b, 2.0 * b, 0.0, 1.0, 4001);
   lub::EhlLineResult r;
   for (auto _ : state) r = lub::solve_ehl_line({w, 0.01, 2.26e11, 5e-4}, flat, oil, o);

@@ -32,8 +32,9 @@ class NestedParallelism {
 };
 
 // The tests that would tell the verdict's candidate from each one named beside it (Verdict::beside,
-// discriminate.h) and can decide between them (can_decide), around the bundle's constant-speed runs: their driven speeds and median length
-// (1–5 s), at the rig generator's friction noise of 1 % of μk W. Drive histories are left out.
+// discriminate.h) and can decide between them (can_decide), around the bundle's constant-speed
+// runs: their driven speeds and median length (1–5 s), at the rig generator's friction noise of 1 %
+// of μk W. Drive histories are left out.
 std::vector<ProposedSeparation> propose_tests(const ExperimentBundle& bundle, const Candidate& chosen, const std::vector<Candidate>& candidates,
                                               const Verdict& verdict, std::uint64_t seed) {
   std::vector<ProposedSeparation> out;

@@ -315,11 +315,13 @@ struct ElasticSolve {
 ElasticSolve solve_elastic(const LineProblem& problem, const EhlLineContact& contact, const EhlRoughness* roughness,
                            const PiezoviscousLubricant& lubricant, const EhlLineOptions& options, double lambda) {
   ElasticSolve out;
+  int spent = 0;  // Newton iterations of the coarser grids and of a failed attempt from them
   if (options.nodes >= kNestedMinNodes) {
     EhlLineOptions coarse = options;
     coarse.nodes = (options.nodes + 1) / 2;
     const LineProblem coarse_problem(contact, roughness, lubricant, coarse);
     const ElasticSolve c = solve_elastic(coarse_problem, contact, roughness, lubricant, coarse, lambda);
+    spent = c.outcome.iterations;
     if (c.outcome.newton.converged) {
       // Pressures linear in X between the coarse nodes (0 at both ends), H0 as it is (Hertz units).
       const Eigen::VectorXd pc = coarse_problem.pressures(c.u);
@@ -333,11 +335,11 @@ ElasticSolve solve_elastic(const LineProblem& problem, const EhlLineContact& con
       }
       start(np) = c.u(coarse_problem.pressure_unknowns());
       out.outcome = ehl::solve_with_continuation(problem, lambda, start, out.u, options);
-      out.outcome.iterations += c.outcome.iterations;
+      out.outcome.iterations += spent;
       if (out.outcome.newton.converged) return out;
+      spent = out.outcome.iterations;
     }
   }
-  const int spent = out.outcome.iterations;
   out.outcome = ehl::solve_with_continuation(problem, lambda, analytical_start(problem, contact, lubricant), out.u, options);
   out.outcome.iterations += spent;
   return out;
