@@ -274,11 +274,25 @@ class PointProblem {
         const double gpx = s.p(east) - s.p(here), gmx = s.p(here) - s.p(west);
         const double gpy = s.p(north) - s.p(here), gmy = s.p(here) - s.p(south);
         const double poiseuille = (epx * gpx - emx * gmx) / (dx_ * dx_) + (epy * gpy - emy * gmy) / (dy_ * dy_);
-        // Second-order upwind; first order with roughness (ehl_line.h: extrapolated from a converging
-        // inlet over two nodes, the transport would drive a contact's film through zero).
-        const bool second_order = i >= 2 && !rough();
-        const double wedge = second_order ? (3.0 * s.w(here) - 4.0 * s.w(west) + s.w(node(i - 2, j))) / (2.0 * dx_)
-                                          : (s.w(here) - s.w(west)) / dx_;
+        // The wedge d(ρ̄H)/dX: second-order upwind on smooth surfaces; with roughness, where films
+        // close, through the limited upwind faces, cw its weights on w_{i−2} … w_{i+1}
+        // (ehl_roughness.h limited_mass_face: the unlimited scheme, extrapolated from a converging
+        // inlet over two nodes, would drive a contact's film through zero). First order at i = 1.
+        double wedge;
+        std::array<double, 4> cw{};  // ∂wedge/∂w_k, k = i − 2 … i + 1
+        if (rough()) {
+          const MassFace fo = limited_mass_face(s.w(west), s.w(here), s.w(east));
+          const MassFace fi = i >= 2 ? limited_mass_face(s.w(node(i - 2, j)), s.w(west), s.w(here)) : MassFace{s.w(west), 0.0, 1.0, 0.0};
+          wedge = (fo.value - fi.value) / dx_;
+          cw = {-fi.d_prev / dx_, (fo.d_prev - fi.d_here) / dx_, (fo.d_here - fi.d_next) / dx_, fo.d_next / dx_};
+        } else if (i >= 2) {
+          wedge = (3.0 * s.w(here) - 4.0 * s.w(west) + s.w(node(i - 2, j))) / (2.0 * dx_);
+          const double wx = 1.0 / (2.0 * dx_);
+          cw = {wx, -4.0 * wx, 3.0 * wx, 0.0};
+        } else {
+          wedge = (s.w(here) - s.w(west)) / dx_;
+          cw = {0.0, -1.0 / dx_, 1.0 / dx_, 0.0};
+        }
         const double scale = c(row);
         const double r = -scale * (poiseuille - wedge);
         // Cavitation: P ≥ 0, −c R ≥ 0, P R = 0 as φ(P, −c R) = 0 (complementarity.h).
@@ -294,16 +308,15 @@ class PointProblem {
           int i, j;
           double through_c, through_m3, through_mass;  // coefficients of ∂c_k, ∂m³_k and −∂(ρ̄H)_k
         };
-        const double wx = 1.0 / (2.0 * dx_);
         const double ix2 = 1.0 / (dx_ * dx_), iy2 = 1.0 / (dy_ * dy_);
         Term terms[7] = {{i, j, (fpx.dc_a * gpx - fmx.dc_b * gmx) * ix2 + (fpy.dc_a * gpy - fmy.dc_b * gmy) * iy2,
                           (fpx.dm3_a * gpx - fmx.dm3_b * gmx) * ix2 + (fpy.dm3_a * gpy - fmy.dm3_b * gmy) * iy2,
-                          second_order ? 3.0 * wx : 1.0 / dx_},
-                         {i + 1, j, fpx.dc_b * gpx * ix2, fpx.dm3_b * gpx * ix2, 0.0},
-                         {i - 1, j, -fmx.dc_a * gmx * ix2, -fmx.dm3_a * gmx * ix2, second_order ? -4.0 * wx : -1.0 / dx_},
+                          cw[2]},
+                         {i + 1, j, fpx.dc_b * gpx * ix2, fpx.dm3_b * gpx * ix2, cw[3]},
+                         {i - 1, j, -fmx.dc_a * gmx * ix2, -fmx.dm3_a * gmx * ix2, cw[1]},
                          {i, j + 1, fpy.dc_b * gpy * iy2, fpy.dm3_b * gpy * iy2, 0.0},
                          {i, j - 1, -fmy.dc_a * gmy * iy2, -fmy.dm3_a * gmy * iy2, 0.0},
-                         {i - 2, j, 0.0, 0.0, second_order ? wx : 0.0},
+                         {i - 2, j, 0.0, 0.0, cw[0]},
                          {-1, -1, 0.0, 0.0, 0.0}};
         double d_h0 = 0.0;
         for (const Term& t : terms) {

@@ -1,12 +1,13 @@
 // Mixed lubrication of a point contact (lubrication/ehl_point.h with an EhlRoughness), the cases that
 // need fine grids: transverse ridges crawling in full contact against Westergaard's solution, the
-// contact lifting off as the speed rises, and a thick film that is the smooth contact's.
+// contact lifting off as the speed rises, and a thick film that is the smooth contact's plus its layers.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 
+#include "lubrication/piezoviscous.h"
 #include "tests/lubrication/ehl_point_mixed.h"
 
 namespace tribo::lubrication {
@@ -74,13 +75,14 @@ TEST(EhlPointMixedSlow, WavyBallCrawlingIsJohnsonGreenwoodHigginsonsFullContactO
 }
 
 // The Stribeck transition of the mixed model on 41²: the load the contact carries falls as the speed
-// rises — nearly all of it at 1 µm/s, part at 10 and 100 µm/s, none by 1 mm/s, where every film is
-// open past the margin (measured: 0.997, 0.805, 0.031, 0). The smooth solver on the same grid stalls
+// rises — nearly all of it at 1 µm/s, part at 30 and 100 µm/s, none by 1 mm/s, where every film is
+// open past the margin (measured: 0.998, 0.667, 0.038, 0; with the first-order wedge, until
+// 2026-12-02, the films near the layers were thicker and the share at 10 µm/s was 0.805, now 0.986). The smooth solver on the same grid stalls
 // below 0.1 m/s (its side lobes close through zero); the boundary layers hold them.
 TEST(EhlPointMixedSlow, ContactLiftsOffAsTheSpeedRises) {
   const EhlRoughness flat = flat_surface();
   double last = 1.0;
-  for (const double u : {1e-6, 1e-5, 1e-4, 1e-3}) {
+  for (const double u : {1e-6, 3e-5, 1e-4, 1e-3}) {
     const EhlPointResult r = solve_ehl_point(ball_contact(kCrawlLoad_N, u), flat, ball_oil(), ball_grid(41));
     ASSERT_TRUE(r.converged) << "u = " << u << ": " << r.message;
     std::printf("u_m %g m/s: contact share %.4f, %d nodes, central film %.3g m, minimum %.3g m\n", u, r.contact_load_share,
@@ -89,7 +91,7 @@ TEST(EhlPointMixedSlow, ContactLiftsOffAsTheSpeedRises) {
     if (u == 1e-6) {
       EXPECT_GT(r.contact_load_share, 0.99);
     }
-    if (u == 1e-5 || u == 1e-4) {
+    if (u == 3e-5 || u == 1e-4) {
       EXPECT_GT(r.contact_load_share, 0.01) << "u = " << u;
       EXPECT_LT(r.contact_load_share, 0.9) << "u = " << u;
     }
@@ -101,31 +103,35 @@ TEST(EhlPointMixedSlow, ContactLiftsOffAsTheSpeedRises) {
   }
 }
 
-// A film 30 times the boundary layers (0.5 m/s: ≈ 0.15 µm) is the smooth contact's but for the
-// rough contact's first-order wedge: the central film's difference falls with the spacing (measured
-// +14 % on 129², +7.7 % on 257²; the minimum film's +16 % and +10 %), the peak pressure within 1 %
-// (+0.6 %, +0.2 %).
-TEST(EhlPointMixedSlow, ThickFilmIsTheSmoothContactsToTheFirstOrderWedge) {
+// A film 30 times the boundary layers (0.5 m/s: ≈ 0.15 µm) is the smooth contact's plus the layers,
+// carried through: they pass no pressure flow, so in the inlet, where ρ̄ ≈ 1, the film above them
+// solves the smooth contact's problem and the flux grows by u_m H_c; at the centre, where the
+// pressure flow vanishes, ρ̄_c H carries the flux, so H − H_smooth = H_c/ρ̄_c (4.14 nm at the peak
+// pressure, 0.84 GPa, at the centre) — to within what the inlet's pressure does to ρ̄ there
+// (measured 4.32 nm on 257², +4 %; the tolerance 10 %). The smooth film by Richardson from 129² and 257² at its second order
+// (ehl_point_slow_test.cpp: observed 1.9–2.0); the rough one, through the limited wedge, is within
+// 0.3 % on both (measured 0.09 %; the first-order wedge's was 14 % thick on 129², 7.7 % on 257²).
+TEST(EhlPointMixedSlow, ThickFilmIsTheSmoothContactsPlusItsBoundaryLayers) {
   const EhlPointContact c = ball_contact(kCrawlLoad_N, 0.5);
-  double previous = 0.0;
-  for (const int n : {129, 257}) {
-    const EhlPointResult smooth = solve_ehl_point(c, ball_oil(), ball_grid(n));
-    const EhlPointResult rough = solve_ehl_point(c, flat_surface(), ball_oil(), ball_grid(n));
-    ASSERT_TRUE(smooth.converged) << smooth.message;
-    ASSERT_TRUE(rough.converged) << rough.message;
-    const double central = rough.central_film_m / smooth.central_film_m - 1.0, minimum = rough.minimum_film_m / smooth.minimum_film_m - 1.0;
-    std::printf("%d²: central film %+.3f, minimum %+.3f, peak pressure %+.4f against the smooth contact\n", n, central, minimum,
-                rough.max_pressure_Pa / smooth.max_pressure_Pa - 1.0);
-    EXPECT_EQ(rough.contact_nodes, 0);
-    EXPECT_GT(central, 0.0);
-    EXPECT_LT(central, 0.2);
-    EXPECT_LT(std::abs(minimum), 0.2);
-    EXPECT_NEAR(rough.max_pressure_Pa / smooth.max_pressure_Pa, 1.0, 0.01);
-    if (previous > 0.0) {
-      EXPECT_LT(central, 0.7 * previous);
-    }
-    previous = central;
+  const EhlRoughness flat = flat_surface();
+  EhlPointResult smooth[2], rough[2];
+  for (int k = 0; k < 2; ++k) {
+    const int n = k == 0 ? 129 : 257;
+    smooth[k] = solve_ehl_point(c, ball_oil(), ball_grid(n));
+    rough[k] = solve_ehl_point(c, flat, ball_oil(), ball_grid(n));
+    ASSERT_TRUE(smooth[k].converged) << smooth[k].message;
+    ASSERT_TRUE(rough[k].converged) << rough[k].message;
+    EXPECT_EQ(rough[k].contact_nodes, 0);
+    EXPECT_NEAR(rough[k].max_pressure_Pa / smooth[k].max_pressure_Pa, 1.0, 0.01);
   }
+  const double smooth_limit = smooth[1].central_film_m + (smooth[1].central_film_m - smooth[0].central_film_m) / 3.0;
+  const double centre_density = density_ratio(ball_oil(), rough[1].max_pressure_Pa).ratio;
+  const double expected = flat.contact_film_m / centre_density, excess = rough[1].central_film_m - smooth_limit;
+  const double refined = rough[1].central_film_m / rough[0].central_film_m - 1.0;
+  std::printf("central film: smooth → %.4f nm (Richardson), rough %.4f nm on 257² (%+.5f from 129²); excess %.3f nm, H_c/ρ̄_c %.3f nm\n",
+              smooth_limit * 1e9, rough[1].central_film_m * 1e9, refined, excess * 1e9, expected * 1e9);
+  EXPECT_NEAR(excess / expected, 1.0, 0.1);
+  EXPECT_LT(std::abs(refined), 0.003);
 }
 
 }  // namespace
