@@ -32,12 +32,20 @@ double inverse_distance_antiderivative(double s, double t) {
   return (s == 0.0 ? 0.0 : s * std::asinh(t / std::abs(s))) + (t == 0.0 ? 0.0 : t * std::asinh(s / std::abs(t)));
 }
 
+// The wedge term on rough surfaces: through limited upwind faces (second order where the film is
+// smooth: the answer's), or first-order upwind — the start a coarser grid gives a finer one in the
+// nested iteration. On the coarse grids of a rough map crawling (17², 33² under a 129² solve) Newton
+// stalled with the limited wedge at every λ of the continuation and each finer grid fell back to its
+// own continuation (examples/ehl-rough-ball-map.toml 12 s, capped at 0.7 GPa 50 s); with first-order
+// starts 2 s and 3 s, the same answer (2026-12-02).
+enum class RoughWedge { limited, first_order };
+
 // The discrete problem in Hertz units (header): unknowns P at the interior nodes, then H0.
 class PointProblem {
  public:
   PointProblem(const EhlPointContact& c, const EhlRoughness* rough, const PiezoviscousLubricant& l, const EhlPointOptions& o,
-               bool dense)
-      : lub_(l), complementarity_(o.complementarity), dense_(dense), krylov_(o.krylov), tolerance_(o.tolerance), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
+               bool dense, RoughWedge wedge)
+      : lub_(l), complementarity_(o.complementarity), dense_(dense), wedge_(wedge), krylov_(o.krylov), tolerance_(o.tolerance), nx_(o.nodes_x), ny_(o.nodes_y), dx_((o.outlet_over_radius - o.inlet_over_radius) / (o.nodes_x - 1)),
         dy_(2.0 * o.side_over_radius / (o.nodes_y - 1)), symmetric_(o.symmetric_in_y), first_row_(symmetric_ ? o.nodes_y / 2 : 1) {
     a_ = reference::hertz_point_radius_m(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
     ph_ = reference::hertz_point_peak_pressure_Pa(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa);
@@ -280,7 +288,10 @@ class PointProblem {
         // inlet over two nodes, would drive a contact's film through zero). First order at i = 1.
         double wedge;
         std::array<double, 4> cw{};  // ∂wedge/∂w_k, k = i − 2 … i + 1
-        if (rough()) {
+        if (rough() && wedge_ == RoughWedge::first_order) {
+          wedge = (s.w(here) - s.w(west)) / dx_;
+          cw = {0.0, -1.0 / dx_, 1.0 / dx_, 0.0};
+        } else if (rough()) {
           const MassFace fo = limited_mass_face(s.w(west), s.w(here), s.w(east));
           const MassFace fi = i >= 2 ? limited_mass_face(s.w(node(i - 2, j)), s.w(west), s.w(here)) : MassFace{s.w(west), 0.0, 1.0, 0.0};
           wedge = (fo.value - fi.value) / dx_;
@@ -420,6 +431,7 @@ class PointProblem {
   PiezoviscousLubricant lub_;
   Complementarity complementarity_;
   bool dense_;
+  RoughWedge wedge_;
   EhlPointKrylovOptions krylov_;
   double tolerance_;  // Newton's, on ‖F‖∞
   int nx_, ny_;
@@ -434,7 +446,7 @@ class PointProblem {
   Eigen::SparseMatrix<double, Eigen::RowMajor> near_kernel_;  // its entries within the reach (Krylov)
   std::unique_ptr<contact::ElasticHalfSpace> halfspace_;  // K by FFT (Krylov); its buffers make products non-const
   mutable int krylov_iterations_ = 0;
-  // The upwind wedge's weight on its own node: 3/2 second order, 1 first (with roughness).
+  // The upwind wedge's weight on its own node: 3/2 second order, 1 first or limited (with roughness).
   double wedge_diagonal() const { return rough() ? 1.0 : 1.5; }
   // The Krylov preconditioner: its matrix (UMFPACK's solve reads it), factors and their state.
   mutable SparseMatrix factored_;
@@ -607,7 +619,7 @@ void validate(const EhlPointContact& c, const EhlRoughness* rough, const EhlPoin
 
 // Smooth (roughness null) or rough.
 EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* roughness, const PiezoviscousLubricant& lubricant,
-                           const EhlPointOptions& given) {
+                           const EhlPointOptions& given, RoughWedge wedge = RoughWedge::limited) {
   validate(contact, roughness, given);
   EhlPointOptions options = given;
   if (roughness && roughness->map) options.symmetric_in_y = false;  // a map is not symmetric across the track
@@ -615,7 +627,7 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   const int interior = (options.nodes_x - 2) * (options.nodes_y - 2);
   const bool dense = options.linear_solver == EhlPointLinearSolver::dense_lu ||
                      (options.linear_solver == EhlPointLinearSolver::automatic && interior <= kLargestDenseSystem);
-  const PointProblem problem(contact, roughness, lubricant, options, dense);
+  const PointProblem problem(contact, roughness, lubricant, options, dense, wedge);
   const double radius = contact.reduced_radius_m, a = problem.radius_m(), ph = problem.hertz_pressure_Pa();
   const double lambda = 12.0 * lubricant.viscosity_Pa_s * contact.mean_speed_m_per_s * radius * radius / (a * a * a * ph);
 
@@ -667,7 +679,7 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
   // the flow at all, 29 and > 30 Newton steps against 11 and 20 with it). False, u kept, where the
   // coarser solve did not converge.
   const auto start_from_coarser = [&](const EhlRoughness* rough) {
-    const EhlPointResult c = solve_point(contact, rough, lubricant, coarser);
+    const EhlPointResult c = solve_point(contact, rough, lubricant, coarser, RoughWedge::first_order);
     if (!c.converged) return false;
     const bool flowed = rough && c.plastic_nodes > 0;
     const double cap = rough ? rough->hardness_Pa / ph : std::numeric_limits<double>::infinity();

@@ -53,10 +53,12 @@
 // Hu & Zhu's unified treatment as in ehl_line.h: ε = ρ̄ (H − H_c)₊³/(η̄λ), at a half node the mean of
 // ρ̄/(η̄λ) times the harmonic mean of (H − H_c)₊³ (ehl_roughness.h: face_flow — with the mean of ε a
 // node closed at a side edge of the contact drained into its open neighbour and Newton stalled at
-// every speed below 0.05 m/s on the tests' ball), the wedge first-order upwind, Newton's film limit
-// and continuation as the line's (ehl_newton.h). A node within EhlRoughness::contact_margin_m of the
-// layers is in contact. The first-order wedge costs accuracy on coarse grids: a thick film is 14 %
-// above the smooth solver's on 129², 7.7 % on 257² (tests/lubrication/ehl_point_mixed_slow_test.cpp).
+// every speed below 0.05 m/s on the tests' ball), the wedge through the upwind faces' mass with a
+// limited slope as the line's (ehl_roughness.h: limited_mass_face), Newton's film limit and
+// continuation as the line's (ehl_newton.h). A node within EhlRoughness::contact_margin_m of the
+// layers is in contact. A thick film is the smooth solver's plus the layers carried through, within
+// 0.1 % of the film on 129² (the first-order wedge, until 2026-12-02, was 14 % thick there;
+// tests/lubrication/ehl_point_mixed_slow_test.cpp).
 // At high loads a coarse grid may not resolve the contact at all: at 100 N on the tests' ball
 // (Moes M ≈ 540) 25² and 31² drive the film to zero at a node and end `not converged` (Newton
 // stalled), while 41² converges in 7 steps — refine when it says so. Where a coarse grid does
@@ -128,7 +130,8 @@ struct EhlPointOptions {
   // within Newton's reach where the Hertz start needs the continuation (129² on the tests' ball at
   // 10 N: 5 Newton steps; with Fischer–Burmeister 11, and 160 through the continuation from the
   // Hertz start). Where the coarser solve does not converge (its continuation limited to 4 solves),
-  // the Hertz start.
+  // the Hertz start. With roughness the coarser grids take the first-order upwind wedge, which holds
+  // on grids that do not resolve the surface (ehl_point.cpp: RoughWedge).
   bool start_from_coarser_grid = true;
   // Solve for the half |Y| ≥ 0 only (Hamrock & Dowson 1976 did the same): the smooth contact,
   // entrained along x, is symmetric in y, so a node and its mirror image share one unknown. Half
