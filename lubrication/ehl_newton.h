@@ -49,8 +49,9 @@ struct NewtonOutcome {
 // ACM TOMS 31, 2005: del · min(1, crate)) is: a quadratic step that cut ‖F‖∞ by 10⁶ needs no
 // further step to show that it has settled. The rate is the slower of the residual's and the steps'
 // (CVODE's crate is the steps'): where ‖F‖ falls faster than the error, the residual's alone
-// declared a capped crawling ball converged with its pressures 1.7e-5 p_H off (2026-12-02). Stalled when three steps in a row,
-// each cut short by the film limit (below), lowered ‖F‖₂ by less than 0.1 %.
+// declared a capped crawling ball converged with its pressures 1.7e-5 p_H off (2026-12-02).
+// Stalled when three steps in a row, each cut short by the film limit (below), lowered ‖F‖₂ by
+// less than 0.1 %.
 template <class Problem, class Options>
 NewtonOutcome newton(const Problem& problem, double lambda, Eigen::VectorXd& u, const Options& o) {
   NewtonOutcome out;
