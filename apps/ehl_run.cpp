@@ -300,6 +300,11 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
                                                     : lub::EhlPointLinearSolver::automatic;
       o.preconditioner_reach = static_cast<int>(s->integer("preconditioner_reach", o.preconditioner_reach, 0, 16));
       o.complementarity = complementarity(o.complementarity);
+      // "fitted": the extents from the film the solve expects (lubrication::fit_domain_to_film).
+      run.fitted_domain = s->choice("domain", "given", {"given", "fitted"}) == "fitted";
+      if (run.fitted_domain)
+        for (const char* key : {"inlet_over_radius", "outlet_over_radius", "side_over_radius"})
+          if (s->has(key)) s->fail(key, "domain = \"fitted\" sets the extents; give them or fit them, not both");
       o.inlet_over_radius = s->number("inlet_over_radius", o.inlet_over_radius);
       o.outlet_over_radius = s->number("outlet_over_radius", o.outlet_over_radius);
       o.side_over_radius = s->number("side_over_radius", o.side_over_radius, Range::positive);
@@ -328,6 +333,12 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   double domain_from = 0.0, domain_to = 0.0;
   int nodes_along_x = 0;
   if (run.point) {
+    if (run.fitted_domain)
+      input_guard(root, "solver", [&] {
+        run.point_options = lub::fit_domain_to_film(*run.point, run.lubricant, run.profile ? run.profile->surface.contact_film_m : 0.0,
+                                                    run.point_options);
+        return 0;
+      });
     if (!(run.point_options.inlet_over_radius < -1.0)) root.fail("solver.inlet_over_radius", "must lie before the contact, below -1");
     if (!(run.point_options.outlet_over_radius > 1.0)) root.fail("solver.outlet_over_radius", "must lie past the contact, above 1");
     if (!(run.point_options.side_over_radius > 1.0)) root.fail("solver.side_over_radius", "must reach past the contact, above 1");
@@ -620,7 +631,11 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
                  {"reduced_modulus_Pa", c.reduced_modulus_Pa},
                  {"mean_speed_m_per_s", c.mean_speed_m_per_s},
                  {"nodes_x", run.point_options.nodes_x},
-                 {"nodes_y", run.point_options.nodes_y}};
+                 {"nodes_y", run.point_options.nodes_y},
+                 {"domain", run.fitted_domain ? "fitted" : "given"},
+                 {"inlet_over_radius", run.point_options.inlet_over_radius},
+                 {"outlet_over_radius", run.point_options.outlet_over_radius},
+                 {"side_over_radius", run.point_options.side_over_radius}};
   j["inputs"].update(lubricant_inputs(run));
   if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
   if (run.profile) j["inputs"]["profile"] = profile_inputs(*run.profile);

@@ -27,6 +27,7 @@ struct EhlRun {
   // geometry = "point": a ball on a flat (ehl_point.h); `contact` then unused.
   std::optional<lubrication::EhlPointContact> point;
   lubrication::EhlPointOptions point_options;
+  bool fitted_domain = false;  // [solver] domain = "fitted": point_options' extents from the expected film
   double sliding_speed_m_per_s = 0.0;  // u1 − u2 (the traction's; the film depends on u_m only)
   lubrication::PiezoviscousLubricant lubricant;
   double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film

@@ -769,6 +769,26 @@ EhlPointResult solve_point(const EhlPointContact& contact, const EhlRoughness* r
 
 }  // namespace
 
+EhlPointOptions fit_domain_to_film(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant, double contact_film_m,
+                                   EhlPointOptions given) {
+  validate(contact, nullptr, given);
+  validate(lubricant);
+  if (!(contact_film_m >= 0.0 && std::isfinite(contact_film_m)))
+    throw std::invalid_argument("EHL point contact: the boundary layers' thickness must be finite and ≥ 0, got " + shortest(contact_film_m));
+  const double radius = contact.reduced_radius_m;
+  const double a = reference::hertz_point_radius_m(contact.load_N, radius, contact.reduced_modulus_Pa);
+  reference::PointContactGroups g = reference::point_contact_groups(contact.load_N, radius, contact.reduced_modulus_Pa,
+                                                                    contact.mean_speed_m_per_s, lubricant.viscosity_Pa_s,
+                                                                    lubricant.pressure_viscosity_per_Pa);
+  g.material = std::max(g.material, 1000.0);
+  const double film_m = reference::hamrock_dowson_central_film(g) * radius + contact_film_m;
+  const double inlet = std::clamp(1.5 * reference::hamrock_dowson_flooded_inlet(film_m / radius, radius / a), 1.5, 3.5);
+  given.inlet_over_radius = -inlet;
+  given.outlet_over_radius = 1.5;
+  given.side_over_radius = std::min(inlet, 2.5);
+  return given;
+}
+
 EhlPointResult solve_ehl_point(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant, const EhlPointOptions& options) {
   return solve_point(contact, nullptr, lubricant, options);
 }

@@ -171,6 +171,21 @@ struct EhlPointResult {
   std::string message;
 };
 
+// `given` with its domain fitted to the film the solve expects (its nodes and the rest kept): the
+// inlet at 1.5 m*, m* Hamrock & Dowson's fully flooded inlet boundary (reference/ehl_point_film.h)
+// for their central film (G at least 1000, as the start's) plus the boundary layers'
+// `contact_film_m` (EhlRoughness; 0 for a smooth contact), but within [1.5 a, 3.5 a] (3.5 a the default's); the sides as far, at most
+// 2.5 a; the outlet at 1.5 a. Their film is only approached (the tests' flat ball at 0.5 m/s,
+// m* = 1.96 a, a/32: −1.2 % at 1.25 m*, −0.5 % at 1.5 m*, −0.2 % at the default's 3.5 a, against
+// 4.5 a); crawling at 1 mm/s, 1.5 a gives the default domain's film to 1e-4 at the same spacing. A
+// thin film is then solved on the nodes its inlet needs: a crawling or mixed contact's films near
+// the layers converge slowly with the spacing (the flat ball's half-load speed 0.036 mm/s on the
+// default domain's 41², 0.79 mm/s on 513² of ±1.5 a; ≈ 0.85 extrapolated), and on the default
+// domain three fifths of the nodes along the flow sat in an inlet that carries no pressure.
+// Throws std::invalid_argument as solve_ehl_point does, and for a negative or non-finite layer.
+EhlPointOptions fit_domain_to_film(const EhlPointContact& contact, const PiezoviscousLubricant& lubricant, double contact_film_m,
+                                   EhlPointOptions given);
+
 // Throws std::invalid_argument for bad input (non-positive or non-finite contact data, a domain
 // that does not contain the Hertz circle's centre with room before it, fewer than 11 nodes a
 // side); never throws for non-convergence (see `converged` and `message`).

@@ -25,4 +25,8 @@ double hamrock_dowson_minimum_film(const PointContactGroups& g) {
   return 3.63 * std::pow(g.speed, 0.68) * std::pow(g.material, 0.49) * std::pow(g.load, -0.073) * (1.0 - std::exp(-0.68));
 }
 
+double hamrock_dowson_flooded_inlet(double central_film_over_radius, double radius_over_contact_radius) {
+  return 1.0 + 3.06 * std::pow(radius_over_contact_radius * radius_over_contact_radius * central_film_over_radius, 0.58);
+}
+
 }  // namespace tribo::lubrication::reference

@@ -32,4 +32,10 @@ double hertz_point_peak_pressure_Pa(double load_N, double reduced_radius_m, doub
 double hamrock_dowson_central_film(const PointContactGroups& g);
 double hamrock_dowson_minimum_film(const PointContactGroups& g);
 
+// Hamrock & Dowson's fully flooded inlet boundary (1977, ASME J. Lubr. Technol. 99:264, the
+// starvation study of the same paper series): the inlet distance from the contact's centre, in
+// contact radii, beyond which more oil no longer thickens the film,
+//   m* = 1 + 3.06 [(R/a)² H]^0.58,  H = h_c/R the central film.
+double hamrock_dowson_flooded_inlet(double central_film_over_radius, double radius_over_contact_radius);
+
 }  // namespace tribo::lubrication::reference

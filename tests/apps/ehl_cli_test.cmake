@@ -162,7 +162,9 @@ assert len(inputs) == 2 and inputs[1]['path'].endswith('dektak-1.csv') and len(i
 
 # [profile] on a point contact: examples/ehl-ridged-ball.toml, the ball held still over a sliding disc
 # with ridges across the track. Crawling, the Hertz circle is in contact, so the friction coefficient
-# is the boundary friction; the contact block in N; the margin among the inputs.
+# is the boundary friction; the contact block in N; the margin among the inputs; its domain fitted to
+# the film (1.5 Hamrock & Dowson's flooded inlet m*, the film theirs plus the layers). Refused: a
+# fitted domain with extents, an unknown domain.
 run_ehl_config(ridged "ridged ball" ${EXAMPLES}/ehl-ridged-ball.toml --summary-only)
 expect_outputs(ridged "ridged ball" "
 import json, sys
@@ -176,7 +178,15 @@ mu = (c['boundary_friction_N'] + c['film_friction_N']) / 20.0
 assert abs(s['friction_coefficient'] - mu) <= 1e-12 and abs(mu - 0.1) < 1e-3, (s['friction_coefficient'], mu)
 assert abs(s['traction_N'] - mu * 20.0) <= 1e-9, s['traction_N']
 assert p['contact_film_m'] == 5e-9 and p['contact_margin_m'] == 1e-9 and p['wavelength_m'] == 2.7e-5, p
+i = s['inputs']
+R, a = i['reduced_radius_m'], s['hertz_radius_m']
+m = 1.0 + 3.06 * ((R / a) ** 2 * (s['fits']['hamrock_dowson_central_film_m'] + p['contact_film_m']) / R) ** 0.58
+inlet = min(max(1.5 * m, 1.5), 3.5)
+assert i['domain'] == 'fitted' and abs(i['inlet_over_radius'] + inlet) <= 1e-9 * inlet, (i, inlet)
+assert i['outlet_over_radius'] == 1.5 and i['side_over_radius'] == min(inlet, 2.5), i
 ")
+expect_refused(fitted_extents "${ball}[solver]\ndomain = \"fitted\"\ninlet_over_radius = -2\n" "solver.inlet_over_radius")
+expect_refused(domain_unknown "${ball}[solver]\ndomain = \"auto\"\n" "solver.domain")
 expect_refused(ridged_short "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-6\nboundary_friction_coefficient = 0.1\n" "profile.wavelength_m")
 expect_refused(ridged_margin "${ball}[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-4\ncontact_margin_m = -1e-9\nboundary_friction_coefficient = 0.1\n" "profile.contact_margin_m")
 

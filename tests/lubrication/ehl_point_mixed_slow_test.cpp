@@ -131,6 +131,37 @@ TEST(EhlPointMixedSlow, FilmNearTheLayersConvergesWithTheSpacing) {
   EXPECT_LT(error / film[2], 0.03);
 }
 
+// fit_domain_to_film: the inlet at 1.5 m*, Hamrock & Dowson's fully flooded inlet boundary, keeps
+// the film flooded — at 0.5 m/s (m* ≈ 1.96 a, the inlet at 2.95 a) within 1 % of the film with an
+// inlet at 4.5 a, a node every a/32 on both (measured −0.5 %) — and crawling puts the nodes near the
+// contact: at 1 mm/s the inlet at 1.74 a (between 1.5 and 2 a), the central film the default
+// domain's (3.5 a) at about the same spacing to 0.2 % (measured +0.11 %), on 105² nodes instead of 161².
+TEST(EhlPointMixedSlow, AFittedDomainKeepsTheFilmFloodedAndItsNodesNearTheContact) {
+  const EhlRoughness flat = flat_surface();
+  const auto solve = [&](double speed, const EhlPointOptions& o) {
+    const EhlPointResult r = solve_ehl_point(ball_contact(kCrawlLoad_N, speed), flat, ball_oil(), o);
+    EXPECT_TRUE(r.converged) << r.message;
+    return r.central_film_m;
+  };
+  EhlPointOptions flooded = ball_grid(193);
+  flooded.nodes_y = 161;
+  flooded.inlet_over_radius = -4.5;
+  EhlPointOptions full = fit_domain_to_film(ball_contact(kCrawlLoad_N, 0.5), ball_oil(), flat.contact_film_m, ball_grid(143));
+  full.nodes_y = 161;
+  EXPECT_NEAR(full.side_over_radius, 2.5, 1e-12);
+  const double full_film = solve(0.5, full), flooded_film = solve(0.5, flooded);
+  const EhlPointOptions crawl = fit_domain_to_film(ball_contact(kCrawlLoad_N, 1e-3), ball_oil(), flat.contact_film_m, ball_grid(105));
+  const double crawl_film = solve(1e-3, crawl), default_film = solve(1e-3, ball_grid(161));
+  std::printf("0.5 m/s: inlet %.3f a, film %.4f nm against %.4f nm flooded (%+.3f %%); 1 mm/s: inlet %.3f a, film %.4f nm against "
+              "%.4f nm on the default domain (%+.3f %%)\n",
+              -full.inlet_over_radius, full_film * 1e9, flooded_film * 1e9, 100.0 * (full_film / flooded_film - 1.0), -crawl.inlet_over_radius,
+              crawl_film * 1e9, default_film * 1e9, 100.0 * (crawl_film / default_film - 1.0));
+  EXPECT_NEAR(full_film / flooded_film, 1.0, 0.01);
+  EXPECT_GT(-crawl.inlet_over_radius, 1.5);
+  EXPECT_LT(-crawl.inlet_over_radius, 2.0);
+  EXPECT_NEAR(crawl_film / default_film, 1.0, 0.002);
+}
+
 // A film 30 times the boundary layers (0.5 m/s: ≈ 0.15 µm) is the smooth contact's plus the layers,
 // carried through: they pass no pressure flow, so in the inlet, where ρ̄ ≈ 1, the film above them
 // solves the smooth contact's problem and the flux grows by u_m H_c; at the centre, where the
