@@ -81,9 +81,13 @@ struct EhlLineOptions {
   double inlet_over_half_width = -4.5;  // X_in = x_in / b (the inlet must not starve the film)
   double outlet_over_half_width = 1.5;  // X_out = x_out / b (past the cavitation front)
   int nodes = 401;                      // N ≥ 11
+  // Grids of 801 nodes and more start from the answer on a grid about half as fine, solved the same
+  // way (recursively) — with a hardness, its capped answer, so that the cap is lowered on the coarsest
+  // grid alone (ehl_line.cpp: solve_nested). Off: the analytical start, the cap lowered on this grid.
+  bool start_from_coarser_grid = true;
   // Converged when the scaled residual ‖F‖∞ ≤ tolerance, F = (φ(P, −c R_Reynolds) in units of p_H,
   // load balance ΔX ΣP − π/2), and the pressures' error left is at most 10·tolerance·max(1, max P)
-  // (the last step, or after a full step that step times the residual's contraction: ehl_newton.h).
+  // (the last step, or after a full step that step times the contraction: ehl_newton.h).
   double tolerance = 1e-10;
   int max_newton_iterations = 30;  // per solve (the direct one and each continuation step)
   int max_continuation_steps = 24;  // solves in the continuation (decades down, then steps up)

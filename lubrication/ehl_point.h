@@ -109,7 +109,7 @@ struct EhlPointOptions {
   int nodes_x = 129, nodes_y = 129;
   // Converged when the scaled residual ‖F‖∞ ≤ tolerance, F = (φ(P, −c R_Reynolds) in units of p_H,
   // load balance ΔXΔY ΣP − 2π/3), and the pressures' error left is at most 10·tolerance·max(1, max P)
-  // (the last step, or after a full step that step times the residual's contraction: ehl_newton.h).
+  // (the last step, or after a full step that step times the contraction: ehl_newton.h).
   // 1e-7 (1e-9 until 2026-11-30): on the tests' ball at 2, 10 and 20 N the central and minimum
   // film and the peak pressure equal 1e-9's to 3e-9 of their value on 129² and 257², where one
   // grid's refinement moves them by 1 %; the solve is a Newton step shorter on 257² at 10 N.
