@@ -5,13 +5,13 @@
 // cylinder by its two routes.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <vector>
 
 #include "ehl_line_mixed.h"
+#include "tests/lubrication/capped_routes.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -142,18 +142,7 @@ TEST(EhlLineMixedSlow, ACappedCoarserGridStartsTheCappedSolveAtItsAnswer) {
   direct.start_from_coarser_grid = false;
   const EhlLineResult lowered = solve_ehl_line(contact, flat, mineral_oil(), direct);
   const EhlLineResult nested = solve_ehl_line(contact, flat, mineral_oil(), fine());
-  ASSERT_TRUE(lowered.converged) << lowered.message;
-  ASSERT_TRUE(nested.converged) << nested.message;
-  EXPECT_GT(lowered.continuation_steps, 5);
-  EXPECT_EQ(nested.continuation_steps, 0);
-  double worst = 0.0;
-  for (std::size_t k = 0; k < nested.pressure_Pa.size(); ++k) {
-    worst = std::max(worst, std::abs(nested.pressure_Pa[k] - lowered.pressure_Pa[k]) / lowered.hertz_pressure_Pa);
-    EXPECT_EQ(nested.pressure_Pa[k] == flat.hardness_Pa, lowered.pressure_Pa[k] == flat.hardness_Pa) << "node " << k;
-  }
-  EXPECT_LT(worst, 1e-6);
-  EXPECT_EQ(nested.plastic_nodes, lowered.plastic_nodes);
-  EXPECT_NEAR(nested.plastic_load_share, lowered.plastic_load_share, 1e-6);
+  const double worst = expect_one_capped_answer(lowered, nested, flat.hardness_Pa, 1e-6);
   std::printf("lowered on 801 nodes: %d Newton iterations, %d cap steps; nested: %d in all, %d cap steps on 801; worst pressure "
               "difference %.2g p_H; %d nodes yielded\n",
               lowered.iterations, lowered.continuation_steps, nested.iterations, nested.continuation_steps, worst, nested.plastic_nodes);
