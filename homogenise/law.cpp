@@ -110,6 +110,7 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
   j["pin"] = {{"shape", o.pin.shape == PinShape::flat ? "flat" : "spherical"},
               {"radius_m", o.pin.radius_m},
               {"crown_radius_m", o.pin.crown_radius_m},
+              {"tilt_rad", o.pin.tilt_rad},
               {"nominal_area_m2", pin.nominal_area_m2},
               {"normal_load_N", o.pin.normal_load_N}};
   j["lubricant"] = {{"viscosity_Pa_s", o.lubricant.viscosity_Pa_s},

@@ -27,6 +27,10 @@ struct Pin {
   PinShape shape = PinShape::flat;
   double radius_m = 4.7625e-3;      // face radius R (thesis 3/16 in, Appendix I)
   double crown_radius_m = 0.0;      // spherical pin: radius of the crown, h = h̄ + r²/(2 R_c)
+  // The face's slope along the sliding direction, its leading edge raised (either shape): the film
+  // h = h̄ − θ x, x from the face's centre along the disc's motion — a converging wedge. A slider
+  // seated a few µm out of true over its 9.5 mm face tilts by ≈ 1e-4 … 1e-3 rad.
+  double tilt_rad = 0.0;
   double normal_load_N = 93.86;     // W (thesis 21.1 lb)
 };
 

@@ -1,5 +1,6 @@
 #include "homogenise/pin.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "homogenise/solid_contact.h"
@@ -31,11 +32,19 @@ class Column {
 
 }  // namespace
 
+double face_drop_m(const Pin& pin) {
+  const double theta = pin.tilt_rad, r = pin.radius_m;
+  if (pin.shape == PinShape::flat) return theta * r;
+  const double rc = pin.crown_radius_m;
+  return theta * rc <= r ? 0.5 * theta * theta * rc : theta * r - r * r / (2.0 * rc);
+}
+
 PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   const double sigma = t.sigma_m, radius = o.pin.radius_m;
   PinTable pin;
   pin.nominal_area_m2 = M_PI * radius * radius;
-  pin.separation_m = t.separation_m;
+  const double drop = face_drop_m(o.pin);
+  for (double s : t.separation_m) pin.separation_m.push_back(s + drop);
   const Column ps(t, t.solid_pressure_Pa, 0.0), ar(t, t.area_fraction, 0.0);
   std::vector<Estimate> ps_se, ar_se;
   for (const Estimate& e : t.solid_pressure_Pa) ps_se.push_back({e.standard_error, 0});
@@ -67,7 +76,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
 
   const int n = o.pin_grid;
   lubrication::ReynoldsSolver solver;
-  for (double centre : t.separation_m) {
+  for (double centre : pin.separation_m) {
     lubrication::ReynoldsProblem pr = lubrication::parallel_discs_problem(radius, centre, 0.0, 1.0, 1.0, n);
     const contact::Grid& g = pr.grid;
     const double cx = pr.disc->centre_x_m, cy = pr.disc->centre_y_m;
@@ -77,8 +86,11 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     pr.couette_film_m = g.field();
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
-        const double r2 = std::pow(i * g.dx_m - cx, 2) + std::pow(j * g.dy_m - cy, 2);
-        h(i, j) = centre + (o.pin.shape == PinShape::spherical ? r2 / (2.0 * o.pin.crown_radius_m) : 0.0);
+        const double x = i * g.dx_m - cx, r2 = x * x + std::pow(j * g.dy_m - cy, 2);
+        // (At most the table's first separation only off the face, on the grid's outer ring, and by round-off at its rim.)
+        h(i, j) = std::max(centre + (o.pin.shape == PinShape::spherical ? r2 / (2.0 * o.pin.crown_radius_m) : 0.0) -
+                               o.pin.tilt_rad * x,
+                           t.separation_m.front());
         pr.pressure_flow_factor_x(i, j) = phix(h(i, j));
         pr.pressure_flow_factor_y(i, j) = phiy(h(i, j));
         pr.couette_film_m(i, j) = std::max(mean_film(h(i, j)) - sigma * phis(h(i, j)), 0.0);

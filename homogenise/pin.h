@@ -1,7 +1,10 @@
 // From the patch to the pin: the homogenised columns integrated over the pin's face, one row per
-// table separation h̄ (the film at the face centre for a spherical pin).
+// table separation h̄ (the film at the face centre).
 //
-// Nominal film over the face: h(x, y) = h̄ (flat) or h̄ + r²/(2 R_c) (spherical crown). Per node
+// Nominal film over the face: h(x, y) = h̄ + f(x, y), f = 0 (flat) or r²/(2 R_c) (spherical crown),
+// less θ x for a face tilted by θ (leading edge raised, x along the disc's motion). The rows put
+// the face's lowest point on the cell table's separations: h̄ = s + d with d = −min f (face_drop_m),
+// so no node of the face falls below the table. Per node
 // the cell table gives p_s(h), A_r/A(h), φx, φy, Φs, h̄_T, the shear factors φf and φfp,
 // and the rugosity lift Λ(h) = p̄/(ηU) (interpolated monotonically between nodes; above the last
 // node the film is smooth: φ = 1, Φs = 0, φf = 1, Λ = 0, no contact). Then
@@ -55,6 +58,10 @@ struct PinTable {
   int reynolds_unconverged = 0;
   std::string messages;
 };
+
+// d = −min f over the face (≥ 0): θR for a flat tilted face; θ²R_c/2 for a crown whose lowest point
+// lies on the face (θR_c ≤ R), else θR − R²/(2R_c) at the trailing edge; 0 untilted.
+double face_drop_m(const Pin& pin);
 
 PinTable pin_scale(const HomogeniseOptions& options, const CellTable& cells);
 

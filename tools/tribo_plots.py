@@ -13,6 +13,9 @@
                               tests/lubrication/data/mourier-2006)
     tribo_plots.py sweep DIR  DIR/plots/<column>.png from `tribo sweep`: each output column against
                               the axes (a line for one varying axis, a heat map for two)
+    tribo_plots.py stribecks DIR   DIR/plots/stribeck_curves.png from a `tribo sweep` of homogenise
+                              points: every point's Stribeck curve (mu, and the film's share of the
+                              load) on one plot, labelled by the axes that vary
 """
 import csv
 import json
@@ -509,6 +512,42 @@ def plot_sweep(d):
     print("\n".join(written))
 
 
+def plot_stribecks(d):
+    """The Stribeck curves of a sweep's homogenise points (points/NNNNN/law.json) over each other: mu
+    (solid, left axis) and the film's share of the load (dashed, right axis) against U, one colour per
+    point, labelled by the axes whose values vary. Points that failed are left out."""
+    with open(os.path.join(d, "sweep.json")) as f:
+        meta = json.load(f)
+    with open(os.path.join(d, "results.csv"), newline="") as f:
+        rows = [r for r in csv.DictReader(f) if r["status"] == "ok"]
+    varying = [a["key"] for a in meta["axes"] if len(set(a["values"])) > 1]
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    ax2 = ax.twinx()
+    for k, r in enumerate(sorted(rows, key=lambda r: [_number(r[a]) or 0.0 for a in varying])):
+        with open(os.path.join(d, "points", "%05d" % int(r["point_id"]), "law.json")) as f:
+            pts = json.load(f)["stribeck"]
+        u = [p["U_m_per_s"] for p in pts]
+        label = ", ".join("%s = %s" % (a, "%g" % _number(r[a]) if _number(r[a]) is not None else r[a]) for a in varying) or None
+        ax.semilogx(u, [p["mu"] for p in pts], "-", color="C%d" % k, label=label)
+        ax2.semilogx(u, [p["fluid_share"] for p in pts], "--", color="C%d" % k, lw=1)
+    ax.set_xlabel("sliding speed U (m/s)")
+    ax.set_ylabel("$\\mu$ (solid)")
+    ax2.set_ylabel("share of W on the film (dashed)")
+    ax2.set_ylim(0, 1.05)
+    ax.set_ylim(bottom=0)
+    ax.grid(alpha=0.3, which="both")
+    if varying:
+        ax.legend(fontsize=8, loc="lower left")
+    ax.set_title("Stribeck curves of %s" % os.path.basename(os.path.normpath(d)), fontsize=10)
+    fig.tight_layout()
+    out_dir = os.path.join(d, "plots")
+    os.makedirs(out_dir, exist_ok=True)
+    path = os.path.join(out_dir, "stribeck_curves.png")
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    print(path)
+
+
 def plot_ehl(d, reference=None):
     """Pressure (GPa) and film (um) along the contact, x over the Hertz half-width (a point contact:
     its radius, along the centre line y = 0, beside a map of the film), with the dry Hertz pressure
@@ -578,7 +617,7 @@ def plot_ehl(d, reference=None):
 
 def main(argv):
     modes = {"demo": plot_demo, "rig": plot_rig, "gap": plot_gap, "homogenise": plot_homogenise, "sweep": plot_sweep,
-             "ehl": plot_ehl}
+             "stribecks": plot_stribecks, "ehl": plot_ehl}
     if not (len(argv) == 3 and argv[1] in modes or len(argv) == 4 and argv[1] == "ehl"):
         sys.stderr.write(__doc__)
         return 2

@@ -148,6 +148,19 @@ TEST(SurfaceConfig, ThreeCommandsReadOneSurface) {
     expect_all(e, {"key 'surface.correlation_length_m'", "required"});
 }
 
+// [pin] tilt_rad: read for either shape, kept in law.json's pin; a negative or steep tilt is refused
+// with the file and the key.
+TEST(PinConfig, TiltIsReadAndASteepOrNegativeOneRefused) {
+  const std::string surface = "[surface]\nkind = \"gaussian\"\nrms_height_m = 4.35e-7\ncorrelation_length_m = 6.25e-5\n";
+  const HomogeniseRun run = load_homogenise_run(write_file("pin-tilt.toml", surface + "[pin]\ntilt_rad = 2.5e-4\n"));
+  EXPECT_EQ(run.options.pin.tilt_rad, 2.5e-4);
+  EXPECT_EQ(run.options.pin.shape, homogenise::PinShape::flat);
+  for (const char* bad : {"-1e-4", "0.02"}) {
+    const auto path = write_file("pin-tilt-bad.toml", surface + "[pin]\ntilt_rad = " + bad + "\n");
+    expect_all(input_error_of([&] { load_homogenise_run(path); }), {path.string(), "key 'pin.tilt_rad'"});
+  }
+}
+
 TEST(DriveTable, ReadByTheBundlesCsvRules) {
   // tribo's own provenance block above the columns, blanks around cells, an extra column.
   write_file("drive.csv", "# tribo_version: 0.1\n# seed: 1\nt_s, v_m_per_s, note\n0, 1e-3, a\n2, 3e-3, b\n");

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -83,6 +84,48 @@ TEST(PinScale, ACrownedPinLiftsWhereTheFlatOneDoesNot) {
   for (std::size_t m = 0; m + 1 < pin.separation_m.size(); ++m) {
     EXPECT_GT(pin.wedge_lift_per_eta_u_m[m], pin.wedge_lift_per_eta_u_m[m + 1]);
     EXPECT_GT(pin.wedge_lift_per_eta_u_m[m + 1], 0.0);
+  }
+}
+
+TEST(PinScale, ASlightlyTiltedFaceLiftsAsItsSlopeSqueezesTheFilm) {
+  // A face tilted by θ (leading edge raised) under uniform flow factors φ: the Couette divergence
+  // (U/2) ∂h/∂x = −Uθ/2 is uniform, the squeeze problem's ḣ = −Uθ/2 — so to first order in
+  // ε = θR/h̄ (the h³ variation's first-order pressure is odd in x and carries nothing) the wedge
+  // carries (θ/2) K per ηU, and in closed form the disc's paraboloid, ∇²p = −6ηUθ/(φh̄³):
+  //   N_w/(ηU) = 3π θ R⁴ / (4 φ h̄³).
+  // ε ≤ 0.01 here (ε² = 1e-4); the cut rim as in the squeeze test above (< 0.5 % on 65 nodes), and
+  // the two solves share the grid, so against each other only ε² and the solver's tolerance remain.
+  HomogeniseOptions o;
+  const double phi = 0.8, r = o.pin.radius_m;
+  o.pin.tilt_rad = 0.01 * kSigma / r;
+  const CellTable cells = uniform_cells(phi);
+  const PinTable pin = pin_scale(o, cells);
+  ASSERT_EQ(pin.reynolds_unconverged, 0) << pin.messages;
+  for (std::size_t m = 0; m < pin.separation_m.size(); ++m) {
+    // The rows put the trailing edge on the cell separations.
+    EXPECT_DOUBLE_EQ(pin.separation_m[m], cells.separation_m[m] + o.pin.tilt_rad * r);
+    const double h = pin.separation_m[m];
+    // (On the last row the leading half lies above the table, where the film is smooth: φ = 1.)
+    const double closed = 3.0 * M_PI * o.pin.tilt_rad * std::pow(r, 4) / (4.0 * phi * h * h * h);
+    if (m + 1 < pin.separation_m.size()) EXPECT_NEAR(pin.wedge_lift_per_eta_u_m[m] / closed, 1.0, 5e-3) << "h = " << h;
+    EXPECT_NEAR(pin.wedge_lift_per_eta_u_m[m] / (0.5 * o.pin.tilt_rad * pin.squeeze_per_eta_m[m]), 1.0, 1e-3) << "h = " << h;
+  }
+}
+
+TEST(PinScale, TheFaceDropIsTheLowestPointOfTheTiltedFace) {
+  // d = −min f over the disc, f = r²/(2R_c) − θx: sampled on a fine polar net against face_drop_m,
+  // for a flat face, a crown whose lowest point lies inside (θR_c < R) and one tilted past its rim.
+  for (const auto& [shape, crown, tilt] : {std::tuple{PinShape::flat, 0.0, 2e-4}, std::tuple{PinShape::spherical, 5.0, 5e-4},
+                                           std::tuple{PinShape::spherical, 5.0, 2e-3}}) {
+    Pin pin;
+    pin.shape = shape, pin.crown_radius_m = crown, pin.tilt_rad = tilt;
+    double lowest = 0.0;
+    for (int a = 0; a <= 720; ++a)
+      for (int k = 0; k <= 2000; ++k) {
+        const double rr = pin.radius_m * k / 2000.0, x = rr * std::cos(M_PI * a / 360.0);
+        lowest = std::min(lowest, (shape == PinShape::spherical ? rr * rr / (2.0 * crown) : 0.0) - tilt * x);
+      }
+    EXPECT_NEAR(face_drop_m(pin), -lowest, 1e-6 * face_drop_m(pin)) << "tilt " << tilt;
   }
 }
 
