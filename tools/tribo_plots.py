@@ -523,13 +523,15 @@ def plot_stribecks(d):
     varying = [a["key"] for a in meta["axes"] if len(set(a["values"])) > 1]
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     ax2 = ax.twinx()
+    # one colour per point, in the order of the axes' values (viridis: dark for the smallest)
+    colours = [plt.cm.viridis(k / max(len(rows) - 1, 1) * 0.9) for k in range(len(rows))]
     for k, r in enumerate(sorted(rows, key=lambda r: [_number(r[a]) or 0.0 for a in varying])):
         with open(os.path.join(d, "points", "%05d" % int(r["point_id"]), "law.json")) as f:
             pts = json.load(f)["stribeck"]
         u = [p["U_m_per_s"] for p in pts]
         label = ", ".join("%s = %s" % (a, "%g" % _number(r[a]) if _number(r[a]) is not None else r[a]) for a in varying) or None
-        ax.semilogx(u, [p["mu"] for p in pts], "-", color="C%d" % k, label=label)
-        ax2.semilogx(u, [p["fluid_share"] for p in pts], "--", color="C%d" % k, lw=1)
+        ax.semilogx(u, [p["mu"] for p in pts], "-", color=colours[k], label=label)
+        ax2.semilogx(u, [p["fluid_share"] for p in pts], "--", color=colours[k], lw=1)
     ax.set_xlabel("sliding speed U (m/s)")
     ax.set_ylabel("$\\mu$ (solid)")
     ax2.set_ylabel("share of W on the film (dashed)")
