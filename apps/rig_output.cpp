@@ -51,6 +51,7 @@ nlohmann::json observables_json(const rig::RunObservables& o) {
           {"mu_s_mean", number_or_null(o.mu_s_mean)},
           {"load_rate_mean_per_s", number_or_null(o.load_rate_mean_per_s)},
           {"mean_friction_N", number_or_null(o.mean_friction_N)},
+          {"mu_at_reversal_mean", number_or_null(o.mu_at_reversal_mean)},
           {"breakaways", o.breakaways},
           {"reattachments", o.reattachments},
           {"reversals", o.reversals}};

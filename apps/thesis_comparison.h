@@ -39,7 +39,8 @@ struct ComparisonRow {
 };
 
 // `law` is the rig's law; `homogenised` (may be null) its homogenised base, which adds the rows that
-// need steady sliding: μ as U → 0, the speed of the friction maximum and the transient's decay variable.
+// need steady sliding: the speed of the friction maximum and the transient's decay variable. The
+// stable slip's μ at zero relative velocity is read off the multi-cycle run's reversals (any law).
 std::vector<ComparisonRow> compare_with_thesis(const rig::RigParameters& rig, const rig::FrictionLaw& law,
                                                const rig::HomogenisedBase* homogenised, const ThesisFigureRuns& runs);
 

@@ -37,7 +37,7 @@ RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& sa
   o.window_start_s = window_start_s;
   const double t_end = samples.empty() ? window_start_s : samples.back().t_s;
 
-  std::vector<double> mu_s, phi_dot, stick, slip, breakaway_times;
+  std::vector<double> mu_s, phi_dot, stick, slip, breakaway_times, mu_reversal;
   double max_slip = 0.0;
   for (const Event& e : events) {
     if (e.t_s < window_start_s) continue;
@@ -54,11 +54,15 @@ RunObservables summarise(const RigParameters& rig, const std::vector<Sample>& sa
         if (e.t_s - e.phase_duration_s >= window_start_s) slip.push_back(e.phase_duration_s);
         max_slip = std::max(max_slip, e.phase_duration_s);
         break;
-      case EventKind::reversal: ++o.reversals; break;
+      case EventKind::reversal:
+        ++o.reversals;
+        mu_reversal.push_back(e.mu);
+        break;
       case EventKind::relock: break;  // the drive's doing, not the contact's: no regime evidence
     }
   }
   o.mu_s_mean = mean(mu_s);
+  o.mu_at_reversal_mean = mean(mu_reversal);
   o.load_rate_mean_per_s = mean(phi_dot);
   o.stick_time_s = mean(stick);
   o.slip_time_s = mean(slip);

@@ -38,6 +38,11 @@ struct RunObservables {
   double mu_s_mean = 0.0;             // mean μs at breakaway (NaN without)
   double load_rate_mean_per_s = 0.0;  // mean φ̇ at breakaway (NaN without)
   double mean_friction_N = 0.0;       // time average of the true friction
+  // Mean μ at the reversals — where a slip runs through a velocity match and goes on: the kinetic
+  // friction at zero relative speed on the stable branch of the slip, where viscous drag is zero
+  // (thesis §5.2a: ≈ 0.03 on Fig 5.2.2's multi-cycle slip, "the load supported by the film"). NaN
+  // without reversals.
+  double mu_at_reversal_mean = 0.0;
   int breakaways = 0;
   int reattachments = 0;
   int reversals = 0;

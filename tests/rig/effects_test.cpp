@@ -191,6 +191,22 @@ TEST(SqueezeFilm, SlipRunsThroughVelocityMatchesWhereTheBaselineSticksAtOnce) {
   };
   EXPECT_EQ(reversals_before_reattach(rb), 0);
   EXPECT_GE(reversals_before_reattach(rf), 1);  // more than one slip half-cycle
+
+  // Thesis §5.2a: where the slip passes zero relative speed the film still carries part of the load
+  // (squeezing it out takes τ_sq), so μ there is the solid's share of μk, below μk = 0.12 and above 0;
+  // summarise reads it off the reversals (mu_at_reversal_mean). The baseline has no reversal: NaN.
+  const RunObservables ob = summarise(rig, rb.samples, rb.events, 0.0), of = summarise(rig, rf.samples, rf.events, 0.0);
+  EXPECT_TRUE(std::isnan(ob.mu_at_reversal_mean));
+  double sum = 0.0;
+  int n = 0;
+  for (const Event& e : rf.events)
+    if (e.kind == EventKind::reversal) {
+      EXPECT_GT(e.mu, 0.0);
+      EXPECT_LT(e.mu, 0.12);
+      sum += e.mu, ++n;
+    }
+  ASSERT_EQ(of.reversals, n);
+  EXPECT_NEAR(of.mu_at_reversal_mean, sum / n, 1e-15);
 }
 
 // Growth rate of a small oscillation about steady sliding at v, from the ẋ envelope.
