@@ -11,6 +11,7 @@
 #include "apps/provenance.h"
 #include "apps/rig_output.h"
 #include "homogenise/law.h"
+#include "numerics/format.h"
 #include "homogenise/solid_contact.h"
 #include "rig/law_table.h"
 #include "rig/steady_sliding.h"
@@ -142,6 +143,17 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
 
   const homogenise::CellTable cells = homogenise::aggregate(o, patch_results);
   const homogenise::PinTable pin = homogenise::pin_scale(o, cells);
+  if (!(pin.solid_load_N.front() >= o.pin.normal_load_N)) {
+    // The steady film's equilibrium N_s(h̄) = W would lie below the table (the rig refuses it).
+    const bool shaped = o.pin.shape == homogenise::PinShape::spherical || o.pin.tilt_rad > 0.0;
+    throw std::invalid_argument(
+        config.string() + ": [pin] normal_load_N = " + numerics::shortest(o.pin.normal_load_N) +
+        " N exceeds the solid load at the table's smallest separation (" + numerics::fmt(pin.solid_load_N.front()) +
+        " N at h̄ = " + numerics::fmt(pin.separation_m.front()) + " m)" +
+        (shaped ? ": a crowned or tilted face touches over part of it only — reduce the tilt or crown, or add smaller "
+                  "[homogenise] separation_ratios"
+                : ": add smaller [homogenise] separation_ratios"));
+  }
   nlohmann::json law = homogenise::law_json(o, cells, pin);
   law["provenance"] = provenance_json(config, hash, run.input_files);
   law["provenance"]["seeds"] = nlohmann::json::array();

@@ -92,6 +92,13 @@ nlohmann::json errors(const std::vector<Estimate>& c) {
   return a;
 }
 
+// The cell separations left out, on the table's axis (the face centre's film: + face_drop_m).
+std::vector<double> dropped_on_table_axis(const HomogeniseOptions& o, const CellTable& cells) {
+  std::vector<double> out;
+  for (double s : cells.dropped_separation_m) out.push_back(s + face_drop_m(o.pin));
+  return out;
+}
+
 }  // namespace
 
 nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, const PinTable& pin) {
@@ -153,7 +160,7 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                 {"rugosity_lift_per_eta_u_m", pin.rugosity_lift_per_eta_u_m},
                 {"squeeze_per_eta_m", pin.squeeze_per_eta_m},
                 {"shear_per_eta_u_m", pin.shear_per_eta_u_m},
-                {"dropped_separations_m", cells.dropped_separation_m}};
+                {"dropped_separations_m", dropped_on_table_axis(o, cells)}};
   if (films) {
     j["micro_ehl"] = {{"eyring_stress_Pa", o.micro_ehl->eyring_stress_Pa},
                       {"tip_roughness_m", o.micro_ehl->tip_roughness_m},

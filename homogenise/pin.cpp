@@ -1,6 +1,7 @@
 #include "homogenise/pin.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "homogenise/solid_contact.h"
@@ -87,10 +88,12 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
         const double x = i * g.dx_m - cx, r2 = x * x + std::pow(j * g.dy_m - cy, 2);
-        // (At most the table's first separation only off the face, on the grid's outer ring, and by round-off at its rim.)
-        h(i, j) = std::max(centre + (o.pin.shape == PinShape::spherical ? r2 / (2.0 * o.pin.crown_radius_m) : 0.0) -
-                               o.pin.tilt_rad * x,
-                           t.separation_m.front());
+        const double film = centre + (o.pin.shape == PinShape::spherical ? r2 / (2.0 * o.pin.crown_radius_m) : 0.0) -
+                            o.pin.tilt_rad * x;
+        // On the face the drop keeps the film on the table (up to round-off at the rim); only the
+        // grid's outer ring, off the face, can fall below it — held at the first separation there.
+        assert(r2 > radius * radius || film >= t.separation_m.front() - 1e-9 * centre);
+        h(i, j) = std::max(film, t.separation_m.front());
         pr.pressure_flow_factor_x(i, j) = phix(h(i, j));
         pr.pressure_flow_factor_y(i, j) = phiy(h(i, j));
         pr.couette_film_m(i, j) = std::max(mean_film(h(i, j)) - sigma * phis(h(i, j)), 0.0);

@@ -13,11 +13,12 @@
 //   wedge     the average Reynolds equation (Patir & Cheng 1978) on the face, rim at p = 0,
 //               ∇·(φx h³/12η ∂p/∂x, φy h³/12η ∂p/∂y) = (U/2) ∂(h̄_T − σΦs)/∂x + (dh̄_T/dh) ∂h/∂t,
 //             with JFO cavitation; p ∝ ηU exactly, so one solve at ηU = 1 gives N_w/(ηU).
-//             A flat pin has uniform coefficients: the Couette divergence vanishes and the steady
-//             film carries no load — its lift is the rugosity lift of the asperity-scale films;
+//             An untilted flat pin has uniform coefficients: the Couette divergence vanishes and the
+//             steady film carries no load — its lift is the rugosity lift of the asperity-scale
+//             films; a slightly tilted one carries 3πθR⁴/(4φh̄³) per ηU (the squeeze of its slope);
 //   rugosity  N_r = ηU ∫ Λ(h) dA (the cavitating cell solves; superposed on the wedge);
-//   squeeze   the same equation at U = 0, ∂h/∂t = ḣ uniform, full film: N_sq = −η K ḣ; for a
-//             flat pin K = (3π R⁴ / 2) (dh̄_T/dh) / (φ h³) (thesis (3.2.2) with flow factors);
+//   squeeze   the same equation at U = 0, ∂h/∂t = ḣ uniform, full film: N_sq = −η K ḣ; for an
+//             untilted flat pin K = (3π R⁴ / 2) (dh̄_T/dh) / (φ h³) (thesis (3.2.2) with flow factors);
 //   shear     on the stationary pin, τ = (ηU/h) φf − φfp (h/2) ∂p/∂x (Patir & Cheng 1979),
 //             F_f = ∫ τ dA, with p from the wedge solve; at large h̄, F_f → ηU A/h̄ (Petroff).
 //             The shear-induced pressure's part φfs is left out: the cells' measured φf − φfs turns

@@ -122,7 +122,8 @@ void bind_rig(py::module_& m) {
 Returns dict:
   summary  summary.json as `tribo rig` writes it: regime ("stick_slip", "multi_cycle_slip",
            "quasi_harmonic", "steady_sliding", "stuck"), period_s, peak_to_peak_m, stick_time_s,
-           slip_time_s, mu_s_mean, load_rate_mean_per_s (1/s), mean_friction_N, breakaways, …,
+           slip_time_s, mu_s_mean, load_rate_mean_per_s (1/s), mean_friction_N, mu_at_reversal_mean (μ where
+           a slip runs through a velocity match), breakaways, …,
            completed, message, end_time_s, integrator_steps, events, friction_law, rig {…}, wall_s.
            Observables that do not exist are None. A run that stops early says completed = False.
   trace    trace.csv's columns as float64 arrays: t_s, x_m, xdot_m_per_s, friction_N (as the

@@ -375,7 +375,10 @@ def plot_homogenise(d):
     ax2.semilogy(h, [max(n, 1e-12) for n in column(rows, "solid_load_N")], "k-s", ms=3, label="$N_s$ (N)")
     ax2.set_ylabel("solid load $N_s$ (N)")
     ax2.axhline(law["pin"]["normal_load_N"], color="gray", ls=":", lw=1)
-    ax.set_xlim(0, min(max(h), 2 * law["cells"]["first_contact_separation_m"] / law["cells"]["sigma_m"]))
+    # the rows' film at the face centre lies a crowned or tilted face's drop above the cells' separation
+    sigma = law["cells"]["sigma_m"]
+    drop = law["table"]["separation_m"][0] / sigma - law["cells"]["separation_m"][0] / sigma
+    ax.set_xlim(drop, min(max(h), drop + 2 * law["cells"]["first_contact_separation_m"] / sigma))
     ax.grid(alpha=0.3, which="both")
     ax.set_title("BEM load and real area against separation (dotted: the pin load)", fontsize=10)
     fig.tight_layout()
@@ -513,7 +516,8 @@ def plot_sweep(d):
 
 
 def plot_stribecks(d):
-    """The Stribeck curves of a sweep's homogenise points (points/NNNNN/law.json) over each other: mu
+    """The Stribeck curves of a sweep's homogenise points (points/NNNNN/law.json, or
+    points/NNNNN/homogenise/law.json of a homogenise → rig chain) over each other: mu
     (solid, left axis) and the film's share of the load (dashed, right axis) against U, one colour per
     point, labelled by the axes whose values vary. Points that failed are left out."""
     with open(os.path.join(d, "sweep.json")) as f:
@@ -526,7 +530,9 @@ def plot_stribecks(d):
     # one colour per point, in the order of the axes' values (viridis: dark for the smallest)
     colours = [plt.cm.viridis(k / max(len(rows) - 1, 1) * 0.9) for k in range(len(rows))]
     for k, r in enumerate(sorted(rows, key=lambda r: [_number(r[a]) or 0.0 for a in varying])):
-        with open(os.path.join(d, "points", "%05d" % int(r["point_id"]), "law.json")) as f:
+        point = os.path.join(d, "points", "%05d" % int(r["point_id"]))
+        chained = os.path.join(point, "homogenise", "law.json")  # a homogenise → rig chain's first link
+        with open(chained if os.path.exists(chained) else os.path.join(point, "law.json")) as f:
             pts = json.load(f)["stribeck"]
         u = [p["U_m_per_s"] for p in pts]
         label = ", ".join("%s = %s" % (a, "%g" % _number(r[a]) if _number(r[a]) is not None else r[a]) for a in varying) or None

@@ -107,9 +107,17 @@ TEST(PinScale, ASlightlyTiltedFaceLiftsAsItsSlopeSqueezesTheFilm) {
     const double h = pin.separation_m[m];
     // (On the last row the leading half lies above the table, where the film is smooth: φ = 1.)
     const double closed = 3.0 * M_PI * o.pin.tilt_rad * std::pow(r, 4) / (4.0 * phi * h * h * h);
-    if (m + 1 < pin.separation_m.size()) EXPECT_NEAR(pin.wedge_lift_per_eta_u_m[m] / closed, 1.0, 5e-3) << "h = " << h;
+    if (m + 1 < pin.separation_m.size()) {
+      EXPECT_NEAR(pin.wedge_lift_per_eta_u_m[m] / closed, 1.0, 5e-3) << "h = " << h;
+    }
     EXPECT_NEAR(pin.wedge_lift_per_eta_u_m[m] / (0.5 * o.pin.tilt_rad * pin.squeeze_per_eta_m[m]), 1.0, 1e-3) << "h = " << h;
   }
+  // A crown tilted less than its own slope at the rim (θR_c < R): its lowest point lies inside the
+  // face, θ²R_c/2 below the centre, and that point sits on the cell separations.
+  o.pin.shape = PinShape::spherical, o.pin.crown_radius_m = 5.0, o.pin.tilt_rad = 1e-4;
+  const PinTable crowned = pin_scale(o, cells);
+  for (std::size_t m = 0; m < crowned.separation_m.size(); ++m)
+    EXPECT_DOUBLE_EQ(crowned.separation_m[m], cells.separation_m[m] + 0.5 * 1e-4 * 1e-4 * 5.0);
 }
 
 TEST(PinScale, TheFaceDropIsTheLowestPointOfTheTiltedFace) {
@@ -203,6 +211,13 @@ TEST(LawFile, SeparationsWithoutAConvergedSolveAreLeftOutOfTheTableAndListed) {
   EXPECT_EQ(table.at("separation_m")[1].get<double>(), 3.0 * kSigma);
   EXPECT_EQ(table.at("dropped_separations_m")[0].get<double>(), 2.0 * kSigma);
   EXPECT_NO_THROW(rig::law_table_from_json(law, "law.json"));
+  // A tilted face: the rows and the separation left out, both on the table's axis (the film at the
+  // face centre, θR above the cells' separation), and the tilt in the law's pin.
+  o.pin.tilt_rad = 1e-4;
+  const nlohmann::json tilted = law_json(o, cells, pin_scale(o, cells));
+  EXPECT_EQ(tilted.at("table").at("separation_m")[1].get<double>(), 3.0 * kSigma + 1e-4 * o.pin.radius_m);
+  EXPECT_EQ(tilted.at("table").at("dropped_separations_m")[0].get<double>(), 2.0 * kSigma + 1e-4 * o.pin.radius_m);
+  EXPECT_EQ(tilted.at("pin").at("tilt_rad").get<double>(), 1e-4);
 }
 
 // The junction reports the first-order extrapolation 2 μ(Δ) − μ(2Δ) from its two finest grids and,

@@ -111,7 +111,7 @@ class Reynolds(CliMatch):
 
 class Rig(CliMatch):
     NUMERIC = ("period_s", "peak_to_peak_m", "mean_displacement_m", "stick_time_s", "slip_time_s", "mu_s_mean",
-               "load_rate_mean_per_s", "mean_friction_N", "end_time_s", "window_start_s")
+               "load_rate_mean_per_s", "mean_friction_N", "mu_at_reversal_mean", "end_time_s", "window_start_s")
 
     def compare_summaries(self, py, cli):
         for key in self.NUMERIC:
