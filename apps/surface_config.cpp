@@ -13,6 +13,7 @@ void read_spectrum(ConfigTable& t, contact::GaussianSurfaceParams& p) {
     p.hurst = t.number("hurst", p.hurst, Range::positive);
     p.rolloff_wavelength_m = t.number("rolloff_wavelength_m", 0.0, Range::non_negative);
     p.cutoff_wavelength_m = t.number("cutoff_wavelength_m", 0.0, Range::non_negative);
+    p.peklenik_gamma = t.number("peklenik_gamma", 1.0, Range::positive);
   }
 }
 

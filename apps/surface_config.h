@@ -8,7 +8,8 @@
 //             gaussian_acf: correlation_length_m (required), correlation_length_across_m
 //                           (default 0: isotropic)
 //             self_affine:  hurst (0.8), rolloff_wavelength_m (0: the domain size),
-//                           cutoff_wavelength_m (0: the grid spacing)
+//                           cutoff_wavelength_m (0: the grid spacing), peklenik_gamma (1: isotropic;
+//                           > 1 a lay along x, the sliding direction)
 //   [domain]  size_m                       1e-3 m
 //             grid                         128 points a side (8 .. 16384)
 #pragma once

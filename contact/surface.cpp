@@ -66,7 +66,9 @@ void validate(const GaussianSurfaceParams& p) {
             "cutoff_wavelength_m must be non-negative");
     const double rolloff = p.rolloff_wavelength_m > 0.0 ? p.rolloff_wavelength_m : p.size_m;
     require(p.cutoff_wavelength_m < rolloff, "cutoff_wavelength_m must be shorter than the roll-off wavelength");
+    require(std::isfinite(p.peklenik_gamma) && p.peklenik_gamma > 0.0, "peklenik_gamma must be positive and finite");
   } else {
+    require(p.peklenik_gamma == 1.0, "peklenik_gamma is for the self-affine spectrum (a Gaussian ACF's lay: correlation_length_across_m)");
     require(std::isfinite(p.correlation_length_m) && p.correlation_length_m > 0.0,
             "correlation_length_m must be positive");
     require(std::isfinite(p.correlation_length_across_m) && p.correlation_length_across_m >= 0.0,
@@ -84,9 +86,11 @@ double psd_shape(const GaussianSurfaceParams& p, double qx, double qy) {
   }
   const double two_pi = 2.0 * std::numbers::pi;
   const double q_r = two_pi / (p.rolloff_wavelength_m > 0.0 ? p.rolloff_wavelength_m : p.size_m);
-  if (p.cutoff_wavelength_m > 0.0 && q > two_pi / p.cutoff_wavelength_m) return 0.0;
-  if (q < q_r) return 1.0;
-  return std::pow(q / q_r, -2.0 * (1.0 + p.hurst));
+  const double g = p.peklenik_gamma;
+  const double q_lay = g == 1.0 ? q : std::sqrt(g * qx * qx + qy * qy / g);
+  if (p.cutoff_wavelength_m > 0.0 && q_lay > two_pi / p.cutoff_wavelength_m) return 0.0;
+  if (q_lay < q_r) return 1.0;
+  return std::pow(q_lay / q_r, -2.0 * (1.0 + p.hurst));
 }
 
 Eigen::ArrayXXd gaussian_surface(const GaussianSurfaceParams& p) {

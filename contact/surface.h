@@ -37,6 +37,12 @@ struct GaussianSurfaceParams {
   double hurst = 0.8;                  // H in (0, 1]
   double rolloff_wavelength_m = 0.0;   // λ_r; 0 → no plateau (λ_r = L)
   double cutoff_wavelength_m = 0.0;    // λ_s; 0 → none (Nyquist, 2 L/n)
+  // Lay: the spectrum stretched so that features are γ times longer along x (the sliding
+  // direction) than across — Peklenik's γ, the ratio of correlation lengths: C(q_x, q_y) is the
+  // isotropic C at q' = √(γ q_x² + q_y²/γ), the wavelengths above holding along the geometric mean.
+  // 1: isotropic; > 1 a longitudinal lay (streaks along the sliding), < 1 a transverse one. The rms
+  // slope along x is then 1/γ of that across.
+  double peklenik_gamma = 1.0;
   // Gaussian ACF
   double correlation_length_m = 0.0;         // ℓ_x (along the lay)
   double correlation_length_across_m = 0.0;  // ℓ_y; 0 → isotropic (ℓ_y = ℓ_x)

@@ -30,7 +30,7 @@ contact::SpectrumKind spectrum_kind(const std::string& name) {
 ArrayXXd gaussian_surface(Eigen::Index grid, double size_m, const std::string& spectrum,
                           std::optional<double> rms_height_m, std::optional<double> rms_slope, std::uint64_t seed,
                           double hurst, double rolloff_wavelength_m, double cutoff_wavelength_m,
-                          double correlation_length_m, double correlation_length_across_m) {
+                          double correlation_length_m, double correlation_length_across_m, double peklenik_gamma) {
   contact::GaussianSurfaceParams p;
   p.grid = grid;
   p.size_m = size_m;
@@ -44,6 +44,7 @@ ArrayXXd gaussian_surface(Eigen::Index grid, double size_m, const std::string& s
   p.cutoff_wavelength_m = cutoff_wavelength_m;
   p.correlation_length_m = correlation_length_m;
   p.correlation_length_across_m = correlation_length_across_m;
+  p.peklenik_gamma = peklenik_gamma;
   contact::validate(p);
   py::gil_scoped_release release;
   return contact::gaussian_surface(p);
@@ -194,14 +195,16 @@ mean zero, scaled so its rms height Rq (m) or its rms slope (1) equals the targe
 
 grid: points per side n.  size_m: side L of the periodic square (m).
 spectrum: "self_affine" (Hurst exponent `hurst` in (0, 1], roll-off wavelength
-  `rolloff_wavelength_m`, short-wavelength cut-off `cutoff_wavelength_m`, 0 = none) or
+  `rolloff_wavelength_m`, short-wavelength cut-off `cutoff_wavelength_m`, 0 = none; a lay by
+  `peklenik_gamma`, features that many times longer along x than across, 1 = isotropic) or
   "gaussian_acf" (correlation length `correlation_length_m` along x, the lay, and
   `correlation_length_across_m` along y, 0 = isotropic).
 rms_height_m or rms_slope: exactly one (default Rq = 1e-6 m).
 seed: same seed, same surface on any thread count. Bad parameters raise ValueError.)",
         "grid"_a = 256, "size_m"_a = 1e-3, "spectrum"_a = "self_affine", "rms_height_m"_a = py::none(),
         "rms_slope"_a = py::none(), "seed"_a = 1, "hurst"_a = 0.8, "rolloff_wavelength_m"_a = 0.0,
-        "cutoff_wavelength_m"_a = 0.0, "correlation_length_m"_a = 0.0, "correlation_length_across_m"_a = 0.0);
+        "cutoff_wavelength_m"_a = 0.0, "correlation_length_m"_a = 0.0, "correlation_length_across_m"_a = 0.0,
+        "peklenik_gamma"_a = 1.0);
   m.def("surface_statistics", &statistics,
         R"(Statistics of a height field (m) on a periodic patch lx_m x ly_m (ly_m defaults to lx_m):
 dict mean_m, rq_m, ra_m (m), rms_slope (1), rms_curvature_per_m (1/m), skewness, kurtosis, min_m, max_m.)",
