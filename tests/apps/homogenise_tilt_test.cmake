@@ -8,10 +8,17 @@ file(MAKE_DIRECTORY ${WORK})
 include(${CMAKE_CURRENT_LIST_DIR}/tiny_homogenise.cmake)
 write_tiny_homogenise_config(${WORK}/hom.toml 1 3)
 file(READ ${WORK}/hom.toml text)
-string(REPLACE "normal_load_N = 93.86\n" "normal_load_N = 93.86\ntilt_rad = 1e-5\n" slight "${text}")
-file(WRITE ${WORK}/slight.toml "${slight}")
-execute_process(COMMAND ${TRIBO} homogenise ${WORK}/slight.toml --out ${WORK}/slight --no-plots
-                RESULT_VARIABLE status ERROR_VARIABLE err)
+# The tiny config with [pin] tilt_rad = TILT, homogenised into WORK/NAME: its exit status and stderr.
+function(homogenise_tilted name tilt)
+  string(REPLACE "normal_load_N = 93.86\n" "normal_load_N = 93.86\ntilt_rad = ${tilt}\n" config "${text}")
+  file(WRITE ${WORK}/${name}.toml "${config}")
+  execute_process(COMMAND ${TRIBO} homogenise ${WORK}/${name}.toml --out ${WORK}/${name} --no-plots
+                  RESULT_VARIABLE s ERROR_VARIABLE e)
+  set(status "${s}" PARENT_SCOPE)
+  set(err "${e}" PARENT_SCOPE)
+endfunction()
+
+homogenise_tilted(slight 1e-5)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "a slight tilt should homogenise (${status}): ${err}")
 endif()
@@ -28,10 +35,7 @@ if(NOT rows_ok EQUAL 0)
                       "got tilt ${tilt}, first row ${first}, cells' first ${cell}")
 endif()
 
-string(REPLACE "normal_load_N = 93.86\n" "normal_load_N = 93.86\ntilt_rad = 0.009\n" steep "${text}")
-file(WRITE ${WORK}/steep.toml "${steep}")
-execute_process(COMMAND ${TRIBO} homogenise ${WORK}/steep.toml --out ${WORK}/steep --no-plots
-                RESULT_VARIABLE status ERROR_VARIABLE err)
+homogenise_tilted(steep 0.009)
 if(NOT status EQUAL 2)
   message(FATAL_ERROR "a face touching on a strip only should exit 2, got ${status}: ${err}")
 endif()
