@@ -105,7 +105,8 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
       p->fail("crown_radius_m", "is only used with shape = \"spherical\"");
     }
     o.pin.tilt_rad = p->number("tilt_rad", o.pin.tilt_rad, Range::non_negative);
-    if (!(o.pin.tilt_rad < 0.01)) p->fail("tilt_rad", "must be below 0.01 rad (the thin film's slope is small)");
+    if (!(o.pin.tilt_rad < homogenise::Pin::kMaxTiltRad))
+      p->fail("tilt_rad", "must be below 0.01 rad (the thin film's slope is small)");
     p->finish();
   }
   double u_min = 1e-4, u_max = 1.0;

@@ -31,6 +31,8 @@ struct Pin {
   // h = h̄ − θ x, x from the face's centre along the disc's motion — a converging wedge. A slider
   // seated a few µm out of true over its 9.5 mm face tilts by ≈ 1e-4 … 1e-3 rad.
   double tilt_rad = 0.0;
+  // Below this the thin film's slope is small (0.01 rad is 95 µm across the thesis pin).
+  static constexpr double kMaxTiltRad = 0.01;
   double normal_load_N = 93.86;     // W (thesis 21.1 lb)
 };
 
