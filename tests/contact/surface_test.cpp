@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <utility>
 
 #include "contact/fft.h"
 #include "contact/profile.h"
@@ -186,8 +187,8 @@ TEST(GaussianSurface, AnisotropicGaussianAcfHasRequestedCorrelationLengths) {
 // derivatives, not differences), with the stretched band inside the grid (q_s √γ = 64 Δq < 256 Δq).
 // Each moment sums exponential mode powers (the lattice itself is 0.07 % off the integral's ratio):
 // one surface scatters by 2.1 % (sd, simulated over the 1660 modes of the band), so eight seeds are
-// pooled (0.75 %) and the 3 % band (4 sd) still tells γ = 4 from 3.6 or 4.4. γ = 1 is the isotropic
-// surface, bit for bit.
+// pooled (0.75 %) and the 3 % band (4 sd) still tells γ = 4 from 3.6 or 4.4. The stretch itself:
+// C at (q_x, q_y) is the isotropic C at (√γ q_x, q_y/√γ) — features longer along x, not across.
 TEST(GaussianSurface, ALaysSlopesAlongAndAcrossAreInTheRatioOfPeklenikGamma) {
   for (const double gamma : {4.0, 0.25}) {
     double mx = 0.0, my = 0.0;
@@ -210,10 +211,14 @@ TEST(GaussianSurface, ALaysSlopesAlongAndAcrossAreInTheRatioOfPeklenikGamma) {
     }
     EXPECT_NEAR(std::sqrt(mx / my) * gamma, 1.0, 0.03) << "gamma " << gamma;
   }
-  GaussianSurfaceParams iso = plateau_self_affine(128, 3);
-  const Eigen::ArrayXXd a = gaussian_surface(iso);
-  iso.peklenik_gamma = 1.0;
-  EXPECT_TRUE((gaussian_surface(iso) == a).all());
+  const GaussianSurfaceParams iso = plateau_self_affine(128, 3);
+  GaussianSurfaceParams lay = iso;
+  lay.peklenik_gamma = 4.0;
+  const double q_s = 2.0 * std::numbers::pi / iso.cutoff_wavelength_m;
+  for (const auto& [qx, qy] : {std::pair{0.1, 0.3}, std::pair{0.4, 0.05}, std::pair{0.2, 0.8}})
+    EXPECT_NEAR(psd_shape(lay, qx * q_s, qy * q_s), psd_shape(iso, 2.0 * qx * q_s, qy * q_s / 2.0),
+                1e-12 * psd_shape(iso, 2.0 * qx * q_s, qy * q_s / 2.0))
+        << qx << ", " << qy;
 }
 
 TEST(GaussianSurface, SameSeedSameSurfaceWhateverTheThreadCount) {
