@@ -115,6 +115,7 @@ void claim_output(const std::filesystem::path& dir, const SweepSpec& spec, std::
     j["points"] = points;
     j["combine"] = spec.zip ? "zip" : "product";
     j["threads_per_point"] = 1;
+    for (const SweepSetting& set : spec.settings) j["set"][set.key] = setting_json(set);
     for (const SweepAxis& a : spec.axes) j["axes"].push_back({{"key", a.key}, {"values", a.values}});
     for (const SweepOutput& o : spec.outputs) j["outputs"].push_back({{"column", o.column}, {"file", o.file}, {"path", o.path}});
   }
@@ -668,8 +669,10 @@ void dry_run(const SweepArgs& args) {
     steps += ' ';
     steps += s.config.string();
   }
-  std::printf("sweep: %zu points of %s, %d at a time per process\n%s\n", points.size(), steps.c_str(), local_jobs(spec),
-              header(spec).c_str());
+  std::printf("sweep: %zu points of %s, %d at a time per process\n", points.size(), steps.c_str(), local_jobs(spec));
+  for (const SweepSetting& set : spec.settings)
+    std::printf("set %s = %s\n", set.key.c_str(), setting_json(set).dump().c_str());
+  std::printf("%s\n", header(spec).c_str());
   for (std::size_t k = 0; k < points.size(); ++k) {
     for (std::size_t s = 0; s < spec.steps.size(); ++s) point_config(spec, points[k], s);
     std::string row = std::to_string(k);
@@ -687,7 +690,7 @@ void add_sweep_command(CLI::App& app) {
   auto args = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand("sweep", "parameter study: one tribo command (or the homogenise+rig chain) over "
                                               "axes of config keys, resumable, serial or under mpirun");
-  cmd->add_option("spec", args->spec, "SPEC.toml: [base] command, config, rig_config; [[axis]] key, values or "
+  cmd->add_option("spec", args->spec, "SPEC.toml: [base] command, config, rig_config; [base.set] fixed values; [[axis]] key, values or "
                                       "from/to/count/scale; [sweep] combine, jobs; [outputs] columns, names (docs/sweep.md)")
       ->required();
   cmd->add_option("--out", args->out, "output directory (results.csv, sweep.json, points/)")->capture_default_str();

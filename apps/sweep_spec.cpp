@@ -87,29 +87,59 @@ void absolutise_paths(toml::table& table, const std::filesystem::path& dir) {
   }
 }
 
-// The chain step an axis key addresses and the key inside that step's config; throws naming the key.
-void resolve_axis_key(SweepAxis& a, const SweepSpec& spec, const ConfigTable& axis) {
-  std::string key = a.key;
+// Where a key as written lands: the chain step ("homogenise:surface.hurst") and the dotted key
+// inside that step's config, every table on the way a table of it (or absent) and the key itself
+// not a table. `fail(reason)` throws, naming the key where the spec holds it.
+struct KeyTarget {
+  std::size_t step = 0;
+  std::string config_key;
+};
+template <class Fail>
+KeyTarget resolve_key(const std::string& written, const SweepSpec& spec, const std::vector<toml::table>& step_docs,
+                      Fail&& fail) {
+  KeyTarget target;
+  std::string key = written;
   if (spec.steps.size() > 1) {
     const auto colon = key.find(':');
     bool found = false;
     if (colon != std::string::npos)
       for (std::size_t s = 0; s < spec.steps.size(); ++s)
         if (key.substr(0, colon) == spec.steps[s].command) {
-          a.step = s;
+          target.step = s;
           found = true;
         }
     if (!found)
-      axis.fail("key", "in a chain the key names its step first: \"homogenise:surface.hurst\" or "
-                       "\"rig:rig.drive_speed_m_per_s\", not \"" + key + "\"");
+      fail("in a chain the key names its step first: \"homogenise:surface.hurst\" or "
+           "\"rig:rig.drive_speed_m_per_s\", not \"" + key + "\"");
     key = key.substr(colon + 1);
-    if (spec.steps[a.step].command == "rig" && (key == "friction.law" || key == "friction.table"))
-      axis.fail("key", "'" + key + "' of the rig step is set by the chain (the point's own law.json)");
+    if (spec.steps[target.step].command == "rig" && (key == "friction.law" || key == "friction.table"))
+      fail("'" + key + "' of the rig step is set by the chain (the point's own law.json)");
   }
   if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos ||
       key.find(':') != std::string::npos)
-    axis.fail("key", "must be a dotted config key such as \"rig.drive_speed_m_per_s\"");
-  a.config_key = key;
+    fail("must be a dotted config key such as \"rig.drive_speed_m_per_s\"");
+  target.config_key = key;
+  const auto parts = split_dotted(key);
+  const std::string config = spec.steps[target.step].config.string();
+  const toml::table* at = &step_docs[target.step];
+  for (std::size_t i = 0; i + 1 < parts.size() && at; ++i) {
+    const toml::node* n = at->get(parts[i]);
+    if (n && !n->is_table()) fail("'" + parts[i] + "' is not a table in " + config);
+    at = n ? n->as_table() : nullptr;
+  }
+  if (at && at->get(parts.back()) && at->get(parts.back())->is_table())
+    fail("'" + key + "' is a table in " + config + ", not a value");
+  return target;
+}
+
+// The table on the way to a dotted key of `config`, created where missing.
+toml::table* table_on_the_way(toml::table& config, const std::vector<std::string>& parts) {
+  toml::table* at = &config;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    if (!at->contains(parts[i])) at->insert(parts[i], toml::table{});
+    at = at->get(parts[i])->as_table();
+  }
+  return at;
 }
 
 }  // namespace
@@ -137,9 +167,24 @@ SweepSpec load_sweep_spec(const std::filesystem::path& path) {
     if (base->has("rig_config")) base->fail("rig_config", "is only used with command = \"homogenise+rig\"");
   }
   spec.base_config = spec.steps.front().config;
+  base->accept("set");
   base->finish();
   std::vector<toml::table> step_docs;
   for (const SweepStep& s : spec.steps) step_docs.push_back(parse_toml_file(s.config));
+  if (const toml::node* set = doc["base"]["set"].node()) {
+    // [base.set]: values every point's config gets, of any type ("pin.shape" = "spherical").
+    if (!set->is_table()) base->fail("set", "must be a table of dotted config keys and their values");
+    const ConfigTable where(*set->as_table(), path.string(), "base.set");
+    for (auto&& [k, value] : *set->as_table()) {
+      const std::string key(k.str());
+      const auto fail = [&](const std::string& reason) { where.fail(key, reason); };
+      if (value.is_table()) fail("must be a value; write the whole dotted key (\"pin.shape\" = \"spherical\")");
+      const KeyTarget target = resolve_key(key, spec, step_docs, fail);
+      SweepSetting setting{key, target.step, target.config_key, toml::array{}};
+      value.visit([&](auto&& v) { setting.value.push_back(v); });
+      spec.settings.push_back(std::move(setting));
+    }
+  }
   if (spec.steps.size() > 1) {
     // The rig step's friction law is the point's homogenised one; another law there is a mistake.
     const toml::table& rig = step_docs.back();
@@ -160,19 +205,12 @@ SweepSpec load_sweep_spec(const std::filesystem::path& path) {
     ConfigTable axis(*t, path.string(), "axis[" + std::to_string(k) + "]");
     spec.axes.push_back(read_axis(axis));
     SweepAxis& a = spec.axes.back();
-    resolve_axis_key(a, spec, axis);
+    const KeyTarget target =
+        resolve_key(a.key, spec, step_docs, [&](const std::string& reason) { axis.fail("key", reason); });
+    a.step = target.step, a.config_key = target.config_key;
     if (!axis_keys.insert(a.key).second) axis.fail("key", "'" + a.key + "' is already an axis");
-    // Every table on the way to the key must be a table of the step's config (or absent).
-    const auto parts = split_dotted(a.config_key);
-    const std::string config = spec.steps[a.step].config.string();
-    const toml::table* at = &step_docs[a.step];
-    for (std::size_t i = 0; i + 1 < parts.size() && at; ++i) {
-      const toml::node* n = at->get(parts[i]);
-      if (n && !n->is_table()) axis.fail("key", "'" + parts[i] + "' is not a table in " + config);
-      at = n ? n->as_table() : nullptr;
-    }
-    if (at && at->get(parts.back()) && at->get(parts.back())->is_table())
-      axis.fail("key", "'" + a.config_key + "' is a table in " + config + ", not a value");
+    for (const SweepSetting& set : spec.settings)
+      if (set.key == a.key) axis.fail("key", "'" + a.key + "' is set in [base.set] already");
   }
   if (auto s = root.table("sweep")) {
     spec.zip = s->choice("combine", "product", {"product", "zip"}) == "zip";
@@ -254,18 +292,15 @@ toml::table point_config(const SweepSpec& spec, const std::vector<double>& value
   const SweepStep& s = spec.steps.at(step);
   toml::table config = parse_toml_file(s.config);
   absolutise_paths(config, s.config.parent_path());
-  const auto table_at = [&config](const std::vector<std::string>& parts) {
-    toml::table* at = &config;
-    for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
-      if (!at->contains(parts[i])) at->insert(parts[i], toml::table{});
-      at = at->get(parts[i])->as_table();
-    }
-    return at;
-  };
+  for (const SweepSetting& set : spec.settings) {
+    if (set.step != step) continue;
+    const auto parts = split_dotted(set.config_key);
+    set.value.get(0)->visit([&](auto&& v) { table_on_the_way(config, parts)->insert_or_assign(parts.back(), v); });
+  }
   for (std::size_t a = 0; a < spec.axes.size(); ++a) {
     if (spec.axes[a].step != step) continue;
     const auto parts = split_dotted(spec.axes[a].config_key);
-    toml::table* at = table_at(parts);
+    toml::table* at = table_on_the_way(config, parts);
     const double v = values[a];
     // Integral values go in as integers: integer keys (grid, seed) need them, real keys accept them.
     if (std::floor(v) == v && std::abs(v) < 9e15) {
@@ -275,11 +310,17 @@ toml::table point_config(const SweepSpec& spec, const std::vector<double>& value
     }
   }
   if (spec.steps.size() > 1 && s.command == "rig") {
-    toml::table* friction = table_at({"friction", "law"});
+    toml::table* friction = table_on_the_way(config, {"friction", "law"});
     friction->insert_or_assign("law", "homogenised");
     friction->insert_or_assign("table", "../" + step_folder(spec, 0) + "/law.json");
   }
   return config;
+}
+
+nlohmann::json setting_json(const SweepSetting& set) {
+  std::ostringstream os;
+  os << toml::json_formatter{set.value};
+  return nlohmann::json::parse(os.str()).at(0);
 }
 
 std::string step_folder(const SweepSpec& spec, std::size_t step) {

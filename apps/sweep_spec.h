@@ -6,6 +6,8 @@
 //             (relative to the spec's folder)
 //             or the chain command = "homogenise+rig": config = the homogenise config, rig_config =
 //             the rig config, whose [friction] is pointed at the point's own law.json
+//   [base.set] "pin.shape" = "spherical" — values (any type) every point's config gets, before
+//             the axes; dotted keys as an axis' ("homogenise:pin.shape" in a chain)
 //   [[axis]]  key = "rig.drive_speed_m_per_s" (dotted, into the base config's tables); in a chain
 //             the step comes first: "homogenise:surface.hurst", "rig:rig.drive_speed_m_per_s"
 //             values = [ … ]                      or
@@ -37,6 +39,14 @@ struct SweepAxis {
   std::string config_key;       // dotted key inside that config ("rig.mass_kg")
 };
 
+// A [base.set] entry: a value every point's config of `step` gets at `config_key`.
+struct SweepSetting {
+  std::string key;              // as written ("homogenise:pin.shape" in a chain)
+  std::size_t step = 0;
+  std::string config_key;       // dotted key inside that step's config
+  toml::array value;            // the value, as its one element (a string, number, boolean or array)
+};
+
 // One command of a point: a chain has two (homogenise, then rig), a plain sweep one.
 struct SweepStep {
   std::string command;               // "rig", "contact", "reynolds", "homogenise"
@@ -55,6 +65,7 @@ struct SweepSpec {
   std::string command;                // [base] command, e.g. "rig" or "homogenise+rig"
   std::filesystem::path base_config;  // absolute; the first step's config
   std::vector<SweepStep> steps;       // run in order in the point's folder (a chain: one subfolder each)
+  std::vector<SweepSetting> settings;  // [base.set], in the spec's order
   std::vector<SweepAxis> axes;
   bool zip = false;
   int jobs = 0;
@@ -74,6 +85,9 @@ std::vector<std::vector<double>> sweep_points(const SweepSpec& spec);
 // In a chain, `step` picks the config; the rig step's [friction] gets law = "homogenised" and
 // table = "../homogenise/law.json" (the point's own law, relative so a sweep folder can move).
 toml::table point_config(const SweepSpec& spec, const std::vector<double>& values, std::size_t step = 0);
+
+// A [base.set] value as JSON (for sweep.json and --dry-run).
+nlohmann::json setting_json(const SweepSetting& set);
 
 // A chain's step folder inside the point's folder ("homogenise", "rig"); "" for a single command.
 std::string step_folder(const SweepSpec& spec, std::size_t step);

@@ -68,6 +68,46 @@ TEST(SweepSpec, PointConfigSetsDottedKeysCreatesTablesAndMakesFilePathsAbsolute)
   EXPECT_EQ(c["friction"]["law"].value<std::string>(), "homogenised");  // not a file: unchanged
 }
 
+SweepSpec chain_from(const std::string& text,
+                     const std::string& rig = "[rig]\nmass_kg = 1.0\n[friction]\nlaw = \"homogenised\"\n");
+
+// [base.set]: values of any type that every point gets (a crowned pin for a crown-radius axis),
+// applied before the axes, in the step they name.
+TEST(SweepSpec, BaseSetPutsValuesOfAnyTypeIntoEveryPointBeforeTheAxes) {
+  const auto path = folder() / "spec-set.toml";
+  std::ofstream(path) << "[base]\ncommand = \"rig\"\nconfig = \"base.toml\"\n[base.set]\n\"pin.shape\" = \"spherical\"\n"
+                         "\"rig.mass_kg\" = 3.5\n\"run.quiet\" = true\n"
+                         "[[axis]]\nkey = \"pin.crown_radius_m\"\nvalues = [11.3, 113]\n";
+  const SweepSpec s = load_sweep_spec(path);
+  ASSERT_EQ(s.settings.size(), 3u);
+  for (const auto& point : sweep_points(s)) {
+    const toml::table c = point_config(s, point);
+    EXPECT_EQ(c["pin"]["shape"].value<std::string>(), "spherical");
+    EXPECT_EQ(c["pin"]["crown_radius_m"].value<double>(), point[0]);
+    EXPECT_EQ(c["rig"]["mass_kg"].value<double>(), 3.5);  // the base's 1.0 replaced
+    EXPECT_EQ(c["run"]["quiet"].value<bool>(), true);
+  }
+  EXPECT_EQ(setting_json(s.settings[0]), nlohmann::json("spherical"));
+  // In a chain a setting names its step, and stays out of the other step's config.
+  const SweepSpec t = chain_from("[base.set]\n\"homogenise:pin.shape\" = \"spherical\"\n"
+                                 "[[axis]]\nkey = \"homogenise:surface.hurst\"\nvalues = [0.6]\n");
+  EXPECT_EQ(point_config(t, {0.6}, 0)["pin"]["shape"].value<std::string>(), "spherical");
+  EXPECT_FALSE(point_config(t, {0.6}, 1)["pin"]);
+}
+
+TEST(SweepSpec, BadBaseSettingsNameTheKey) {
+  auto expect_error = [](const std::string& set, const std::string& axis, std::initializer_list<std::string> fragments) {
+    const auto path = folder() / "spec-bad-set.toml";
+    std::ofstream(path) << "[base]\ncommand = \"rig\"\nconfig = \"base.toml\"\n[base.set]\n" << set << axis;
+    fixture::expect_all(fixture::input_error_of([&] { load_sweep_spec(path); }), fragments);
+  };
+  const std::string axis = "[[axis]]\nkey = \"rig.mass_kg\"\nvalues = [1]\n";
+  expect_error("\"rig.mass_kg.x\" = 1\n", axis, {"spec-bad-set.toml", "base.set.rig.mass_kg.x", "not a table"});
+  expect_error("\"rig\" = 1\n", axis, {"base.set.rig", "is a table"});
+  expect_error("[base.set.pin]\nshape = \"spherical\"\n", axis, {"base.set.pin", "whole dotted key"});
+  expect_error("\"rig.mass_kg\" = 2\n", axis, {"axis[0].key", "set in [base.set] already"});
+}
+
 TEST(SweepSpec, OutputsReadJsonObjectsAndArraysAndNameTheColumnAfterTheLastKeyAndIndex) {
   const auto file = folder() / "out.json";
   std::ofstream(file) << R"({"regime": "stick_slip", "ok": true, "s": [{"mu": 0.25}, {"mu": 0.125}], "nan": null})";
@@ -110,7 +150,7 @@ TEST(SweepSpec, BadSpecsNameTheKey) {
 
 // The homogenise → rig chain: axes name their step, the rig step's friction points at the point's own
 // law, and outputs may name a step's file.
-SweepSpec chain_from(const std::string& text, const std::string& rig = "[rig]\nmass_kg = 1.0\n[friction]\nlaw = \"homogenised\"\n") {
+SweepSpec chain_from(const std::string& text, const std::string& rig) {
   const auto dir = folder();
   std::ofstream(dir / "hom.toml") << "[surface]\nhurst = 0.8\n[homogenise]\nrealisations = 4\n";
   std::ofstream(dir / "chain-rig.toml") << rig;
