@@ -3,7 +3,8 @@
 # each run by default (in memory) and with `artefacts = true` (a `tribo` command line per point on
 # its config.toml), must give the same rows — values, errors and the config hash in the JSON's
 # provenance — and the in-memory run must leave a folder for its failed point only. The values must
-# also be those of the command run by hand on the same config. Inputs: TRIBO, EXAMPLES, WORK.
+# also be those of the command run by hand on the same config, and a [base.set] string must reach
+# the points and sweep.json. Inputs: TRIBO, EXAMPLES, WORK.
 include(${CMAKE_CURRENT_LIST_DIR}/sweep_rows.cmake)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
@@ -15,6 +16,7 @@ file(WRITE ${WORK}/contact.toml "[base]\ncommand = \"contact\"\nconfig = \"conta
   "[[axis]]\nkey = \"load.normal_load_N\"\nvalues = [1.0, 5.0, -1.0]\n[sweep]\njobs = 2\n"
   "[outputs]\ncolumns = [\"contact.json:area_fraction\", \"contact.json:iterations\", \"contact.json:provenance.config_hash\"]\n")
 file(WRITE ${WORK}/reynolds.toml "[base]\ncommand = \"reynolds\"\nconfig = \"discs.toml\"\n"
+  "[base.set]\n\"geometry.kind\" = \"parallel_discs\"\n"
   "[[axis]]\nkey = \"geometry.gap_m\"\nvalues = [1e-6, 2e-6, -1e-6]\n[sweep]\njobs = 2\n"
   "[outputs]\ncolumns = [\"reynolds.json:load_N\", \"reynolds.json:provenance.config_hash\"]\n")
 
@@ -49,6 +51,13 @@ foreach(command contact reynolds)
     message(FATAL_ERROR "${command}: in memory only the failed point 2 keeps a folder (its config.toml), found: ${folders}")
   endif()
 endforeach()
+
+# A [base.set] string reaches the points (they ran) and the sweep's record.
+file(READ ${WORK}/reynolds/sweep.json sweep_json)
+string(JSON kind ERROR_VARIABLE no_kind GET "${sweep_json}" set geometry.kind)
+if(NOT kind STREQUAL "parallel_discs")
+  message(FATAL_ERROR "reynolds: sweep.json should record [base.set] geometry.kind = parallel_discs: ${no_kind}")
+endif()
 
 # By hand: `tribo contact` on point 1's config (written by the file-step sweep) gives the area the
 # in-memory point gave.
