@@ -65,7 +65,7 @@ struct SweepSpec {
   std::string command;                // [base] command, e.g. "rig" or "homogenise+rig"
   std::filesystem::path base_config;  // absolute; the first step's config
   std::vector<SweepStep> steps;       // run in order in the point's folder (a chain: one subfolder each)
-  std::vector<SweepSetting> settings;  // [base.set], in the spec's order
+  std::vector<SweepSetting> settings;  // [base.set], by key (a TOML table has no order)
   std::vector<SweepAxis> axes;
   bool zip = false;
   int jobs = 0;
