@@ -11,6 +11,8 @@
 #include <string>
 #include <utility>
 
+#include "numerics/huge_pages.h"
+
 namespace tribo::contact {
 namespace detail {
 extern const char* const kShippedFftwWisdom;  // contact/fftw_wisdom.txt, compiled in by CMake
@@ -56,6 +58,8 @@ RealFft2d::RealFft2d(Eigen::Index nx, Eigen::Index ny, int threads, bool measure
     release();
     throw std::bad_alloc();
   }
+  numerics::advise_huge_pages(real_, sizeof(double) * static_cast<std::size_t>(nx * ny));
+  numerics::advise_huge_pages(spectrum_, sizeof(fftw_complex) * static_cast<std::size_t>(spectrum_size()));
   const unsigned flags = measure ? FFTW_MEASURE : FFTW_ESTIMATE;
   {
     std::lock_guard<std::mutex> lock(planner_mutex());

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "contact/vector_clones.h"
+#include "numerics/huge_pages.h"
 
 namespace tribo::contact {
 namespace {
@@ -133,6 +134,7 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
   const Eigen::Index mx = fft_.nx(), my = fft_.ny(), mxh = fft_.nx_half();
   const double inv_size = 1.0 / static_cast<double>(mx * my);
   kernel_.resize(mxh * my);
+  numerics::advise_huge_pages(kernel_.data(), sizeof(double) * static_cast<std::size_t>(kernel_.size()));
   if (periodic) {
     const double dqx = 2.0 * std::numbers::pi / grid.period_x_m(), dqy = 2.0 * std::numbers::pi / grid.period_y_m();
     for (Eigen::Index j = 0; j < my; ++j) {
@@ -157,6 +159,8 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
     // cache miss (the multiply took 10 % of a 1024² solve, 2.5 % now).
     constexpr Eigen::Index kb = RowColumnFft::kColumns;
     const Eigen::Index blocks = (mxh + kb - 1) / kb;
+    block_kernel_.reserve(static_cast<std::size_t>(blocks * my * kb));
+    numerics::advise_huge_pages(block_kernel_.data(), sizeof(double) * block_kernel_.capacity());
     block_kernel_.assign(static_cast<std::size_t>(blocks * my * kb), 0.0);
     for (Eigen::Index b = 0; b < blocks; ++b) {
       for (Eigen::Index j = 0; j < my; ++j) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "contact/vector_clones.h"
+#include "numerics/huge_pages.h"
 
 namespace tribo::contact {
 namespace {
@@ -347,8 +348,12 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   // half-space: on a periodic one each line of w is used as the product makes it and kept nowhere
   // (ElasticHalfSpace::displacement_by_rows), which saves writing a grid and reading it back.
   const Eigen::Index nx = grid.nx;
-  Eigen::ArrayXXd p(grid.nx, grid.ny), v(grid.nx, grid.ny), s = Eigen::ArrayXXd::Zero(grid.nx, grid.ny), w;
-  if (!hs.periodic()) w.resize(grid.nx, grid.ny);
+  // Fresh in every solve, so on huge pages (numerics/huge_pages.h): fewer first-touch faults, and
+  // fewer TLB misses in the passes.
+  Eigen::ArrayXXd p = numerics::huge_page_array(grid.nx, grid.ny), v = numerics::huge_page_array(grid.nx, grid.ny);
+  Eigen::ArrayXXd s = numerics::huge_page_array(grid.nx, grid.ny), w;
+  s.setZero();
+  if (!hs.periodic()) w = numerics::huge_page_array(grid.nx, grid.ny);
   if (warm != nullptr) {
     p = warm->max(0.0).min(cap);
   } else if (load_control) {
@@ -542,15 +547,9 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     have_step = true;
   }
 
-  s.resize(0, 0), w.resize(0, 0);  // the iteration's grids, before the result's
   NormalContactResult out;
   out.pressure_Pa = std::move(p);
   const Eigen::ArrayXXd& pr = out.pressure_Pa;
-  if (opt.full_fields) {
-    out.displacement_m = v - h0;
-    out.gap_m = (v - delta).max(0.0);
-    out.plastic_increment_m = (pr >= cap).select((delta - v).max(0.0), 0.0);
-  }
   out.approach_m = delta;
   out.normal_load_N = pr.sum() * cell;
   const double contact_cells = static_cast<double>((pr > 0.0).count());
@@ -559,6 +558,17 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   out.area_fraction = contact_cells / static_cast<double>(n);
   out.max_pressure_Pa = pr.maxCoeff();
   out.mean_gap_m = (v - delta).max(0.0).mean();
+  if (opt.full_fields) {
+    // The fields go into the iteration's grids, which are already touched: a fresh grid costs
+    // its first-touch page faults again. v = h0 + u becomes the displacement last.
+    s = (v - delta).max(0.0);
+    out.gap_m = std::move(s);
+    if (w.size() == 0) w = numerics::huge_page_array(grid.nx, grid.ny);
+    w = (pr >= cap).select((delta - v).max(0.0), 0.0);
+    out.plastic_increment_m = std::move(w);
+    v -= h0;
+    out.displacement_m = std::move(v);
+  }
   out.summary.converged = converged;
   out.summary.iterations = it;
   out.summary.residual = residual;
@@ -626,7 +636,9 @@ std::vector<LoadGapPoint> load_gap_curve(ElasticHalfSpace& hs, const Eigen::Arra
 
 Eigen::ArrayXXd gap_from_heights(const Eigen::ArrayXXd& z) {
   if (z.size() == 0 || !z.allFinite()) throw std::invalid_argument("surface heights must be finite and non-empty");
-  return z.maxCoeff() - z;
+  Eigen::ArrayXXd h = numerics::huge_page_array(z.rows(), z.cols());  // every pass of a solve reads it
+  h = z.maxCoeff() - z;
+  return h;
 }
 
 Eigen::ArrayXXd sphere_gap(const Grid& grid, double radius_m) {

@@ -324,26 +324,41 @@ TEST(NormalContact, PlasticFlatteningMakesUnloadingAndReloadingElastic) {
 
 // Without the full fields (NormalContactOptions::full_fields = false) a solve is the same solve:
 // the same pressures and scalars to the bit, only gap, displacement and plastic increment left out.
-// Elastic-plastic, so every scalar the result carries is exercised (plastic area, mean gap).
+// Elastic-plastic, so every scalar the result carries is exercised (plastic area, mean gap). The
+// full fields, which reuse the iteration's grids, agree with one another: gap = max(h + u − δ, 0),
+// the plastic increment max(δ − h − u, 0) on the capped cells and 0 elsewhere, the mean gap the
+// gap's mean — on a padded half-space and on a periodic one (no w grid in its iteration).
 TEST(NormalContact, WithoutTheFullFieldsTheSolveAndItsScalarsAreUnchanged) {
   const Grid grid = Grid::patch(63, 63, 1e-3, 1e-3);
-  ElasticHalfSpace hs(grid, kEStar, false);
-  const Eigen::ArrayXXd h = sphere_gap(grid, 0.01);
-  NormalContactOptions opt;
-  opt.pressure_cap_Pa = 0.7 * reference::hertz_peak_pressure_Pa(100.0, 0.01, kEStar);
-  const NormalContactResult full = solve_normal_load(hs, h, 100.0, opt);
-  opt.full_fields = false;
-  const NormalContactResult lean = solve_normal_load(hs, h, 100.0, opt);
-  ASSERT_TRUE(full.summary.converged && lean.summary.converged);
-  ASSERT_GT(full.plastic_area_m2, 0.0);
-  EXPECT_EQ((lean.pressure_Pa - full.pressure_Pa).abs().maxCoeff(), 0.0);
-  EXPECT_EQ(lean.approach_m, full.approach_m);
-  EXPECT_EQ(lean.real_area_m2, full.real_area_m2);
-  EXPECT_EQ(lean.plastic_area_m2, full.plastic_area_m2);
-  EXPECT_EQ(lean.mean_gap_m, full.mean_gap_m);
-  EXPECT_EQ(lean.summary.iterations, full.summary.iterations);
-  EXPECT_EQ(lean.gap_m.size() + lean.displacement_m.size() + lean.plastic_increment_m.size(), 0);
-  EXPECT_EQ(full.gap_m.size(), 63 * 63);
+  for (const bool periodic : {false, true}) {
+    SCOPED_TRACE(periodic ? "periodic" : "padded");
+    ElasticHalfSpace hs(grid, kEStar, periodic);
+    const Eigen::ArrayXXd h = sphere_gap(grid, 0.01);
+    NormalContactOptions opt;
+    opt.pressure_cap_Pa = 0.7 * reference::hertz_peak_pressure_Pa(100.0, 0.01, kEStar);
+    const NormalContactResult full = solve_normal_load(hs, h, 100.0, opt);
+    opt.full_fields = false;
+    const NormalContactResult lean = solve_normal_load(hs, h, 100.0, opt);
+    ASSERT_TRUE(full.summary.converged && lean.summary.converged);
+    ASSERT_GT(full.plastic_area_m2, 0.0);
+    EXPECT_EQ((lean.pressure_Pa - full.pressure_Pa).abs().maxCoeff(), 0.0);
+    EXPECT_EQ(lean.approach_m, full.approach_m);
+    EXPECT_EQ(lean.real_area_m2, full.real_area_m2);
+    EXPECT_EQ(lean.plastic_area_m2, full.plastic_area_m2);
+    EXPECT_EQ(lean.mean_gap_m, full.mean_gap_m);
+    EXPECT_EQ(lean.summary.iterations, full.summary.iterations);
+    EXPECT_EQ(lean.gap_m.size() + lean.displacement_m.size() + lean.plastic_increment_m.size(), 0);
+    ASSERT_EQ(full.gap_m.size(), 63 * 63);
+    ASSERT_EQ(full.plastic_increment_m.size(), 63 * 63);
+    // Round-off only: each field is h + u − δ formed once more, in another order (≈ 1e-16 of h).
+    const double tol = 1e-13 * h.abs().maxCoeff();
+    const Eigen::ArrayXXd overlap = h + full.displacement_m - full.approach_m;
+    EXPECT_LE((overlap.max(0.0) - full.gap_m).abs().maxCoeff(), tol);
+    const Eigen::ArrayXXd plastic = (full.pressure_Pa >= opt.pressure_cap_Pa).select((-overlap).max(0.0), 0.0);
+    EXPECT_LE((plastic - full.plastic_increment_m).abs().maxCoeff(), tol);
+    EXPECT_GT(full.plastic_increment_m.maxCoeff(), 100.0 * tol);
+    EXPECT_NEAR(full.gap_m.mean(), full.mean_gap_m, tol);
+  }
 }
 
 // Near-complete elastic contact of a rough surface (≈ 97 % of the cells), the other regime where
