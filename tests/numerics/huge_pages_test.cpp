@@ -51,16 +51,17 @@ TEST(HugePages, SmallBlocksAreLeftAlone) {
 }
 
 // A 1024² grid (8 MiB) advised before its first touch: where the kernel's mode honours the advice
-// ("madvise" or "always"), at least two of its three to four whole 2-MiB extents are huge pages
-// once written — none would be in "madvise" mode without the advice. The values written are read
-// back unchanged.
+// ("madvise" or "always"), some of its three to four whole 2-MiB extents are huge pages once
+// written (all of them on an idle machine; the kernel may fall back to small pages where its free
+// memory is fragmented, so one is asked for) — none would be in "madvise" mode without the advice.
+// The values written are read back unchanged.
 TEST(HugePages, AFreshGridIsBackedByHugePagesWhereTheKernelOffersThem) {
   const std::string mode = thp_mode();
   if (mode != "madvise" && mode != "always") GTEST_SKIP() << "transparent huge pages: '" << mode << "'";
   Eigen::ArrayXXd a = huge_page_array(1024, 1024);
   for (Eigen::Index i = 0; i < a.size(); ++i) a.data()[i] = static_cast<double>(i);
   const auto begin = reinterpret_cast<std::uintptr_t>(a.data());
-  EXPECT_GE(huge_bytes_in(begin, begin + sizeof(double) * static_cast<std::size_t>(a.size())), std::uint64_t{4} << 20);
+  EXPECT_GE(huge_bytes_in(begin, begin + sizeof(double) * static_cast<std::size_t>(a.size())), std::uint64_t{2} << 20);
   EXPECT_EQ(a(1023, 1023), static_cast<double>(1024 * 1024 - 1));
   EXPECT_EQ(a.sum(), 0.5 * static_cast<double>(a.size()) * static_cast<double>(a.size() - 1));
 }
