@@ -11,6 +11,7 @@
 #include "contact/normal_contact.h"
 #include "lubrication/micro_ehl.h"
 #include "numerics/format.h"
+#include "numerics/huge_pages.h"
 
 namespace tribo::homogenise {
 namespace {
@@ -23,6 +24,14 @@ Eigen::ArrayXXd spread_to_finer(const Eigen::ArrayXXd& coarse, Eigen::Index rows
   for (Eigen::Index j = 0; j < cols; ++j)
     for (Eigen::Index i = 0; i < rows; ++i) fine(i, j) = coarse(i / 2, j / 2);
   return fine;
+}
+
+// The rigid film h̄ + z against a flat: gap0 = z − min z, on huge pages (numerics/huge_pages.h),
+// as every pass of every solve on this surface reads it.
+Eigen::ArrayXXd gap_at_first_contact(const Eigen::ArrayXXd& z) {
+  Eigen::ArrayXXd gap0 = numerics::huge_page_array(z.rows(), z.cols());
+  gap0 = z - z.minCoeff();
+  return gap0;
 }
 
 // A solve from `warm` (empty: cold), and from cold once more if the warm start did not converge:
@@ -97,7 +106,7 @@ SolidContact solid_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd& z,
   const std::string grid_name = std::to_string(z.rows()) + "²";
   const contact::Grid grid = contact::Grid::patch(z.rows(), z.cols(), side, side);
   contact::ElasticHalfSpace halfspace(grid, o.e_star_Pa, true, 1);
-  const Eigen::ArrayXXd gap0 = z - z.minCoeff();  // the rigid film h̄ + z against a flat: gap0 = z − min z
+  const Eigen::ArrayXXd gap0 = gap_at_first_contact(z);
   r.first_contact_separation_m = -z.minCoeff();
   const contact::NormalContactOptions bem = bem_options(o);
   const auto failed = [&](const std::string& where, const contact::NormalContactResult& c) {
@@ -152,7 +161,7 @@ SolidContact junction_contact(const HomogeniseOptions& o, const Eigen::ArrayXXd&
   const double side = o.surface.size_m;
   contact::ElasticHalfSpace halfspace(contact::Grid::patch(z.rows(), z.cols(), side, side), o.e_star_Pa, true, 1);
   r.first_contact_separation_m = -z.minCoeff();
-  solve_junction(o, halfspace, z - z.minCoeff(), bem_options(o), coarse, keep, r);
+  solve_junction(o, halfspace, gap_at_first_contact(z), bem_options(o), coarse, keep, r);
   return r;
 }
 
