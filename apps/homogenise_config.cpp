@@ -95,14 +95,23 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
     l->finish();
   }
   if (auto p = root.table("pin")) {
-    o.pin.shape = p->choice("shape", "flat", {"flat", "spherical"}) == "flat" ? homogenise::PinShape::flat
-                                                                             : homogenise::PinShape::spherical;
+    const std::string shape = p->choice("shape", "flat", {"flat", "spherical", "ball"});
+    o.pin.shape = shape == "flat" ? homogenise::PinShape::flat
+                                  : (shape == "spherical" ? homogenise::PinShape::spherical : homogenise::PinShape::ball);
     o.pin.radius_m = p->number("radius_m", o.pin.radius_m, Range::positive);
     o.pin.normal_load_N = p->number("normal_load_N", o.pin.normal_load_N, Range::positive);
     if (o.pin.shape == homogenise::PinShape::spherical) {
       o.pin.crown_radius_m = p->required_number("crown_radius_m", Range::positive);
     } else if (p->has("crown_radius_m")) {
       p->fail("crown_radius_m", "is only used with shape = \"spherical\"");
+    }
+    if (o.pin.shape == homogenise::PinShape::ball) {
+      o.pin.film_grid = static_cast<int>(p->integer("film_grid", o.pin.film_grid, 17, 1025));
+      if (p->has("tilt_rad")) p->fail("tilt_rad", "is not used with shape = \"ball\" (a ball has no tilt)");
+      if (!root.has("micro_ehl"))
+        p->fail("shape", "\"ball\" needs a [micro_ehl] table: its speeds are the ball film's axis, its eyring_stress_Pa the film's");
+    } else if (p->has("film_grid")) {
+      p->fail("film_grid", "is only used with shape = \"ball\"");
     }
     o.pin.tilt_rad = p->number("tilt_rad", o.pin.tilt_rad, Range::non_negative);
     if (!(o.pin.tilt_rad < homogenise::Pin::kMaxTiltRad))

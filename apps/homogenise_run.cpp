@@ -182,6 +182,8 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   // Everything left out, with why: the Stribeck points above, and the table's separations without
   // a converged solve (issue 37's interface; empty when all converged).
   law["unconverged"] = curve.unconverged;
+  if (pin.ball)
+    for (const std::string& m : pin.ball->messages) law["unconverged"].push_back({{"what", "ball film solve"}, {"reason", m}});
   for (const auto& h : law["table"]["dropped_separations_m"])
     law["unconverged"].push_back({{"what", "law table separation"}, {"separation_m", h}, {"reason", "no converged solve at this separation"}});
   law["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -212,6 +214,9 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   if (cells.unconverged > 0 || pin.reynolds_unconverged > 0)
     std::fprintf(stderr, "tribo: warning: %d cell and %d pin-face solves did not converge (left out; see law.json)\n",
                  cells.unconverged, pin.reynolds_unconverged);
+  if (pin.ball && pin.ball->unconverged > 0)
+    std::fprintf(stderr, "tribo: warning: %d of the ball's film solves did not converge (left out of its table; see law.json ball_film)\n",
+                 pin.ball->unconverged);
   if (plots && run_plot_script("homogenise", out.string()) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib); CSVs and law.json are written\n");
   return law;

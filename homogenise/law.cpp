@@ -114,7 +114,8 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
   // Micro-EHL films make the kinetic shear a function of ηU as well (rig/law_table.h "tribo-law-2").
   const bool films = !pin.eta_u_Pa_m.empty();
   j["format"] = films ? "tribo-law-2" : "tribo-law-1";
-  j["pin"] = {{"shape", o.pin.shape == PinShape::flat ? "flat" : "spherical"},
+  const char* shape = o.pin.shape == PinShape::flat ? "flat" : (o.pin.shape == PinShape::spherical ? "spherical" : "ball");
+  j["pin"] = {{"shape", shape},
               {"radius_m", o.pin.radius_m},
               {"crown_radius_m", o.pin.crown_radius_m},
               {"tilt_rad", o.pin.tilt_rad},
@@ -124,11 +125,13 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                     {"pressure_viscosity_per_Pa", o.lubricant.pressure_viscosity_per_Pa},
                     {"temperature_viscosity_per_K", o.lubricant.temperature_viscosity_per_K},
                     {"reference_temperature_K", o.lubricant.reference_temperature_K}};
-  // The face's heat diffuses over the pin radius: τ = R²/κ1 (the thermal time of the slider).
+  // The face's heat diffuses over the face radius (a ball's: its Hertz circle): τ = R²/κ1 (the
+  // thermal time of the slider).
+  const double face_radius_m = std::sqrt(pin.nominal_area_m2 / M_PI);
   j["thermal"] = {{"slider_conductivity_W_per_m_K", o.thermal.slider_conductivity_W_per_m_K},
                   {"disc_conductivity_W_per_m_K", o.thermal.disc_conductivity_W_per_m_K},
                   {"slider_diffusivity_m2_per_s", o.thermal.slider_diffusivity_m2_per_s},
-                  {"time_constant_s", o.pin.radius_m * o.pin.radius_m / o.thermal.slider_diffusivity_m2_per_s}};
+                  {"time_constant_s", face_radius_m * face_radius_m / o.thermal.slider_diffusivity_m2_per_s}};
   j["junction"] = {{"alpha", jn.alpha},
                    {"n", jn.n},
                    {"sigma0_over_tau_i", jn.sigma0_over_tau_i},
@@ -173,6 +176,26 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
     j["table"]["solid_shear_standard_error_Pa"] = pin.solid_shear_standard_error_Pa;
     j["table"]["solid_shear_discretisation_error_Pa"] = pin.solid_shear_discretisation_error_Pa;
     j["table"]["film_share"] = pin.film_share;
+  }
+  if (const auto& b = pin.ball) {
+    j["table"]["fluid_load_N"] = b->fluid_load_N;
+    j["table"]["fluid_shear_N"] = b->fluid_shear_N;
+    nlohmann::json films = nlohmann::json::array();
+    for (std::size_t k = 0; k < b->eta_u_Pa_m.size(); ++k) {
+      const auto finite_or_null = [](const std::vector<double>& v) {
+        nlohmann::json a = nlohmann::json::array();
+        for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
+        return a;
+      };
+      films.push_back({{"eta_u_Pa_m", b->eta_u_Pa_m[k]},
+                       {"central_film_m", finite_or_null(b->central_film_m[k])},
+                       {"traction_N", finite_or_null(b->traction_N[k])}});
+    }
+    j["ball_film"] = {{"hertz_radius_m", b->hertz_radius_m},
+                      {"film_grid", o.pin.film_grid},
+                      {"share", b->share},
+                      {"films", films},
+                      {"unconverged", b->messages}};
   }
   j["cells"] = {{"sigma_m", cells.sigma_m},
                 {"realisations", cells.realisations},

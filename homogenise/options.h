@@ -21,11 +21,13 @@
 
 namespace tribo::homogenise {
 
-enum class PinShape { flat, spherical };
+// flat and spherical: a pin's face of radius R. ball: a ball of radius R on the flat disc, its
+// nominal contact Hertz's circle at the pin's load and its film elastohydrodynamic (ball_film.h).
+enum class PinShape { flat, spherical, ball };
 
 struct Pin {
   PinShape shape = PinShape::flat;
-  double radius_m = 4.7625e-3;      // face radius R (thesis 3/16 in, Appendix I)
+  double radius_m = 4.7625e-3;      // face radius R (thesis 3/16 in, Appendix I); a ball's radius
   double crown_radius_m = 0.0;      // spherical pin: radius of the crown, h = h̄ + r²/(2 R_c)
   // The face's slope along the sliding direction, its leading edge raised (either shape): the film
   // h = h̄ − θ x, x from the face's centre along the disc's motion — a converging wedge. A slider
@@ -34,6 +36,8 @@ struct Pin {
   // Below this the thin film's slope is small (0.01 rad is 95 µm across the thesis pin).
   static constexpr double kMaxTiltRad = 0.01;
   double normal_load_N = 93.86;     // W (thesis 21.1 lb)
+  // A ball's EHL film solves (ball_film.h): nodes a side of each (≥ 17; lubrication/ehl_point.h).
+  int film_grid = 65;
 };
 
 // Elastohydrodynamic films at the contact spots (lubrication/micro_ehl.h), tabulated over ηU: the

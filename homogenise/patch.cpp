@@ -56,6 +56,11 @@ void validate(const HomogeniseOptions& o) {
   if (!(o.pin.normal_load_N > 0 && std::isfinite(o.pin.normal_load_N))) bad("pin normal_load_N must be finite and > 0");
   if (o.pin.shape == PinShape::spherical && !(o.pin.crown_radius_m > 0 && std::isfinite(o.pin.crown_radius_m)))
     bad("a spherical pin needs crown_radius_m > 0");
+  if (o.pin.shape == PinShape::ball) {
+    if (!o.micro_ehl) bad("a ball (pin shape = ball) needs [micro_ehl]: its speeds are the ball film's ηU axis, its eyring_stress_Pa the film's");
+    if (o.pin.tilt_rad != 0.0) bad("a ball has no tilt: tilt_rad must be 0");
+    if (o.pin.film_grid < 17) bad("pin film_grid must be >= 17");
+  }
   if (!(o.pin.tilt_rad >= 0 && o.pin.tilt_rad < Pin::kMaxTiltRad))
     bad("pin tilt_rad must lie in [0, 0.01) (the thin film's slope is small; 0.01 rad is 95 µm across the thesis pin)");
   if (o.separation_ratios.size() < 3) bad("separation_ratios needs at least 3 values");

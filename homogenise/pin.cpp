@@ -4,6 +4,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "homogenise/ball_film.h"
 #include "homogenise/solid_contact.h"
 #include "lubrication/geometry.h"
 #include "lubrication/reynolds.h"
@@ -35,13 +36,15 @@ class Column {
 
 double face_drop_m(const Pin& pin) {
   const double theta = pin.tilt_rad, r = pin.radius_m;
-  if (pin.shape == PinShape::flat) return theta * r;
+  if (pin.shape != PinShape::spherical) return theta * r;  // a ball is untilted
   const double rc = pin.crown_radius_m;
   return theta * rc <= r ? 0.5 * theta * theta * rc : theta * r - r * r / (2.0 * rc);
 }
 
 PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
-  const double sigma = t.sigma_m, radius = o.pin.radius_m;
+  const bool ball = o.pin.shape == PinShape::ball;
+  // A ball's face is its Hertz circle, the film over it uniform (ball_film.h).
+  const double sigma = t.sigma_m, radius = ball ? ball_hertz_radius_m(o) : o.pin.radius_m;
   PinTable pin;
   pin.nominal_area_m2 = M_PI * radius * radius;
   const double drop = face_drop_m(o.pin);
@@ -171,6 +174,13 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
       pin.solid_shear_standard_error_Pa.push_back(se_row);
       pin.solid_shear_discretisation_error_Pa.push_back(error_row);
     }
+  }
+  if (ball) {
+    // The ball's fluid is its EHL film: the rigid circle's lift and Petroff shear would count it twice.
+    std::fill(pin.wedge_lift_per_eta_u_m.begin(), pin.wedge_lift_per_eta_u_m.end(), 0.0);
+    std::fill(pin.rugosity_lift_per_eta_u_m.begin(), pin.rugosity_lift_per_eta_u_m.end(), 0.0);
+    std::fill(pin.shear_per_eta_u_m.begin(), pin.shear_per_eta_u_m.end(), 0.0);
+    pin.ball = ball_film(o, pin.separation_m);
   }
   return pin;
 }

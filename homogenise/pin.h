@@ -1,6 +1,8 @@
 // From the patch to the pin: the homogenised columns integrated over the pin's face, one row per
 // table separation h̄ (the film at the face centre).
 //
+// A ball's face is its Hertz circle at the pin's load, the film over it uniform (f = 0), its fluid
+// the EHL film of ball_film.h. Otherwise:
 // Nominal film over the face: h(x, y) = h̄ + f(x, y), f = 0 (flat) or r²/(2 R_c) (spherical crown),
 // less θ x for a face tilted by θ (leading edge raised, x along the disc's motion). The rows put
 // the face's lowest point on the cell table's separations: h̄ = s + d with d = −min f (face_drop_m),
@@ -29,9 +31,11 @@
 //             the face (below), the τ_i of the law's kinetic force τ_i A_r made a function of h̄, ηU.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "homogenise/ball_film.h"
 #include "homogenise/cell_table.h"
 #include "homogenise/options.h"
 
@@ -56,6 +60,9 @@ struct PinTable {
   std::vector<std::vector<double>> solid_shear_Pa, solid_shear_standard_error_Pa, solid_shear_discretisation_error_Pa;
   std::vector<std::vector<double>> solid_shear_coarse_Pa;  // the same from half the contact grid
   std::vector<std::vector<double>> film_share;  // the real area the films separate, weighted alike (0 without contact)
+  // A ball (`shape = "ball"`): the face above is its Hertz circle, the lift and shear columns 0,
+  // and its fluid is this EHL film (ball_film.h).
+  std::optional<BallFilmTable> ball;
   int reynolds_unconverged = 0;
   std::string messages;
 };

@@ -35,6 +35,15 @@ HomogenisedBase::HomogenisedBase(LawTable table, double normal_load_N)
   }
   if (!table_.eta_u_Pa_m.empty()) solid_shear_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.solid_shear_Pa);
   if (!table_.film_share.empty()) film_share_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.film_share);
+  if (table_.has_ball_film()) {
+    const double solved = table_.pin.normal_load_N;
+    if (!(std::abs(normal_load_N - solved) <= 1e-9 * solved))
+      throw std::invalid_argument("normal_load_N = " + internal::exact_decimal(normal_load_N) + " N differs from the load the ball's film was solved at, " +
+                                  internal::exact_decimal(solved) + " N (" + (table_.source.empty() ? std::string("table") : table_.source) +
+                                  ": pin.normal_load_N): its Hertz circle and film shares are that load's; homogenise again at this load");
+    ball_load_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.fluid_load_N);
+    ball_shear_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.fluid_shear_N);
+  }
   lubricant_.viscosity_Pa_s = table_.lubricant.viscosity_Pa_s;
   lubricant_.pressure_viscosity_per_Pa = 0.0;  // ambient pressure: the rig's film is not EHL
   lubricant_.temperature_viscosity_per_K = table_.lubricant.temperature_viscosity_per_K;
@@ -46,7 +55,7 @@ HomogenisedBase::HomogenisedBase(LawTable table, double normal_load_N)
 }
 
 double HomogenisedBase::balanced_separation_m(double eta_u_Pa_m) const {
-  const auto carried = [&](double h) { return solid_load_N(h) + eta_u_Pa_m * lift_per_eta_u_m(h); };
+  const auto carried = [&](double h) { return solid_load_N(h) + fluid_load_N(h, eta_u_Pa_m); };
   double lo = table_.separation_m.front(), hi = table_.separation_m.back();
   if (carried(lo) <= normal_load_N_) return lo;  // W = N_s(front) at rest
   if (carried(hi) > normal_load_N_)
@@ -61,6 +70,14 @@ double HomogenisedBase::balanced_separation_m(double eta_u_Pa_m) const {
   }
   // Of the two bracketing neighbours take the one whose load is nearer W.
   return std::abs(carried(lo) - normal_load_N_) <= std::abs(carried(hi) - normal_load_N_) ? lo : hi;
+}
+
+double HomogenisedBase::fluid_load_N(double h, double eta_u) const {
+  return eta_u * lift_per_eta_u_m(h) + (ball_load_ ? ball_load_->value(h, eta_u) : 0.0);
+}
+
+double HomogenisedBase::fluid_shear_N(double h, double eta_u) const {
+  return eta_u * shear_per_eta_u_m(h) + (ball_shear_ ? ball_shear_->value(h, eta_u) : 0.0);
 }
 
 void HomogenisedBase::initial_state(std::span<double> state) const {
@@ -103,24 +120,29 @@ double HomogenisedBase::kinetic_force_N(const FrictionContext& c, double solid_f
   const double h = c.state[kSeparation];
   const double eta = viscosity_Pa_s(c.state[kTemperatureRise]);
   const double solid = solid_shear_Pa(h, eta * std::abs(c.relative_speed_m_per_s)) * real_area_m2(h) + kinetic_increment * solid_load_N(h);
-  const double viscous = eta * c.relative_speed_m_per_s * shear_per_eta_u_m(h);
+  const double u = c.relative_speed_m_per_s;
+  const double viscous = u < 0.0 ? -fluid_shear_N(h, -eta * u) : fluid_shear_N(h, eta * u);
   return solid_fraction * solid + viscous + fluid_force_N;
 }
 
 double HomogenisedBase::separation_rate_m_per_s(double h, double dT, double u, double load_N) const {
   const double eta = viscosity_Pa_s(dT);
   if (eta == 0.0) return 0.0;  // dry: the algebraic limit N_s(h̄) = W, h̄ = h̄0
-  return (solid_load_N(h) + eta * u * lift_per_eta_u_m(h) - load_N) / (eta * squeeze_per_eta_m(h));
+  const double fluid = eta * u * lift_per_eta_u_m(h) + (ball_load_ ? ball_load_->value(h, eta * std::abs(u)) : 0.0);
+  return (solid_load_N(h) + fluid - load_N) / (eta * squeeze_per_eta_m(h));
 }
 
 double HomogenisedBase::jaeger_temperature_rise_K(double power_W, double h, double u) const {
-  const double area = std::max(real_area_m2(h), kJaegerAreaFloorFraction * table_.pin.nominal_area_m2);
+  // A ball's friction heat — its film's shear and its asperities' — is made over its Hertz circle,
+  // and its film's viscosity is the inlet's, at the surfaces' mean temperature there.
+  const double area = ball_load_ ? table_.pin.nominal_area_m2 : std::max(real_area_m2(h), kJaegerAreaFloorFraction * table_.pin.nominal_area_m2);
   return lubrication::jaeger_flash_temperature_rise_K(jaeger_, power_W, area, u);
 }
 
 double HomogenisedBase::film_relaxation_time_s(double h, double dT, double u) const {
   const double eta = viscosity_Pa_s(dT);
-  const double stiffness = -(solid_load_slope_N_per_m(h) + eta * std::abs(u) * lift_.slope(h));
+  const double eta_u = eta * std::abs(u);
+  const double stiffness = -(solid_load_slope_N_per_m(h) + eta_u * lift_.slope(h) + (ball_load_ ? ball_load_->slope_h(h, eta_u) : 0.0));
   const double damping = eta * squeeze_per_eta_m(h);
   if (damping == 0.0) return 0.0;
   return stiffness > 0.0 ? damping / stiffness : std::numeric_limits<double>::infinity();

@@ -5,8 +5,10 @@
 //   viscosity            η(ΔT) = η0 exp(−γ ΔT)                 (lubrication/viscosity.h at p = 0)
 //   load balance         W = N_s(h̄) + η|U| L(h̄) − η K(h̄) dh̄/dt  (solid + lift + squeeze, DESIGN §4)
 //     ⇒  dh̄/dt = [N_s(h̄) + η|U| L(h̄) − W] / (η K(h̄));   η = 0 (dry): dh̄/dt = 0, h̄ stays at h̄0
+//     a ball's table adds its EHL film's load W_f(h̄, η|U|) to the lift (law_table.h)
 //   initial film         N_s(h̄0) = W, ΔT0 = 0                  (the slider starts at rest, unheated)
 //   kinetic force        F_k = τ̄ A_r(h̄) + η(ΔT)|U| S(h̄)      (boundary shear + viscous shear)
+//     + a ball's EHL traction F_f(h̄, η|U|), in the direction of U
 //     τ̄ = τ_i ("tribo-law-1"), or τ̄(h̄, η(ΔT)|U|) of the asperity tops' EHL films ("tribo-law-2",
 //     lubrication/micro_ehl.h): the flash temperature thins those films through η(ΔT)
 //   static limit         F_s = μs(φ̇) N_s(h̄)                    (junction locus, thesis (3.1.24); re-attach alike)
@@ -15,6 +17,8 @@
 //     with ξ1, ξ2 the slider's and disc's conductivities, κ the slider's diffusivity and
 //     A = max(A_r(h̄), 1e-5 · A_nominal): Jaeger's heat source is the solid contact; when the contact
 //     vanishes the floor keeps the film's shear heat on a finite path instead of ΔT_J → ∞ as A → 0.
+//     A ball's table: A = its Hertz circle (pin.nominal_area_m2) — film and asperities heat it
+//     together, and the EHL film's viscosity is its inlet's, at the surfaces' mean temperature.
 //       dΔT/dt = (ΔT_J − ΔT) / t_T                              (t_T = thermal.time_constant_s)
 //     While stuck |U| = 0, P = 0 and ΔT relaxes to 0.
 //
@@ -49,7 +53,9 @@ class HomogenisedBase {
   static constexpr double kJaegerAreaFloorFraction = 1e-5;
 
   // Validates the table. Throws std::invalid_argument naming normal_load_N unless
-  // 0 < normal_load_N ≤ N_s(separation_m.front()) (the film's equilibrium must lie in the table).
+  // 0 < normal_load_N ≤ N_s(separation_m.front()) (the film's equilibrium must lie in the table),
+  // and, for a ball's table, unless normal_load_N is the load it was solved at (pin.normal_load_N,
+  // to 1e-9 of it).
   HomogenisedBase(LawTable table, double normal_load_N);
 
   const LawTable& table() const { return table_; }
@@ -70,6 +76,10 @@ class HomogenisedBase {
   double lift_per_eta_u_m(double h_m) const { return lift_.value(h_m); }
   double squeeze_per_eta_m(double h_m) const { return squeeze_.value(h_m); }
   double shear_per_eta_u_m(double h_m) const { return shear_.value(h_m); }
+  // The film's load at h̄ and ηU ≥ 0: ηU L(h̄), plus a ball's EHL film W_f(h̄, ηU).
+  double fluid_load_N(double h_m, double eta_u_Pa_m) const;
+  // The film's shear force at h̄ and ηU ≥ 0: ηU S(h̄), plus a ball's EHL traction F_f(h̄, ηU).
+  double fluid_shear_N(double h_m, double eta_u_Pa_m) const;
 
   // η(ΔT) = η0 exp(−γ ΔT); 0 for a dry table (η0 = 0).
   double viscosity_Pa_s(double temperature_rise_K) const;
@@ -106,6 +116,7 @@ class HomogenisedBase {
   double normal_load_N_;
   MonotoneTable solid_load_, real_area_, lift_, squeeze_, shear_;
   std::optional<EtaUTable> solid_shear_, film_share_;  // "tribo-law-2" only (the film share optional)
+  std::optional<EtaUTable> ball_load_, ball_shear_;    // a ball's EHL film only
   lubrication::Lubricant lubricant_;
   lubrication::JaegerContact jaeger_;
   double h0_m_ = 0.0;

@@ -168,14 +168,27 @@ void validate(const LawTable& t) {
   if (!(t.solid_load_N.front() > 0.0)) fail(s, "table.solid_load_N[0]", "must be > 0 (the closest separation must carry load)");
   check_column(s, "table.lift_per_eta_u_m", t.lift_per_eta_u_m, Sign::non_negative);
   check_column(s, "table.squeeze_per_eta_m", t.squeeze_per_eta_m, Sign::positive);
-  check_column(s, "table.shear_per_eta_u_m", t.shear_per_eta_u_m, Sign::positive);
-  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty() && t.film_share.empty()) return;  // "tribo-law-1"
+  // A ball's fluid is its EHL film (fluid_load_N, fluid_shear_N): its Petroff shear S is 0.
+  check_column(s, "table.shear_per_eta_u_m", t.shear_per_eta_u_m, t.has_ball_film() ? Sign::non_negative : Sign::positive);
+  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty() && t.film_share.empty() && !t.has_ball_film() && t.fluid_shear_N.empty())
+    return;  // "tribo-law-1"
   const std::vector<double>& e = t.eta_u_Pa_m;
   if (e.size() < 2) fail(s, "table.eta_u_Pa_m", "needs at least 2 entries (got " + std::to_string(e.size()) + ")");
   if (e.front() != 0.0) fail(s, "table.eta_u_Pa_m[0]", "must be 0 (the law must answer at rest), got " + exact_decimal(e.front()));
   check_column(s, "table.eta_u_Pa_m", e, Sign::non_negative);
   check_strictly_increasing(s, "table.eta_u_Pa_m", e);
   check_rows(s, "table.solid_shear_Pa", t.solid_shear_Pa, n, e.size(), Sign::positive);
+  if (t.fluid_load_N.empty() != t.fluid_shear_N.empty())
+    fail(s, t.fluid_load_N.empty() ? "table.fluid_load_N" : "table.fluid_shear_N", "is missing (a ball's film needs both fluid_load_N and fluid_shear_N)");
+  if (t.has_ball_film()) {
+    check_rows(s, "table.fluid_load_N", t.fluid_load_N, n, e.size(), Sign::non_negative);
+    check_rows(s, "table.fluid_shear_N", t.fluid_shear_N, n, e.size(), Sign::non_negative);
+    for (std::size_t k = 0; k < e.size(); ++k)
+      for (std::size_t m = 1; m < n; ++m)
+        if (t.fluid_load_N[m][k] > t.fluid_load_N[m - 1][k])
+          fail(s, "table.fluid_load_N[" + std::to_string(m) + "][" + std::to_string(k) + "]",
+               "must not exceed the row before (" + exact_decimal(t.fluid_load_N[m - 1][k]) + "): the film carries less as the separation grows");
+  }
   if (t.film_share.empty()) return;
   check_rows(s, "table.film_share", t.film_share, n, e.size(), Sign::non_negative);
   for (std::size_t m = 0; m < n; ++m)
@@ -267,6 +280,8 @@ LawTable law_table_from_json(const json& doc, const std::string& source) {
     t.eta_u_Pa_m = r.column(tab, "table", "eta_u_Pa_m");
     t.solid_shear_Pa = rows_of(r, tab, source, "solid_shear_Pa");
     if (tab.find("film_share") != tab.end()) t.film_share = rows_of(r, tab, source, "film_share");
+    if (tab.find("fluid_load_N") != tab.end()) t.fluid_load_N = rows_of(r, tab, source, "fluid_load_N");
+    if (tab.find("fluid_shear_N") != tab.end()) t.fluid_shear_N = rows_of(r, tab, source, "fluid_shear_N");
   }
 
   validate(t);
@@ -381,15 +396,24 @@ EtaUTable::EtaUTable(const std::vector<double>& separation_m, std::vector<double
   }
 }
 
-double EtaUTable::value(double h_m, double eta_u) const {
+std::pair<std::size_t, double> EtaUTable::locate(double eta_u) const {
   if (!(eta_u >= eta_u_.front() && eta_u <= eta_u_.back()))
     throw std::out_of_range("law table: eta_u_Pa_m = " + exact_decimal(eta_u) + " lies outside the table's [" + exact_decimal(eta_u_.front()) +
                             ", " + exact_decimal(eta_u_.back()) + "]; homogenise with a larger [micro_ehl] max_speed_m_per_s");
   const auto upper = std::upper_bound(eta_u_.begin(), eta_u_.end(), eta_u);
   const std::size_t k = upper == eta_u_.end() ? eta_u_.size() - 2 : static_cast<std::size_t>(upper - eta_u_.begin()) - 1;
   const double a = eta_u_[k], b = eta_u_[k + 1];
-  const double w = a > 0.0 ? std::log(eta_u / a) / std::log(b / a) : (eta_u - a) / (b - a);
+  return {k, a > 0.0 ? std::log(eta_u / a) / std::log(b / a) : (eta_u - a) / (b - a)};
+}
+
+double EtaUTable::value(double h_m, double eta_u) const {
+  const auto [k, w] = locate(eta_u);
   return (1.0 - w) * at_eta_u_[k].value(h_m) + w * at_eta_u_[k + 1].value(h_m);
+}
+
+double EtaUTable::slope_h(double h_m, double eta_u) const {
+  const auto [k, w] = locate(eta_u);
+  return (1.0 - w) * at_eta_u_[k].slope(h_m) + w * at_eta_u_[k + 1].slope(h_m);
 }
 
 }  // namespace tribo::rig

@@ -13,6 +13,12 @@
 //
 //   τ̄(h̄, ηU)    table.solid_shear_Pa [h][ηU]  F_solid = τ̄ A_r (τ_i A_r in "tribo-law-1"), > 0
 //   s_f(h̄, ηU)   table.film_share [h][ηU]      share of A_r the films separate (optional), in [0, 1]
+//   W_f(h̄, ηU)   table.fluid_load_N [h][ηU]    a ball's EHL film: the load it carries (optional,
+//   F_f(h̄, ηU)   table.fluid_shear_N [h][ηU]   with its traction; homogenise/ball_film.h), ≥ 0
+//
+// A ball's table (with W_f, F_f) holds its fluid there: its L and S are 0 (S > 0 otherwise), and
+// it was solved at the ball's load pin.normal_load_N (its Hertz circle and film shares are that
+// load's), so the rig takes it at that load only (rig/homogenised_law.h).
 //
 // plus the pin, the lubricant (η = η0 exp(−γ ΔT), lubrication/viscosity.h), the thermal constants
 // of Jaeger's flash temperature (thesis (5.2.1)) and the junction locus (thesis (3.1.24)) with the
@@ -30,6 +36,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -82,6 +89,10 @@ struct LawTable {
   // Optional (informational: the rig reports it, its forces do not use it): the share of the real
   // area the films separate, [separation][ηU] in [0, 1]; empty when absent.
   std::vector<std::vector<double>> film_share;
+  // Optional, both or neither: a ball's EHL film, [separation][ηU] — the load it carries (N,
+  // non-increasing in h̄) and its traction (N); 0 at ηU = 0.
+  std::vector<std::vector<double>> fluid_load_N, fluid_shear_N;
+  bool has_ball_film() const { return !fluid_load_N.empty(); }
 };
 
 // Reads law.json. Any defect (unreadable file, malformed JSON, wrong format, missing key, wrong
@@ -125,8 +136,13 @@ class EtaUTable {
   // The table's separation axis, its ηU axis and the column's rows; std::invalid_argument on a shape mismatch.
   EtaUTable(const std::vector<double>& separation_m, std::vector<double> eta_u_Pa_m, const std::vector<std::vector<double>>& rows);
   double value(double h_m, double eta_u_Pa_m) const;
+  // ∂/∂h̄ of value at fixed ηU.
+  double slope_h(double h_m, double eta_u_Pa_m) const;
 
  private:
+  // The ηU interval k holding eta_u and the weight of its upper node (std::out_of_range outside).
+  std::pair<std::size_t, double> locate(double eta_u_Pa_m) const;
+
   std::vector<double> eta_u_;
   std::vector<MonotoneTable> at_eta_u_;  // the column over h̄ at each ηU node
 };

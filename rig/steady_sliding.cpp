@@ -24,11 +24,11 @@ SteadySliding steady_sliding(const HomogenisedBase& b, double u) {
     const double eta = b.viscosity_Pa_s(dT);
     s.separation_m = b.balanced_separation_m(eta * u);
     s.solid_load_N = b.solid_load_N(s.separation_m);
-    s.lift_N = eta * u * b.lift_per_eta_u_m(s.separation_m);
+    s.lift_N = b.fluid_load_N(s.separation_m, eta * u);
     s.solid_shear_Pa = b.solid_shear_Pa(s.separation_m, eta * u);
     s.film_share_of_contact = b.film_share(s.separation_m, eta * u);
     s.solid_friction_N = s.solid_shear_Pa * b.real_area_m2(s.separation_m);
-    s.fluid_shear_N = eta * u * b.shear_per_eta_u_m(s.separation_m);
+    s.fluid_shear_N = b.fluid_shear_N(s.separation_m, eta * u);
     const double target = b.jaeger_temperature_rise_K((s.solid_friction_N + s.fluid_shear_N) * u, s.separation_m, u);
     s.temperature_rise_K = dT;
     if (std::abs(target - dT) <= 1e-9 * (1.0 + target)) {

@@ -1,7 +1,8 @@
 // Steady sliding of the homogenised law (rig/homogenised_law.h) at a constant relative speed U:
 // the state at which the law's own rates vanish — the Stribeck curve the rig integrates.
 //
-//   film         N_s(h̄) + η(ΔT) U L(h̄) = W                  (dh̄/dt = 0, no squeeze)
+//   film         N_s(h̄) + η(ΔT) U L(h̄) = W                  (dh̄/dt = 0, no squeeze; a ball's
+//                EHL film W_f(h̄, ηU) and traction F_f join the lift and the fluid shear)
 //   temperature  ΔT = ΔT_J(F U, h̄, U)                          (dΔT/dt = 0, thesis (5.2.1))
 //   friction     μ = F/W,  F = τ̄(h̄, η(ΔT) U) A_r(h̄) + η(ΔT) U S(h̄);  fluid share = η U L(h̄) / W
 //                (τ̄ = τ_i without the asperity tops' EHL films, "tribo-law-1")

@@ -161,6 +161,23 @@ TEST(PinConfig, TiltIsReadAndASteepOrNegativeOneRefused) {
   }
 }
 
+// [pin] shape = "ball": its film grid read; without [micro_ehl] (the film's ηU axis and Eyring
+// stress), with a tilt, or a film grid on a flat pin, refused with the file and the key.
+TEST(PinConfig, ABallNeedsItsFilmsSpeedsAndHasNoTilt) {
+  const std::string surface = "[surface]\nkind = \"gaussian\"\nrms_height_m = 5e-8\ncorrelation_length_m = 2e-6\n";
+  const std::string films = "[micro_ehl]\nmin_speed_m_per_s = 1e-3\n";
+  const HomogeniseRun run =
+      load_homogenise_run(write_file("pin-ball.toml", surface + films + "[pin]\nshape = \"ball\"\nradius_m = 9.525e-3\nfilm_grid = 33\n"));
+  EXPECT_EQ(run.options.pin.shape, homogenise::PinShape::ball);
+  EXPECT_EQ(run.options.pin.film_grid, 33);
+  const auto no_films = write_file("pin-ball-dry.toml", surface + "[pin]\nshape = \"ball\"\n");
+  expect_all(input_error_of([&] { load_homogenise_run(no_films); }), {no_films.string(), "key 'pin.shape'", "[micro_ehl]"});
+  const auto tilted = write_file("pin-ball-tilt.toml", surface + films + "[pin]\nshape = \"ball\"\ntilt_rad = 1e-4\n");
+  expect_all(input_error_of([&] { load_homogenise_run(tilted); }), {tilted.string(), "key 'pin.tilt_rad'"});
+  const auto flat = write_file("pin-flat-grid.toml", surface + "[pin]\nfilm_grid = 33\n");
+  expect_all(input_error_of([&] { load_homogenise_run(flat); }), {flat.string(), "key 'pin.film_grid'"});
+}
+
 TEST(DriveTable, ReadByTheBundlesCsvRules) {
   // tribo's own provenance block above the columns, blanks around cells, an extra column.
   write_file("drive.csv", "# tribo_version: 0.1\n# seed: 1\nt_s, v_m_per_s, note\n0, 1e-3, a\n2, 3e-3, b\n");

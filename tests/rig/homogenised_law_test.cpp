@@ -647,6 +647,39 @@ TEST(LawTableReader, AMalformedShearTableNamesTheKeyAndTheReason) {
   }
 }
 
+// A ball's EHL film (homogenise/ball_film.h): fluid_load_N and fluid_shear_N come together, each
+// row as long as the ηU axis, and the film's load may not grow with the separation.
+TEST(LawTableReader, ABallsFilmTablesComeTogetherAndItsLoadFallsWithTheSeparation) {
+  nlohmann::json good = filmed_json(filmed_table());
+  const std::size_t n = good["table"]["separation_m"].size();
+  std::vector<std::vector<double>> load, shear;
+  for (std::size_t m = 0; m < n; ++m) {
+    load.push_back({0.0, 1.0 / (1.0 + m), 2.0 / (1.0 + m)});
+    shear.push_back({0.0, 0.01, 0.02});
+  }
+  good["table"]["fluid_load_N"] = load;
+  good["table"]["fluid_shear_N"] = shear;
+  const LawTable r = read_law_table(write_json("ball.json", good.dump()));
+  EXPECT_TRUE(r.has_ball_film());
+  EXPECT_EQ(r.fluid_load_N, load);
+  EXPECT_EQ(r.fluid_shear_N, shear);
+  {
+    nlohmann::json d = good;
+    d["table"].erase("fluid_shear_N");
+    expect_rejected("ball_no_shear.json", d, {"table.fluid_shear_N", "missing"});
+  }
+  {
+    nlohmann::json d = good;
+    d["table"]["fluid_load_N"][2][1] = 5.0;
+    expect_rejected("ball_rising.json", d, {"table.fluid_load_N[2][1]", "must not exceed the row before"});
+  }
+  {
+    nlohmann::json d = good;
+    d["table"]["fluid_shear_N"][1].erase(0);
+    expect_rejected("ball_short.json", d, {"table.fluid_shear_N[1]", "entries"});
+  }
+}
+
 // The kinetic force's solid part is τ̄(h̄, ηU) A_r(h̄): τ_i A_r at rest; at ηU = 1e-3 Pa m, halfway
 // between 1e-4 and 1e-2 in ln ηU, 0.75 τ_i A_r (linear in ln ηU); at 5e-5, halfway between 0 and
 // 1e-4 in ηU, 0.95 τ_i A_r; beyond 1e-2 the query is refused, naming the axis (never extrapolated).

@@ -1,0 +1,199 @@
+// A ball on the disc (homogenise/ball_film.h): its face is Hertz's circle, its film the EHL point
+// contact at the share of the load it carries, and the rig's steady sliding runs from boundary
+// friction (Bowden & Tabor's τ_i/H where the asperities yield) to the ball's full EHL film.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "homogenise/ball_film.h"
+#include "homogenise/law.h"
+#include "homogenise/pin.h"
+#include "lubrication/ehl_point.h"
+#include "lubrication/ehl_traction.h"
+#include "rig/homogenised_law.h"
+#include "rig/law_table.h"
+#include "rig/steady_sliding.h"
+
+namespace tribo::homogenise {
+namespace {
+
+constexpr double kBallSigma = 2e-8;
+constexpr double kBallHardness = 6e9;
+constexpr int kFilmGrid = 33;  // coarse: every reference below is solved on the same grid
+
+// The ball of examples/ehl-ball-on-disc.toml (a 3/4-in steel ball on a steel disc, mineral oil,
+// 10 N), its film unheated (γ = 0) and its speeds 0.01–3 m/s.
+HomogeniseOptions ball_options() {
+  HomogeniseOptions o;
+  o.surface.rms_height_m = kBallSigma;
+  o.e_star_Pa = 1.154e11;
+  o.hardness_Pa = kBallHardness;
+  o.interface_shear_strength_Pa = 6e8;
+  o.lubricant.viscosity_Pa_s = 0.04;
+  o.lubricant.pressure_viscosity_per_Pa = 2e-8;
+  o.lubricant.temperature_viscosity_per_K = 0.0;
+  o.pin.shape = PinShape::ball;
+  o.pin.radius_m = 9.525e-3;
+  o.pin.normal_load_N = 10.0;
+  o.pin.film_grid = kFilmGrid;
+  MicroEhl films;
+  films.min_speed_m_per_s = 0.01;
+  films.max_speed_m_per_s = 3.0;
+  o.micro_ehl = films;
+  return o;
+}
+
+// Asperities that yield: p_s(h̄) = 2 GPa (1 − h̄/4σ)² up to 4σ, A_r/A = p_s/H; a smooth film
+// (φ = 1) between them. The spots' shear is τ_i at every ηU (no asperity-top films).
+CellTable yielding_cells(const HomogeniseOptions& o) {
+  CellTable t;
+  t.sigma_m = kBallSigma;
+  const std::size_t speeds = micro_ehl_eta_u_Pa_m(o).size();
+  for (double r : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 3.5, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 14.0, 16.0, 18.0, 20.0, 23.0, 26.0, 30.0, 35.0, 40.0}) {
+    const double p = r < 4.0 ? 2e9 * std::pow(1.0 - r / 4.0, 2) : 0.0;
+    t.separation_m.push_back(r * kBallSigma);
+    for (auto* c : {&t.solid_pressure_Pa, &t.solid_pressure_coarse_Pa}) c->push_back({p, 0});
+    for (auto* c : {&t.area_fraction, &t.area_fraction_coarse}) c->push_back({p / kBallHardness, 0});
+    for (auto* c : {&t.phi_x, &t.phi_y, &t.phi_f, &t.couette_shear_factor, &t.phi_fp}) c->push_back({1, 0});
+    for (auto* c : {&t.phi_s, &t.contact_fraction, &t.lift_per_eta_u_per_m}) c->push_back({0, 0});
+    t.film_over_sigma.push_back({r, 0});
+    t.spot_shear_Pa.emplace_back(speeds, Estimate{o.interface_shear_strength_Pa, 0});
+    t.spot_shear_coarse_Pa.push_back(t.spot_shear_Pa.back());
+    t.spot_film_share.emplace_back(speeds, Estimate{0, 0});
+  }
+  t.mu_s_max = {0.5, 0};
+  t.mu_boundary = {0.1, 0};
+  t.realisations = 1;
+  return t;
+}
+
+lubrication::PiezoviscousLubricant ball_oil(const HomogeniseOptions& o) {
+  lubrication::PiezoviscousLubricant l;
+  l.viscosity_Pa_s = o.lubricant.viscosity_Pa_s;
+  l.pressure_viscosity_per_Pa = o.lubricant.pressure_viscosity_per_Pa;
+  l.law = o.micro_ehl->pressure_viscosity_law;
+  return l;
+}
+
+// The film of the ball at share s of its load while the disc slides at U under the held ball:
+// u_m = U/2, Δu = U, load s W on the modulus s E' (load sharing, ball_film.h) — and its traction.
+struct Film {
+  double central_m, traction_N;
+};
+Film film_at_share(const HomogeniseOptions& o, double share, double u) {
+  lubrication::EhlPointOptions grid;
+  grid.nodes_x = grid.nodes_y = kFilmGrid;
+  const double w = share * o.pin.normal_load_N;
+  const lubrication::EhlPointResult f =
+      lubrication::solve_ehl_point({w, o.pin.radius_m, share * 2.0 * o.e_star_Pa, 0.5 * u}, ball_oil(o), grid);
+  EXPECT_TRUE(f.converged) << f.message;
+  return {f.central_film_m, lubrication::ehl_point_traction(f, ball_oil(o), u, o.micro_ehl->eyring_stress_Pa, w).force_N};
+}
+
+TEST(BallFilm, TheFaceIsHertzsCircleAndTheAsperitiesCarryThePatchPressureOverIt) {
+  // Johnson (1985) (4.22): a³ = 3 W R / (4 E*) — 85.226 µm for 10 N on a 9.525 mm ball, E* 115.4 GPa.
+  const HomogeniseOptions o = ball_options();
+  EXPECT_NEAR(ball_hertz_radius_m(o), 8.5226e-5, 1e-9);
+  const CellTable cells = yielding_cells(o);
+  const PinTable pin = pin_scale(o, cells);
+  const double area = M_PI * std::pow(ball_hertz_radius_m(o), 2);
+  EXPECT_NEAR(pin.nominal_area_m2 / area, 1.0, 1e-12);
+  for (std::size_t m = 0; m < pin.separation_m.size(); ++m) {
+    // The film over the circle is uniform: N_s = π a² p_s(h̄) exactly (the face's weights sum to π a²).
+    EXPECT_NEAR(pin.solid_load_N[m], area * cells.solid_pressure_Pa[m].mean, 1e-12 * area * 2e9) << m;
+    // The ball's fluid is its EHL film alone: no rigid lift or Petroff shear beside it.
+    EXPECT_EQ(pin.wedge_lift_per_eta_u_m[m] + pin.rugosity_lift_per_eta_u_m[m] + pin.shear_per_eta_u_m[m], 0.0);
+  }
+  // Solves that did not converge (thin films at large shares on this coarse grid) are each listed.
+  ASSERT_TRUE(pin.ball.has_value());
+  EXPECT_EQ(pin.ball->messages.size(), static_cast<std::size_t>(pin.ball->unconverged));
+}
+
+TEST(BallFilm, AFilmBetweenTheSolvedSharesCarriesTheShareWhoseFilmItIs) {
+  // At 1 m/s: the film solved at s = 0.05 (between the shares 0.046 and 0.1) has a thickness at
+  // which the table's inversion must give back s = 0.05 and its traction. ln s and ln F are
+  // interpolated linearly in ln h_c over a third of a decade of s, where h_c ∝ s^{−q} with q
+  // changing slowly: 2 % each.
+  const HomogeniseOptions o = ball_options();
+  const double u = 1.0;
+  std::vector<double> shares, films, tractions;
+  for (int j = -12; j <= 0; ++j) {
+    shares.push_back(std::pow(10.0, j / 3.0));
+    const Film f = film_at_share(o, shares.back(), u);
+    films.push_back(f.central_m);
+    tractions.push_back(f.traction_N);
+  }
+  const Film between = film_at_share(o, 0.05, u);
+  const BallFilmAt at = ball_film_at(shares, films, tractions, between.central_m);
+  EXPECT_NEAR(at.share / 0.05, 1.0, 0.02);
+  EXPECT_NEAR(at.traction_N / between.traction_N, 1.0, 0.02);
+  // A film squeezed thinner than the whole load's pushes harder than W (the ball rises onto it),
+  // up to the cap; at the whole load's own film it carries W.
+  const BallFilmAt whole = ball_film_at(shares, films, tractions, films.back());
+  EXPECT_NEAR(whole.share, 1.0, 1e-12);
+  EXPECT_NEAR(whole.traction_N / tractions.back(), 1.0, 1e-12);
+  EXPECT_GT(ball_film_at(shares, films, tractions, 0.9 * films.back()).share, 1.0);
+  EXPECT_EQ(ball_film_at(shares, films, tractions, 0.1 * films.back()).share, kBallFilmMaxShare);
+  // Thicker than the smallest share's: the film fades as the last interval's power law.
+  const BallFilmAt thick = ball_film_at(shares, films, tractions, 2.0 * films.front());
+  EXPECT_LT(thick.share, shares.front());
+  EXPECT_GT(thick.share, 0.0);
+}
+
+// The whole chain: pin table → law.json → the rig's steady sliding, against direct solves.
+class BallOnDisc : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {  // the films once for the suite (≈ 2 s)
+    const HomogeniseOptions o = ball_options();
+    const nlohmann::json law = law_json(o, yielding_cells(o), pin_scale(o, yielding_cells(o)));
+    base_ = new rig::HomogenisedBase(rig::law_table_from_json(law, "ball law.json"), o.pin.normal_load_N);
+  }
+  static void TearDownTestSuite() {
+    delete base_;
+    base_ = nullptr;
+  }
+  const HomogeniseOptions o_ = ball_options();
+  static inline rig::HomogenisedBase* base_ = nullptr;
+};
+
+TEST_F(BallOnDisc, SlowSlidingIsTheYieldingAsperitiesBoundaryFriction) {
+  // At 1 cm/s the full load's film is thinner than the asperities' separation at rest: the film
+  // carries a few per cent, and μ is Bowden & Tabor's τ_i/H of yielding contacts (N_s = H A_r),
+  // 0.1 — less the share the film takes, plus its own traction.
+  const rig::SteadySliding s = rig::steady_sliding(*base_, 0.01);
+  ASSERT_TRUE(s.converged) << s.message;
+  EXPECT_LT(s.fluid_share, 0.05);
+  EXPECT_NEAR(s.mu, o_.interface_shear_strength_Pa / kBallHardness, 0.005);
+  EXPECT_EQ(s.regime, rig::LubricationRegime::boundary);
+}
+
+TEST_F(BallOnDisc, FastSlidingRidesOnTheBallsFullEhlFilm) {
+  // At 3 m/s the ball's own EHL film at its whole load (solved here directly) is far above the
+  // asperities (4σ = 80 nm): the steady separation is that film's central thickness and μ its
+  // traction over W. 3 %: the table's separation nodes are 3–5σ apart there, its interpolant
+  // monotone cubic between them.
+  const double u = 3.0;
+  const Film full = film_at_share(o_, 1.0, u);
+  const rig::SteadySliding s = rig::steady_sliding(*base_, u);
+  ASSERT_TRUE(s.converged) << s.message;
+  EXPECT_GT(full.central_m, 8.0 * kBallSigma);
+  EXPECT_NEAR(s.separation_m / full.central_m, 1.0, 0.03);
+  EXPECT_NEAR(s.fluid_share, 1.0, 1e-9);
+  EXPECT_NEAR(s.mu / (full.traction_N / o_.pin.normal_load_N), 1.0, 0.03);
+  EXPECT_EQ(s.regime, rig::LubricationRegime::full_film);
+}
+
+TEST_F(BallOnDisc, TheRigTakesTheBallAtTheLoadItsFilmWasSolvedAt) {
+  try {
+    rig::HomogenisedBase other(base_->table(), 5.0);
+    FAIL() << "a ball's table at another load was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("pin.normal_load_N"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace tribo::homogenise
