@@ -52,7 +52,7 @@ struct BallFilmTable {
 };
 
 inline constexpr double kBallFilmMinShare = 1e-4;
-inline constexpr double kBallFilmMaxShare = 10.0;
+inline constexpr double kBallFilmMaxShare = 2.0;
 inline constexpr int kBallFilmSharesPerDecade = 3;
 
 // Hertz's contact radius of the ball at the pin's load: a = (3 W R / (4 E*))^{1/3}.
