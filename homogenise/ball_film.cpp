@@ -12,10 +12,6 @@
 
 namespace tribo::homogenise {
 
-double ball_hertz_radius_m(const HomogeniseOptions& o) {
-  return std::cbrt(3.0 * o.pin.normal_load_N * o.pin.radius_m / (4.0 * o.e_star_Pa));
-}
-
 BallFilmAt ball_film_at(const std::vector<double>& share, const std::vector<double>& central_film_m,
                         const std::vector<double>& traction_N, double h) {
   // The solved shares whose film is thinner than every smaller share's: h_c strictly decreasing.
@@ -43,7 +39,7 @@ BallFilmAt ball_film_at(const std::vector<double>& share, const std::vector<doub
 BallFilmTable ball_film(const HomogeniseOptions& o, const std::vector<double>& separation_m) {
   if (o.pin.shape != PinShape::ball || !o.micro_ehl) throw std::invalid_argument("ball_film: the options describe no ball with [micro_ehl]");
   BallFilmTable t;
-  t.hertz_radius_m = ball_hertz_radius_m(o);
+  t.hertz_radius_m = nominal_contact_radius_m(o);
   t.eta_u_Pa_m = micro_ehl_eta_u_Pa_m(o);
   const int decades = static_cast<int>(std::lround(-std::log10(kBallFilmMinShare)));
   const int shares = decades * kBallFilmSharesPerDecade;

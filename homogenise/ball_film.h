@@ -55,9 +55,6 @@ inline constexpr double kBallFilmMinShare = 1e-4;
 inline constexpr double kBallFilmMaxShare = 2.0;
 inline constexpr int kBallFilmSharesPerDecade = 3;
 
-// Hertz's contact radius of the ball at the pin's load: a = (3 W R / (4 E*))^{1/3}.
-double ball_hertz_radius_m(const HomogeniseOptions& options);
-
 // Solves the films (in parallel over options.threads) and tabulates them on `separation_m`.
 // Throws std::invalid_argument unless options describe a ball; std::runtime_error when at some
 // ηU fewer than two shares converged.

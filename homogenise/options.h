@@ -117,6 +117,11 @@ int contact_refinement(const HomogeniseOptions& options);
 // The refinement factor f_j of the junction's finest grid (junction_grid above).
 int junction_refinement(const HomogeniseOptions& options);
 
+// The radius of the pin's nominal contact: the face's R, or a ball's Hertz circle at the pin's
+// load, a = (3 W R / (4 E*))^{1/3} (Johnson 1985, (4.22)). Its area sets the nominal pressure of
+// the junction solves and the face the pin stage integrates over.
+double nominal_contact_radius_m(const HomogeniseOptions& options);
+
 // The ηU axis of the micro-EHL columns (Pa·m): 0, then η0 U over the MicroEhl speeds; empty without them.
 std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& options);
 // The films' constants: options.micro_ehl's with the pair's E*, τ_i and the lubricant's η0 and α

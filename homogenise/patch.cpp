@@ -106,6 +106,11 @@ std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& o) {
   return axis;
 }
 
+double nominal_contact_radius_m(const HomogeniseOptions& o) {
+  if (o.pin.shape != PinShape::ball) return o.pin.radius_m;
+  return std::cbrt(3.0 * o.pin.normal_load_N * o.pin.radius_m / (4.0 * o.e_star_Pa));
+}
+
 lubrication::MicroEhlOptions micro_ehl_options(const HomogeniseOptions& o) {
   lubrication::MicroEhlOptions films;
   films.e_star_Pa = o.e_star_Pa;

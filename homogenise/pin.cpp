@@ -44,7 +44,7 @@ double face_drop_m(const Pin& pin) {
 PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   const bool ball = o.pin.shape == PinShape::ball;
   // A ball's face is its Hertz circle, the film over it uniform (ball_film.h).
-  const double sigma = t.sigma_m, radius = ball ? ball_hertz_radius_m(o) : o.pin.radius_m;
+  const double sigma = t.sigma_m, radius = nominal_contact_radius_m(o);
   PinTable pin;
   pin.nominal_area_m2 = M_PI * radius * radius;
   const double drop = face_drop_m(o.pin);

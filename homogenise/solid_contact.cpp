@@ -56,7 +56,7 @@ void solve_junction(const HomogeniseOptions& o, contact::ElasticHalfSpace& halfs
                     const contact::NormalContactOptions& bem, const SolidPressures* coarse, SolidPressures* keep, SolidContact& r) {
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   const double side = o.surface.size_m, patch_area = side * side;
-  const double pin_area = M_PI * o.pin.radius_m * o.pin.radius_m;
+  const double pin_area = M_PI * std::pow(nominal_contact_radius_m(o), 2);  // a ball's: its Hertz circle
   const double load = o.pin.normal_load_N / pin_area * patch_area;  // the pin's nominal pressure on the patch
   const double tau = o.interface_shear_strength_Pa;
   const auto area_at_cap = [&](double cap, const Eigen::ArrayXXd* coarse_field, Eigen::ArrayXXd* kept) {

@@ -11,6 +11,8 @@
 #include "homogenise/ball_film.h"
 #include "homogenise/law.h"
 #include "homogenise/pin.h"
+#include "homogenise/solid_contact.h"
+#include "contact/surface.h"
 #include "lubrication/ehl_point.h"
 #include "lubrication/ehl_traction.h"
 #include "rig/homogenised_law.h"
@@ -96,10 +98,10 @@ Film film_at_share(const HomogeniseOptions& o, double share, double u) {
 TEST(BallFilm, TheFaceIsHertzsCircleAndTheAsperitiesCarryThePatchPressureOverIt) {
   // Johnson (1985) (4.22): a³ = 3 W R / (4 E*) — 85.226 µm for 10 N on a 9.525 mm ball, E* 115.4 GPa.
   const HomogeniseOptions o = ball_options();
-  EXPECT_NEAR(ball_hertz_radius_m(o), 8.5226e-5, 1e-9);
+  EXPECT_NEAR(nominal_contact_radius_m(o), 8.5226e-5, 1e-9);
   const CellTable cells = yielding_cells(o);
   const PinTable pin = pin_scale(o, cells);
-  const double area = M_PI * std::pow(ball_hertz_radius_m(o), 2);
+  const double area = M_PI * std::pow(nominal_contact_radius_m(o), 2);
   EXPECT_NEAR(pin.nominal_area_m2 / area, 1.0, 1e-12);
   for (std::size_t m = 0; m < pin.separation_m.size(); ++m) {
     // The film over the circle is uniform: N_s = π a² p_s(h̄) exactly (the face's weights sum to π a²).
@@ -110,6 +112,26 @@ TEST(BallFilm, TheFaceIsHertzsCircleAndTheAsperitiesCarryThePatchPressureOverIt)
   // Solves that did not converge (thin films at large shares on this coarse grid) are each listed.
   ASSERT_TRUE(pin.ball.has_value());
   EXPECT_EQ(pin.ball->messages.size(), static_cast<std::size_t>(pin.ball->unconverged));
+}
+
+TEST(BallFilm, TheJunctionSeesTheMeanHertzPressure) {
+  // The junction's capped solves run at the nominal pressure: a ball's W/(πa²), 0.44 GPa here —
+  // exactly a flat pin's whose face is the ball's Hertz circle (the same solves to the bit).
+  HomogeniseOptions ball = ball_options();
+  ball.surface.grid = 32;
+  ball.surface.size_m = 4e-6;
+  ball.surface.rms_height_m = 5e-8;
+  ball.surface.cutoff_wavelength_m = 5e-7;
+  HomogeniseOptions flat = ball;
+  flat.pin.shape = PinShape::flat;
+  flat.pin.radius_m = nominal_contact_radius_m(ball);
+  const Eigen::ArrayXXd z = contact::gaussian_surface(ball.surface);
+  const SolidContact on_ball = junction_contact(ball, z), on_face = junction_contact(flat, z);
+  ASSERT_EQ(on_ball.unconverged, 0);
+  EXPECT_EQ(on_ball.mu_boundary, on_face.mu_boundary);
+  EXPECT_EQ(on_ball.mu_s_max, on_face.mu_s_max);
+  // Bowden & Tabor bound it: μ_b ≥ τ_i/H (every contact at most at the hardness).
+  EXPECT_GE(on_ball.mu_boundary, ball.interface_shear_strength_Pa / kBallHardness * (1.0 - 1e-6));
 }
 
 TEST(BallFilm, AFilmBetweenTheSolvedSharesCarriesTheShareWhoseFilmItIs) {
