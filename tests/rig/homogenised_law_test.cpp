@@ -18,6 +18,7 @@
 #include "rig/friction_model.h"
 #include "rig/homogenised_law.h"
 #include "rig/law_table.h"
+#include "rig/steady_sliding.h"
 #include "rig/parameters.h"
 #include "rig/simulator.h"
 
@@ -580,6 +581,33 @@ TEST(HomogenisedLaw, LubricatedThesisLikeRigBreaksAwayOnTheLocusWithTheFilmAtRes
   EXPECT_NEAR(r.events.front().mu, mu_s, 1e-8);  // CVODE root location, as in effects_test
 }
 
+
+// Steady sliding's temperature is a fixed point of Jaeger's ΔT_J(ΔT). A viscous film that heats
+// itself has ΔT_J ∝ η(ΔT) ∝ e^{−γΔT}, slope −γ ΔT at the fixed point: beyond γΔT = 3 the damped
+// iteration ΔT ← (ΔT + ΔT_J)/2 cycles, and steady_sliding bisects instead. Every speed of a sweep
+// through that range must settle on a true fixed point.
+TEST(SteadySliding, EveryStateIsATemperatureFixedPointWhereTheDampedIterationWouldCycle) {
+  LinearSpec spec;
+  spec.viscosity_Pa_s = 2.0;
+  spec.lift_m = 10.0;
+  const HomogenisedBase base(linear_table(spec), 50.0);
+  int hot = 0;
+  for (int k = 0; k <= 30; ++k) {
+    const double u = 1e-3 * std::pow(1e4, k / 30.0);
+    SteadySliding s;
+    try {
+      s = steady_sliding(base, u);
+    } catch (const std::out_of_range&) {
+      break;  // the film has left the table
+    }
+    ASSERT_TRUE(s.converged) << "U = " << u << ": " << s.message;
+    const double target = base.jaeger_temperature_rise_K((s.solid_friction_N + s.fluid_shear_N) * u, s.separation_m, u);
+    EXPECT_NEAR(s.temperature_rise_K, target, 1e-8 * (1.0 + target)) << "U = " << u;
+    hot += spec.gamma_per_K * s.temperature_rise_K > 3.0 ? 1 : 0;
+  }
+  std::printf("%d speeds where the damped iteration alone would cycle (γΔT > 3)\n", hot);
+  EXPECT_GT(hot, 0);
+}
 
 // ---- "tribo-law-2": the real area's shear over ηU (asperity-top EHL films) --------------------------
 
