@@ -180,13 +180,13 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
   if (const auto& b = pin.ball) {
     j["table"]["fluid_load_N"] = b->fluid_load_N;
     j["table"]["fluid_shear_N"] = b->fluid_shear_N;
+    const auto finite_or_null = [](const std::vector<double>& v) {  // an unsolved film is null
+      nlohmann::json a = nlohmann::json::array();
+      for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
+      return a;
+    };
     nlohmann::json films = nlohmann::json::array();
     for (std::size_t k = 0; k < b->eta_u_Pa_m.size(); ++k) {
-      const auto finite_or_null = [](const std::vector<double>& v) {
-        nlohmann::json a = nlohmann::json::array();
-        for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
-        return a;
-      };
       films.push_back({{"eta_u_Pa_m", b->eta_u_Pa_m[k]},
                        {"central_film_m", finite_or_null(b->central_film_m[k])},
                        {"traction_N", finite_or_null(b->traction_N[k])}});

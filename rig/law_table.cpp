@@ -170,7 +170,7 @@ void validate(const LawTable& t) {
   check_column(s, "table.squeeze_per_eta_m", t.squeeze_per_eta_m, Sign::positive);
   // A ball's fluid is its EHL film (fluid_load_N, fluid_shear_N): its Petroff shear S is 0.
   check_column(s, "table.shear_per_eta_u_m", t.shear_per_eta_u_m, t.has_ball_film() ? Sign::non_negative : Sign::positive);
-  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty() && t.film_share.empty() && !t.has_ball_film() && t.fluid_shear_N.empty())
+  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty() && t.film_share.empty() && t.fluid_load_N.empty() && t.fluid_shear_N.empty())
     return;  // "tribo-law-1"
   const std::vector<double>& e = t.eta_u_Pa_m;
   if (e.size() < 2) fail(s, "table.eta_u_Pa_m", "needs at least 2 entries (got " + std::to_string(e.size()) + ")");
