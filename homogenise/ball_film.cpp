@@ -5,38 +5,16 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "lubrication/ehl_point.h"
 #include "lubrication/ehl_traction.h"
 #include "numerics/format.h"
+#include "rig/ball_film.h"
 
 namespace tribo::homogenise {
 
-BallFilmAt ball_film_at(const std::vector<double>& share, const std::vector<double>& central_film_m,
-                        const std::vector<double>& traction_N, double h) {
-  // The solved shares whose film is thinner than every smaller share's: h_c strictly decreasing.
-  std::vector<double> ls, lh, lf;
-  for (std::size_t j = 0; j < share.size(); ++j) {
-    const double hc = central_film_m[j], f = traction_N[j];
-    if (!(std::isfinite(hc) && hc > 0.0 && std::isfinite(f) && f > 0.0)) continue;
-    if (!lh.empty() && !(std::log(hc) < lh.back())) continue;
-    ls.push_back(std::log(share[j]));
-    lh.push_back(std::log(hc));
-    lf.push_back(std::log(f));
-  }
-  if (ls.size() < 2) throw std::invalid_argument("ball film: fewer than two shares with a film thinner than the last");
-  const double x = std::log(h);
-  // The interval holding ln h (h_c falls with j), the end intervals continued beyond.
-  std::size_t j = 0;
-  while (j + 2 < lh.size() && x < lh[j + 1]) ++j;
-  const auto along = [&](const std::vector<double>& y, double t) { return y[j] + t * (y[j + 1] - y[j]); };
-  double t = (x - lh[j]) / (lh[j + 1] - lh[j]);
-  const double cap = std::log(kBallFilmMaxShare);
-  if (along(ls, t) >= cap) return {kBallFilmMaxShare, std::exp(along(lf, (cap - ls[j]) / (ls[j + 1] - ls[j])))};
-  return {std::exp(along(ls, t)), std::exp(along(lf, t))};
-}
-
-BallFilmTable ball_film(const HomogeniseOptions& o, const std::vector<double>& separation_m) {
+BallFilmTable ball_film(const HomogeniseOptions& o) {
   if (o.pin.shape != PinShape::ball || !o.micro_ehl) throw std::invalid_argument("ball_film: the options describe no ball with [micro_ehl]");
   BallFilmTable t;
   t.hertz_radius_m = nominal_contact_radius_m(o);
@@ -84,21 +62,13 @@ BallFilmTable ball_film(const HomogeniseOptions& o, const std::vector<double>& s
                            " m/s, share " + numerics::shortest(t.share[q % n_s]) + ": " + why[q]);
     }
 
-  for (double h : separation_m) {
-    std::vector<double> load{0.0}, shear{0.0};
-    for (std::size_t k = 1; k < speeds; ++k) {
-      BallFilmAt at;
-      try {
-        at = ball_film_at(t.share, t.central_film_m[k], t.traction_N[k], h);
-      } catch (const std::invalid_argument& e) {
-        throw std::runtime_error("ball film at U = " + numerics::shortest(t.eta_u_Pa_m[k] / oil.viscosity_Pa_s) + " m/s: " + e.what() +
-                                 " converged; raise [micro_ehl] min_speed_m_per_s or [pin] film_grid");
-      }
-      load.push_back(at.share * w);
-      shear.push_back(at.traction_N);
+  for (std::size_t k = 1; k < speeds; ++k) {  // the rig inverts every node's films (rig/ball_film.h)
+    try {
+      rig::BallFilmCurve(t.share, t.central_film_m[k], t.traction_N[k]);
+    } catch (const std::invalid_argument& e) {
+      throw std::runtime_error("ball film at U = " + numerics::shortest(t.eta_u_Pa_m[k] / oil.viscosity_Pa_s) + " m/s: " + e.what() +
+                               " converged; raise [micro_ehl] min_speed_m_per_s or [pin] film_grid");
     }
-    t.fluid_load_N.push_back(load);
-    t.fluid_shear_N.push_back(shear);
   }
   return t;
 }

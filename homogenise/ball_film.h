@@ -1,5 +1,5 @@
-// A ball on the disc (`[pin] shape = "ball"`): its elastohydrodynamic film tabulated for the rig
-// over the table's separations h̄ and the ηU axis — the pin scale of a ball-on-disc tribometer.
+// A ball on the disc (`[pin] shape = "ball"`): its elastohydrodynamic film solved for the rig at
+// shares of the load over the ηU axis — the pin scale of a ball-on-disc tribometer.
 //
 // Load sharing (Johnson, Greenwood & Poon 1972; Gelinck & Schipper 2000, as lubrication/
 // mixed_point.h): of the ball's load W the film carries W_f = s W and the asperities the rest;
@@ -11,18 +11,11 @@
 //
 // The ball is held still on the sliding disc (a pin-on-disc rig): entrainment u_m = U/2, sliding
 // Δu = U. At each ηU node (U = ηU/η0) the film is solved at shares s_j (log-spaced from
-// kMinShare to 1): central film h_c(s_j) between the mean planes and its Eyring traction F(s_j)
-// (lubrication/ehl_traction.h, at the film's own pressures, τ0 of [micro_ehl]). At a separation h̄
-// the film's load is the share whose central film is h̄:
-//   h_c(1) ≤ h̄ ≤ h_c(s_min)  ln s linear in ln h_c between the bracketing shares, ln F likewise
-//   h̄ > h_c(s_min)       the end interval's power law continued: the film fades
-//   h̄ < h_c(1)           the end interval's power law continued as well, up to s = kBallFilmMaxShare:
-//                         a film squeezed thinner than the whole load's pushes harder than W, and
-//                         the ball rises onto h_c(1) (capped so that the rig's film ODE stays finite)
-// so W_f(h̄, ηU) falls strictly with h̄ below the cap and the rig's balance N_s(h̄) + W_f(h̄, ηU) = W
-// has one root — at h_c(1) once the asperities carry nothing.
-// A share whose film is not thinner than every smaller share's is skipped (h_c must fall with s to
-// be inverted); a share whose solve did not converge is left out, and listed.
+// kBallFilmMinShare to 1): central film h_c(s_j) between the mean planes and its Eyring traction
+// F(s_j) (lubrication/ehl_traction.h, at the film's own pressures, τ0 of [micro_ehl]). law.json
+// keeps the films; the rig reads the film's load at a separation and ηU from them
+// (rig/ball_film.h: the inversion of h_c(s) and the film-scaled interpolation between nodes).
+// A share whose solve did not converge is left out, and listed.
 //
 // The film depends on η0 u_m alone only with Barus' law; with Roelands' the table's film at ηU is
 // the reference oil's at U = ηU/η0, and a warmer oil in the rig (η(ΔT) U) reads it at a slower
@@ -45,27 +38,15 @@ struct BallFilmTable {
   std::vector<double> eta_u_Pa_m;                   // the table's ηU axis (the first 0)
   std::vector<std::vector<double>> central_film_m;  // [ηU][s]: h_c (NaN unsolved or at ηU = 0)
   std::vector<std::vector<double>> traction_N;      // [ηU][s]: F (NaN alike)
-  // On the table's separations, [h̄][ηU]: W_f and F_f (0 at ηU = 0).
-  std::vector<std::vector<double>> fluid_load_N, fluid_shear_N;
   int unconverged = 0;
   std::vector<std::string> messages;  // one per film solve left out
 };
 
 inline constexpr double kBallFilmMinShare = 1e-4;
-inline constexpr double kBallFilmMaxShare = 2.0;
 inline constexpr int kBallFilmSharesPerDecade = 3;
 
-// Solves the films (in parallel over options.threads) and tabulates them on `separation_m`.
-// Throws std::invalid_argument unless options describe a ball; std::runtime_error when at some
-// ηU fewer than two shares converged.
-BallFilmTable ball_film(const HomogeniseOptions& options, const std::vector<double>& separation_m);
-
-// The inversion alone, for one ηU node: W_f / W and F_f at separation h from the shares' films
-// (NaN entries skipped). Exposed for the tests.
-struct BallFilmAt {
-  double share = 0, traction_N = 0;
-};
-BallFilmAt ball_film_at(const std::vector<double>& share, const std::vector<double>& central_film_m,
-                        const std::vector<double>& traction_N, double separation_m);
+// Solves the films (in parallel over options.threads). Throws std::invalid_argument unless
+// options describe a ball; std::runtime_error when at some ηU fewer than two shares converged.
+BallFilmTable ball_film(const HomogeniseOptions& options);
 
 }  // namespace tribo::homogenise

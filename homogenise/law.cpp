@@ -178,8 +178,6 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
     j["table"]["film_share"] = pin.film_share;
   }
   if (const auto& b = pin.ball) {
-    j["table"]["fluid_load_N"] = b->fluid_load_N;
-    j["table"]["fluid_shear_N"] = b->fluid_shear_N;
     const auto finite_or_null = [](const std::vector<double>& v) {  // an unsolved film is null
       nlohmann::json a = nlohmann::json::array();
       for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));

@@ -180,7 +180,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     std::fill(pin.wedge_lift_per_eta_u_m.begin(), pin.wedge_lift_per_eta_u_m.end(), 0.0);
     std::fill(pin.rugosity_lift_per_eta_u_m.begin(), pin.rugosity_lift_per_eta_u_m.end(), 0.0);
     std::fill(pin.shear_per_eta_u_m.begin(), pin.shear_per_eta_u_m.end(), 0.0);
-    pin.ball = ball_film(o, pin.separation_m);
+    pin.ball = ball_film(o);
   }
   return pin;
 }

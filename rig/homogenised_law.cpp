@@ -41,8 +41,7 @@ HomogenisedBase::HomogenisedBase(LawTable table, double normal_load_N)
       throw std::invalid_argument("normal_load_N = " + internal::exact_decimal(normal_load_N) + " N differs from the load the ball's film was solved at, " +
                                   internal::exact_decimal(solved) + " N (" + (table_.source.empty() ? std::string("table") : table_.source) +
                                   ": pin.normal_load_N): its Hertz circle and film shares are that load's; homogenise again at this load");
-    ball_load_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.fluid_load_N);
-    ball_shear_.emplace(table_.separation_m, table_.eta_u_Pa_m, table_.fluid_shear_N);
+    ball_.emplace(table_.ball_share, table_.eta_u_Pa_m, table_.ball_central_film_m, table_.ball_traction_N, solved);
   }
   lubricant_.viscosity_Pa_s = table_.lubricant.viscosity_Pa_s;
   lubricant_.pressure_viscosity_per_Pa = 0.0;  // ambient pressure: the rig's film is not EHL
@@ -73,11 +72,11 @@ double HomogenisedBase::balanced_separation_m(double eta_u_Pa_m) const {
 }
 
 double HomogenisedBase::fluid_load_N(double h, double eta_u) const {
-  return eta_u * lift_per_eta_u_m(h) + (ball_load_ ? ball_load_->value(h, eta_u) : 0.0);
+  return eta_u * lift_per_eta_u_m(h) + (ball_ ? ball_->at(h, eta_u).load_N : 0.0);
 }
 
 double HomogenisedBase::fluid_shear_N(double h, double eta_u) const {
-  return eta_u * shear_per_eta_u_m(h) + (ball_shear_ ? ball_shear_->value(h, eta_u) : 0.0);
+  return eta_u * shear_per_eta_u_m(h) + (ball_ ? ball_->at(h, eta_u).shear_N : 0.0);
 }
 
 void HomogenisedBase::initial_state(std::span<double> state) const {
@@ -128,21 +127,21 @@ double HomogenisedBase::kinetic_force_N(const FrictionContext& c, double solid_f
 double HomogenisedBase::separation_rate_m_per_s(double h, double dT, double u, double load_N) const {
   const double eta = viscosity_Pa_s(dT);
   if (eta == 0.0) return 0.0;  // dry: the algebraic limit N_s(h̄) = W, h̄ = h̄0
-  const double fluid = eta * u * lift_per_eta_u_m(h) + (ball_load_ ? ball_load_->value(h, eta * std::abs(u)) : 0.0);
+  const double fluid = eta * u * lift_per_eta_u_m(h) + (ball_ ? ball_->at(h, eta * std::abs(u)).load_N : 0.0);
   return (solid_load_N(h) + fluid - load_N) / (eta * squeeze_per_eta_m(h));
 }
 
 double HomogenisedBase::jaeger_temperature_rise_K(double power_W, double h, double u) const {
   // A ball's friction heat — its film's shear and its asperities' — is made over its Hertz circle,
   // and its film's viscosity is the inlet's, at the surfaces' mean temperature there.
-  const double area = ball_load_ ? table_.pin.nominal_area_m2 : std::max(real_area_m2(h), kJaegerAreaFloorFraction * table_.pin.nominal_area_m2);
+  const double area = ball_ ? table_.pin.nominal_area_m2 : std::max(real_area_m2(h), kJaegerAreaFloorFraction * table_.pin.nominal_area_m2);
   return lubrication::jaeger_flash_temperature_rise_K(jaeger_, power_W, area, u);
 }
 
 double HomogenisedBase::film_relaxation_time_s(double h, double dT, double u) const {
   const double eta = viscosity_Pa_s(dT);
   const double eta_u = eta * std::abs(u);
-  const double stiffness = -(solid_load_slope_N_per_m(h) + eta_u * lift_.slope(h) + (ball_load_ ? ball_load_->slope_h(h, eta_u) : 0.0));
+  const double stiffness = -(solid_load_slope_N_per_m(h) + eta_u * lift_.slope(h) + (ball_ ? ball_->at(h, eta_u).load_slope_N_per_m : 0.0));
   const double damping = eta * squeeze_per_eta_m(h);
   if (damping == 0.0) return 0.0;
   return stiffness > 0.0 ? damping / stiffness : std::numeric_limits<double>::infinity();

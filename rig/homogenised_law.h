@@ -37,6 +37,7 @@
 #include <string>
 
 #include "lubrication/viscosity.h"
+#include "rig/ball_film.h"
 #include "rig/friction_law.h"
 #include "rig/law_table.h"
 
@@ -116,7 +117,7 @@ class HomogenisedBase {
   double normal_load_N_;
   MonotoneTable solid_load_, real_area_, lift_, squeeze_, shear_;
   std::optional<EtaUTable> solid_shear_, film_share_;  // "tribo-law-2" only (the film share optional)
-  std::optional<EtaUTable> ball_load_, ball_shear_;    // a ball's EHL film only
+  std::optional<BallFilm> ball_;                       // a ball's EHL film only
   lubrication::Lubricant lubricant_;
   lubrication::JaegerContact jaeger_;
   double h0_m_ = 0.0;

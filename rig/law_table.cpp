@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rig/ball_film.h"
 #include "rig/internal/exact_decimal.h"
 
 namespace tribo::rig {
@@ -128,6 +129,36 @@ void check_rows(const std::string& source, const std::string& key, const std::ve
   }
 }
 
+// A ball's films: shares increasing to 1, one row of films and tractions per ηU node, each entry
+// NaN (a solve left out) or > 0, and every node but ηU = 0 invertible (rig/ball_film.h).
+void validate_ball_film(const LawTable& t) {
+  const std::string& s = t.source;
+  const std::vector<double>& share = t.ball_share;
+  check_column(s, "ball_film.share", share, Sign::positive);
+  check_strictly_increasing(s, "ball_film.share", share);
+  if (share.back() != 1.0) fail(s, "ball_film.share", "must end at 1 (the whole load), got " + exact_decimal(share.back()));
+  const std::size_t nodes = t.eta_u_Pa_m.size();
+  for (const auto* rows : {&t.ball_central_film_m, &t.ball_traction_N})
+    if (rows->size() != nodes)
+      fail(s, "ball_film.films", "has " + std::to_string(rows->size()) + " entries but table.eta_u_Pa_m has " + std::to_string(nodes));
+  for (std::size_t k = 0; k < nodes; ++k) {
+    const std::string key = "ball_film.films[" + std::to_string(k) + "]";
+    for (const auto& [row, name] : {std::pair{&t.ball_central_film_m[k], "central_film_m"}, std::pair{&t.ball_traction_N[k], "traction_N"}}) {
+      if (row->size() != share.size())
+        fail(s, key + "." + name, "has " + std::to_string(row->size()) + " entries but ball_film.share has " + std::to_string(share.size()));
+      for (std::size_t j = 0; j < row->size(); ++j)
+        if (!std::isnan((*row)[j]) && !((*row)[j] > 0.0 && std::isfinite((*row)[j])))
+          fail(s, key + "." + name + "[" + std::to_string(j) + "]", "must be > 0 or null, got " + exact_decimal((*row)[j]));
+    }
+    if (k == 0) continue;  // no film at rest
+    try {
+      BallFilmCurve(share, t.ball_central_film_m[k], t.ball_traction_N[k]);
+    } catch (const std::invalid_argument& e) {
+      fail(s, key, e.what());
+    }
+  }
+}
+
 }  // namespace
 
 void validate(const LawTable& t) {
@@ -168,27 +199,16 @@ void validate(const LawTable& t) {
   if (!(t.solid_load_N.front() > 0.0)) fail(s, "table.solid_load_N[0]", "must be > 0 (the closest separation must carry load)");
   check_column(s, "table.lift_per_eta_u_m", t.lift_per_eta_u_m, Sign::non_negative);
   check_column(s, "table.squeeze_per_eta_m", t.squeeze_per_eta_m, Sign::positive);
-  // A ball's fluid is its EHL film (fluid_load_N, fluid_shear_N): its Petroff shear S is 0.
+  // A ball's fluid is its EHL film (ball_film): its Petroff shear S is 0.
   check_column(s, "table.shear_per_eta_u_m", t.shear_per_eta_u_m, t.has_ball_film() ? Sign::non_negative : Sign::positive);
-  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty() && t.film_share.empty() && t.fluid_load_N.empty() && t.fluid_shear_N.empty())
-    return;  // "tribo-law-1"
+  if (t.eta_u_Pa_m.empty() && t.solid_shear_Pa.empty() && t.film_share.empty() && !t.has_ball_film()) return;  // "tribo-law-1"
   const std::vector<double>& e = t.eta_u_Pa_m;
   if (e.size() < 2) fail(s, "table.eta_u_Pa_m", "needs at least 2 entries (got " + std::to_string(e.size()) + ")");
   if (e.front() != 0.0) fail(s, "table.eta_u_Pa_m[0]", "must be 0 (the law must answer at rest), got " + exact_decimal(e.front()));
   check_column(s, "table.eta_u_Pa_m", e, Sign::non_negative);
   check_strictly_increasing(s, "table.eta_u_Pa_m", e);
   check_rows(s, "table.solid_shear_Pa", t.solid_shear_Pa, n, e.size(), Sign::positive);
-  if (t.fluid_load_N.empty() != t.fluid_shear_N.empty())
-    fail(s, t.fluid_load_N.empty() ? "table.fluid_load_N" : "table.fluid_shear_N", "is missing (a ball's film needs both fluid_load_N and fluid_shear_N)");
-  if (t.has_ball_film()) {
-    check_rows(s, "table.fluid_load_N", t.fluid_load_N, n, e.size(), Sign::non_negative);
-    check_rows(s, "table.fluid_shear_N", t.fluid_shear_N, n, e.size(), Sign::non_negative);
-    for (std::size_t k = 0; k < e.size(); ++k)
-      for (std::size_t m = 1; m < n; ++m)
-        if (t.fluid_load_N[m][k] > t.fluid_load_N[m - 1][k])
-          fail(s, "table.fluid_load_N[" + std::to_string(m) + "][" + std::to_string(k) + "]",
-               "must not exceed the row before (" + exact_decimal(t.fluid_load_N[m - 1][k]) + "): the film carries less as the separation grows");
-  }
+  if (t.has_ball_film()) validate_ball_film(t);
   if (t.film_share.empty()) return;
   check_rows(s, "table.film_share", t.film_share, n, e.size(), Sign::non_negative);
   for (std::size_t m = 0; m < n; ++m)
@@ -209,6 +229,36 @@ std::vector<std::vector<double>> rows_of(const Reader& r, const json& tab, const
     out.push_back(r.column(row, "table." + key, std::to_string(m)));
   }
   return out;
+}
+
+// "ball_film": the shares and, per ηU node, the films and tractions (null where left out: NaN).
+void read_ball_film(const Reader& r, const json& ball, LawTable& t) {
+  t.ball_share = r.column(ball, "ball_film", "share");
+  const json& films = r.member(ball, "ball_film", "films");
+  if (!films.is_array()) fail(t.source, "ball_film.films", "must be an array of objects");
+  for (std::size_t k = 0; k < films.size(); ++k) {
+    const std::string key = "ball_film.films[" + std::to_string(k) + "]";
+    if (!films[k].is_object()) fail(t.source, key, "must be a JSON object");
+    const auto column_or_null = [&](const char* name) {
+      const json& a = r.member(films[k], key, name);
+      if (!a.is_array()) fail(t.source, key + "." + name, "must be an array of numbers or nulls");
+      std::vector<double> out;
+      for (std::size_t j = 0; j < a.size(); ++j) {
+        if (a[j].is_null()) {
+          out.push_back(std::numeric_limits<double>::quiet_NaN());
+          continue;
+        }
+        const json entry{{std::to_string(j), a[j]}};
+        out.push_back(r.number(entry, key + "." + name, std::to_string(j)));
+      }
+      return out;
+    };
+    const double eta_u = r.number(films[k], key, "eta_u_Pa_m");
+    if (k < t.eta_u_Pa_m.size() && eta_u != t.eta_u_Pa_m[k])
+      fail(t.source, key + ".eta_u_Pa_m", "is " + exact_decimal(eta_u) + " but table.eta_u_Pa_m[" + std::to_string(k) + "] is " + exact_decimal(t.eta_u_Pa_m[k]));
+    t.ball_central_film_m.push_back(column_or_null("central_film_m"));
+    t.ball_traction_N.push_back(column_or_null("traction_N"));
+  }
 }
 
 }  // namespace
@@ -280,8 +330,7 @@ LawTable law_table_from_json(const json& doc, const std::string& source) {
     t.eta_u_Pa_m = r.column(tab, "table", "eta_u_Pa_m");
     t.solid_shear_Pa = rows_of(r, tab, source, "solid_shear_Pa");
     if (tab.find("film_share") != tab.end()) t.film_share = rows_of(r, tab, source, "film_share");
-    if (tab.find("fluid_load_N") != tab.end()) t.fluid_load_N = rows_of(r, tab, source, "fluid_load_N");
-    if (tab.find("fluid_shear_N") != tab.end()) t.fluid_shear_N = rows_of(r, tab, source, "fluid_shear_N");
+    if (doc.find("ball_film") != doc.end()) read_ball_film(r, r.object(doc, "", "ball_film"), t);
   }
 
   validate(t);

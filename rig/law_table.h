@@ -13,12 +13,13 @@
 //
 //   τ̄(h̄, ηU)    table.solid_shear_Pa [h][ηU]  F_solid = τ̄ A_r (τ_i A_r in "tribo-law-1"), > 0
 //   s_f(h̄, ηU)   table.film_share [h][ηU]      share of A_r the films separate (optional), in [0, 1]
-//   W_f(h̄, ηU)   table.fluid_load_N [h][ηU]    a ball's EHL film: the load it carries (optional,
-//   F_f(h̄, ηU)   table.fluid_shear_N [h][ηU]   with its traction; homogenise/ball_film.h), ≥ 0
 //
-// A ball's table (with W_f, F_f) holds its fluid there: its L and S are 0 (S > 0 otherwise), and
-// it was solved at the ball's load pin.normal_load_N (its Hertz circle and film shares are that
-// load's), so the rig takes it at that load only (rig/homogenised_law.h).
+// and, for a ball (optional), its EHL film: "ball_film" holds the shares s_j of the load the film
+// was solved at and, per ηU node, the central film and traction at each (null where a solve was
+// left out) — the rig reads the film's load W_f(h̄, ηU) and traction F_f(h̄, ηU) from them
+// (rig/ball_film.h). A ball's table holds its fluid there: its L and S are 0 (S > 0 otherwise),
+// and it was solved at the ball's load pin.normal_load_N (its Hertz circle and film shares are
+// that load's), so the rig takes it at that load only (rig/homogenised_law.h).
 //
 // plus the pin, the lubricant (η = η0 exp(−γ ΔT), lubrication/viscosity.h), the thermal constants
 // of Jaeger's flash temperature (thesis (5.2.1)) and the junction locus (thesis (3.1.24)) with the
@@ -89,10 +90,12 @@ struct LawTable {
   // Optional (informational: the rig reports it, its forces do not use it): the share of the real
   // area the films separate, [separation][ηU] in [0, 1]; empty when absent.
   std::vector<std::vector<double>> film_share;
-  // Optional, both or neither: a ball's EHL film, [separation][ηU] — the load it carries (N,
-  // non-increasing in h̄) and its traction (N); 0 at ηU = 0.
-  std::vector<std::vector<double>> fluid_load_N, fluid_shear_N;
-  bool has_ball_film() const { return !fluid_load_N.empty(); }
+  // Optional: a ball's EHL film (rig/ball_film.h) — the shares of the load it was solved at
+  // (strictly increasing, the last 1) and per ηU node [ηU][share] its central film (m) and traction
+  // (N), NaN where the solve was left out (the row at ηU = 0 all NaN); empty for a pin.
+  std::vector<double> ball_share;
+  std::vector<std::vector<double>> ball_central_film_m, ball_traction_N;
+  bool has_ball_film() const { return !ball_share.empty(); }
 };
 
 // Reads law.json. Any defect (unreadable file, malformed JSON, wrong format, missing key, wrong

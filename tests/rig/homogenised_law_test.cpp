@@ -675,36 +675,54 @@ TEST(LawTableReader, AMalformedShearTableNamesTheKeyAndTheReason) {
   }
 }
 
-// A ball's EHL film (homogenise/ball_film.h): fluid_load_N and fluid_shear_N come together, each
-// row as long as the ηU axis, and the film's load may not grow with the separation.
-TEST(LawTableReader, ABallsFilmTablesComeTogetherAndItsLoadFallsWithTheSeparation) {
+// A ball's EHL film (homogenise/ball_film.h, rig/ball_film.h): "ball_film" holds the shares (up to
+// 1) and per ηU node the films and tractions, null where a solve was left out; each node but
+// ηU = 0 needs two shares to invert.
+TEST(LawTableReader, ABallsFilmsComeOnePerSpeedNodeWithNullWhereASolveWasLeftOut) {
   nlohmann::json good = filmed_json(filmed_table());
-  const std::size_t n = good["table"]["separation_m"].size();
-  std::vector<std::vector<double>> load, shear;
-  for (std::size_t m = 0; m < n; ++m) {
-    load.push_back({0.0, 1.0 / (1.0 + m), 2.0 / (1.0 + m)});
-    shear.push_back({0.0, 0.01, 0.02});
+  const std::size_t nodes = good["table"]["eta_u_Pa_m"].size();
+  nlohmann::json films = nlohmann::json::array();
+  for (std::size_t k = 0; k < nodes; ++k) {
+    const double e = good["table"]["eta_u_Pa_m"][k].get<double>();
+    nlohmann::json h = nlohmann::json::array(), f = nlohmann::json::array();
+    for (double s : {0.01, 0.1, 1.0}) {
+      h.push_back(k == 0 ? nlohmann::json(nullptr) : nlohmann::json(1e-7 * std::pow(s, -0.1) * (1.0 + k)));
+      f.push_back(k == 0 ? nlohmann::json(nullptr) : nlohmann::json(0.1 * s));
+    }
+    films.push_back({{"eta_u_Pa_m", e}, {"central_film_m", h}, {"traction_N", f}});
   }
-  good["table"]["fluid_load_N"] = load;
-  good["table"]["fluid_shear_N"] = shear;
+  films[1]["central_film_m"][2] = nullptr;  // left out: the node still has two
+  good["ball_film"] = {{"share", {0.01, 0.1, 1.0}}, {"films", films}};
   const LawTable r = read_law_table(write_json("ball.json", good.dump()));
-  EXPECT_TRUE(r.has_ball_film());
-  EXPECT_EQ(r.fluid_load_N, load);
-  EXPECT_EQ(r.fluid_shear_N, shear);
+  ASSERT_TRUE(r.has_ball_film());
+  EXPECT_EQ(r.ball_share, (std::vector<double>{0.01, 0.1, 1.0}));
+  ASSERT_EQ(r.ball_central_film_m.size(), nodes);
+  EXPECT_TRUE(std::isnan(r.ball_central_film_m[1][2]));
+  EXPECT_EQ(r.ball_traction_N[2][1], 0.1 * 0.1);
   {
     nlohmann::json d = good;
-    d["table"].erase("fluid_shear_N");
-    expect_rejected("ball_no_shear.json", d, {"table.fluid_shear_N", "missing"});
+    d["ball_film"]["share"][2] = 0.9;
+    expect_rejected("ball_share.json", d, {"ball_film.share", "must end at 1"});
   }
   {
     nlohmann::json d = good;
-    d["table"]["fluid_load_N"][2][1] = 5.0;
-    expect_rejected("ball_rising.json", d, {"table.fluid_load_N[2][1]", "must not exceed the row before"});
+    d["ball_film"]["films"][2]["eta_u_Pa_m"] = 7.0;
+    expect_rejected("ball_node.json", d, {"ball_film.films[2].eta_u_Pa_m", "table.eta_u_Pa_m[2]"});
   }
   {
     nlohmann::json d = good;
-    d["table"]["fluid_shear_N"][1].erase(0);
-    expect_rejected("ball_short.json", d, {"table.fluid_shear_N[1]", "entries"});
+    d["ball_film"]["films"][1]["traction_N"][0] = -1.0;
+    expect_rejected("ball_negative.json", d, {"ball_film.films[1].traction_N[0]", "must be > 0 or null"});
+  }
+  {
+    nlohmann::json d = good;
+    d["ball_film"]["films"][1]["central_film_m"][1] = nullptr;
+    expect_rejected("ball_one_share.json", d, {"ball_film.films[1]", "fewer than two shares"});
+  }
+  {
+    nlohmann::json d = good;
+    d["ball_film"]["films"].erase(nodes - 1);
+    expect_rejected("ball_short.json", d, {"ball_film.films", "entries"});
   }
 }
 

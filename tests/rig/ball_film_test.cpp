@@ -1,0 +1,111 @@
+// A ball's EHL film as the rig reads it (rig/ball_film.h), on films built here in closed form: a
+// family whose central film is h_c = A (ηU)^0.67 s^(−1/q) and traction F = B (ηU)^0.2 s^0.9 at every
+// share s — a Hamrock–Dowson-like film, self-similar in speed. The reading is then exact between
+// the shares (ln s, ln F linear in ln h_c) and between the speed nodes (the film-scaled
+// interpolation), so it must give back the closed form to rounding.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "rig/ball_film.h"
+
+namespace tribo::rig {
+namespace {
+
+constexpr double kA = 2e-7;    // m / (Pa m)^0.67: h_c at ηU = 1 Pa m and s = 1
+constexpr double kB = 0.3;     // N: F at ηU = 1 Pa m and s = 1
+constexpr double kQ = 0.1;     // h_c ∝ s^(−q): a stiff film, W_f ∝ h̄^(−10) at fixed ηU
+constexpr double kLoad = 10.0; // N
+
+double film_m(double eta_u, double s) { return kA * std::pow(eta_u, kBallFilmSpeedExponent) * std::pow(s, -kQ); }
+double traction_N(double eta_u, double s) { return kB * std::pow(eta_u, 0.2) * std::pow(s, 0.9); }
+// The closed form's share at separation h and ηU (uncapped).
+double share_at(double h, double eta_u) { return std::pow(h / (kA * std::pow(eta_u, kBallFilmSpeedExponent)), -1.0 / kQ); }
+
+struct Films {
+  std::vector<double> share, eta_u;
+  std::vector<std::vector<double>> central, traction;
+};
+
+// Shares 1e-4 … 1 (three a decade) at ηU = 0, 0.01, 0.1 and 1 Pa m: a decade between speed nodes.
+Films closed_form_films() {
+  Films f;
+  for (int j = -12; j <= 0; ++j) f.share.push_back(j == 0 ? 1.0 : std::pow(10.0, j / 3.0));
+  f.eta_u = {0.0, 0.01, 0.1, 1.0};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (double e : f.eta_u) {
+    std::vector<double> h, t;
+    for (double s : f.share) {
+      h.push_back(e > 0.0 ? film_m(e, s) : nan);
+      t.push_back(e > 0.0 ? traction_N(e, s) : nan);
+    }
+    f.central.push_back(h);
+    f.traction.push_back(t);
+  }
+  return f;
+}
+
+BallFilm closed_form_ball() {
+  const Films f = closed_form_films();
+  return BallFilm(f.share, f.eta_u, f.central, f.traction, kLoad);
+}
+
+TEST(BallFilm, BetweenSpeedNodesTheFilmScaledReadingIsExactForASelfSimilarFilm) {
+  // ηU = 0.0316 Pa m, halfway between two nodes a decade apart, at films carrying 0.3 % … 100 % of
+  // W: share and traction to 1e-12 (rounding of exp/log). At fixed h̄ the load rises as (ηU)^6.7
+  // here: a value linear in ln ηU between the nodes would overstate it by orders of magnitude.
+  const BallFilm ball = closed_form_ball();
+  for (double eta_u : {0.0316, 0.05, 0.7}) {
+    for (double s : {0.003, 0.05, 0.5, 1.0}) {
+      const double h = film_m(eta_u, s);
+      const BallFilm::Film at = ball.at(h, eta_u);
+      EXPECT_NEAR(at.load_N / (s * kLoad), 1.0, 1e-12) << eta_u << ' ' << s;
+      EXPECT_NEAR(at.shear_N / traction_N(eta_u, s), 1.0, 1e-12) << eta_u << ' ' << s;
+      // ∂W_f/∂h̄ of W s(h̄) with s ∝ h̄^(−1/q): −W_f/(q h̄).
+      EXPECT_NEAR(at.load_slope_N_per_m / (-at.load_N / (kQ * h)), 1.0, 1e-12) << eta_u << ' ' << s;
+    }
+  }
+}
+
+TEST(BallFilm, BelowTheFirstNodeTheFirstNodesFilmIsScaledDownAndAtRestThereIsNone) {
+  const BallFilm ball = closed_form_ball();
+  const double eta_u = 1e-3, h = film_m(eta_u, 0.2);  // a decade below the first node
+  EXPECT_NEAR(ball.at(h, eta_u).load_N / (0.2 * kLoad), 1.0, 1e-12);
+  const BallFilm::Film rest = ball.at(h, 0.0);
+  EXPECT_EQ(rest.load_N, 0.0);
+  EXPECT_EQ(rest.shear_N, 0.0);
+}
+
+TEST(BallFilm, AFilmThinnerThanTheWholeLoadsPushesHarderUpToTheCapAndBeyondTheTableIsRefused) {
+  const BallFilm ball = closed_form_ball();
+  const double eta_u = 0.3, whole = film_m(eta_u, 1.0);
+  // 1 % thinner: s = 0.99^(−10) = 1.106; 20 % thinner would be 9.3 W — capped at 2 W, flat there.
+  EXPECT_NEAR(ball.at(0.99 * whole, eta_u).load_N / kLoad, share_at(0.99 * whole, eta_u), 1e-12);
+  const BallFilm::Film capped = ball.at(0.8 * whole, eta_u);
+  EXPECT_EQ(capped.load_N, kBallFilmMaxShare * kLoad);
+  EXPECT_EQ(capped.load_slope_N_per_m, 0.0);
+  // Thicker than the smallest share's film: the power law continued, the film fades.
+  const double thick = 2.0 * film_m(eta_u, 1e-4);
+  EXPECT_NEAR(ball.at(thick, eta_u).load_N / kLoad, share_at(thick, eta_u), 1e-12 * share_at(thick, eta_u));
+  EXPECT_THROW(ball.at(whole, 1.01), std::out_of_range);
+  EXPECT_THROW(ball.at(whole, -1e-9), std::out_of_range);
+}
+
+TEST(BallFilm, UnsolvedSharesAreSkippedAndANodeWithFewerThanTwoIsRefused) {
+  Films f = closed_form_films();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // The largest shares left out at the slowest node: the film there continues the last interval's
+  // power law, exact for this family.
+  for (std::size_t j = 8; j < f.share.size(); ++j) f.central[1][j] = f.traction[1][j] = nan;
+  const BallFilm ball(f.share, f.eta_u, f.central, f.traction, kLoad);
+  const double h = film_m(0.01, 1.0);
+  EXPECT_NEAR(ball.at(h, 0.01).load_N / kLoad, 1.0, 1e-12);
+  for (std::size_t j = 1; j < f.share.size(); ++j) f.central[1][j] = nan;
+  EXPECT_THROW(BallFilm(f.share, f.eta_u, f.central, f.traction, kLoad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace tribo::rig
