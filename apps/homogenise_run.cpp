@@ -41,15 +41,18 @@ std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& 
   }
 }
 
+// film_parameter: Λ = h̄/σ, the separation over the composite rms roughness (the Stribeck curve's
+// usual abscissa besides the speed).
 void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig::SteadySliding>& points,
-                        const std::vector<double>& mu_errors, const nlohmann::json& provenance) {
+                        const std::vector<double>& mu_errors, double sigma_m, const nlohmann::json& provenance) {
   CsvFile f(path, provenance);
-  f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,temperature_rise_K,solid_load_N,lift_N,fluid_shear_N,"
-                "solid_shear_Pa,film_share_of_contact\n";
+  f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,film_parameter,temperature_rise_K,solid_load_N,lift_N,"
+                "fluid_shear_N,solid_shear_Pa,film_share_of_contact\n";
   for (std::size_t k = 0; k < points.size(); ++k) {
     const rig::SteadySliding& s = points[k];
     f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << csv_number(mu_errors[k]) << ',' << s.fluid_share << ','
-               << s.separation_m << ',' << s.temperature_rise_K << ',' << s.solid_load_N << ',' << s.lift_N << ','
+               << s.separation_m << ',' << s.separation_m / sigma_m << ',' << s.temperature_rise_K << ',' << s.solid_load_N << ','
+               << s.lift_N << ','
                << s.fluid_shear_N << ',' << s.solid_shear_Pa << ',' << s.film_share_of_contact << '\n';
   }
   f.commit();
@@ -175,6 +178,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
                   {"fluid_share", s.fluid_share},
                   {"film_share_of_contact", s.film_share_of_contact},
                   {"separation_m", s.separation_m},
+                  {"film_parameter", s.separation_m / cells.sigma_m},
                   {"temperature_rise_K", s.temperature_rise_K},
                   {"regime", rig::to_string(s.regime)}});
   }
@@ -198,7 +202,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
 
   const nlohmann::json& provenance = law["provenance"];
   write_area_csv(dir / "area.csv", pin, cells.sigma_m, provenance);
-  write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, provenance);
+  write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, cells.sigma_m, provenance);
   write_file_atomically(dir / "law.json", law.dump(2) + "\n");
   std::printf("mu_s,max %.4g ± %.2g (BEM extrapolated from %d², %d realisations; ± the discretisation error), dry mu %.4g ± %.2g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
               cells.mu_s_max.mean, cells.mu_s_max_discretisation_error, cells.junction_grid, cells.realisations, cells.mu_boundary.mean,

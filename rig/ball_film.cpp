@@ -8,6 +8,17 @@
 #include "rig/internal/exact_decimal.h"
 
 namespace tribo::rig {
+namespace {
+
+// x^(1−w) y^w for w in [0, 1], without 0·∞ at the ends or where a value is 0.
+double geometric_blend(double x, double y, double w) {
+  if (w <= 0.0) return x;
+  if (w >= 1.0) return y;
+  if (x == 0.0 || y == 0.0) return 0.0;
+  return std::exp((1.0 - w) * std::log(x) + w * std::log(y));
+}
+
+}  // namespace
 
 BallFilmCurve::BallFilmCurve(const std::vector<double>& share, const std::vector<double>& central_film_m, const std::vector<double>& traction_N) {
   if (central_film_m.size() != share.size() || traction_N.size() != share.size())
@@ -69,9 +80,9 @@ BallFilm::Film BallFilm::at(double h, double eta_u) const {
   const double w = hi == lo ? 1.0 : std::log(eta_u / eta_u_[lo]) / std::log(eta_u_[hi] / eta_u_[lo]);
   const auto read = [&](std::size_t k) { return nodes_[k - 1].at(h * std::pow(eta_u_[k] / eta_u, kBallFilmSpeedExponent)); };
   const BallFilmAt a = read(lo), b = hi == lo ? a : read(hi);
-  const double share = std::exp((1.0 - w) * std::log(a.share) + w * std::log(b.share));
-  const double traction = std::exp((1.0 - w) * std::log(nodes_[lo - 1].traction_at_share_N(share)) +
-                                   w * std::log(nodes_[hi - 1].traction_at_share_N(share)));
+  const double share = geometric_blend(a.share, b.share, w);
+  if (!(share > 0.0)) return {};  // far below the first node the film's power law underflows
+  const double traction = geometric_blend(nodes_[lo - 1].traction_at_share_N(share), nodes_[hi - 1].traction_at_share_N(share), w);
   const double load = share * normal_load_N_;
   // Both nodes are read at separations proportional to h̄: d ln W_f / d ln h̄ is their slopes' blend.
   return {load, traction, load / h * ((1.0 - w) * a.log_slope + w * b.log_slope)};

@@ -234,6 +234,7 @@ std::vector<std::vector<double>> rows_of(const Reader& r, const json& tab, const
 // "ball_film": the shares and, per ηU node, the films and tractions (null where left out: NaN).
 void read_ball_film(const Reader& r, const json& ball, LawTable& t) {
   t.ball_share = r.column(ball, "ball_film", "share");
+  if (t.ball_share.size() < 2) fail(t.source, "ball_film.share", "needs at least 2 entries (got " + std::to_string(t.ball_share.size()) + ")");
   const json& films = r.member(ball, "ball_film", "films");
   if (!films.is_array()) fail(t.source, "ball_film.films", "must be an array of objects");
   for (std::size_t k = 0; k < films.size(); ++k) {

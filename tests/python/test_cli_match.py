@@ -184,6 +184,8 @@ class Homogenise(CliMatch):
         self.assertClose(law["junction"]["mu_boundary"], cli["junction"]["mu_boundary"], "mu_boundary")
         for a, b in zip(law["stribeck"], cli["stribeck"]):
             self.assertClose(a["mu"], b["mu"], "stribeck mu")
+            # Λ = h̄/σ with σ the cells' composite rms roughness.
+            self.assertClose(b["film_parameter"], b["separation_m"] / cli["cells"]["sigma_m"], "film parameter")
         # One patch on its own: realisation 0 is the patch the CLI cached.
         patch = tribo.homogenise_patch(cfg, 0)
         with open(os.path.join(cli_out, "patches", "realisation-0.json")) as f:

@@ -74,6 +74,11 @@ TEST(BallFilm, BelowTheFirstNodeTheFirstNodesFilmIsScaledDownAndAtRestThereIsNon
   const BallFilm ball = closed_form_ball();
   const double eta_u = 1e-3, h = film_m(eta_u, 0.2);  // a decade below the first node
   EXPECT_NEAR(ball.at(h, eta_u).load_N / (0.2 * kLoad), 1.0, 1e-12);
+  // At ηU = 1e-300 Pa m (a slider just stuck) the scaled film's share underflows: no film, not NaN.
+  const BallFilm::Film crawl = ball.at(h, 1e-300);
+  EXPECT_EQ(crawl.load_N, 0.0);
+  EXPECT_EQ(crawl.shear_N, 0.0);
+  EXPECT_EQ(crawl.load_slope_N_per_m, 0.0);
   const BallFilm::Film rest = ball.at(h, 0.0);
   EXPECT_EQ(rest.load_N, 0.0);
   EXPECT_EQ(rest.shear_N, 0.0);
