@@ -14,10 +14,11 @@
 
 namespace tribo::homogenise {
 
-BallFilmTable ball_film(const HomogeniseOptions& o) {
+BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m) {
   if (o.pin.shape != PinShape::ball || !o.micro_ehl) throw std::invalid_argument("ball_film: the options describe no ball with [micro_ehl]");
   BallFilmTable t;
   t.hertz_radius_m = nominal_contact_radius_m(o);
+  t.thinnest_film_m = thinnest_film_m;
   t.eta_u_Pa_m = micro_ehl_eta_u_Pa_m(o);
   const int decades = static_cast<int>(std::lround(-std::log10(kBallFilmMinShare)));
   const int shares = decades * kBallFilmSharesPerDecade;
@@ -36,25 +37,38 @@ BallFilmTable ball_film(const HomogeniseOptions& o) {
   t.central_film_m.assign(speeds, std::vector<double>(n_s, nan));
   t.traction_N = t.central_film_m;
   std::vector<std::string> why(speeds * n_s);
+  std::vector<int> skipped(speeds, 0);
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
-  for (std::size_t q = n_s; q < speeds * n_s; ++q) {  // ηU = 0 (q < n_s) has no film
-    const std::size_t k = q / n_s, j = q % n_s;
-    const double u = t.eta_u_Pa_m[k] / oil.viscosity_Pa_s, s = t.share[j];
-    const lubrication::EhlPointContact c{s * w, o.pin.radius_m, s * 2.0 * o.e_star_Pa, 0.5 * u};
-    try {
-      const lubrication::EhlPointResult film = lubrication::solve_ehl_point(c, oil, film_options);
-      if (!film.converged) {
-        why[q] = film.message;
-        continue;
+  for (std::size_t k = 1; k < speeds; ++k) {  // ηU = 0 has no film
+    const double u = t.eta_u_Pa_m[k] / oil.viscosity_Pa_s;
+    int solved = 0;
+    double last_film_m = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < n_s; ++j) {
+      // The films thin as the share grows: past two solved, one thinner than thinnest_film_m ends the speed.
+      if (solved >= 2 && last_film_m < thinnest_film_m) {
+        skipped[k] = static_cast<int>(n_s - j);
+        break;
       }
-      const lubrication::EhlPointTraction f = lubrication::ehl_point_traction(film, oil, u, o.micro_ehl->eyring_stress_Pa, s * w);
-      t.central_film_m[k][j] = film.central_film_m;
-      t.traction_N[k][j] = f.force_N;
-    } catch (const std::exception& e) {
-      why[q] = e.what();
+      const double s = t.share[j];
+      const lubrication::EhlPointContact c{s * w, o.pin.radius_m, s * 2.0 * o.e_star_Pa, 0.5 * u};
+      try {
+        const lubrication::EhlPointResult film = lubrication::solve_ehl_point(c, oil, film_options);
+        if (!film.converged) {
+          why[k * n_s + j] = film.message;
+          continue;
+        }
+        const lubrication::EhlPointTraction f = lubrication::ehl_point_traction(film, oil, u, o.micro_ehl->eyring_stress_Pa, s * w);
+        t.central_film_m[k][j] = film.central_film_m;
+        t.traction_N[k][j] = f.force_N;
+        last_film_m = film.central_film_m;
+        ++solved;
+      } catch (const std::exception& e) {
+        why[k * n_s + j] = e.what();
+      }
     }
   }
+  for (int n : skipped) t.not_needed += n;
   for (std::size_t q = 0; q < why.size(); ++q)
     if (!why[q].empty()) {
       ++t.unconverged;

@@ -38,6 +38,8 @@ struct BallFilmTable {
   std::vector<double> eta_u_Pa_m;                   // the table's ηU axis (the first 0)
   std::vector<std::vector<double>> central_film_m;  // [ηU][s]: h_c (NaN unsolved or at ηU = 0)
   std::vector<std::vector<double>> traction_N;      // [ηU][s]: F (NaN alike)
+  double thinnest_film_m = 0;         // the films not solved below (ball_film)
+  int not_needed = 0;                 // solves skipped so: thinner still, NaN in the rows above
   int unconverged = 0;
   std::vector<std::string> messages;  // one per film solve left out
 };
@@ -45,8 +47,13 @@ struct BallFilmTable {
 inline constexpr double kBallFilmMinShare = 1e-4;
 inline constexpr int kBallFilmSharesPerDecade = 3;
 
-// Solves the films (in parallel over options.threads). Throws std::invalid_argument unless
+// Solves the films (in parallel over the speeds, options.threads). At each speed the shares are
+// solved in increasing order until two films have converged and the last is thinner than
+// `thinnest_film_m`: the larger shares' films are thinner still. pin_scale passes half the
+// separation at which the asperities alone carry W — the rig's balance never lies below it, and the
+// solves there are the thinnest, slowest and likeliest to fail (on a 65² grid at slow speeds,
+// nanometre films under high load). 0 solves every share. Throws std::invalid_argument unless
 // options describe a ball; std::runtime_error when at some ηU fewer than two shares converged.
-BallFilmTable ball_film(const HomogeniseOptions& options);
+BallFilmTable ball_film(const HomogeniseOptions& options, double thinnest_film_m);
 
 }  // namespace tribo::homogenise

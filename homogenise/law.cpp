@@ -192,6 +192,8 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
     j["ball_film"] = {{"hertz_radius_m", b->hertz_radius_m},
                       {"film_grid", o.pin.film_grid},
                       {"share", b->share},
+                      {"thinnest_film_m", b->thinnest_film_m},
+                      {"not_needed", b->not_needed},
                       {"films", films},
                       {"unconverged", b->messages}};
   }

@@ -32,6 +32,15 @@ class Column {
   rig::MonotoneTable curve_;
 };
 
+// The separation at which the asperities alone carry W (linear between the table's nodes; the
+// first separation if they carry less there).
+double rest_separation_m(const std::vector<double>& separation_m, const std::vector<double>& solid_load_N, double w) {
+  for (std::size_t m = 0; m + 1 < separation_m.size(); ++m)
+    if (solid_load_N[m] >= w && solid_load_N[m + 1] < w)
+      return separation_m[m] + (separation_m[m + 1] - separation_m[m]) * (solid_load_N[m] - w) / (solid_load_N[m] - solid_load_N[m + 1]);
+  return separation_m.front();
+}
+
 }  // namespace
 
 double face_drop_m(const Pin& pin) {
@@ -180,7 +189,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     std::fill(pin.wedge_lift_per_eta_u_m.begin(), pin.wedge_lift_per_eta_u_m.end(), 0.0);
     std::fill(pin.rugosity_lift_per_eta_u_m.begin(), pin.rugosity_lift_per_eta_u_m.end(), 0.0);
     std::fill(pin.shear_per_eta_u_m.begin(), pin.shear_per_eta_u_m.end(), 0.0);
-    pin.ball = ball_film(o);
+    pin.ball = ball_film(o, 0.5 * rest_separation_m(pin.separation_m, pin.solid_load_N, o.pin.normal_load_N));
   }
   return pin;
 }

@@ -169,6 +169,28 @@ TEST(BallFilm, AFilmBetweenTheSolvedSharesCarriesTheShareWhoseFilmItIs) {
   EXPECT_GT(thick.share, 0.0);
 }
 
+TEST(BallFilm, FilmsThinnerThanTheRestSeparationNeedNotBeSolved) {
+  // pin_scale stops each speed's shares at the first film thinner than half the asperities' rest
+  // separation (42 nm here). Wherever the rig's balance can lie — at or above that — the film's
+  // load and traction are those of every share solved: the same two films bracket h̄, solved again
+  // (1e-9: a film solved twice agrees to its last digits, FFTW's plans aside).
+  const HomogeniseOptions o = ball_options();
+  const PinTable pin = pin_scale(o, yielding_cells(o));
+  ASSERT_TRUE(pin.ball.has_value());
+  const BallFilmTable& some = *pin.ball;
+  const BallFilmTable all = ball_film(o, 0.0);
+  EXPECT_GT(some.not_needed, 0);
+  EXPECT_EQ(all.not_needed, 0);
+  EXPECT_NEAR(some.thinnest_film_m, 0.5 * 4.0 * kBallSigma * (1.0 - std::sqrt(o.pin.normal_load_N / pin.nominal_area_m2 / 2e9)), 0.05 * some.thinnest_film_m);
+  for (std::size_t k = 1; k < all.eta_u_Pa_m.size(); ++k) {
+    const rig::BallFilmCurve a(some.share, some.central_film_m[k], some.traction_N[k]), b(all.share, all.central_film_m[k], all.traction_N[k]);
+    for (double h = some.thinnest_film_m; h < 20.0 * some.thinnest_film_m; h *= 1.1) {
+      EXPECT_NEAR(a.at(h).share / b.at(h).share, 1.0, 1e-9) << k << ' ' << h;
+      EXPECT_NEAR(a.at(h).traction_N / b.at(h).traction_N, 1.0, 1e-9) << k << ' ' << h;
+    }
+  }
+}
+
 TEST(BallFilm, BetweenSpeedNodesTheRigReadsTheFilmSolvedAtThatSpeed) {
   // Nodes at 1 and 3.16 m/s (two a decade, the coarsest axis the docs allow), the films solved at
   // the table's 13 shares; at 1.78 m/s, between them, the films solved directly at 10 % and 100 %
