@@ -42,11 +42,12 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m) {
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
   for (std::size_t k = 1; k < speeds; ++k) {  // ηU = 0 has no film
     const double u = t.eta_u_Pa_m[k] / oil.viscosity_Pa_s;
-    int solved = 0;
+    int usable = 0;
     double last_film_m = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < n_s; ++j) {
-      // The films thin as the share grows: past two solved, one thinner than thinnest_film_m ends the speed.
-      if (solved >= 2 && last_film_m < thinnest_film_m) {
+      // The films thin as the share grows: past two usable (each thinner than the last, rig/ball_film.h),
+      // one thinner than thinnest_film_m ends the speed.
+      if (usable >= 2 && last_film_m < thinnest_film_m) {
         skipped[k] = static_cast<int>(n_s - j);
         break;
       }
@@ -61,8 +62,7 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m) {
         const lubrication::EhlPointTraction f = lubrication::ehl_point_traction(film, oil, u, o.micro_ehl->eyring_stress_Pa, s * w);
         t.central_film_m[k][j] = film.central_film_m;
         t.traction_N[k][j] = f.force_N;
-        last_film_m = film.central_film_m;
-        ++solved;
+        if (film.central_film_m < last_film_m) last_film_m = film.central_film_m, ++usable;  // as the rig inverts them
       } catch (const std::exception& e) {
         why[k * n_s + j] = e.what();
       }
@@ -81,7 +81,7 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m) {
       rig::BallFilmCurve(t.share, t.central_film_m[k], t.traction_N[k]);
     } catch (const std::invalid_argument& e) {
       throw std::runtime_error("ball film at U = " + numerics::shortest(t.eta_u_Pa_m[k] / oil.viscosity_Pa_s) + " m/s: " + e.what() +
-                               " converged; raise [micro_ehl] min_speed_m_per_s or [pin] film_grid");
+                               " (the others did not converge: law.json unconverged); raise [micro_ehl] min_speed_m_per_s or [pin] film_grid");
     }
   }
   return t;

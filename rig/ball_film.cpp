@@ -12,7 +12,7 @@ namespace {
 
 // x^(1−w) y^w for w in [0, 1], without 0·∞ at the ends or where a value is 0.
 double geometric_blend(double x, double y, double w) {
-  if (w <= 0.0) return x;
+  if (w <= 0.0 || x == y) return x;
   if (w >= 1.0) return y;
   if (x == 0.0 || y == 0.0) return 0.0;
   return std::exp((1.0 - w) * std::log(x) + w * std::log(y));
@@ -31,10 +31,12 @@ BallFilmCurve::BallFilmCurve(const std::vector<double>& share, const std::vector
     ln_h_.push_back(std::log(hc));
     ln_f_.push_back(std::log(f));
   }
-  if (ln_s_.size() < 2) throw std::invalid_argument("ball film: fewer than two shares with a film thinner than the last");
+  if (ln_s_.size() < 2)
+    throw std::invalid_argument("ball film: fewer than two shares have a film (each thinner than the smaller shares' films)");
 }
 
 BallFilmAt BallFilmCurve::at(double h) const {
+  if (!(h > 0.0)) throw std::invalid_argument("ball film: the separation must be > 0, got " + internal::exact_decimal(h));
   const double x = std::log(h);
   // The interval holding ln h (h_c falls with j), the end intervals continued beyond.
   std::size_t j = 0;

@@ -40,8 +40,10 @@ struct BallFilmAt {
 class BallFilmCurve {
  public:
   // Shares s_j (increasing) with their central films and tractions (NaN entries skipped);
-  // std::invalid_argument when fewer than two shares have a film thinner than the last.
+  // std::invalid_argument when fewer than two shares have a film, each thinner than the smaller
+  // shares' films.
   BallFilmCurve(const std::vector<double>& share, const std::vector<double>& central_film_m, const std::vector<double>& traction_N);
+  // std::invalid_argument unless separation_m > 0.
   BallFilmAt at(double separation_m) const;
   // The traction of the film carrying share s of the load (ln F linear in ln s, the end intervals
   // continued beyond the solved shares).
@@ -63,7 +65,7 @@ class BallFilm {
     double load_N = 0, shear_N = 0;
     double load_slope_N_per_m = 0;  // ∂W_f/∂h̄ at fixed ηU
   };
-  // std::out_of_range for ηU outside [0, the last node].
+  // std::out_of_range for ηU outside [0, the last node]; std::invalid_argument unless h̄ > 0.
   Film at(double separation_m, double eta_u_Pa_m) const;
 
  private:

@@ -150,7 +150,12 @@ void validate_ball_film(const LawTable& t) {
         if (!std::isnan((*row)[j]) && !((*row)[j] > 0.0 && std::isfinite((*row)[j])))
           fail(s, key + "." + name + "[" + std::to_string(j) + "]", "must be > 0 or null, got " + exact_decimal((*row)[j]));
     }
-    if (k == 0) continue;  // no film at rest
+    if (k == 0) {  // no film at rest
+      for (const auto* row : {&t.ball_central_film_m[0], &t.ball_traction_N[0]})
+        if (std::any_of(row->begin(), row->end(), [](double v) { return !std::isnan(v); }))
+          fail(s, key, "must be all null: there is no film at rest (eta_u_Pa_m = 0)");
+      continue;
+    }
     try {
       BallFilmCurve(share, t.ball_central_film_m[k], t.ball_traction_N[k]);
     } catch (const std::invalid_argument& e) {

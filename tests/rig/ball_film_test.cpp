@@ -70,6 +70,68 @@ TEST(BallFilm, BetweenSpeedNodesTheFilmScaledReadingIsExactForASelfSimilarFilm) 
   }
 }
 
+// A film that is not self-similar: its speed exponent drifts with the share and its load exponent
+// with the speed, as a real EHL film's do between the isoviscous and piezoviscous regimes.
+double drifting_film_m(double eta_u, double s) {
+  const double n = 0.6 + 0.03 * std::log10(s), q = 0.1 + 0.02 * std::log10(eta_u);
+  return kA * std::pow(eta_u, n) * std::pow(s, -q);
+}
+double drifting_traction_N(double eta_u, double s) { return kB * std::pow(eta_u, 0.2) * std::pow(s, 0.9 + 0.05 * std::log10(eta_u)); }
+
+BallFilm drifting_ball() {
+  Films f = closed_form_films();
+  for (std::size_t k = 1; k < f.eta_u.size(); ++k)
+    for (std::size_t j = 0; j < f.share.size(); ++j) {
+      f.central[k][j] = drifting_film_m(f.eta_u[k], f.share[j]);
+      f.traction[k][j] = drifting_traction_N(f.eta_u[k], f.share[j]);
+    }
+  return BallFilm(f.share, f.eta_u, f.central, f.traction, kLoad);
+}
+
+TEST(BallFilm, AtEachNodeTheReadingIsThatNodesFilmsAndItIsContinuousAcrossTheNodes) {
+  // At a node the film is that node's inversion alone (the interval's weight 0 or 1), and a hair
+  // either side of it the same to 1e-6 relative (the interpolant is continuous, with a kink).
+  const Films f = closed_form_films();
+  std::vector<std::vector<double>> central(f.central), traction(f.traction);
+  for (std::size_t k = 1; k < f.eta_u.size(); ++k)
+    for (std::size_t j = 0; j < f.share.size(); ++j)
+      central[k][j] = drifting_film_m(f.eta_u[k], f.share[j]), traction[k][j] = drifting_traction_N(f.eta_u[k], f.share[j]);
+  const BallFilm ball = drifting_ball();
+  for (std::size_t k = 1; k < f.eta_u.size(); ++k) {
+    const BallFilmCurve node(f.share, central[k], traction[k]);
+    for (double s : {0.001, 0.03, 0.6}) {
+      const double h = drifting_film_m(f.eta_u[k], s), e = f.eta_u[k];
+      EXPECT_NEAR(ball.at(h, e).load_N / (node.at(h).share * kLoad), 1.0, 1e-12) << k << ' ' << s;
+      for (double side : {1.0 - 1e-9, 1.0 + 1e-9}) {
+        if (e * side > f.eta_u.back()) continue;
+        EXPECT_NEAR(ball.at(h, e * side).load_N / ball.at(h, e).load_N, 1.0, 1e-6) << k << ' ' << s << ' ' << side;
+        EXPECT_NEAR(ball.at(h, e * side).shear_N / ball.at(h, e).shear_N, 1.0, 1e-6) << k << ' ' << s << ' ' << side;
+      }
+    }
+  }
+}
+
+TEST(BallFilm, TheLoadsSlopeIsItsDerivativeInTheSeparation) {
+  // ∂W_f/∂h̄ at fixed ηU against a centred difference (step 1e-6 h̄: truncation ~1e-12, rounding
+  // ~1e-10 relative): at a node, a third and two thirds of the way between nodes, below the first
+  // node, and where one node's film is at its cap and the other's not — 1e-6.
+  const BallFilm ball = drifting_ball();
+  for (double eta_u : {0.1, 0.0215, 0.464, 0.002}) {
+    for (double s : {0.002, 0.05, 0.7, 1.3}) {
+      const double h = drifting_film_m(eta_u, s), dh = 1e-6 * h;
+      const double slope = (ball.at(h + dh, eta_u).load_N - ball.at(h - dh, eta_u).load_N) / (2.0 * dh);
+      EXPECT_NEAR(ball.at(h, eta_u).load_slope_N_per_m / slope, 1.0, 1e-6) << eta_u << ' ' << s;
+    }
+  }
+  // Between the nodes 0.1 and 1 at 0.3 Pa m, 3 % below the whole-load film: the slower node is read
+  // 10 % below its own whole-load film (capped at 2 W), the faster 5 % above (not capped) — the
+  // slope is the uncapped node's part of it.
+  const double eta_u = 0.3, h = 0.97 * drifting_film_m(eta_u, 1.0), dh = 1e-6 * h;
+  const double slope = (ball.at(h + dh, eta_u).load_N - ball.at(h - dh, eta_u).load_N) / (2.0 * dh);
+  EXPECT_LT(slope, 0.0);
+  EXPECT_NEAR(ball.at(h, eta_u).load_slope_N_per_m / slope, 1.0, 1e-6);
+}
+
 TEST(BallFilm, BelowTheFirstNodeTheFirstNodesFilmIsScaledDownAndAtRestThereIsNone) {
   const BallFilm ball = closed_form_ball();
   const double eta_u = 1e-3, h = film_m(eta_u, 0.2);  // a decade below the first node
@@ -92,11 +154,15 @@ TEST(BallFilm, AFilmThinnerThanTheWholeLoadsPushesHarderUpToTheCapAndBeyondTheTa
   const BallFilm::Film capped = ball.at(0.8 * whole, eta_u);
   EXPECT_EQ(capped.load_N, kBallFilmMaxShare * kLoad);
   EXPECT_EQ(capped.load_slope_N_per_m, 0.0);
+  // Capped at both nodes the blend is the cap itself, at every speed between (not 2 W less a rounding).
+  for (double e = 0.1; e < 1.0; e *= 1.0123) EXPECT_EQ(ball.at(0.5 * film_m(e, 1.0), e).load_N, kBallFilmMaxShare * kLoad) << e;
   // Thicker than the smallest share's film: the power law continued, the film fades.
   const double thick = 2.0 * film_m(eta_u, 1e-4);
   EXPECT_NEAR(ball.at(thick, eta_u).load_N / kLoad, share_at(thick, eta_u), 1e-12 * share_at(thick, eta_u));
   EXPECT_THROW(ball.at(whole, 1.01), std::out_of_range);
   EXPECT_THROW(ball.at(whole, -1e-9), std::out_of_range);
+  EXPECT_THROW(ball.at(0.0, eta_u), std::invalid_argument);
+  EXPECT_THROW(ball.at(std::numeric_limits<double>::quiet_NaN(), eta_u), std::invalid_argument);
 }
 
 TEST(BallFilm, UnsolvedSharesAreSkippedAndANodeWithFewerThanTwoIsRefused) {

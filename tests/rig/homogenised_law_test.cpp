@@ -721,6 +721,11 @@ TEST(LawTableReader, ABallsFilmsComeOnePerSpeedNodeWithNullWhereASolveWasLeftOut
   }
   {
     nlohmann::json d = good;
+    d["ball_film"]["films"][0]["traction_N"][1] = 0.5;
+    expect_rejected("ball_at_rest.json", d, {"ball_film.films[0]", "no film at rest"});
+  }
+  {
+    nlohmann::json d = good;
     d["ball_film"]["films"].erase(nodes - 1);
     expect_rejected("ball_short.json", d, {"ball_film.films", "entries"});
   }
