@@ -340,7 +340,12 @@ def plot_homogenise(d):
     pts = law["stribeck"]
     if pts:
         u = [p["U_m_per_s"] for p in pts]
-        fig, ax = plt.subplots(figsize=(7, 4.5))
+        # Beside it, μ against the film parameter Λ = h̄/σ where law.json gives it (since 2026-12-03).
+        by_film = all("film_parameter" in p for p in pts)
+        if by_film:
+            fig, (ax, ax_film) = plt.subplots(1, 2, figsize=(11, 4.5), gridspec_kw={"width_ratios": [3, 2]})
+        else:
+            fig, ax = plt.subplots(figsize=(7, 4.5))
         for i, p in enumerate(pts):
             lo = (u[i - 1] * u[i]) ** 0.5 if i > 0 else u[0]
             hi = (u[i] * u[i + 1]) ** 0.5 if i + 1 < len(u) else u[-1]
@@ -362,6 +367,14 @@ def plot_homogenise(d):
         ax.set_title("Stribeck curve at W = %.4g N, %s pin R = %.4g mm" % (pin["normal_load_N"], pin["shape"],
                                                                         pin["radius_m"] * 1e3), fontsize=10)
         ax.grid(alpha=0.3, which="both")
+        if by_film:
+            for p in pts:
+                ax_film.semilogx(p["film_parameter"], p["mu"], "o", ms=4, color=REGIME_SHADES[p["regime"]])
+            ax_film.semilogx([p["film_parameter"] for p in pts], [p["mu"] for p in pts], "k-", lw=0.8)
+            ax_film.set_xlabel("film parameter $\\Lambda = \\bar h/\\sigma$")
+            ax_film.set_ylabel("$\\mu$")
+            ax_film.set_title("against the film parameter (colour: regime)", fontsize=10)
+            ax_film.grid(alpha=0.3, which="both")
         fig.tight_layout()
         fig.savefig(os.path.join(d, "stribeck.png"), dpi=110)
         plt.close(fig)
