@@ -368,9 +368,12 @@ def plot_homogenise(d):
                                                                         pin["radius_m"] * 1e3), fontsize=10)
         ax.grid(alpha=0.3, which="both")
         if by_film:
+            lam = [p["film_parameter"] for p in pts]
+            ax_film.plot(lam, [p["mu"] for p in pts], "k-", lw=0.8)
             for p in pts:
-                ax_film.semilogx(p["film_parameter"], p["mu"], "o", ms=4, color=REGIME_SHADES[p["regime"]])
-            ax_film.semilogx([p["film_parameter"] for p in pts], [p["mu"] for p in pts], "k-", lw=0.8)
+                ax_film.plot(p["film_parameter"], p["mu"], "o", ms=4, color=REGIME_SHADES[p["regime"]])
+            if max(lam) > 3 * min(lam):  # a log axis where Λ spans more than a factor 3
+                ax_film.set_xscale("log")
             ax_film.set_xlabel("film parameter $\\Lambda = \\bar h/\\sigma$")
             ax_film.set_ylabel("$\\mu$")
             ax_film.set_title("against the film parameter (colour: regime)", fontsize=10)
