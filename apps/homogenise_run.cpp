@@ -29,15 +29,20 @@ std::string cache_key(const std::string& config_hash, const std::vector<std::fil
   return key + "@" + git_commit();
 }
 
-std::optional<homogenise::PatchResult> read_cached(const std::filesystem::path& file, const std::string& key) {
+// A cached result — a patch (DIR/patches/realisation-K.json) or a ball's film speed node
+// (DIR/ball-film/node-K.json, which ball_film also checks is its own) — is {"cache_key", `member`};
+// another key, a torn or a foreign file is solved again.
+template <class T>
+std::optional<T> read_cached(const std::filesystem::path& file, const std::string& key, const char* member,
+                             T (*from_json)(const nlohmann::json&)) {
   std::ifstream in(file);
   if (!in) return std::nullopt;
   try {
     const nlohmann::json j = nlohmann::json::parse(in);
     if (j.at("cache_key").get<std::string>() != key) return std::nullopt;
-    return homogenise::patch_from_json(j.at("patch"));
+    return from_json(j.at(member));
   } catch (const std::exception&) {
-    return std::nullopt;  // a torn or foreign file: solve the patch again
+    return std::nullopt;
   }
 }
 
@@ -132,7 +137,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   std::vector<std::optional<homogenise::PatchResult>> cached;
   int reused = 0;
   for (int k = 0; k < o.realisations; ++k) {
-    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), key));
+    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), key, "patch", &homogenise::patch_from_json));
     reused += cached.back() ? 1 : 0;
   }
   Progress progress("homogenise: realisations", o.realisations);
@@ -145,7 +150,28 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   progress.done();
 
   const homogenise::CellTable cells = homogenise::aggregate(o, patch_results);
-  const homogenise::PinTable pin = homogenise::pin_scale(o, cells);
+  // A ball's films, speed node by speed node, kept as they finish so that a killed run resumes.
+  const std::filesystem::path film_nodes = dir / "ball-film";
+  int nodes_reused = 0;
+  std::optional<Progress> film_progress;
+  homogenise::BallFilmStore ball_store;
+  if (o.pin.shape == homogenise::PinShape::ball) {
+    make_output_dir(film_nodes);
+    film_progress.emplace("homogenise: ball film speeds", static_cast<int>(homogenise::micro_ehl_eta_u_Pa_m(o).size()) - 1);
+    const auto node_file = [&](std::size_t k) { return film_nodes / ("node-" + std::to_string(k) + ".json"); };
+    ball_store.load = [&](std::size_t k) {
+      std::optional<homogenise::BallFilmNode> node = read_cached(node_file(k), key, "node", &homogenise::ball_film_node_from_json);
+      if (node) ++nodes_reused, film_progress->step("cached");
+      return node;
+    };
+    ball_store.store = [&](std::size_t k, const homogenise::BallFilmNode& node) {
+      const nlohmann::json j{{"cache_key", key}, {"node", homogenise::to_json(node)}};
+      write_file_atomically(node_file(k), j.dump() + "\n");
+      film_progress->step("U = " + numerics::shortest(node.eta_u_Pa_m / o.lubricant.viscosity_Pa_s) + " m/s");
+    };
+  }
+  const homogenise::PinTable pin = homogenise::pin_scale(o, cells, ball_store);
+  if (film_progress) film_progress->done();
   if (!(pin.solid_load_N.front() >= o.pin.normal_load_N)) {
     // The steady film's equilibrium N_s(h̄) = W would lie below the table (the rig refuses it).
     const bool shaped = o.pin.shape == homogenise::PinShape::spherical || o.pin.tilt_rad > 0.0;
@@ -162,6 +188,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   law["provenance"]["seeds"] = nlohmann::json::array();
   for (const auto& p : patch_results) law["provenance"]["seeds"].push_back(p.seed);
   law["provenance"]["realisations_reused"] = reused;
+  if (pin.ball) law["provenance"]["ball_film_speeds_reused"] = nodes_reused;
 
   // The Stribeck curve the rig's law implies at the pin's load: steady sliding at each speed.
   const rig::HomogenisedBase base(rig::law_table_from_json(law, (dir / "law.json").string()), o.pin.normal_load_N);

@@ -4,8 +4,12 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include "lubrication/ehl_point.h"
 #include "lubrication/ehl_traction.h"
@@ -13,8 +17,79 @@
 #include "rig/ball_film.h"
 
 namespace tribo::homogenise {
+namespace {
 
-BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m) {
+// Node k's films: the shares in increasing order until two usable films (each thinner than the
+// last, as the rig inverts them, rig/ball_film.h) and the last thinner than thinnest_film_m — the
+// larger shares' films are thinner still.
+BallFilmNode solve_node(const HomogeniseOptions& o, const lubrication::PiezoviscousLubricant& oil,
+                        const lubrication::EhlPointOptions& film_options, const std::vector<double>& shares,
+                        double eta_u_Pa_m, double thinnest_film_m) {
+  const std::size_t n_s = shares.size();
+  const double nan = std::numeric_limits<double>::quiet_NaN(), w = o.pin.normal_load_N;
+  const double u = eta_u_Pa_m / oil.viscosity_Pa_s;
+  BallFilmNode node{eta_u_Pa_m, thinnest_film_m, std::vector<double>(n_s, nan), std::vector<double>(n_s, nan),
+                    std::vector<std::string>(n_s), 0};
+  int usable = 0;
+  double last_film_m = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < n_s; ++j) {
+    if (usable >= 2 && last_film_m < thinnest_film_m) {
+      node.not_needed = static_cast<int>(n_s - j);
+      break;
+    }
+    const double s = shares[j];
+    const lubrication::EhlPointContact c{s * w, o.pin.radius_m, s * 2.0 * o.e_star_Pa, 0.5 * u};
+    try {
+      const lubrication::EhlPointResult film = lubrication::solve_ehl_point(c, oil, film_options);
+      if (!film.converged) {
+        node.left_out[j] = film.message;
+        continue;
+      }
+      const lubrication::EhlPointTraction f = lubrication::ehl_point_traction(film, oil, u, o.micro_ehl->eyring_stress_Pa, s * w);
+      node.central_film_m[j] = film.central_film_m;
+      node.traction_N[j] = f.force_N;
+      if (film.central_film_m < last_film_m) last_film_m = film.central_film_m, ++usable;
+    } catch (const std::exception& e) {
+      node.left_out[j] = e.what();
+    }
+  }
+  return node;
+}
+
+bool belongs_to(const BallFilmNode& node, double eta_u_Pa_m, double thinnest_film_m, std::size_t shares) {
+  return node.eta_u_Pa_m == eta_u_Pa_m && node.thinnest_film_m == thinnest_film_m && node.central_film_m.size() == shares &&
+         node.traction_N.size() == shares && node.left_out.size() == shares && node.not_needed >= 0;
+}
+
+std::vector<double> doubles_with_nans(const nlohmann::json& a) {
+  std::vector<double> v;
+  for (const auto& x : a) v.push_back(x.is_null() ? std::numeric_limits<double>::quiet_NaN() : x.get<double>());
+  return v;
+}
+
+}  // namespace
+
+nlohmann::json json_with_nulls(const std::vector<double>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
+  return a;
+}
+
+nlohmann::json to_json(const BallFilmNode& node) {
+  return {{"eta_u_Pa_m", node.eta_u_Pa_m},
+          {"thinnest_film_m", node.thinnest_film_m},
+          {"central_film_m", json_with_nulls(node.central_film_m)},
+          {"traction_N", json_with_nulls(node.traction_N)},
+          {"left_out", node.left_out},
+          {"not_needed", node.not_needed}};
+}
+
+BallFilmNode ball_film_node_from_json(const nlohmann::json& j) {
+  return {j.at("eta_u_Pa_m").get<double>(), j.at("thinnest_film_m").get<double>(), doubles_with_nans(j.at("central_film_m")),
+          doubles_with_nans(j.at("traction_N")), j.at("left_out").get<std::vector<std::string>>(), j.at("not_needed").get<int>()};
+}
+
+BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m, const BallFilmStore& store) {
   if (o.pin.shape != PinShape::ball || !o.micro_ehl) throw std::invalid_argument("ball_film: the options describe no ball with [micro_ehl]");
   BallFilmTable t;
   t.hertz_radius_m = nominal_contact_radius_m(o);
@@ -33,48 +108,38 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m) {
   film_options.nodes_x = film_options.nodes_y = o.pin.film_grid;
 
   const std::size_t speeds = t.eta_u_Pa_m.size(), n_s = t.share.size();
-  const double nan = std::numeric_limits<double>::quiet_NaN(), w = o.pin.normal_load_N;
-  t.central_film_m.assign(speeds, std::vector<double>(n_s, nan));
-  t.traction_N = t.central_film_m;
-  std::vector<std::string> why(speeds * n_s);
-  std::vector<int> skipped(speeds, 0);
+  std::vector<std::optional<BallFilmNode>> nodes(speeds);
+  std::vector<std::size_t> to_solve;
+  for (std::size_t k = 1; k < speeds; ++k) {  // ηU = 0 has no film
+    if (store.load) nodes[k] = store.load(k);
+    if (!nodes[k] || !belongs_to(*nodes[k], t.eta_u_Pa_m[k], thinnest_film_m, n_s)) nodes[k].reset(), to_solve.push_back(k);
+  }
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
-  for (std::size_t k = 1; k < speeds; ++k) {  // ηU = 0 has no film
-    const double u = t.eta_u_Pa_m[k] / oil.viscosity_Pa_s;
-    int usable = 0;
-    double last_film_m = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < n_s; ++j) {
-      // The films thin as the share grows: past two usable (each thinner than the last, rig/ball_film.h),
-      // one thinner than thinnest_film_m ends the speed.
-      if (usable >= 2 && last_film_m < thinnest_film_m) {
-        skipped[k] = static_cast<int>(n_s - j);
-        break;
-      }
-      const double s = t.share[j];
-      const lubrication::EhlPointContact c{s * w, o.pin.radius_m, s * 2.0 * o.e_star_Pa, 0.5 * u};
-      try {
-        const lubrication::EhlPointResult film = lubrication::solve_ehl_point(c, oil, film_options);
-        if (!film.converged) {
-          why[k * n_s + j] = film.message;
-          continue;
-        }
-        const lubrication::EhlPointTraction f = lubrication::ehl_point_traction(film, oil, u, o.micro_ehl->eyring_stress_Pa, s * w);
-        t.central_film_m[k][j] = film.central_film_m;
-        t.traction_N[k][j] = f.force_N;
-        if (film.central_film_m < last_film_m) last_film_m = film.central_film_m, ++usable;  // as the rig inverts them
-      } catch (const std::exception& e) {
-        why[k * n_s + j] = e.what();
-      }
+  for (std::size_t q = 0; q < to_solve.size(); ++q) {
+    const std::size_t k = to_solve[q];
+    nodes[k] = solve_node(o, oil, film_options, t.share, t.eta_u_Pa_m[k], thinnest_film_m);
+    if (store.store) {
+#pragma omp critical(tribo_ball_film_store)
+      store.store(k, *nodes[k]);
     }
   }
-  for (int n : skipped) t.not_needed += n;
-  for (std::size_t q = 0; q < why.size(); ++q)
-    if (!why[q].empty()) {
-      ++t.unconverged;
-      t.messages.push_back("ball film at U = " + numerics::shortest(t.eta_u_Pa_m[q / n_s] / oil.viscosity_Pa_s) +
-                           " m/s, share " + numerics::shortest(t.share[q % n_s]) + ": " + why[q]);
-    }
+
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  t.central_film_m.assign(1, std::vector<double>(n_s, nan));
+  t.traction_N = t.central_film_m;
+  for (std::size_t k = 1; k < speeds; ++k) {
+    const BallFilmNode& node = *nodes[k];
+    t.central_film_m.push_back(node.central_film_m);
+    t.traction_N.push_back(node.traction_N);
+    t.not_needed += node.not_needed;
+    for (std::size_t j = 0; j < n_s; ++j)
+      if (!node.left_out[j].empty()) {
+        ++t.unconverged;
+        t.messages.push_back("ball film at U = " + numerics::shortest(node.eta_u_Pa_m / oil.viscosity_Pa_s) + " m/s, share " +
+                             numerics::shortest(t.share[j]) + ": " + node.left_out[j]);
+      }
+  }
 
   for (std::size_t k = 1; k < speeds; ++k) {  // the rig inverts every node's films (rig/ball_film.h)
     try {

@@ -25,8 +25,13 @@
 // twice), the film's own heating (the rig's flash temperature enters through η(ΔT)).
 #pragma once
 
+#include <cstddef>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json_fwd.hpp>
 
 #include "homogenise/options.h"
 
@@ -47,6 +52,33 @@ struct BallFilmTable {
 inline constexpr double kBallFilmMinShare = 1e-4;
 inline constexpr int kBallFilmSharesPerDecade = 3;
 
+// One speed node's films as ball_film solves them: its row of the table (NaN unsolved), the reason
+// each share's solve was left out ("" where it converged or was not needed) and the shares not
+// needed. eta_u_Pa_m and thinnest_film_m say which solve it belongs to.
+struct BallFilmNode {
+  double eta_u_Pa_m = 0, thinnest_film_m = 0;
+  std::vector<double> central_film_m, traction_N;
+  std::vector<std::string> left_out;
+  int not_needed = 0;
+};
+
+// Where finished speed nodes are kept, so that a killed run resumes (`tribo homogenise` keeps them
+// in DIR/ball-film/): `load(k)` returns node k if a run with the same inputs finished it,
+// `store(k, node)` is called once for each node solved, one call at a time, as it finishes. Either
+// may be empty. A loaded node is used only if it belongs to this solve (the same ηU, thinnest film
+// and number of shares); otherwise it is solved again.
+struct BallFilmStore {
+  std::function<std::optional<BallFilmNode>(std::size_t k)> load;
+  std::function<void(std::size_t k, const BallFilmNode& node)> store;
+};
+
+// The node as JSON (the films as law.json's ball_film rows: an unsolved film is null) and back;
+// the reader throws nlohmann::json::exception on a torn or foreign file.
+nlohmann::json to_json(const BallFilmNode& node);
+BallFilmNode ball_film_node_from_json(const nlohmann::json& j);
+// NaN (an unsolved film) as JSON null, element by element.
+nlohmann::json json_with_nulls(const std::vector<double>& v);
+
 // Solves the films (in parallel over the speeds, options.threads). At each speed the shares are
 // solved in increasing order until two films have converged and the last is thinner than
 // `thinnest_film_m`: the larger shares' films are thinner still. pin_scale passes half the
@@ -54,6 +86,6 @@ inline constexpr int kBallFilmSharesPerDecade = 3;
 // solves there are the thinnest, slowest and likeliest to fail (on a 65² grid at slow speeds,
 // nanometre films under high load). 0 solves every share. Throws std::invalid_argument unless
 // options describe a ball; std::runtime_error when at some ηU fewer than two shares converged.
-BallFilmTable ball_film(const HomogeniseOptions& options, double thinnest_film_m);
+BallFilmTable ball_film(const HomogeniseOptions& options, double thinnest_film_m, const BallFilmStore& store = {});
 
 }  // namespace tribo::homogenise

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "contact/junction_locus.h"
+#include "homogenise/ball_film.h"
 #include "numerics/format.h"
 
 namespace tribo::homogenise {
@@ -178,16 +179,11 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
     j["table"]["film_share"] = pin.film_share;
   }
   if (const auto& b = pin.ball) {
-    const auto finite_or_null = [](const std::vector<double>& v) {  // an unsolved film is null
-      nlohmann::json a = nlohmann::json::array();
-      for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
-      return a;
-    };
     nlohmann::json films = nlohmann::json::array();
     for (std::size_t k = 0; k < b->eta_u_Pa_m.size(); ++k) {
       films.push_back({{"eta_u_Pa_m", b->eta_u_Pa_m[k]},
-                       {"central_film_m", finite_or_null(b->central_film_m[k])},
-                       {"traction_N", finite_or_null(b->traction_N[k])}});
+                       {"central_film_m", json_with_nulls(b->central_film_m[k])},
+                       {"traction_N", json_with_nulls(b->traction_N[k])}});
     }
     j["ball_film"] = {{"hertz_radius_m", b->hertz_radius_m},
                       {"film_grid", o.pin.film_grid},

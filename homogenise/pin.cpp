@@ -50,7 +50,7 @@ double face_drop_m(const Pin& pin) {
   return theta * rc <= r ? 0.5 * theta * theta * rc : theta * r - r * r / (2.0 * rc);
 }
 
-PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
+PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t, const BallFilmStore& ball_store) {
   const bool ball = o.pin.shape == PinShape::ball;
   // A ball's face is its Hertz circle, the film over it uniform (ball_film.h).
   const double sigma = t.sigma_m, radius = nominal_contact_radius_m(o);
@@ -189,7 +189,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     std::fill(pin.wedge_lift_per_eta_u_m.begin(), pin.wedge_lift_per_eta_u_m.end(), 0.0);
     std::fill(pin.rugosity_lift_per_eta_u_m.begin(), pin.rugosity_lift_per_eta_u_m.end(), 0.0);
     std::fill(pin.shear_per_eta_u_m.begin(), pin.shear_per_eta_u_m.end(), 0.0);
-    pin.ball = ball_film(o, 0.5 * rest_separation_m(pin.separation_m, pin.solid_load_N, o.pin.normal_load_N));
+    pin.ball = ball_film(o, 0.5 * rest_separation_m(pin.separation_m, pin.solid_load_N, o.pin.normal_load_N), ball_store);
   }
   return pin;
 }

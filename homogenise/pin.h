@@ -71,6 +71,7 @@ struct PinTable {
 // lies on the face (θR_c ≤ R), else θR − R²/(2R_c) at the trailing edge; 0 untilted.
 double face_drop_m(const Pin& pin);
 
-PinTable pin_scale(const HomogeniseOptions& options, const CellTable& cells);
+// A ball's films are solved through `ball_store` (ball_film.h: finished speed nodes kept and reused).
+PinTable pin_scale(const HomogeniseOptions& options, const CellTable& cells, const BallFilmStore& ball_store = {});
 
 }  // namespace tribo::homogenise

@@ -3,8 +3,11 @@
 // friction (Bowden & Tabor's τ_i/H where the asperities yield) to the ball's full EHL film.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -189,6 +192,49 @@ TEST(BallFilm, FilmsThinnerThanTheRestSeparationNeedNotBeSolved) {
       EXPECT_NEAR(a.at(h).traction_N / b.at(h).traction_N, 1.0, 1e-9) << k << ' ' << h;
     }
   }
+}
+
+TEST(BallFilm, AKilledRunResumesFromTheSpeedNodesItKept) {
+  // A first run keeps every node it solves (as JSON, the way `tribo homogenise` writes
+  // DIR/ball-film/); a second run that finds only every other node — a run killed half-way — solves
+  // exactly the missing ones and tabulates the same films (kept nodes to the bit, the solved again
+  // to 1e-9 as above), the unconverged and skipped counts alike. A node kept from another solve
+  // (another thinnest film) is not taken.
+  const HomogeniseOptions o = ball_options();
+  const double thinnest_film_m = 40e-9;
+  std::map<std::size_t, std::string> kept;
+  const BallFilmStore keep_all{{}, [&](std::size_t k, const BallFilmNode& node) { kept[k] = to_json(node).dump(); }};
+  const BallFilmTable first = ball_film(o, thinnest_film_m, keep_all);
+  const std::size_t speeds = first.eta_u_Pa_m.size();
+  ASSERT_GE(speeds, 5u);
+  ASSERT_EQ(kept.size(), speeds - 1);  // ηU = 0 has no film
+
+  std::vector<std::size_t> solved_again;
+  const BallFilmStore half{[&](std::size_t k) -> std::optional<BallFilmNode> {
+                             if (k % 2 == 0) return std::nullopt;
+                             BallFilmNode node = ball_film_node_from_json(nlohmann::json::parse(kept.at(k)));
+                             if (k == 1) node.thinnest_film_m *= 2.0;  // from a solve with another rest separation
+                             return node;
+                           },
+                           [&](std::size_t k, const BallFilmNode&) { solved_again.push_back(k); }};
+  const BallFilmTable resumed = ball_film(o, thinnest_film_m, half);
+  std::sort(solved_again.begin(), solved_again.end());
+  std::vector<std::size_t> expected{1};
+  for (std::size_t k = 2; k < speeds; k += 2) expected.push_back(k);
+  EXPECT_EQ(solved_again, expected);
+  EXPECT_EQ(resumed.not_needed, first.not_needed);
+  EXPECT_EQ(resumed.unconverged, first.unconverged);
+  EXPECT_EQ(resumed.messages, first.messages);
+  for (std::size_t k = 1; k < speeds; ++k)
+    for (std::size_t j = 0; j < first.share.size(); ++j) {
+      const double a = first.central_film_m[k][j], b = resumed.central_film_m[k][j];
+      const double fa = first.traction_N[k][j], fb = resumed.traction_N[k][j];
+      ASSERT_EQ(std::isnan(a), std::isnan(b)) << k << ' ' << j;
+      if (std::isnan(a)) continue;
+      const double tolerance = (k % 2 == 1 && k != 1) ? 0.0 : 1e-9;
+      EXPECT_NEAR(b / a, 1.0, tolerance) << k << ' ' << j;
+      EXPECT_NEAR(fb / fa, 1.0, tolerance) << k << ' ' << j;
+    }
 }
 
 TEST(BallFilm, BetweenSpeedNodesTheRigReadsTheFilmSolvedAtThatSpeed) {
