@@ -14,20 +14,12 @@ file(WRITE ${WORK}/ball.toml
   "[speeds]\nmin_m_per_s = 1e-3\nmax_m_per_s = 1.0\ncount = 4\n"
   "[homogenise]\nrealisations = 1\nmin_contact_grid = 64\n"
   "[micro_ehl]\nmin_speed_m_per_s = 1e-2\nmax_speed_m_per_s = 3.0\nspeeds_per_decade = 2\n")
+include(${CMAKE_CURRENT_LIST_DIR}/tiny_homogenise.cmake)
 function(run_ball expected what)
-  execute_process(COMMAND ${TRIBO} homogenise ${WORK}/ball.toml --out ${WORK}/out --no-plots RESULT_VARIABLE status ERROR_VARIABLE err)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "tribo homogenise (ball) failed (${status}): ${err}")
-  endif()
-  file(READ ${WORK}/out/law.json law)
-  string(JSON n GET "${law}" provenance ball_film_speeds_reused)
-  if(NOT n EQUAL expected)
-    message(FATAL_ERROR "${what}: expected ${expected} ball film speeds reused, got ${n}")
-  endif()
-  string(JSON films GET "${law}" ball_film films)
+  expect_homogenise_reused(${WORK}/ball.toml ${WORK}/out ball_film_speeds_reused ${expected} "${what}")
+  string(JSON films GET "${LAW}" ball_film films)
   set(films "${films}" PARENT_SCOPE)
 endfunction()
-
 run_ball(0 "first run")
 set(first "${films}")
 file(GLOB nodes ${WORK}/out/ball-film/node-*.json)

@@ -9,3 +9,19 @@ function(write_tiny_homogenise_config file realisations speeds)
     "[speeds]\nmin_m_per_s = 1e-5\nmax_m_per_s = 0.1\ncount = ${speeds}\n"
     "[homogenise]\nrealisations = ${realisations}\nmin_contact_grid = 64\n")
 endfunction()
+
+# Runs `tribo homogenise CONFIG --out OUT --no-plots` and checks that law.json's provenance counts
+# EXPECTED under FIELD (realisations_reused, ball_film_speeds_reused); WHAT names the run. Sets LAW
+# in the caller to law.json's text.
+function(expect_homogenise_reused config out field expected what)
+  execute_process(COMMAND ${TRIBO} homogenise ${config} --out ${out} --no-plots RESULT_VARIABLE status ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${what}: tribo homogenise failed (${status}): ${err}")
+  endif()
+  file(READ ${out}/law.json law)
+  string(JSON n GET "${law}" provenance ${field})
+  if(NOT n EQUAL expected)
+    message(FATAL_ERROR "${what}: expected ${field} ${expected}, got ${n}")
+  endif()
+  set(LAW "${law}" PARENT_SCOPE)
+endfunction()
