@@ -2,8 +2,9 @@
 // Patir–Cheng cells, rugosity lift, the pin-face average Reynolds equation) turned into the
 // friction-law tables the rig reads (DIR/law.json), with the Stribeck curve at the pin's load
 // (law.json "stribeck", stribeck.csv, stribeck.png) and the load–separation curve (area.csv,
-// area.png). Finished realisations are kept in DIR/patches/ and reused when the same command
-// runs again, so a killed run resumes; a changed config starts them afresh.
+// area.png). Finished realisations are kept in DIR/patches/, and a ball's film speeds in
+// DIR/ball-film/, and reused when the same command runs again, so a killed run resumes; a changed
+// config starts them afresh.
 #include <memory>
 #include <string>
 
@@ -35,7 +36,7 @@ void add_homogenise_command(CLI::App& app) {
       "homogenise", "friction-law tables (law.json) from BEM contact and Reynolds solves on a rough surface pair");
   cmd->add_option("config", args->config, "CONFIG.toml: [surface] [domain] [material] [junction] [lubricant] [pin] [speeds] [homogenise] [micro_ehl] (docs/homogenise.md)")
       ->required();
-  cmd->add_option("--out", args->out, "output directory (law.json, stribeck.csv, area.csv, PNGs, patches/)");
+  cmd->add_option("--out", args->out, "output directory (law.json, stribeck.csv, area.csv, PNGs; patches/ and a ball's ball-film/ kept so a killed run resumes)");
   cmd->add_flag("!--no-plots", args->plots, "skip stribeck.png and area.png");
   cmd->callback([args] { run_homogenise(*args); });
 }
