@@ -155,16 +155,19 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   int nodes_reused = 0;
   std::optional<Progress> film_progress;
   homogenise::BallFilmStore ball_store;
+  const auto node_file = [&](std::size_t k) { return film_nodes / ("node-" + std::to_string(k) + ".json"); };
   if (o.pin.shape == homogenise::PinShape::ball) {
     make_output_dir(film_nodes);
     film_progress.emplace("homogenise: ball film speeds", static_cast<int>(homogenise::micro_ehl_eta_u_Pa_m(o).size()) - 1);
-    const auto node_file = [&](std::size_t k) { return film_nodes / ("node-" + std::to_string(k) + ".json"); };
     ball_store.load = [&](std::size_t k) {
-      std::optional<homogenise::BallFilmNode> node = read_cached(node_file(k), key, "node", &homogenise::ball_film_node_from_json);
-      if (node) ++nodes_reused, film_progress->step("cached");
-      return node;
+      return read_cached(node_file(k), key, "node", &homogenise::ball_film_node_from_json);
     };
-    ball_store.store = [&](std::size_t k, const homogenise::BallFilmNode& node) {
+    ball_store.finished = [&](std::size_t k, const homogenise::BallFilmNode& node, bool taken) {
+      if (taken) {
+        ++nodes_reused;
+        film_progress->step("cached");
+        return;
+      }
       const nlohmann::json j{{"cache_key", key}, {"node", homogenise::to_json(node)}};
       write_file_atomically(node_file(k), j.dump() + "\n");
       film_progress->step("U = " + numerics::shortest(node.eta_u_Pa_m / o.lubricant.viscosity_Pa_s) + " m/s");

@@ -112,16 +112,21 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m, cons
   std::vector<std::size_t> to_solve;
   for (std::size_t k = 1; k < speeds; ++k) {  // ηU = 0 has no film
     if (store.load) nodes[k] = store.load(k);
-    if (!nodes[k] || !belongs_to(*nodes[k], t.eta_u_Pa_m[k], thinnest_film_m, n_s)) nodes[k].reset(), to_solve.push_back(k);
+    if (!nodes[k] || !belongs_to(*nodes[k], t.eta_u_Pa_m[k], thinnest_film_m, n_s)) {
+      nodes[k].reset();
+      to_solve.push_back(k);
+    } else if (store.finished) {
+      store.finished(k, *nodes[k], true);
+    }
   }
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
   for (std::size_t q = 0; q < to_solve.size(); ++q) {
     const std::size_t k = to_solve[q];
     nodes[k] = solve_node(o, oil, film_options, t.share, t.eta_u_Pa_m[k], thinnest_film_m);
-    if (store.store) {
+    if (store.finished) {
 #pragma omp critical(tribo_ball_film_store)
-      store.store(k, *nodes[k]);
+      store.finished(k, *nodes[k], false);
     }
   }
 

@@ -63,13 +63,14 @@ struct BallFilmNode {
 };
 
 // Where finished speed nodes are kept, so that a killed run resumes (`tribo homogenise` keeps them
-// in DIR/ball-film/): `load(k)` returns node k if a run with the same inputs finished it,
-// `store(k, node)` is called once for each node solved, one call at a time, as it finishes. Either
-// may be empty. A loaded node is used only if it belongs to this solve (the same ηU, thinnest film
-// and number of shares); otherwise it is solved again.
+// in DIR/ball-film/): `load(k)` returns node k if a run with the same inputs finished it; a loaded
+// node is taken only if it belongs to this solve (the same ηU, thinnest film and number of shares),
+// otherwise it is solved again. `finished(k, node, taken)` is called once for every node, one
+// call at a time: first for each node taken from `load` (taken = true), then for each node solved,
+// as it finishes (taken = false; the one to keep). Either may be empty.
 struct BallFilmStore {
   std::function<std::optional<BallFilmNode>(std::size_t k)> load;
-  std::function<void(std::size_t k, const BallFilmNode& node)> store;
+  std::function<void(std::size_t k, const BallFilmNode& node, bool taken)> finished;
 };
 
 // The node as JSON (the films as law.json's ball_film rows: an unsolved film is null) and back;

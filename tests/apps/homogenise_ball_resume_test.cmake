@@ -1,7 +1,7 @@
 # `tribo homogenise` with a ball keeps each speed node's films in DIR/ball-film/ as it finishes, under
 # the patches' key: run again, it reuses every node (ball_film_speeds_reused); with two nodes lost
-# — a run killed before they finished — and one written by another build, it solves those three
-# again and keeps them. Inputs: TRIBO, WORK.
+# — a run killed before they finished —, one written by another build and one solved for another
+# thinnest film, it solves those four again and keeps them. Inputs: TRIBO, WORK.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 file(WRITE ${WORK}/ball.toml
@@ -38,11 +38,15 @@ string(JSON key GET "${node}" cache_key)
 string(REGEX REPLACE "@.*$" "@0123456789ab" other "${key}")
 string(JSON node SET "${node}" cache_key "\"${other}\"")
 file(WRITE ${WORK}/out/ball-film/node-2.json "${node}")
-math(EXPR expected "${count} - 3")
-run_ball(${expected} "two nodes lost, one from another build")
-# The three were solved again and kept under this build's key (their films against the first run's:
+# One with this key but solved for another rest separation (a changed patch): ball_film refuses it.
+file(READ ${WORK}/out/ball-film/node-4.json node)
+string(JSON node SET "${node}" node thinnest_film_m "1.0")
+file(WRITE ${WORK}/out/ball-film/node-4.json "${node}")
+math(EXPR expected "${count} - 4")
+run_ball(${expected} "two nodes lost, one from another build, one for another thinnest film")
+# The four were solved again and kept under this build's key (their films against the first run's:
 # tests/homogenise/ball_film_test.cpp, AKilledRunResumesFromTheSpeedNodesItKept).
-foreach(k 1 2 3)
+foreach(k 1 2 3 4)
   file(READ ${WORK}/out/ball-film/node-${k}.json node)
   string(JSON k_key GET "${node}" cache_key)
   if(NOT k_key STREQUAL key)

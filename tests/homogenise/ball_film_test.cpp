@@ -203,25 +203,31 @@ TEST(BallFilm, AKilledRunResumesFromTheSpeedNodesItKept) {
   const HomogeniseOptions o = ball_options();
   const double thinnest_film_m = 40e-9;
   std::map<std::size_t, std::string> kept;
-  const BallFilmStore keep_all{{}, [&](std::size_t k, const BallFilmNode& node) { kept[k] = to_json(node).dump(); }};
+  const BallFilmStore keep_all{{}, [&](std::size_t k, const BallFilmNode& node, bool taken) {
+                                 EXPECT_FALSE(taken);
+                                 kept[k] = to_json(node).dump();
+                               }};
   const BallFilmTable first = ball_film(o, thinnest_film_m, keep_all);
   const std::size_t speeds = first.eta_u_Pa_m.size();
   ASSERT_GE(speeds, 5u);
   ASSERT_EQ(kept.size(), speeds - 1);  // ηU = 0 has no film
 
-  std::vector<std::size_t> solved_again;
+  std::vector<std::size_t> solved_again, taken_back;
   const BallFilmStore half{[&](std::size_t k) -> std::optional<BallFilmNode> {
                              if (k % 2 == 0) return std::nullopt;
                              BallFilmNode node = ball_film_node_from_json(nlohmann::json::parse(kept.at(k)));
                              if (k == 1) node.thinnest_film_m *= 2.0;  // from a solve with another rest separation
                              return node;
                            },
-                           [&](std::size_t k, const BallFilmNode&) { solved_again.push_back(k); }};
+                           [&](std::size_t k, const BallFilmNode&, bool taken) { (taken ? taken_back : solved_again).push_back(k); }};
   const BallFilmTable resumed = ball_film(o, thinnest_film_m, half);
   std::sort(solved_again.begin(), solved_again.end());
   std::vector<std::size_t> expected{1};
   for (std::size_t k = 2; k < speeds; k += 2) expected.push_back(k);
   EXPECT_EQ(solved_again, expected);
+  std::vector<std::size_t> kept_odd;
+  for (std::size_t k = 3; k < speeds; k += 2) kept_odd.push_back(k);
+  EXPECT_EQ(taken_back, kept_odd);
   EXPECT_EQ(resumed.not_needed, first.not_needed);
   EXPECT_EQ(resumed.unconverged, first.unconverged);
   EXPECT_EQ(resumed.messages, first.messages);
