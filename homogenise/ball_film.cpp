@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -120,15 +121,23 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m, cons
     }
   }
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  std::exception_ptr store_failed;  // a node that could not be kept (no exception leaves the parallel loop)
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
   for (std::size_t q = 0; q < to_solve.size(); ++q) {
     const std::size_t k = to_solve[q];
     nodes[k] = solve_node(o, oil, film_options, t.share, t.eta_u_Pa_m[k], thinnest_film_m);
     if (store.finished) {
 #pragma omp critical(tribo_ball_film_store)
-      store.finished(k, *nodes[k], false);
+      {
+        try {
+          if (!store_failed) store.finished(k, *nodes[k], false);
+        } catch (...) {
+          store_failed = std::current_exception();
+        }
+      }
     }
   }
+  if (store_failed) std::rethrow_exception(store_failed);
 
   const double nan = std::numeric_limits<double>::quiet_NaN();
   t.central_film_m.assign(1, std::vector<double>(n_s, nan));

@@ -67,7 +67,8 @@ struct BallFilmNode {
 // node is taken only if it belongs to this solve (the same ηU, thinnest film and number of shares),
 // otherwise it is solved again. `finished(k, node, taken)` is called once for every node, one
 // call at a time: first for each node taken from `load` (taken = true), then for each node solved,
-// as it finishes (taken = false; the one to keep). Either may be empty.
+// as it finishes (taken = false; the one to keep). Either may be empty. An exception from
+// `finished` is rethrown when the solves are done (the nodes after it are not passed on).
 struct BallFilmStore {
   std::function<std::optional<BallFilmNode>(std::size_t k)> load;
   std::function<void(std::size_t k, const BallFilmNode& node, bool taken)> finished;

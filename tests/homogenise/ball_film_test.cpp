@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -241,6 +242,24 @@ TEST(BallFilm, AKilledRunResumesFromTheSpeedNodesItKept) {
       EXPECT_NEAR(b / a, 1.0, tolerance) << k << ' ' << j;
       EXPECT_NEAR(fb / fa, 1.0, tolerance) << k << ' ' << j;
     }
+}
+
+TEST(BallFilm, ANodeThatCannotBeKeptFailsTheSolveWithItsReason) {
+  // A store that cannot write (a full disk) must fail the solve with its own error, from outside
+  // the threads that solve the nodes — not terminate the program from inside one.
+  const HomogeniseOptions o = ball_options();
+  int calls = 0;
+  const BallFilmStore full_disk{{}, [&](std::size_t, const BallFilmNode&, bool) {
+                                  ++calls;
+                                  throw std::runtime_error("no space left on device");
+                                }};
+  try {
+    ball_film(o, 40e-9, full_disk);
+    FAIL() << "a store that throws must fail the solve";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "no space left on device");
+  }
+  EXPECT_EQ(calls, 1);
 }
 
 TEST(BallFilm, BetweenSpeedNodesTheRigReadsTheFilmSolvedAtThatSpeed) {
