@@ -23,6 +23,7 @@
 #include "gap/report.h"
 #include "gap/selftest.h"
 #include "gap/test_block.h"
+#include "numerics/json_numbers.h"
 
 namespace tribo::cli {
 namespace {
@@ -265,24 +266,24 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
           {"true_effect", row.c.true_effect}, {"model_effects", row.c.model_effects},
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
-          {"heldout_gap_after", row.heldout_gap_after}, {"noise_floor", gap::finite_or_null(row.noise_floor)},
-          {"confidence", gap::finite_or_null(row.confidence)},
-          {"confidence_bootstrap", gap::finite_or_null(row.confidence_bootstrap)},
-          {"confidence_fixed_fits", gap::finite_or_null(row.confidence_fixed_fits)},
-          {"test_gap_before", gap::finite_or_null(row.test_gap_before)}, {"test_gap_after", gap::finite_or_null(row.test_gap_after)},
+          {"heldout_gap_after", row.heldout_gap_after}, {"noise_floor", numerics::finite_or_null(row.noise_floor)},
+          {"confidence", numerics::finite_or_null(row.confidence)},
+          {"confidence_bootstrap", numerics::finite_or_null(row.confidence_bootstrap)},
+          {"confidence_fixed_fits", numerics::finite_or_null(row.confidence_fixed_fits)},
+          {"test_gap_before", numerics::finite_or_null(row.test_gap_before)}, {"test_gap_after", numerics::finite_or_null(row.test_gap_after)},
           {"correct", row.correct},           {"wall_s", row.wall_s},
           {"stage_wall_s", gap::stage_times_json(row.stage_times)}};
   nlohmann::json candidates = nlohmann::json::array();
   for (const gap::CandidateFigures& c : row.candidates)
-    candidates.push_back({{"effect", c.effect}, {"evidence_nats", gap::finite_or_null(c.evidence_nats)},
-                          {"evidence_se_nats", gap::finite_or_null(c.evidence_se_nats)}, {"heldout_gap", gap::finite_or_null(c.heldout_gap)},
+    candidates.push_back({{"effect", c.effect}, {"evidence_nats", numerics::finite_or_null(c.evidence_nats)},
+                          {"evidence_se_nats", numerics::finite_or_null(c.evidence_se_nats)}, {"heldout_gap", numerics::finite_or_null(c.heldout_gap)},
                           {"earns", c.earns}});
   j["candidates"] = candidates;
   j["indistinguishable_from"] = row.indistinguishable_from;
   j["alike_mechanisms"] = row.alike_mechanisms;
   j["proposal_checks"] = nlohmann::json::array();
   for (const gap::ProposalCheck& k : row.proposal_checks)
-    j["proposal_checks"].push_back({{"against", k.against}, {"test", k.test}, {"separation_floors", gap::finite_or_null(k.floors)},
+    j["proposal_checks"].push_back({{"against", k.against}, {"test", k.test}, {"separation_floors", numerics::finite_or_null(k.floors)},
                                     {"gap_verdict", k.gap_verdict}, {"gap_against", k.gap_against}, {"truth_nearer", k.truth_nearer}});
   j["git_commit"] = row.git_commit.empty() ? build : row.git_commit;
   return j;
@@ -296,9 +297,10 @@ void run_selftest(const SelftestArgs& args) {
   if (args.generator != "both")
     std::erase_if(cases, [&](const gap::SelftestCase& c) { return c.generator != args.generator; });
   const std::vector<gap::SelftestRow> finished = finished_rows(dir / "cases.jsonl", args.quick);
-  // A resumed set is one build's unless told otherwise: rows diagnosed by another commit (or by a
-  // build that did not record it) would mix two methods in one confusion matrix.
-  const std::string commit = git_commit();
+  // A resumed set is one build's unless told otherwise: rows diagnosed by another build (another
+  // commit, another uncommitted edit, or a build that did not record it) would mix two methods in
+  // one confusion matrix.
+  const std::string commit = build_identity();
   for (const gap::SelftestRow& r : finished)
     if (!args.mix_builds && r.git_commit != commit &&
         std::any_of(cases.begin(), cases.end(), [&](const gap::SelftestCase& c) { return gap::same_case(r.c, c); }))
@@ -363,9 +365,9 @@ void run_selftest(const SelftestArgs& args) {
     j["by_generator"][g] = {{"identified_fraction", sum.identified_fraction}, {"controls_none_fraction", sum.controls_none_fraction},
                             {"effect_cases", sum.effect_cases}, {"controls", sum.controls},
                             {"visible_effect_cases", sum.visible_effect_cases},
-                            {"visible_identified_fraction", gap::finite_or_null(sum.visible_identified_fraction)},
-                            {"named_or_indistinguishable_fraction", gap::finite_or_null(sum.named_or_indistinguishable_fraction)},
-                            {"mean_names_per_verdict", gap::finite_or_null(sum.mean_names_per_verdict)},
+                            {"visible_identified_fraction", numerics::finite_or_null(sum.visible_identified_fraction)},
+                            {"named_or_indistinguishable_fraction", numerics::finite_or_null(sum.named_or_indistinguishable_fraction)},
+                            {"mean_names_per_verdict", numerics::finite_or_null(sum.mean_names_per_verdict)},
                             {"deciding_proposals", sum.deciding_proposals}, {"deciding_proposals_for_truth", sum.deciding_proposals_for_truth},
                             {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
                             {"confusion", sum.confusion}};

@@ -75,6 +75,9 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
         m->number("disc_conductivity_W_per_m_K", o.thermal.disc_conductivity_W_per_m_K, Range::positive);
     o.thermal.slider_diffusivity_m2_per_s =
         m->number("slider_diffusivity_m2_per_s", o.thermal.slider_diffusivity_m2_per_s, Range::positive);
+    o.slider_expansion_per_K = m->number("slider_expansion_per_K", o.slider_expansion_per_K, Range::non_negative);
+    o.slider_poisson_ratio = m->number("slider_poisson_ratio", o.slider_poisson_ratio, Range::non_negative);
+    if (!(o.slider_poisson_ratio < 0.5)) m->fail("slider_poisson_ratio", "must lie in [0, 0.5)");
     m->finish();
   }
   if (auto j = root.table("junction")) {

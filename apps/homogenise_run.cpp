@@ -5,11 +5,13 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include "apps/config.h"
 #include "apps/output.h"
 #include "apps/provenance.h"
 #include "apps/rig_output.h"
+#include "contact/thermoelastic.h"
 #include "homogenise/law.h"
 #include "numerics/format.h"
 #include "homogenise/solid_contact.h"
@@ -20,18 +22,24 @@ namespace tribo::cli {
 namespace {
 
 // A cached patch is reused only when the same build made it from the same inputs: its key is the
-// config's hash, the hashes of the files it names (a measured topography) and the build's commit
-// (git_commit()), so a newer build or an edited map solves the patches again rather than tabulate
-// an older answer under the new provenance.
+// config's hash, the hashes of the files it names (a measured topography) and the build
+// (build_identity(): its commit, and for an uncommitted edit the executable's hash), so a newer
+// build or an edited map solves the patches again rather than tabulate an older answer under the
+// new provenance.
 std::string cache_key(const std::string& config_hash, const std::vector<std::filesystem::path>& inputs) {
   std::string key = config_hash;
   for (const auto& f : inputs) key.append("+").append(tribo::cli::config_hash(f));  // not "+" + …: a false GCC 12 warning
-  return key + "@" + git_commit();
+  return key + "@" + build_identity();
 }
 
 // A cached result — a patch (DIR/patches/realisation-K.json) or a ball's film speed node
-// (DIR/ball-film/node-K.json, which ball_film also checks is its own) — is {"cache_key", `member`};
-// another key, a torn or a foreign file is solved again.
+// (DIR/ball-film/node-K.json, which ball_film also checks is its own) — is {"cache_key", `member`},
+// written whole or not at all; another key, a torn or a foreign file is solved again.
+void write_cached(const std::filesystem::path& file, const std::string& key, const char* member, nlohmann::json value) {
+  const nlohmann::json j{{"cache_key", key}, {member, std::move(value)}};
+  write_file_atomically(file, j.dump() + "\n");
+}
+
 template <class T>
 std::optional<T> read_cached(const std::filesystem::path& file, const std::string& key, const char* member,
                              T (*from_json)(const nlohmann::json&)) {
@@ -48,17 +56,25 @@ std::optional<T> read_cached(const std::filesystem::path& file, const std::strin
 
 // film_parameter: Λ = h̄/σ, the separation over the composite rms roughness (the Stribeck curve's
 // usual abscissa besides the speed).
+// thermal_crown_bound_m: how far the slider's face would crown if all the frictional power μWU
+// flowed into it (contact/thermoelastic.h) — a bound, the disc takes its share — to set beside the
+// crowns and tilts that make a film carry load (docs/homogenise.md).
+double thermal_crown_bound_m(const homogenise::HomogeniseOptions& o, const rig::SteadySliding& s) {
+  return contact::thermoelastic_crown_m(homogenise::slider_solid(o), s.mu * o.pin.normal_load_N * s.speed_m_per_s);
+}
+
 void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig::SteadySliding>& points,
-                        const std::vector<double>& mu_errors, double sigma_m, const nlohmann::json& provenance) {
+                        const std::vector<double>& mu_errors, const homogenise::HomogeniseOptions& o, double sigma_m,
+                        const nlohmann::json& provenance) {
   CsvFile f(path, provenance);
   f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,film_parameter,temperature_rise_K,solid_load_N,lift_N,"
-                "fluid_shear_N,solid_shear_Pa,film_share_of_contact\n";
+                "fluid_shear_N,solid_shear_Pa,film_share_of_contact,thermal_crown_bound_m\n";
   for (std::size_t k = 0; k < points.size(); ++k) {
     const rig::SteadySliding& s = points[k];
     f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << csv_number(mu_errors[k]) << ',' << s.fluid_share << ','
                << s.separation_m << ',' << s.separation_m / sigma_m << ',' << s.temperature_rise_K << ',' << s.solid_load_N << ','
-               << s.lift_N << ','
-               << s.fluid_shear_N << ',' << s.solid_shear_Pa << ',' << s.film_share_of_contact << '\n';
+               << s.lift_N << ',' << s.fluid_shear_N << ',' << s.solid_shear_Pa << ',' << s.film_share_of_contact << ','
+               << thermal_crown_bound_m(o, s) << '\n';
   }
   f.commit();
 }
@@ -134,17 +150,17 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   const std::string hash = config_hash(config), key = cache_key(hash, run.input_files);
   const homogenise::HomogeniseOptions& o = run.options;
 
+  const auto patch_file = [&](int k) { return patches / ("realisation-" + std::to_string(k) + ".json"); };
   std::vector<std::optional<homogenise::PatchResult>> cached;
   int reused = 0;
   for (int k = 0; k < o.realisations; ++k) {
-    cached.push_back(read_cached(patches / ("realisation-" + std::to_string(k) + ".json"), key, "patch", &homogenise::patch_from_json));
+    cached.push_back(read_cached(patch_file(k), key, "patch", &homogenise::patch_from_json));
     reused += cached.back() ? 1 : 0;
   }
   Progress progress("homogenise: realisations", o.realisations);
   for (int k = 0; k < reused; ++k) progress.step("cached");
   const auto patch_results = homogenise::solve_patches(o, cached, [&](int k, const homogenise::PatchResult& p) {
-    const nlohmann::json j{{"cache_key", key}, {"patch", homogenise::to_json(p)}};
-    write_file_atomically(patches / ("realisation-" + std::to_string(k) + ".json"), j.dump() + "\n");
+    write_cached(patch_file(k), key, "patch", homogenise::to_json(p));
     progress.step("seed " + std::to_string(p.seed));
   });
   progress.done();
@@ -168,8 +184,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
         film_progress->step("cached");
         return;
       }
-      const nlohmann::json j{{"cache_key", key}, {"node", homogenise::to_json(node)}};
-      write_file_atomically(node_file(k), j.dump() + "\n");
+      write_cached(node_file(k), key, "node", homogenise::to_json(node));
       film_progress->step("U = " + numerics::shortest(node.eta_u_Pa_m / o.lubricant.viscosity_Pa_s) + " m/s");
     };
   }
@@ -210,6 +225,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
                   {"separation_m", s.separation_m},
                   {"film_parameter", s.separation_m / cells.sigma_m},
                   {"temperature_rise_K", s.temperature_rise_K},
+                  {"thermal_crown_bound_m", thermal_crown_bound_m(o, s)},
                   {"regime", rig::to_string(s.regime)}});
   }
   law["stribeck"] = sj;
@@ -232,7 +248,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
 
   const nlohmann::json& provenance = law["provenance"];
   write_area_csv(dir / "area.csv", pin, cells.sigma_m, provenance);
-  write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, cells.sigma_m, provenance);
+  write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, o, cells.sigma_m, provenance);
   write_file_atomically(dir / "law.json", law.dump(2) + "\n");
   std::printf("mu_s,max %.4g ± %.2g (BEM extrapolated from %d², %d realisations; ± the discretisation error), dry mu %.4g ± %.2g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
               cells.mu_s_max.mean, cells.mu_s_max_discretisation_error, cells.junction_grid, cells.realisations, cells.mu_boundary.mean,

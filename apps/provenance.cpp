@@ -42,6 +42,17 @@ std::string config_hash(const std::filesystem::path& config) {
 
 std::string git_commit() { return TRIBO_GIT_COMMIT; }
 
+std::string build_identity() {
+  static const std::string identity = [] {
+    const std::string commit = git_commit();
+    if (commit != "unknown" && commit.find("+dirty") == std::string::npos) return commit;
+    std::ifstream exe("/proc/self/exe", std::ios::binary);
+    if (!exe) return commit + "#unreadable";
+    return commit + "#" + bytes_hash(std::string(std::istreambuf_iterator<char>(exe), std::istreambuf_iterator<char>()));
+  }();
+  return identity;
+}
+
 void record_command_line(int argc, const char* const* argv) {
   std::lock_guard lock(command_line_mutex);
   command_line.assign(argv, argv + argc);

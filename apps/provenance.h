@@ -34,9 +34,15 @@ nlohmann::json provenance_json(const std::filesystem::path& config, const std::s
 // and config_hash.
 nlohmann::json provenance_json(const std::filesystem::path& config, const InputFiles& inputs = {});
 
-// The commit the binary was built from ("+dirty" when tracked files had changes): provenance_json's
-// "git_commit", and the key a cache or journal keeps so that one build's results are not taken for another's.
+// The commit the binary was built from ("+dirty" when tracked files had changes, "unknown" outside a
+// git checkout): provenance_json's "git_commit".
 std::string git_commit();
+
+// The build as the key a cache or journal keeps so that one build's results are not taken for
+// another's: git_commit() for a clean build; for a "+dirty" or "unknown" one, whose commit does not
+// fix its code, also a hash of the running executable ("abc123+dirty#0123…"), so that builds of two
+// different uncommitted edits never take each other's results.
+std::string build_identity();
 
 // Records argv for provenance_json's "command_line" (called once, from main).
 void record_command_line(int argc, const char* const* argv);

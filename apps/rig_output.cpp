@@ -5,19 +5,15 @@
 
 #include <vector>
 
-#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 
 #include "apps/output.h"
+#include "numerics/json_numbers.h"
 
 extern char** environ;  // posix_spawnp passes the environment on
 
 namespace tribo::cli {
-namespace {
-// JSON has no NaN: absent observables are null.
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-}  // namespace
 
 void write_trace_header(std::ostream& os) {
   os << "t_s,x_m,xdot_m_per_s,friction_N,xddot_m_per_s2,friction_true_N,relative_velocity_m_per_s,"
@@ -43,15 +39,15 @@ void write_events_csv(std::ostream& os, const std::vector<rig::Event>& events) {
 nlohmann::json observables_json(const rig::RunObservables& o) {
   return {{"regime", o.regime},
           {"window_start_s", o.window_start_s},
-          {"period_s", number_or_null(o.period_s)},
-          {"peak_to_peak_m", number_or_null(o.peak_to_peak_m)},
-          {"mean_displacement_m", number_or_null(o.mean_displacement_m)},
-          {"stick_time_s", number_or_null(o.stick_time_s)},
-          {"slip_time_s", number_or_null(o.slip_time_s)},
-          {"mu_s_mean", number_or_null(o.mu_s_mean)},
-          {"load_rate_mean_per_s", number_or_null(o.load_rate_mean_per_s)},
-          {"mean_friction_N", number_or_null(o.mean_friction_N)},
-          {"mu_at_reversal_mean", number_or_null(o.mu_at_reversal_mean)},
+          {"period_s", numerics::finite_or_null(o.period_s)},
+          {"peak_to_peak_m", numerics::finite_or_null(o.peak_to_peak_m)},
+          {"mean_displacement_m", numerics::finite_or_null(o.mean_displacement_m)},
+          {"stick_time_s", numerics::finite_or_null(o.stick_time_s)},
+          {"slip_time_s", numerics::finite_or_null(o.slip_time_s)},
+          {"mu_s_mean", numerics::finite_or_null(o.mu_s_mean)},
+          {"load_rate_mean_per_s", numerics::finite_or_null(o.load_rate_mean_per_s)},
+          {"mean_friction_N", numerics::finite_or_null(o.mean_friction_N)},
+          {"mu_at_reversal_mean", numerics::finite_or_null(o.mu_at_reversal_mean)},
           {"breakaways", o.breakaways},
           {"reattachments", o.reattachments},
           {"reversals", o.reversals}};

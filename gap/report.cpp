@@ -6,6 +6,7 @@
 
 #include "gap/discriminate.h"
 #include "numerics/format.h"
+#include "numerics/json_numbers.h"
 
 namespace tribo::gap {
 namespace {
@@ -120,8 +121,6 @@ nlohmann::json stage_times_json(const StageTimes& t) {
           {"confidence", t.confidence_s}};
 }
 
-nlohmann::json finite_or_null(double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); }
-
 nlohmann::json report_json(const Diagnosis& d) {
   using nlohmann::json;
   auto breakdown_json = [](const GapBreakdown& g) {
@@ -143,7 +142,7 @@ nlohmann::json report_json(const Diagnosis& d) {
   j["baseline"]["calibration"] = {{"starts", d.calibration.starts},
                                   {"train_gap", d.calibration.train_gap},
                                   {"train_noise_floor", d.calibration.train_noise_floor},
-                                  {"train_gap_in_floors", finite_or_null(d.calibration.train_floors())},
+                                  {"train_gap_in_floors", numerics::finite_or_null(d.calibration.train_floors())},
                                   {"fit_scale_by_observable", d.calibration.fit_scale_by_observable}};
   j["heldout_is_in_sample"] = !d.has_heldout;
   j["integration_relative_tolerance"] = d.integration_tolerance;
@@ -170,20 +169,20 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"heldout_gap_before", d.verdict.heldout_gap_before},
                   {"heldout_gap_after", d.verdict.heldout_gap_after},
                   {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},
-                  {"confidence", finite_or_null(d.verdict.confidence)},
-                  {"confidence_bootstrap", finite_or_null(d.verdict.confidence_bootstrap)},
-                  {"confidence_fixed_fits", finite_or_null(d.verdict.confidence_fixed_fits)},
+                  {"confidence", numerics::finite_or_null(d.verdict.confidence)},
+                  {"confidence_bootstrap", numerics::finite_or_null(d.verdict.confidence_bootstrap)},
+                  {"confidence_fixed_fits", numerics::finite_or_null(d.verdict.confidence_fixed_fits)},
                   {"refitted_in_resamples", d.verdict.refitted},
                   {"indistinguishable_from", d.verdict.indistinguishable},
                   {"alike_mechanisms", d.verdict.alike_mechanisms},
                   {"noise_floor", d.verdict.noise_floor},
-                  {"remaining_gap_in_floors", finite_or_null(d.verdict.remaining_floors)},
+                  {"remaining_gap_in_floors", numerics::finite_or_null(d.verdict.remaining_floors)},
                   {"remaining_where", d.verdict.remaining_where},
                   {"conclusion", d.verdict.conclusion}};
   j["proposed_tests"] = json::array();
   for (const auto& t : d.proposed_tests)
     j["proposed_tests"].push_back({{"against", t.other}, {"test", t.test}, {"description", t.description}, {"separation_gap", t.gap},
-                                   {"noise_floor", t.noise_floor}, {"separation_floors", finite_or_null(t.floors)}});
+                                   {"noise_floor", t.noise_floor}, {"separation_floors", numerics::finite_or_null(t.floors)}});
   j["noise_floor_definition"] =
       "gap of the items' standard errors read off the data (blocks of each run analysed as repeats; a step bin's high-pass noise / "
       "sqrt(samples)): the held-out gap a model right in every mechanism would still leave";
@@ -195,8 +194,8 @@ nlohmann::json report_json(const Diagnosis& d) {
                           {"heldout", static_cast<bool>(d.heldout[i])},
                           {"measured", d.measured[i]},
                           {"noise", d.items[i].noise},
-                          {"baseline", finite_or_null(d.baseline_simulated[i])},
-                          {"best", finite_or_null(d.best_simulated[i])}});
+                          {"baseline", numerics::finite_or_null(d.baseline_simulated[i])},
+                          {"best", numerics::finite_or_null(d.best_simulated[i])}});
   return j;
 }
 

@@ -28,7 +28,4 @@ nlohmann::json report_json(const Diagnosis& d);
 // seconds: gap_report.json's and a selftest row's `stage_wall_s`.
 nlohmann::json stage_times_json(const StageTimes& t);
 
-// A number for JSON: null where it is not finite (a confidence not estimable, a gap not measured).
-nlohmann::json finite_or_null(double x);
-
 }  // namespace tribo::gap

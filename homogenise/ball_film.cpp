@@ -2,12 +2,14 @@
 
 #include <omp.h>
 
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -15,6 +17,7 @@
 #include "lubrication/ehl_point.h"
 #include "lubrication/ehl_traction.h"
 #include "numerics/format.h"
+#include "numerics/json_numbers.h"
 #include "rig/ball_film.h"
 
 namespace tribo::homogenise {
@@ -62,32 +65,20 @@ bool belongs_to(const BallFilmNode& node, double eta_u_Pa_m, double thinnest_fil
          node.traction_N.size() == shares && node.left_out.size() == shares && node.not_needed >= 0;
 }
 
-std::vector<double> doubles_with_nans(const nlohmann::json& a) {
-  std::vector<double> v;
-  for (const auto& x : a) v.push_back(x.is_null() ? std::numeric_limits<double>::quiet_NaN() : x.get<double>());
-  return v;
-}
-
 }  // namespace
-
-nlohmann::json json_with_nulls(const std::vector<double>& v) {
-  nlohmann::json a = nlohmann::json::array();
-  for (double x : v) a.push_back(std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr));
-  return a;
-}
 
 nlohmann::json to_json(const BallFilmNode& node) {
   return {{"eta_u_Pa_m", node.eta_u_Pa_m},
           {"thinnest_film_m", node.thinnest_film_m},
-          {"central_film_m", json_with_nulls(node.central_film_m)},
-          {"traction_N", json_with_nulls(node.traction_N)},
+          {"central_film_m", numerics::finite_or_null(node.central_film_m)},
+          {"traction_N", numerics::finite_or_null(node.traction_N)},
           {"left_out", node.left_out},
           {"not_needed", node.not_needed}};
 }
 
 BallFilmNode ball_film_node_from_json(const nlohmann::json& j) {
-  return {j.at("eta_u_Pa_m").get<double>(), j.at("thinnest_film_m").get<double>(), doubles_with_nans(j.at("central_film_m")),
-          doubles_with_nans(j.at("traction_N")), j.at("left_out").get<std::vector<std::string>>(), j.at("not_needed").get<int>()};
+  return {j.at("eta_u_Pa_m").get<double>(), j.at("thinnest_film_m").get<double>(), numerics::doubles_with_nans(j.at("central_film_m")),
+          numerics::doubles_with_nans(j.at("traction_N")), j.at("left_out").get<std::vector<std::string>>(), j.at("not_needed").get<int>()};
 }
 
 BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m, const BallFilmStore& store) {
@@ -121,23 +112,38 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m, cons
     }
   }
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  std::exception_ptr store_failed;  // a node that could not be kept (no exception leaves the parallel loop)
+  // The first failure — a node that could not be solved or kept — is rethrown once the threads are
+  // done (no exception may leave the parallel loop or a critical section), and the nodes not yet
+  // started are skipped: they would be solved only to be lost.
+  std::exception_ptr failed;
+  std::atomic<bool> stop{false};
+  const auto fail = [&](std::exception_ptr e) {
+    if (!failed) failed = std::move(e);
+    stop = true;
+  };
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
   for (std::size_t q = 0; q < to_solve.size(); ++q) {
+    if (stop) continue;
     const std::size_t k = to_solve[q];
-    nodes[k] = solve_node(o, oil, film_options, t.share, t.eta_u_Pa_m[k], thinnest_film_m);
+    try {
+      nodes[k] = solve_node(o, oil, film_options, t.share, t.eta_u_Pa_m[k], thinnest_film_m);
+    } catch (...) {
+#pragma omp critical(tribo_ball_film_store)
+      fail(std::current_exception());
+      continue;
+    }
     if (store.finished) {
 #pragma omp critical(tribo_ball_film_store)
       {
         try {
-          if (!store_failed) store.finished(k, *nodes[k], false);
+          if (!failed) store.finished(k, *nodes[k], false);
         } catch (...) {
-          store_failed = std::current_exception();
+          fail(std::current_exception());
         }
       }
     }
   }
-  if (store_failed) std::rethrow_exception(store_failed);
+  if (failed) std::rethrow_exception(failed);
 
   const double nan = std::numeric_limits<double>::quiet_NaN();
   t.central_film_m.assign(1, std::vector<double>(n_s, nan));

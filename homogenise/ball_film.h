@@ -68,7 +68,8 @@ struct BallFilmNode {
 // otherwise it is solved again. `finished(k, node, taken)` is called once for every node, one
 // call at a time: first for each node taken from `load` (taken = true), then for each node solved,
 // as it finishes (taken = false; the one to keep). Either may be empty. An exception from
-// `finished` is rethrown when the solves are done (the nodes after it are not passed on).
+// `finished` or from a node's solve is rethrown when the running solves are done (the nodes after
+// it are not passed on, and those not yet started are not solved).
 struct BallFilmStore {
   std::function<std::optional<BallFilmNode>(std::size_t k)> load;
   std::function<void(std::size_t k, const BallFilmNode& node, bool taken)> finished;
@@ -78,8 +79,6 @@ struct BallFilmStore {
 // the reader throws nlohmann::json::exception on a torn or foreign file.
 nlohmann::json to_json(const BallFilmNode& node);
 BallFilmNode ball_film_node_from_json(const nlohmann::json& j);
-// NaN (an unsolved film) as JSON null, element by element.
-nlohmann::json json_with_nulls(const std::vector<double>& v);
 
 // Solves the films (in parallel over the speeds, options.threads). At each speed the shares are
 // solved in increasing order until two films have converged and the last is thinner than

@@ -3,7 +3,9 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +14,7 @@
 #include "contact/junction_locus.h"
 #include "homogenise/ball_film.h"
 #include "numerics/format.h"
+#include "numerics/json_numbers.h"
 
 namespace tribo::homogenise {
 
@@ -29,23 +32,37 @@ std::vector<PatchResult> solve_patches(const HomogeniseOptions& o, const std::ve
     }
   }
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  std::string error;
+  // The first failure — a patch that could not be solved or kept (on_patch writes it) — is rethrown
+  // once the threads are done: no exception may leave the parallel loop or a critical section.
+  // The patches not yet started are skipped; those kept already are reused by the next run.
+  std::exception_ptr failed;
+  std::atomic<bool> stop{false};
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
   for (std::size_t t = 0; t < todo.size(); ++t) {
+    if (stop) continue;
     const int k = todo[t];
+    std::exception_ptr e;
     try {
       PatchResult p = solve_patch(o, k);
 #pragma omp critical(tribo_homogenise_patch)
       {
-        out[static_cast<std::size_t>(k)] = p;
-        if (on_patch) on_patch(k, p);
+        try {
+          out[static_cast<std::size_t>(k)] = p;
+          if (on_patch) on_patch(k, p);
+        } catch (...) {
+          e = std::current_exception();
+        }
       }
-    } catch (const std::exception& e) {
+    } catch (...) {
+      e = std::current_exception();
+    }
+    if (e) {
 #pragma omp critical(tribo_homogenise_patch)
-      error = e.what();
+      if (!failed) failed = e;
+      stop = true;
     }
   }
-  if (!error.empty()) throw std::runtime_error(error);
+  if (failed) std::rethrow_exception(failed);
   return out;
 }
 
@@ -182,8 +199,8 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
     nlohmann::json films = nlohmann::json::array();
     for (std::size_t k = 0; k < b->eta_u_Pa_m.size(); ++k) {
       films.push_back({{"eta_u_Pa_m", b->eta_u_Pa_m[k]},
-                       {"central_film_m", json_with_nulls(b->central_film_m[k])},
-                       {"traction_N", json_with_nulls(b->traction_N[k])}});
+                       {"central_film_m", numerics::finite_or_null(b->central_film_m[k])},
+                       {"traction_N", numerics::finite_or_null(b->traction_N[k])}});
     }
     j["ball_film"] = {{"hertz_radius_m", b->hertz_radius_m},
                       {"film_grid", o.pin.film_grid},

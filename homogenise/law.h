@@ -18,6 +18,8 @@ namespace tribo::homogenise {
 
 // Solves the realisations not already in `cached` (index k ↔ realisation k), in parallel over
 // options.threads; `on_patch` runs (serialised) as each one finishes, so a caller can keep it.
+// The first exception from a solve or from `on_patch` is rethrown once the running solves are done;
+// the realisations not yet started are not solved.
 std::vector<PatchResult> solve_patches(const HomogeniseOptions& options,
                                        const std::vector<std::optional<PatchResult>>& cached,
                                        const std::function<void(int realisation, const PatchResult&)>& on_patch);

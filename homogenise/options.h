@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "contact/surface.h"
+#include "contact/thermoelastic.h"
 #include "lubrication/micro_ehl.h"
 #include "lubrication/viscosity.h"
 
@@ -76,6 +77,10 @@ struct HomogeniseOptions {
   double reference_load_rate_per_s = 1.0;
   lubrication::Lubricant lubricant = lubrication::thesis_white_mineral_oil();
   lubrication::JaegerContact thermal;
+  // The slider's thermal expansion and Poisson ratio: with thermal.slider_conductivity_W_per_m_K
+  // they bound the thermal crown of its face beside the Stribeck curve (contact/thermoelastic.h).
+  double slider_expansion_per_K = 11.5e-6;  // alloy steel
+  double slider_poisson_ratio = 0.3;
   Pin pin;
   // Table nodes h̄/σ, strictly increasing. Nodes above a realisation's first contact (−min z)
   // carry no solid load; the largest must lie above every realisation's, so the table ends with
@@ -127,5 +132,7 @@ std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& options);
 // The films' constants: options.micro_ehl's with the pair's E*, τ_i and the lubricant's η0 and α
 // (options.micro_ehl must be set).
 lubrication::MicroEhlOptions micro_ehl_options(const HomogeniseOptions& options);
+// The slider as a heated thermoelastic solid: its expansion, Poisson ratio and conductivity.
+contact::ThermoelasticSolid slider_solid(const HomogeniseOptions& options);
 
 }  // namespace tribo::homogenise

@@ -52,6 +52,7 @@ void validate(const HomogeniseOptions& o) {
   if (!(o.location_per_s > 0 && std::isfinite(o.location_per_s))) bad("location_per_s must be finite and > 0");
   lubrication::validate(o.lubricant);
   lubrication::validate(o.thermal);
+  contact::validate(slider_solid(o));
   if (!(o.pin.radius_m > 0 && std::isfinite(o.pin.radius_m))) bad("pin radius_m must be finite and > 0");
   if (!(o.pin.normal_load_N > 0 && std::isfinite(o.pin.normal_load_N))) bad("pin normal_load_N must be finite and > 0");
   if (o.pin.shape == PinShape::spherical && !(o.pin.crown_radius_m > 0 && std::isfinite(o.pin.crown_radius_m)))
@@ -109,6 +110,10 @@ std::vector<double> micro_ehl_eta_u_Pa_m(const HomogeniseOptions& o) {
 double nominal_contact_radius_m(const HomogeniseOptions& o) {
   if (o.pin.shape != PinShape::ball) return o.pin.radius_m;
   return std::cbrt(3.0 * o.pin.normal_load_N * o.pin.radius_m / (4.0 * o.e_star_Pa));
+}
+
+contact::ThermoelasticSolid slider_solid(const HomogeniseOptions& o) {
+  return {o.slider_expansion_per_K, o.slider_poisson_ratio, o.thermal.slider_conductivity_W_per_m_K};
 }
 
 lubrication::MicroEhlOptions micro_ehl_options(const HomogeniseOptions& o) {

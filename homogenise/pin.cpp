@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <vector>
 
 #include "homogenise/ball_film.h"
 #include "homogenise/solid_contact.h"
@@ -111,29 +112,36 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t, const BallFil
         pr.couette_film_m(i, j) = std::max(mean_film(h(i, j)) - sigma * phis(h(i, j)), 0.0);
       }
     pr.gap_m = h;
-    // Wedge: steady sliding at ηU = 1 with cavitation.
-    pr.cavitation = lubrication::Cavitation::mass_conserving;
-    const lubrication::ReynoldsSolution wedge = solver.solve(pr);
     // Squeeze: U = 0, ∂h̄_T/∂t = (dh̄_T/dh) ḣ with ḣ = −1 m/s, full film.
     lubrication::ReynoldsProblem sq = pr;
     sq.sliding_speed_m_per_s = 0.0;
     sq.cavitation = lubrication::Cavitation::none;
     sq.gap_rate_m_per_s = h.unaryExpr([&](double hk) { return -film_slope(hk); });
-    const lubrication::ReynoldsSolution squeeze = solver.solve(sq);
-    for (const auto* s : {&wedge, &squeeze})
-      if (!s->summary.converged) {
+    std::vector<lubrication::ReynoldsSolution> solved{solver.solve(sq)};
+    // Wedge: steady sliding at ηU = 1 with cavitation. Not for a ball: its fluid is its EHL film
+    // (ball_film), and the rigid circle's lift and Petroff shear would count it twice.
+    if (!ball) {
+      pr.cavitation = lubrication::Cavitation::mass_conserving;
+      solved.push_back(solver.solve(pr));
+    }
+    const lubrication::ReynoldsSolution& squeeze = solved.front();
+    const lubrication::ReynoldsSolution* wedge = ball ? nullptr : &solved.back();
+    for (const lubrication::ReynoldsSolution& s : solved)
+      if (!s.summary.converged) {
         ++pin.reynolds_unconverged;
-        pin.messages += "pin-face Reynolds at h = " + numerics::shortest(centre) + " m: " + s->summary.message + "; ";
+        pin.messages += "pin-face Reynolds at h = " + numerics::shortest(centre) + " m: " + s.summary.message + "; ";
       }
 
-    // Face integrals over the wetted nodes, weights scaled so they sum to πR² exactly.
-    const double w = pin.nominal_area_m2 / static_cast<double>(wedge.wetted.count());
+    // Face integrals over the wetted nodes (the disc's, the same in both solves), weights scaled so
+    // they sum to πR² exactly.
+    const Eigen::ArrayXX<bool>& wetted = squeeze.wetted;
+    const double w = pin.nominal_area_m2 / static_cast<double>(wetted.count());
     double ns = 0, ns_se = 0, ns_coarse = 0, a = 0, a_se = 0, a_coarse = 0, rug = 0, shear = 0;
     const std::size_t speeds = pin.eta_u_Pa_m.size();
     std::vector<double> spot_force(speeds, 0.0), spot_force_se(speeds, 0.0), spot_force_coarse(speeds, 0.0), film_area(speeds, 0.0);
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
-        if (!wedge.wetted(i, j)) continue;
+        if (!wetted(i, j)) continue;
         const double hk = h(i, j);
         ns += w * ps(hk);
         ns_se += w * ps_err(hk);
@@ -147,11 +155,10 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t, const BallFil
           spot_force_coarse[k] += w * ar_coarse(hk) * tau_coarse[k](hk);
           film_area[k] += w * ar(hk) * separated[k](hk);
         }
+        if (wedge == nullptr) continue;
         rug += w * lift(hk);
         // Central difference of the wedge pressure (ambient 0 beyond the rim).
-        const auto p_at = [&](int ii) {
-          return ii >= 0 && ii < g.nx && wedge.wetted(ii, j) ? wedge.pressure_Pa(ii, j) : 0.0;
-        };
+        const auto p_at = [&](int ii) { return ii >= 0 && ii < g.nx && wetted(ii, j) ? wedge->pressure_Pa(ii, j) : 0.0; };
         const double dpdx = (p_at(i + 1) - p_at(i - 1)) / (2.0 * g.dx_m);
         shear += w * (phif(hk) / hk - phifp(hk) * 0.5 * hk * dpdx);
       }
@@ -163,7 +170,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t, const BallFil
     pin.real_area_standard_error_m2.push_back(a_se);
     pin.real_area_coarse_m2.push_back(a_coarse);
     pin.real_area_discretisation_error_m2.push_back(error_from_refinement(a_coarse, a));
-    pin.wedge_lift_per_eta_u_m.push_back(wedge.load_N);
+    pin.wedge_lift_per_eta_u_m.push_back(wedge != nullptr ? wedge->load_N : 0.0);
     pin.rugosity_lift_per_eta_u_m.push_back(rug);
     pin.squeeze_per_eta_m.push_back(squeeze.load_N);
     pin.shear_per_eta_u_m.push_back(shear);
@@ -185,10 +192,6 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t, const BallFil
     }
   }
   if (ball) {
-    // The ball's fluid is its EHL film: the rigid circle's lift and Petroff shear would count it twice.
-    std::fill(pin.wedge_lift_per_eta_u_m.begin(), pin.wedge_lift_per_eta_u_m.end(), 0.0);
-    std::fill(pin.rugosity_lift_per_eta_u_m.begin(), pin.rugosity_lift_per_eta_u_m.end(), 0.0);
-    std::fill(pin.shear_per_eta_u_m.begin(), pin.shear_per_eta_u_m.end(), 0.0);
     pin.ball = ball_film(o, 0.5 * rest_separation_m(pin.separation_m, pin.solid_load_N, o.pin.normal_load_N), ball_store);
   }
   return pin;

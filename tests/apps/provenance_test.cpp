@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "apps/output.h"
 #include "apps/provenance.h"
@@ -33,6 +34,21 @@ class TempDir : public ::testing::Test {
 };
 
 using Provenance = TempDir;
+
+TEST(BuildIdentity, IsTheCommitOfACleanBuildAndAddsTheExecutablesHashOtherwise) {
+  // The key of caches and journals: a clean build's commit fixes its code; a "+dirty" or
+  // "unknown" build's does not, so its identity also carries the executable's 64-bit FNV-1a hash
+  // (16 hex digits). The same value all process long.
+  const std::string commit = git_commit(), id = build_identity();
+  if (commit != "unknown" && commit.find("+dirty") == std::string::npos) {
+    EXPECT_EQ(id, commit);
+  } else {
+    ASSERT_EQ(id.size(), commit.size() + 17) << id;
+    EXPECT_EQ(id.substr(0, commit.size() + 1), commit + "#");
+    EXPECT_EQ(id.find_first_not_of("0123456789abcdef", commit.size() + 1), std::string::npos) << id;
+  }
+  EXPECT_EQ(build_identity(), id);
+}
 
 TEST_F(Provenance, BlockHasTheKeysAndHashesTheConfig) {
   const fs::path config = dir_ / "c.toml";

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
@@ -137,10 +138,9 @@ TEST(PinScale, TheFaceDropIsTheLowestPointOfTheTiltedFace) {
   }
 }
 
-TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
-  // A nearly rigid body (E* huge) yields on every loaded cell: A = W/p_cap, so the slip area at
-  // p_cap = √(σ0² − α τ_i²) gives μs,max = 1/√(S² − α) (thesis 3.1.23) and the kinetic μ_b = τ_i/σ0.
-  // The last, partly loaded cell adds at most one cell's area: 1/(loaded cells) ≈ 0.3 %.
+// A small Gaussian patch on a nearly rigid body (E* huge), loaded so that about 10 % of it is at the
+// cap: W/A_nom = 0.1 σ0.
+HomogeniseOptions rigid_plastic_patch() {
   HomogeniseOptions o;
   o.surface.grid = 64;
   o.surface.size_m = 2e-4;
@@ -149,8 +149,15 @@ TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
   o.surface.correlation_length_m = 2e-5;
   o.e_star_Pa = 1e16;
   o.separation_ratios = {1.0, 2.0, 3.0, 5.0, 8.0};
-  // Load so that about 10 % of the patch is loaded at the cap: W/A_nom = 0.1 σ0.
   o.pin.normal_load_N = 0.1 * o.hardness_Pa * M_PI * o.pin.radius_m * o.pin.radius_m;
+  return o;
+}
+
+TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
+  // Every loaded cell yields: A = W/p_cap, so the slip area at p_cap = √(σ0² − α τ_i²) gives
+  // μs,max = 1/√(S² − α) (thesis 3.1.23) and the kinetic μ_b = τ_i/σ0. The last, partly loaded
+  // cell adds at most one cell's area: 1/(loaded cells) ≈ 0.3 %.
+  const HomogeniseOptions o = rigid_plastic_patch();
   const PatchResult p = solve_patch(o, 0);
   ASSERT_EQ(p.unconverged, 0) << p.messages;
   const double s = o.hardness_Pa / o.interface_shear_strength_Pa;
@@ -167,6 +174,27 @@ TEST(Junction, FullyPlasticContactGivesTaborsStaticAndKineticFriction) {
   }
   // Flow factors reach the smooth film at 8σ: 1 − 1.5 (σ/h)² ≈ 0.977 (Patir–Cheng small-roughness rate).
   EXPECT_NEAR(p.phi_x.back(), 1.0 - 1.5 / 64.0, 0.02);
+}
+
+TEST(SolvePatches, APatchThatCannotBeKeptFailsTheSolveWithItsReasonAndStartsNoMore) {
+  // A caller that cannot keep a patch (a full disk) must fail the solve with its own error once the
+  // threads are done — not terminate the program from inside the OpenMP critical section that
+  // serialises the callback — and the realisations not yet started are not solved (on one thread:
+  // the first patch's failure leaves the other two unsolved, so the callback runs once).
+  HomogeniseOptions o = rigid_plastic_patch();
+  o.realisations = 3;
+  o.threads = 1;
+  int kept = 0;
+  try {
+    solve_patches(o, {}, [&](int, const PatchResult&) {
+      ++kept;
+      throw std::runtime_error("no space left on device");
+    });
+    FAIL() << "a patch that cannot be kept must fail the solve";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "no space left on device");
+  }
+  EXPECT_EQ(kept, 1);
 }
 
 // A patch with hand-set columns: N_s and A_r falling to 0 at 4σ, smooth-film flow factors, lift
