@@ -166,32 +166,10 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   progress.done();
 
   const homogenise::CellTable cells = homogenise::aggregate(o, patch_results);
-  // A ball's films, speed node by speed node, kept as they finish so that a killed run resumes.
-  const std::filesystem::path film_nodes = dir / "ball-film";
-  int nodes_reused = 0;
-  std::optional<Progress> film_progress;
-  homogenise::BallFilmStore ball_store;
-  const auto node_file = [&](std::size_t k) { return film_nodes / ("node-" + std::to_string(k) + ".json"); };
-  if (o.pin.shape == homogenise::PinShape::ball) {
-    make_output_dir(film_nodes);
-    film_progress.emplace("homogenise: ball film speeds", static_cast<int>(homogenise::micro_ehl_eta_u_Pa_m(o).size()) - 1);
-    ball_store.load = [&](std::size_t k) {
-      return read_cached(node_file(k), key, "node", &homogenise::ball_film_node_from_json);
-    };
-    ball_store.finished = [&](std::size_t k, const homogenise::BallFilmNode& node, bool taken) {
-      if (taken) {
-        ++nodes_reused;
-        film_progress->step("cached");
-        return;
-      }
-      write_cached(node_file(k), key, "node", homogenise::to_json(node));
-      film_progress->step("U = " + numerics::shortest(node.eta_u_Pa_m / o.lubricant.viscosity_Pa_s) + " m/s");
-    };
-  }
-  const homogenise::PinTable pin = homogenise::pin_scale(o, cells, ball_store);
-  if (film_progress) film_progress->done();
+  homogenise::PinTable pin = homogenise::pin_scale(o, cells);
   if (!(pin.solid_load_N.front() >= o.pin.normal_load_N)) {
-    // The steady film's equilibrium N_s(h̄) = W would lie below the table (the rig refuses it).
+    // The steady film's equilibrium N_s(h̄) = W would lie below the table (the rig refuses it) —
+    // said before a ball's films, the slow stage, are solved.
     const bool shaped = o.pin.shape == homogenise::PinShape::spherical || o.pin.tilt_rad > 0.0;
     throw std::invalid_argument(
         config.string() + ": [pin] normal_load_N = " + numerics::shortest(o.pin.normal_load_N) +
@@ -200,6 +178,29 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
         (shaped ? ": a crowned or tilted face touches over part of it only — reduce the tilt or crown, or add smaller "
                   "[homogenise] separation_ratios"
                 : ": add smaller [homogenise] separation_ratios"));
+  }
+  // A ball's films, speed node by speed node, kept as they finish so that a killed run resumes.
+  int nodes_reused = 0;
+  if (o.pin.shape == homogenise::PinShape::ball) {
+    const std::filesystem::path film_nodes = dir / "ball-film";
+    make_output_dir(film_nodes);
+    const auto node_file = [&](std::size_t k) { return film_nodes / ("node-" + std::to_string(k) + ".json"); };
+    Progress film_progress("homogenise: ball film speeds", static_cast<int>(homogenise::micro_ehl_eta_u_Pa_m(o).size()) - 1);
+    homogenise::BallFilmStore ball_store;
+    ball_store.load = [&](std::size_t k) {
+      return read_cached(node_file(k), key, "node", &homogenise::ball_film_node_from_json);
+    };
+    ball_store.finished = [&](std::size_t k, const homogenise::BallFilmNode& node, bool taken) {
+      if (taken) {
+        ++nodes_reused;
+        film_progress.step("cached");
+        return;
+      }
+      write_cached(node_file(k), key, "node", homogenise::to_json(node));
+      film_progress.step("U = " + numerics::shortest(node.eta_u_Pa_m / o.lubricant.viscosity_Pa_s) + " m/s");
+    };
+    homogenise::add_ball_film(o, pin, ball_store);
+    film_progress.done();
   }
   nlohmann::json law = homogenise::law_json(o, cells, pin);
   law["provenance"] = provenance_json(config, hash, run.input_files);

@@ -82,7 +82,7 @@ BallFilmNode ball_film_node_from_json(const nlohmann::json& j);
 
 // Solves the films (in parallel over the speeds, options.threads). At each speed the shares are
 // solved in increasing order until two films have converged and the last is thinner than
-// `thinnest_film_m`: the larger shares' films are thinner still. pin_scale passes half the
+// `thinnest_film_m`: the larger shares' films are thinner still. add_ball_film (pin.h) passes half the
 // separation at which the asperities alone carry W — the rig's balance never lies below it, and the
 // solves there are the thinnest, slowest and likeliest to fail (on a 65² grid at slow speeds,
 // nanometre films under high load). 0 solves every share. Throws std::invalid_argument unless

@@ -51,7 +51,7 @@ double face_drop_m(const Pin& pin) {
   return theta * rc <= r ? 0.5 * theta * theta * rc : theta * r - r * r / (2.0 * rc);
 }
 
-PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t, const BallFilmStore& ball_store) {
+PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
   const bool ball = o.pin.shape == PinShape::ball;
   // A ball's face is its Hertz circle, the film over it uniform (ball_film.h).
   const double sigma = t.sigma_m, radius = nominal_contact_radius_m(o);
@@ -191,10 +191,11 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t, const BallFil
       pin.solid_shear_discretisation_error_Pa.push_back(error_row);
     }
   }
-  if (ball) {
-    pin.ball = ball_film(o, 0.5 * rest_separation_m(pin.separation_m, pin.solid_load_N, o.pin.normal_load_N), ball_store);
-  }
   return pin;
+}
+
+void add_ball_film(const HomogeniseOptions& o, PinTable& pin, const BallFilmStore& store) {
+  pin.ball = ball_film(o, 0.5 * rest_separation_m(pin.separation_m, pin.solid_load_N, o.pin.normal_load_N), store);
 }
 
 }  // namespace tribo::homogenise

@@ -71,7 +71,13 @@ struct PinTable {
 // lies on the face (θR_c ≤ R), else θR − R²/(2R_c) at the trailing edge; 0 untilted.
 double face_drop_m(const Pin& pin);
 
-// A ball's films are solved through `ball_store` (ball_film.h: finished speed nodes kept and reused).
-PinTable pin_scale(const HomogeniseOptions& options, const CellTable& cells, const BallFilmStore& ball_store = {});
+// The pin table from the cells. A ball's films are the next step, add_ball_film: the slow one, taken
+// once the caller knows the table carries the load (homogenise refuses a law whose balance
+// N_s(h̄) = W lies below the table, and says so before the films are solved).
+PinTable pin_scale(const HomogeniseOptions& options, const CellTable& cells);
+// A ball's EHL films (ball_film.h) on its pin table, the thinnest half the separation at which the
+// asperities alone carry W (the rig's balance never lies below it), solved through `store`
+// (finished speed nodes kept and reused). Throws std::invalid_argument unless options describe a ball.
+void add_ball_film(const HomogeniseOptions& options, PinTable& pin, const BallFilmStore& store = {});
 
 }  // namespace tribo::homogenise

@@ -79,6 +79,13 @@ CellTable yielding_cells(const HomogeniseOptions& o) {
   return t;
 }
 
+// The ball's pin table with its films, as homogenise makes it.
+PinTable ball_pin(const HomogeniseOptions& o, const CellTable& cells) {
+  PinTable pin = pin_scale(o, cells);
+  add_ball_film(o, pin);
+  return pin;
+}
+
 lubrication::PiezoviscousLubricant ball_oil(const HomogeniseOptions& o) {
   lubrication::PiezoviscousLubricant l;
   l.viscosity_Pa_s = o.lubricant.viscosity_Pa_s;
@@ -107,7 +114,7 @@ TEST(BallFilm, TheFaceIsHertzsCircleAndTheAsperitiesCarryThePatchPressureOverIt)
   const HomogeniseOptions o = ball_options();
   EXPECT_NEAR(nominal_contact_radius_m(o), 8.5226e-5, 1e-9);
   const CellTable cells = yielding_cells(o);
-  const PinTable pin = pin_scale(o, cells);
+  const PinTable pin = ball_pin(o, cells);
   const double area = M_PI * std::pow(nominal_contact_radius_m(o), 2);
   EXPECT_NEAR(pin.nominal_area_m2 / area, 1.0, 1e-12);
   for (std::size_t m = 0; m < pin.separation_m.size(); ++m) {
@@ -174,12 +181,12 @@ TEST(BallFilm, AFilmBetweenTheSolvedSharesCarriesTheShareWhoseFilmItIs) {
 }
 
 TEST(BallFilm, FilmsThinnerThanTheRestSeparationNeedNotBeSolved) {
-  // pin_scale stops each speed's shares at the first film thinner than half the asperities' rest
+  // add_ball_film stops each speed's shares at the first film thinner than half the asperities' rest
   // separation (42 nm here). Wherever the rig's balance can lie — at or above that — the film's
   // load and traction are those of every share solved: the same two films bracket h̄, solved again
   // (1e-9: a film solved twice agrees to its last digits, FFTW's plans aside).
   const HomogeniseOptions o = ball_options();
-  const PinTable pin = pin_scale(o, yielding_cells(o));
+  const PinTable pin = ball_pin(o, yielding_cells(o));
   ASSERT_TRUE(pin.ball.has_value());
   const BallFilmTable& some = *pin.ball;
   const BallFilmTable all = ball_film(o, 0.0);
@@ -306,7 +313,7 @@ class BallOnDisc : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {  // the films once for the suite (≈ 2 s)
     const HomogeniseOptions o = ball_options();
-    const nlohmann::json law = law_json(o, yielding_cells(o), pin_scale(o, yielding_cells(o)));
+    const nlohmann::json law = law_json(o, yielding_cells(o), ball_pin(o, yielding_cells(o)));
     base_ = new rig::HomogenisedBase(rig::law_table_from_json(law, "ball law.json"), o.pin.normal_load_N);
   }
   static void TearDownTestSuite() {
