@@ -8,6 +8,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <string>
+#include <utility>
 
 #include "apps/config.h"
 #include "apps/contact_run.h"
@@ -158,6 +159,21 @@ TEST(PinConfig, TiltIsReadAndASteepOrNegativeOneRefused) {
   for (const char* bad : {"-1e-4", "0.02"}) {
     const auto path = write_file("pin-tilt-bad.toml", surface + "[pin]\ntilt_rad = " + bad + "\n");
     expect_all(input_error_of([&] { load_homogenise_run(path); }), {path.string(), "key 'pin.tilt_rad'"});
+  }
+}
+
+// [material] slider_expansion_per_K and slider_poisson_ratio (the face's thermal crown bound): read
+// into the options; a negative expansion or a Poisson ratio of 0.5 or more refused with the file and
+// the key.
+TEST(MaterialConfig, TheSlidersThermoelasticConstantsAreReadAndOutOfRangeOnesRefused) {
+  const std::string surface = "[surface]\nkind = \"gaussian\"\nrms_height_m = 4.35e-7\ncorrelation_length_m = 6.25e-5\n";
+  const HomogeniseRun run = load_homogenise_run(
+      write_file("material-brass.toml", surface + "[material]\nslider_expansion_per_K = 19.9e-6\nslider_poisson_ratio = 0.34\n"));
+  EXPECT_EQ(run.options.slider_expansion_per_K, 19.9e-6);
+  EXPECT_EQ(run.options.slider_poisson_ratio, 0.34);
+  for (const auto& [key, bad] : {std::pair{"slider_expansion_per_K", "-1e-6"}, std::pair{"slider_poisson_ratio", "0.5"}}) {
+    const auto path = write_file("material-bad.toml", surface + "[material]\n" + key + " = " + bad + "\n");
+    expect_all(input_error_of([&] { load_homogenise_run(path); }), {path.string(), std::string("key 'material.") + key + "'"});
   }
 }
 

@@ -2,7 +2,8 @@
 # and writes its tilt and a table whose first row is the face centre's film, the cells' first
 # separation plus θR (the trailing edge on it); a face tilted so far that only a strip at its
 # trailing edge touches cannot carry W on the table: exit 2, a message naming the config, the load
-# and the tilt, and no law.json. Inputs: TRIBO, WORK.
+# and the tilt, and no law.json. Beside it, the thermal crown bound of the Stribeck points. Inputs:
+# TRIBO, PYTHON, WORK.
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 include(${CMAKE_CURRENT_LIST_DIR}/tiny_homogenise.cmake)
@@ -33,6 +34,24 @@ execute_process(COMMAND ${PYTHON} -c
 if(NOT rows_ok EQUAL 0)
   message(FATAL_ERROR "expected pin.tilt_rad 1e-5 and the first row at the cells' first separation + 4.7625e-8 m; "
                       "got tilt ${tilt}, first row ${first}, cells' first ${cell}")
+endif()
+
+# The bound on the face's thermal crown beside each Stribeck point (contact/thermoelastic.h): all of
+# μWU into a steel slider, Δ = (1 + ν) α Q / (4π k) with the defaults α = 11.5e-6 /K, ν = 0.3 and
+# k = 46 W/(m K); in law.json and, the same, in stribeck.csv's last column.
+execute_process(COMMAND ${PYTHON} -c "
+import csv, json, math, sys
+d = sys.argv[1]
+points = json.load(open(d + '/law.json'))['stribeck']
+rows = list(csv.DictReader(l for l in open(d + '/stribeck.csv') if not l.startswith('#')))
+assert len(points) == len(rows) > 0, (len(points), len(rows))
+for p, r in zip(points, rows):
+    crown = 1.3 * 11.5e-6 * p['mu'] * 93.86 * p['U_m_per_s'] / (4 * math.pi * 46.0)
+    assert abs(p['thermal_crown_bound_m'] / crown - 1) < 1e-12, (p, crown)
+    assert abs(float(r['thermal_crown_bound_m']) / crown - 1) < 1e-6, (r, crown)
+" ${WORK}/slight RESULT_VARIABLE crown_ok)
+if(NOT crown_ok EQUAL 0)
+  message(FATAL_ERROR "thermal_crown_bound_m does not follow (1 + ν) α μ W U / (4π k) in ${WORK}/slight")
 endif()
 
 homogenise_tilted(steep 0.009)
