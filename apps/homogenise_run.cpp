@@ -54,17 +54,21 @@ std::optional<T> read_cached(const std::filesystem::path& file, const std::strin
   }
 }
 
-// film_parameter: Λ = h̄/σ, the separation over the composite rms roughness (the Stribeck curve's
-// usual abscissa besides the speed).
 // thermal_crown_bound_m: how far the slider's face would crown if all the frictional power μWU
 // flowed into it (contact/thermoelastic.h) — a bound, the disc takes its share — to set beside the
 // crowns and tilts that make a film carry load (docs/homogenise.md).
-double thermal_crown_bound_m(const homogenise::HomogeniseOptions& o, const rig::SteadySliding& s) {
-  return contact::thermoelastic_crown_m(homogenise::slider_solid(o), s.mu * o.pin.normal_load_N * s.speed_m_per_s);
+std::vector<double> thermal_crown_bounds_m(const homogenise::HomogeniseOptions& o, const std::vector<rig::SteadySliding>& points) {
+  const contact::ThermoelasticSolid slider = homogenise::slider_solid(o);
+  std::vector<double> crowns;
+  for (const rig::SteadySliding& s : points)
+    crowns.push_back(contact::thermoelastic_crown_m(slider, s.mu * o.pin.normal_load_N * s.speed_m_per_s));
+  return crowns;
 }
 
+// film_parameter: Λ = h̄/σ, the separation over the composite rms roughness (the Stribeck curve's
+// usual abscissa besides the speed).
 void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig::SteadySliding>& points,
-                        const std::vector<double>& mu_errors, const homogenise::HomogeniseOptions& o, double sigma_m,
+                        const std::vector<double>& mu_errors, const std::vector<double>& crowns_m, double sigma_m,
                         const nlohmann::json& provenance) {
   CsvFile f(path, provenance);
   f.stream() << "U_m_per_s,mu,mu_discretisation_error,fluid_share,separation_m,film_parameter,temperature_rise_K,solid_load_N,lift_N,"
@@ -74,7 +78,7 @@ void write_stribeck_csv(const std::filesystem::path& path, const std::vector<rig
     f.stream() << s.speed_m_per_s << ',' << s.mu << ',' << csv_number(mu_errors[k]) << ',' << s.fluid_share << ','
                << s.separation_m << ',' << s.separation_m / sigma_m << ',' << s.temperature_rise_K << ',' << s.solid_load_N << ','
                << s.lift_N << ',' << s.fluid_shear_N << ',' << s.solid_shear_Pa << ',' << s.film_share_of_contact << ','
-               << thermal_crown_bound_m(o, s) << '\n';
+               << crowns_m[k] << '\n';
   }
   f.commit();
 }
@@ -215,6 +219,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   const std::vector<rig::SteadySliding>& stribeck = curve.points;
   const std::vector<double> mu_errors =
       stribeck_discretisation_errors(law, pin, stribeck, o.pin.normal_load_N, (dir / "law.json").string());
+  const std::vector<double> crowns_m = thermal_crown_bounds_m(o, stribeck);
   nlohmann::json sj = nlohmann::json::array();
   for (std::size_t k = 0; k < stribeck.size(); ++k) {
     const rig::SteadySliding& s = stribeck[k];
@@ -226,7 +231,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
                   {"separation_m", s.separation_m},
                   {"film_parameter", s.separation_m / cells.sigma_m},
                   {"temperature_rise_K", s.temperature_rise_K},
-                  {"thermal_crown_bound_m", thermal_crown_bound_m(o, s)},
+                  {"thermal_crown_bound_m", crowns_m[k]},
                   {"regime", rig::to_string(s.regime)}});
   }
   law["stribeck"] = sj;
@@ -249,7 +254,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
 
   const nlohmann::json& provenance = law["provenance"];
   write_area_csv(dir / "area.csv", pin, cells.sigma_m, provenance);
-  write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, o, cells.sigma_m, provenance);
+  write_stribeck_csv(dir / "stribeck.csv", stribeck, mu_errors, crowns_m, cells.sigma_m, provenance);
   write_file_atomically(dir / "law.json", law.dump(2) + "\n");
   std::printf("mu_s,max %.4g ± %.2g (BEM extrapolated from %d², %d realisations; ± the discretisation error), dry mu %.4g ± %.2g; Stribeck over %zu speeds at W = %.4g N; %.1f s -> %s\n",
               cells.mu_s_max.mean, cells.mu_s_max_discretisation_error, cells.junction_grid, cells.realisations, cells.mu_boundary.mean,

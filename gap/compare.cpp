@@ -1,5 +1,4 @@
 #include "gap/compare.h"
-#include "gap/parallel.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +12,7 @@
 
 #include "numerics/format.h"
 #include "numerics/median.h"
+#include "numerics/parallel.h"
 #include "rig/drive.h"
 #include "rig/instrument.h"
 #include "rig/observables.h"
@@ -1265,7 +1265,7 @@ std::vector<double> Comparison::predict(const rig::RigParameters& rig, const rig
   // inside them this loop is serial).
   std::vector<Features> features(plans_.size());
   std::vector<std::optional<SimulatedRun>> plan_traces(plans_.size());
-  parallel_for(plans_.size(), [&](std::size_t p) {
+  numerics::parallel_for(plans_.size(), [&](std::size_t p) {
     if (plan_needed[p]) features[p] = predict_plan(plans_[p], rig, model, *law, seed, tolerance_, traces ? &plan_traces[p] : nullptr);
   });
   for (std::size_t p = 0; p < plans_.size(); ++p)

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "gap/parallel.h"
+#include "numerics/parallel.h"
 
 namespace tribo::gap {
 
@@ -29,7 +29,7 @@ std::vector<Linearisation> linearise(const Comparison& c, const std::vector<FitP
     for (std::size_t j = 0; j <= fits[f].space.size(); ++j) tasks.emplace_back(f, j);
   }
   std::vector<std::vector<double>> at(tasks.size());
-  parallel_for(tasks.size(), [&](std::size_t t) {
+  numerics::parallel_for(tasks.size(), [&](std::size_t t) {
     const auto [f, j] = tasks[t];
     std::vector<double> u = out[f].u;
     if (j < u.size()) {

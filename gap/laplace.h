@@ -40,7 +40,7 @@ struct Linearisation {
   std::vector<double> u, centre, step;
   Eigen::MatrixXd jacobian;
 };
-// Every fit's linearisation, the simulations of all of them side by side (gap/parallel.h).
+// Every fit's linearisation, the simulations of all of them side by side (numerics/parallel.h).
 std::vector<Linearisation> linearise(const Comparison& c, const std::vector<FitPoint>& fits, std::uint64_t seed);
 
 // √(mean v_i) over the items of `mask` (0 for none or an empty v): how far a model's parameter

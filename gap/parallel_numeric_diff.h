@@ -4,7 +4,7 @@
 // each column is a whole prediction of the bundle (seconds of ODE integration), and a prediction's
 // own parallel loop over its runs balances badly (one long slow run and a few short ones), so a
 // fit that runs alone — the calibration, the pair, a re-calibration — used little more than one
-// core. Here the columns are the parallel loop (parallel.h): 2n equal predictions for central
+// core. Here the columns are the parallel loop (numerics/parallel.h): 2n equal predictions for central
 // differences, n for forward ones, and each column's prediction runs serially in its thread.
 //
 // The steps and the arithmetic are Ceres's own (ceres/internal/numeric_diff.h, 2.1): for column j,
@@ -25,7 +25,7 @@
 #include <memory>
 #include <vector>
 
-#include "gap/parallel.h"
+#include "numerics/parallel.h"
 
 namespace tribo::gap {
 
@@ -50,7 +50,7 @@ class ParallelNumericDiffCostFunction final : public ceres::CostFunction {
     const double* x = parameters[0];
     const double min_step_size = std::sqrt(std::numeric_limits<double>::epsilon());
     std::vector<char> ok(n, 1);
-    parallel_for(n, [&](std::size_t j) {
+    numerics::parallel_for(n, [&](std::size_t j) {
       omp_set_num_threads(1);  // the column's prediction in this thread: the columns are the parallel work
       std::vector<double> shifted(x, x + n), plus(m), minus(m);
       const double* block = shifted.data();

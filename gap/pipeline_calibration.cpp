@@ -7,9 +7,9 @@
 
 #include "gap/calibration.h"
 #include "gap/laplace.h"
-#include "gap/parallel.h"
 #include "gap/pipeline.h"
 #include "numerics/median.h"
+#include "numerics/parallel.h"
 
 namespace tribo::gap {
 namespace {
@@ -144,7 +144,7 @@ Calibration calibrate(const FitProblem& p) {
   const std::size_t dims = p.base_space.size();
   auto from_starts = [&](const std::vector<double>& w) {
     std::vector<FitResult> from_start(starts.size());
-    parallel_for(starts.size(), [&](std::size_t k) {
+    numerics::parallel_for(starts.size(), [&](std::size_t k) {
       from_start[k] = fit(comparison, p.base_space, starts[k], w, calibration, o.seed, 1, dims);
     });
     FitResult best = from_start.front();
@@ -208,7 +208,7 @@ std::optional<FitResult> recalibrate(const FitProblem& p, const Calibration& cal
                                      const std::vector<Candidate>& ranked) {
   const DiagnosisOptions calibration = calibration_options(p.options);
   std::vector<FitResult> from_leader(std::min<std::size_t>(ranked.size(), 3));
-  parallel_for(from_leader.size(), [&](std::size_t k) {
+  numerics::parallel_for(from_leader.size(), [&](std::size_t k) {
     FitSetup from{ranked[k].rig, p.model};
     from.model.baseline = ranked[k].model.baseline;
     from_leader[k] = fit(*p.comparison, p.base_space, from, cal.weights, calibration, p.options.seed, 1, p.base_space.size(),

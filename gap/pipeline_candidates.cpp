@@ -5,9 +5,9 @@
 #include "contact/junction_locus.h"
 #include "gap/calibration.h"
 #include "gap/laplace.h"
-#include "gap/parallel.h"
 #include "gap/pipeline.h"
 #include "gap/verdict.h"
+#include "numerics/parallel.h"
 
 namespace tribo::gap {
 namespace {
@@ -143,7 +143,7 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
 std::vector<Candidate> search_singles(const FitProblem& p, const Baseline& b) {
   const int comparisons = static_cast<int>(p.candidates.size());
   std::vector<Candidate> singles(p.candidates.size());
-  parallel_for(p.candidates.size(),
+  numerics::parallel_for(p.candidates.size(),
                [&](std::size_t k) { singles[k] = search(p, b, {p.candidates[k]}, p.options.seed * 7919 + k, comparisons); });
   rank(singles);
   return singles;
@@ -180,7 +180,7 @@ std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, st
   // where the cost is flat; refined, it moves to 1.4 mm/s and closes the gap). On two threads the
   // fourth refinement runs beside the third.
   constexpr std::size_t kRefined = 4;
-  parallel_for(std::min(kRefined, ranked.size()), [&](std::size_t k) { ranked[k] = refine(p, b, ranked[k], comparisons); });
+  numerics::parallel_for(std::min(kRefined, ranked.size()), [&](std::size_t k) { ranked[k] = refine(p, b, ranked[k], comparisons); });
   return ranked;
 }
 

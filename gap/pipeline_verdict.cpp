@@ -6,9 +6,9 @@
 #include <random>
 
 #include "gap/laplace.h"
-#include "gap/parallel.h"
 #include "gap/pipeline.h"
 #include "gap/refit.h"
+#include "numerics/parallel.h"
 
 namespace tribo::gap {
 namespace {
@@ -60,7 +60,7 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
     }
   }
   std::vector<char> linear_enough(probes.size(), 0);  // 0 also where the fit or the probe cannot be simulated
-  parallel_for(probes.size(), [&](std::size_t q) {
+  numerics::parallel_for(probes.size(), [&](std::size_t q) {
     const Probe& pr = probes[q];
     const std::vector<double>& centre = at[pr.fit].centre;
     std::vector<double> u = at[pr.fit].u;

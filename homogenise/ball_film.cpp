@@ -1,15 +1,11 @@
 #include "homogenise/ball_film.h"
 
-#include <omp.h>
-
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <limits>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -18,6 +14,7 @@
 #include "lubrication/ehl_traction.h"
 #include "numerics/format.h"
 #include "numerics/json_numbers.h"
+#include "numerics/parallel.h"
 #include "rig/ball_film.h"
 
 namespace tribo::homogenise {
@@ -111,39 +108,27 @@ BallFilmTable ball_film(const HomogeniseOptions& o, double thinnest_film_m, cons
       store.finished(k, *nodes[k], true);
     }
   }
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  // The first failure — a node that could not be solved or kept — is rethrown once the threads are
-  // done (no exception may leave the parallel loop or a critical section), and the nodes not yet
-  // started are skipped: they would be solved only to be lost.
-  std::exception_ptr failed;
-  std::atomic<bool> stop{false};
-  const auto fail = [&](std::exception_ptr e) {
-    if (!failed) failed = std::move(e);
-    stop = true;
-  };
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-  for (std::size_t q = 0; q < to_solve.size(); ++q) {
-    if (stop) continue;
-    const std::size_t k = to_solve[q];
-    try {
-      nodes[k] = solve_node(o, oil, film_options, t.share, t.eta_u_Pa_m[k], thinnest_film_m);
-    } catch (...) {
-#pragma omp critical(tribo_ball_film_store)
-      fail(std::current_exception());
-      continue;
-    }
-    if (store.finished) {
-#pragma omp critical(tribo_ball_film_store)
-      {
+  // Passed to the store one at a time, under a lock a throwing store releases; after a store that
+  // threw, no later node is passed on (numerics::parallel_for rethrows the first failure after the
+  // running solves and starts no more).
+  std::mutex keep;
+  bool store_failed = false;
+  numerics::parallel_for(
+      to_solve.size(),
+      [&](std::size_t q) {
+        const std::size_t k = to_solve[q];
+        nodes[k] = solve_node(o, oil, film_options, t.share, t.eta_u_Pa_m[k], thinnest_film_m);
+        if (!store.finished) return;
+        const std::lock_guard lock(keep);
+        if (store_failed) return;
         try {
-          if (!failed) store.finished(k, *nodes[k], false);
+          store.finished(k, *nodes[k], false);
         } catch (...) {
-          fail(std::current_exception());
+          store_failed = true;
+          throw;
         }
-      }
-    }
-  }
-  if (failed) std::rethrow_exception(failed);
+      },
+      o.threads);
 
   const double nan = std::numeric_limits<double>::quiet_NaN();
   t.central_film_m.assign(1, std::vector<double>(n_s, nan));

@@ -67,9 +67,9 @@ struct BallFilmNode {
 // node is taken only if it belongs to this solve (the same ηU, thinnest film and number of shares),
 // otherwise it is solved again. `finished(k, node, taken)` is called once for every node, one
 // call at a time: first for each node taken from `load` (taken = true), then for each node solved,
-// as it finishes (taken = false; the one to keep). Either may be empty. An exception from
-// `finished` or from a node's solve is rethrown when the running solves are done (the nodes after
-// it are not passed on, and those not yet started are not solved).
+// as it finishes (taken = false; the one to keep). Either may be empty. The first exception from
+// `finished` or from a node's solve is rethrown when the running solves are done; the nodes not yet
+// started are not solved, and after a `finished` that threw no node is passed on.
 struct BallFilmStore {
   std::function<std::optional<BallFilmNode>(std::size_t k)> load;
   std::function<void(std::size_t k, const BallFilmNode& node, bool taken)> finished;

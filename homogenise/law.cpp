@@ -1,11 +1,8 @@
 #include "homogenise/law.h"
 
-#include <omp.h>
-
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -15,6 +12,7 @@
 #include "homogenise/ball_film.h"
 #include "numerics/format.h"
 #include "numerics/json_numbers.h"
+#include "numerics/parallel.h"
 
 namespace tribo::homogenise {
 
@@ -31,38 +29,19 @@ std::vector<PatchResult> solve_patches(const HomogeniseOptions& o, const std::ve
       todo.push_back(k);
     }
   }
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  // The first failure — a patch that could not be solved or kept (on_patch writes it) — is rethrown
-  // once the threads are done: no exception may leave the parallel loop or a critical section.
-  // The patches not yet started are skipped; those kept already are reused by the next run.
-  std::exception_ptr failed;
-  std::atomic<bool> stop{false};
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-  for (std::size_t t = 0; t < todo.size(); ++t) {
-    if (stop) continue;
-    const int k = todo[t];
-    std::exception_ptr e;
-    try {
-      PatchResult p = solve_patch(o, k);
-#pragma omp critical(tribo_homogenise_patch)
-      {
-        try {
-          out[static_cast<std::size_t>(k)] = p;
-          if (on_patch) on_patch(k, p);
-        } catch (...) {
-          e = std::current_exception();
-        }
-      }
-    } catch (...) {
-      e = std::current_exception();
-    }
-    if (e) {
-#pragma omp critical(tribo_homogenise_patch)
-      if (!failed) failed = e;
-      stop = true;
-    }
-  }
-  if (failed) std::rethrow_exception(failed);
+  // Kept one at a time, under a lock a throwing on_patch releases (numerics::parallel_for then
+  // rethrows the first failure after the running solves and starts no more).
+  std::mutex keep;
+  numerics::parallel_for(
+      todo.size(),
+      [&](std::size_t t) {
+        const int k = todo[t];
+        PatchResult p = solve_patch(o, k);
+        const std::lock_guard lock(keep);
+        out[static_cast<std::size_t>(k)] = p;
+        if (on_patch) on_patch(k, p);
+      },
+      o.threads);
   return out;
 }
 

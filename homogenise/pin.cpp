@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "homogenise/ball_film.h"
@@ -117,20 +118,22 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     sq.sliding_speed_m_per_s = 0.0;
     sq.cavitation = lubrication::Cavitation::none;
     sq.gap_rate_m_per_s = h.unaryExpr([&](double hk) { return -film_slope(hk); });
-    std::vector<lubrication::ReynoldsSolution> solved{solver.solve(sq)};
-    // Wedge: steady sliding at ηU = 1 with cavitation. Not for a ball: its fluid is its EHL film
-    // (ball_film), and the rigid circle's lift and Petroff shear would count it twice.
-    if (!ball) {
-      pr.cavitation = lubrication::Cavitation::mass_conserving;
-      solved.push_back(solver.solve(pr));
-    }
-    const lubrication::ReynoldsSolution& squeeze = solved.front();
-    const lubrication::ReynoldsSolution* wedge = ball ? nullptr : &solved.back();
-    for (const lubrication::ReynoldsSolution& s : solved)
+    const auto solved = [&](const lubrication::ReynoldsProblem& problem) {
+      lubrication::ReynoldsSolution s = solver.solve(problem);
       if (!s.summary.converged) {
         ++pin.reynolds_unconverged;
         pin.messages += "pin-face Reynolds at h = " + numerics::shortest(centre) + " m: " + s.summary.message + "; ";
       }
+      return s;
+    };
+    const lubrication::ReynoldsSolution squeeze = solved(sq);
+    // Wedge: steady sliding at ηU = 1 with cavitation. Not for a ball: its fluid is its EHL film
+    // (ball_film), and the rigid circle's lift and Petroff shear would count it twice.
+    std::optional<lubrication::ReynoldsSolution> wedge;
+    if (!ball) {
+      pr.cavitation = lubrication::Cavitation::mass_conserving;
+      wedge = solved(pr);
+    }
 
     // Face integrals over the wetted nodes (the disc's, the same in both solves), weights scaled so
     // they sum to πR² exactly.
@@ -155,7 +158,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
           spot_force_coarse[k] += w * ar_coarse(hk) * tau_coarse[k](hk);
           film_area[k] += w * ar(hk) * separated[k](hk);
         }
-        if (wedge == nullptr) continue;
+        if (!wedge) continue;
         rug += w * lift(hk);
         // Central difference of the wedge pressure (ambient 0 beyond the rim).
         const auto p_at = [&](int ii) { return ii >= 0 && ii < g.nx && wetted(ii, j) ? wedge->pressure_Pa(ii, j) : 0.0; };
@@ -170,7 +173,7 @@ PinTable pin_scale(const HomogeniseOptions& o, const CellTable& t) {
     pin.real_area_standard_error_m2.push_back(a_se);
     pin.real_area_coarse_m2.push_back(a_coarse);
     pin.real_area_discretisation_error_m2.push_back(error_from_refinement(a_coarse, a));
-    pin.wedge_lift_per_eta_u_m.push_back(wedge != nullptr ? wedge->load_N : 0.0);
+    pin.wedge_lift_per_eta_u_m.push_back(wedge ? wedge->load_N : 0.0);
     pin.rugosity_lift_per_eta_u_m.push_back(rug);
     pin.squeeze_per_eta_m.push_back(squeeze.load_N);
     pin.shear_per_eta_u_m.push_back(shear);
