@@ -89,6 +89,7 @@ std::vector<FitParameter> effect_parameters(const std::string& effect) {
     p.effect = effect;
     p.name = spec.name;
     p.lower = spec.fit->lower, p.upper = spec.fit->upper, p.log = spec.fit->log;
+    p.times_per_normal_load = spec.fit->times_per_normal_load;
     out.push_back(p);
   }
   if (out.empty()) throw std::invalid_argument("gap: the catalogue gives effect '" + effect + "' no fitted parameter");
@@ -117,9 +118,14 @@ void apply(const std::vector<FitParameter>& space, const std::vector<double>& u,
   double zeta = damping_ratio(s.rig);
   bool fit_zeta = false;
   double mu_s_read = -1.0;  // the reading g μs, when fitted
+  std::vector<std::pair<const FitParameter*, double>> products;  // set once their partners are
   for (std::size_t i = 0; i < space.size(); ++i) {
     const FitParameter& p = space[i];
     const double v = p.value(u[i]);
+    if (!p.times_per_normal_load.empty()) {
+      products.emplace_back(&p, v);
+      continue;
+    }
     switch (p.target) {
       case FitParameter::Target::mu_s: mu_s_read = v; break;
       case FitParameter::Target::mu_k_ratio: ratio = v; break;
@@ -132,6 +138,8 @@ void apply(const std::vector<FitParameter>& space, const std::vector<double>& u,
       case FitParameter::Target::effect: s.model.set(p.effect, p.name, v); break;
     }
   }
+  for (const auto& [p, product] : products)
+    s.model.set(p->effect, p->name, product * s.rig.normal_load_N / s.model.get(p->effect, p->times_per_normal_load));
   if (fit_zeta) set_damping_ratio(s.rig, zeta);  // after k and M, whatever their order in the space
   if (mu_s_read >= 0.0) s.model.baseline.mu_s = mu_s_read / reading_gain(s.model);  // after the gain
   if (!s.model.baseline.kinetic) s.model.baseline.mu_k = std::min(ratio, 1.0) * s.model.baseline.mu_s;
@@ -152,7 +160,12 @@ double current(const FitParameter& p, const FitSetup& s) {
 std::vector<double> coordinates(const std::vector<FitParameter>& space, const FitSetup& s, bool inside) {
   std::vector<double> u;
   for (const FitParameter& p : space) {
-    const double v = p.target == FitParameter::Target::mu_s ? s.model.baseline.mu_s * reading_gain(s.model) : current(p, s);
+    double v = p.target == FitParameter::Target::mu_s ? s.model.baseline.mu_s * reading_gain(s.model) : current(p, s);
+    if (!p.times_per_normal_load.empty()) {
+      FitParameter partner = p;
+      partner.name = p.times_per_normal_load;
+      v *= current(partner, s) / s.rig.normal_load_N;
+    }
     const bool ratio = p.target == FitParameter::Target::mu_k_ratio;
     u.push_back(p.coordinate(ratio ? (s.model.baseline.mu_s > 0.0 ? v / s.model.baseline.mu_s : 1.0) : v, inside));
   }

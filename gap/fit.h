@@ -28,6 +28,9 @@ struct FitParameter {
   bool log = false;
   int effect_index = 0;
   bool stated_constant = false;  // a rig constant the bundle gives with an uncertainty, refined within it
+  // An effect parameter searched as its product with this one of the same effect per normal load
+  // (rig::FitRange::times_per_normal_load): value() and coordinate() are that product's.
+  std::string times_per_normal_load;
 
   double value(double u) const {
     const double w = std::clamp(u - 1.0, 0.0, 1.0);

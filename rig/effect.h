@@ -29,6 +29,11 @@ namespace tribo::rig {
 struct FitRange {
   double lower = 0.0, upper = 0.0;
   bool log = false;
+  // Named: the search runs over this parameter times that one of the same effect, divided by the
+  // rig's normal load (a friction coefficient; lower and upper bound it), in place of the parameter
+  // itself. For a pair whose product the data fix and whose ratio they see only weakly (a hump's
+  // height and its speed), the search then moves along the valley on one coordinate.
+  std::string times_per_normal_load = {};
 };
 
 // A named, bounded, documented parameter.

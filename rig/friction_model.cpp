@@ -111,7 +111,8 @@ std::vector<EffectInfo> build_catalogue() {
       {"thermal_thinning",
        "viscous traction c0 U exp(-U/U_T): viscosity falls as the film heats, a humped friction-speed curve",
        "thesis (3.2.3)-(3.2.5), (5.2.1)-(5.2.2), Fig 5.2.8",
-       {{"traction_coefficient_N_s_per_m", "N s/m", 300.0, 0.0, 1e5, "c0 = eta0 A / h_eff of the boundary film", FitRange{0.1, 1e5, true}},
+       {{"traction_coefficient_N_s_per_m", "N s/m", 300.0, 0.0, 1e5, "c0 = eta0 A / h_eff of the boundary film",
+         FitRange{3e-4, 3.0, true, "thermal_speed_m_per_s"}},  // searched as c0 U_T / W = e x the hump's peak mu
         {"thermal_speed_m_per_s", "m/s", 0.0254, 1e-4, 10.0, "speed of the traction maximum, 1/(gamma theta); thesis 1 in/s",
          FitRange{1e-4, 10.0, true}}}},
       {"instrument",
