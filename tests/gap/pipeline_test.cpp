@@ -85,6 +85,33 @@ TEST(Pipeline, WithAnInstrumentTheStaticCoordinateIsTheReadingSoTheGainMovesOnly
   EXPECT_NEAR(back.model.baseline.mu_k / back.model.baseline.mu_s, 0.2 / 0.3, 1e-12);
 }
 
+// Thermal thinning's hump F = c0 U exp(−U/U_T) peaks at c0 U_T / e (rig/effects/thermal_thinning.h).
+// Its traction coefficient is searched as c0 U_T / W (FitRange::times_per_normal_load): at W = 50 N,
+// c0 = 700 N s/m and U_T = 0.03 m/s that coordinate is 0.42 (= e × the peak μ 0.1545), coordinates()
+// inverts apply(), and moving U_T's coordinate alone keeps the hump's height while c0 follows.
+TEST(Pipeline, ThermalThinningIsSearchedAlongItsHumpSoMovingTheSpeedKeepsTheHeight) {
+  rig::RigParameters r;
+  r.normal_load_N = 50.0;
+  FitSetup s{r, rig::coulomb(0.3, 0.2)};
+  s.model.add("thermal_thinning");
+  s.model.set("thermal_thinning", "traction_coefficient_N_s_per_m", 700.0);
+  s.model.set("thermal_thinning", "thermal_speed_m_per_s", 0.03);
+  const std::vector<FitParameter> space = effect_parameters("thermal_thinning");
+  ASSERT_EQ(space.size(), 2u);
+  ASSERT_EQ(space[0].name, "traction_coefficient_N_s_per_m");
+  std::vector<double> u = coordinates(space, s, false);
+  EXPECT_NEAR(space[0].value(u[0]), 700.0 * 0.03 / 50.0, 1e-12);
+  FitSetup back{r, rig::coulomb(0.3, 0.2)};
+  back.model.add("thermal_thinning");
+  apply(space, u, back);
+  EXPECT_NEAR(back.model.get("thermal_thinning", "traction_coefficient_N_s_per_m"), 700.0, 1e-9);
+  EXPECT_NEAR(back.model.get("thermal_thinning", "thermal_speed_m_per_s"), 0.03, 1e-15);
+  u[1] = space[1].coordinate(0.06, false);
+  apply(space, u, back);
+  EXPECT_NEAR(back.model.get("thermal_thinning", "traction_coefficient_N_s_per_m"), 350.0, 1e-9);
+  EXPECT_NEAR(back.model.get("thermal_thinning", "thermal_speed_m_per_s"), 0.06, 1e-15);
+}
+
 // Calibration alone: μs recovered from static points to 1 % (each point's noise is 1 % of μk W,
 // averaged over the points), and the calibrated baseline fits the training points at least as
 // well as the truth does (within 1 %: the truth lies in the model's family, so a calibration that
