@@ -150,6 +150,7 @@ nlohmann::json homogenise_into(const HomogeniseRun& run, const std::filesystem::
   const std::filesystem::path& dir = out;
   const std::filesystem::path patches = dir / "patches";
   make_output_dir(patches);
+  remove_previous_results(dir, {"law.json", "stribeck.csv", "area.csv", "stribeck.png", "area.png"});
   const auto start = std::chrono::steady_clock::now();
   const std::string hash = config_hash(config), key = cache_key(hash, run.input_files);
   const homogenise::HomogeniseOptions& o = run.options;

@@ -123,6 +123,15 @@ void make_output_dir(const std::filesystem::path& dir) {
   if (!writable) throw InputError(dir.string() + ": output directory is not writable");
 }
 
+void remove_previous_results(const std::filesystem::path& dir, std::initializer_list<const char*> names) {
+  for (const char* name : names)
+    for (const std::filesystem::path& f : {dir / name, csv_provenance_path(dir / name)}) {
+      std::error_code ec;
+      std::filesystem::remove(f, ec);
+      if (ec) throw std::runtime_error(f.string() + ": cannot remove the previous run's result: " + ec.message());
+    }
+}
+
 Progress::Progress(std::string label, int total)
     : label_(std::move(label)), total_(total), tty_(isatty(STDERR_FILENO) != 0),
       start_(std::chrono::steady_clock::now()) {}

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,11 @@ std::filesystem::path shipped_file(const std::string& installed, const std::stri
 
 // Creates DIR (and parents); an error names DIR.
 void make_output_dir(const std::filesystem::path& dir);
+
+// Removes an earlier run's results DIR/NAME (and a CSV's provenance beside it) before a run that
+// keeps its caches in DIR starts, so that a run which then fails leaves no result from another
+// config beside them. An error names the file.
+void remove_previous_results(const std::filesystem::path& dir, std::initializer_list<const char*> names);
 
 // "[#####.....] 12/40 label" on stderr when it is a terminal, a line per 10 % otherwise.
 class Progress {

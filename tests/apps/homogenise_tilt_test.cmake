@@ -54,6 +54,8 @@ if(NOT crown_ok EQUAL 0)
   message(FATAL_ERROR "thermal_crown_bound_m does not follow (1 + ν) α μ W U / (4π k) in ${WORK}/slight")
 endif()
 
+# An earlier run's results in the same folder go before the run starts: a failed run leaves none.
+file(COPY ${WORK}/slight/law.json ${WORK}/slight/stribeck.csv DESTINATION ${WORK}/steep)
 homogenise_tilted(steep 0.009)
 if(NOT status EQUAL 2)
   message(FATAL_ERROR "a face touching on a strip only should exit 2, got ${status}: ${err}")
@@ -66,5 +68,8 @@ foreach(part "steep.toml" "normal_load_N = 93.86 N exceeds the solid load at the
   endif()
 endforeach()
 if(EXISTS ${WORK}/steep/law.json)
-  message(FATAL_ERROR "no law.json should be written when the face cannot carry the load")
+  message(FATAL_ERROR "no law.json should be left when the face cannot carry the load")
+endif()
+if(EXISTS ${WORK}/steep/stribeck.csv)
+  message(FATAL_ERROR "an earlier run's stribeck.csv should be removed when the run starts")
 endif()
