@@ -145,6 +145,15 @@ void apply(const std::vector<FitParameter>& space, const std::vector<double>& u,
   if (!s.model.baseline.kinetic) s.model.baseline.mu_k = std::min(ratio, 1.0) * s.model.baseline.mu_s;
 }
 
+namespace {
+// An effect parameter's value in `s`: the model's, or the catalogue default when the model lacks the effect.
+double effect_value(const FitSetup& s, const std::string& effect, const std::string& name) {
+  rig::FrictionModel m = s.model;
+  m.add(effect);
+  return m.get(effect, name);
+}
+}  // namespace
+
 double current(const FitParameter& p, const FitSetup& s) {
   switch (p.target) {
     case FitParameter::Target::mu_s: return s.model.baseline.mu_s;
@@ -152,20 +161,14 @@ double current(const FitParameter& p, const FitSetup& s) {
     case FitParameter::Target::rig: return rig_value(s.rig, p.name);
     case FitParameter::Target::effect: break;
   }
-  rig::FrictionModel m = s.model;
-  m.add(p.effect);
-  return m.get(p.effect, p.name);
+  return effect_value(s, p.effect, p.name);
 }
 
 std::vector<double> coordinates(const std::vector<FitParameter>& space, const FitSetup& s, bool inside) {
   std::vector<double> u;
   for (const FitParameter& p : space) {
     double v = p.target == FitParameter::Target::mu_s ? s.model.baseline.mu_s * reading_gain(s.model) : current(p, s);
-    if (!p.times_per_normal_load.empty()) {
-      FitParameter partner = p;
-      partner.name = p.times_per_normal_load;
-      v *= current(partner, s) / s.rig.normal_load_N;
-    }
+    if (!p.times_per_normal_load.empty()) v *= effect_value(s, p.effect, p.times_per_normal_load) / s.rig.normal_load_N;
     const bool ratio = p.target == FitParameter::Target::mu_k_ratio;
     u.push_back(p.coordinate(ratio ? (s.model.baseline.mu_s > 0.0 ? v / s.model.baseline.mu_s : 1.0) : v, inside));
   }
