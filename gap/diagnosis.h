@@ -37,14 +37,16 @@
 //     A nested pair is judged with each at its best: when thermal thinning (which is viscous
 //     friction as U_T → ∞) fits train better, viscous friction is refined again from its projection.
 //  4. Verdict: the simplest earning candidate, unless one with more parameters has decisive
-//     evidence over it; else "none". Confidence: share of bootstrap resamples of the held-out
+//     evidence over it; else "none" — or, above `unexplained_floors` floors, the simplest candidate
+//     that halves the gap's excess over the floor, named tentatively (verdict.h decide).
+//     Confidence: share of bootstrap resamples of the held-out
 //     units that give the same verdict, with the baseline and the leading candidates refitted on
 //     redrawn training data.
 //
 // Open world. The data's own noise (Item::noise, compare.h) gives the *noise floor*: the gap of
 // the item standard errors, floor = mean_o sqrt(mean_{i in o} (noise_i / s_o)²) over held-out —
 // what a model right in every mechanism would still leave. A gap above
-// `unexplained_floors` floors that no earning candidate halves (its excess over the floor,
+// `unexplained_floors` floors that no candidate halves (its excess over the floor,
 // sqrt(gap² − floor²)) is reported as "unexplained" with the remaining gap in floors and where it
 // lies — rather than naming the least bad catalogue effect.
 #pragma once

@@ -30,8 +30,9 @@ struct DiagnosisOptions {
   int starts = 3;                      // fits per candidate: from the best grid points (else the defaults, then random points)
   int max_iterations = 12;             // Levenberg-Marquardt iterations per start
   FitWeights fit_weights = FitWeights::likelihood;
-  // A held-out gap above this many noise floors is a real disagreement: if no earning candidate
-  // halves its excess over the floor, the verdict is "unexplained". The floor holds noise only;
+  // A held-out gap above this many noise floors is a real disagreement: if no candidate halves its
+  // excess over the floor, the verdict is "unexplained" (one that halves it without earning is
+  // named tentatively). The floor holds noise only;
   // a model right in every mechanism but told rig constants a few per cent off (the independent
   // generator's controls: k, M, W, r off by 3-10 %) leaves about 3 floors, which must stay "none".
   double unexplained_floors = 5.0;
@@ -101,6 +102,9 @@ struct Candidate {
 struct Verdict {
   std::vector<std::string> effects;  // empty: "none" or "unexplained"
   bool unexplained = false;          // the gap stays well above the noise floor whatever is added
+  // Named only because it halves the gap's excess over the floor where no candidate earned its
+  // parameters (verdict.h Decision::tentative); the report says so and names the others that do.
+  bool tentative = false;
   double heldout_gap_before = 0.0, heldout_gap_after = 0.0, heldout_gap_after_std = 0.0;
   double noise_floor = 0.0;          // held-out gap of the data's own noise (0: the data cannot tell)
   double remaining_floors = 0.0;     // heldout_gap_after / noise_floor (NaN without a floor)

@@ -145,6 +145,7 @@ Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singl
 struct Choice {
   int index = -1;
   bool unexplained = false;
+  bool tentative = false;  // Decision::tentative
   std::vector<std::string> indistinguishable;
 };
 Choice choose(const FitProblem& p, const Baseline& b, const std::vector<Candidate>& candidates, int comparisons, double noise_floor);

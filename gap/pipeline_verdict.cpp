@@ -98,6 +98,7 @@ Choice choose(const FitProblem& p, const Baseline& b, const std::vector<Candidat
   Choice out;
   out.index = decision.index;
   out.unexplained = decision.unexplained;
+  out.tentative = decision.tentative;
   for (int k : indistinguishable(standing, decision.index, p.held_m))
     out.indistinguishable.push_back(verdict_name(candidates[static_cast<std::size_t>(k)].effects));
   return out;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "gap/discriminate.h"
+#include "gap/verdict.h"
 #include "numerics/format.h"
 #include "numerics/json_numbers.h"
 
@@ -66,8 +67,10 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
   if (d.verdict.noise_floor > 0.0)
     std::snprintf(floor_text, sizeof floor_text, " (%.1f noise floors; the data's own noise leaves %.3g)", d.verdict.remaining_floors,
                   d.verdict.noise_floor);
-  const std::string closest = d.candidates.empty() ? std::string("-") : verdict_name(d.candidates.front().effects);
-  const double closest_gap = d.candidates.empty() ? d.verdict.heldout_gap_before : d.candidates.front().heldout_gap_after;
+  const auto nearest = std::min_element(d.candidates.begin(), d.candidates.end(),
+                                         [](const Candidate& a, const Candidate& b) { return a.heldout_gap_after < b.heldout_gap_after; });
+  const std::string closest = nearest == d.candidates.end() ? std::string("-") : verdict_name(nearest->effects);
+  const double closest_gap = nearest == d.candidates.end() ? d.verdict.heldout_gap_before : nearest->heldout_gap_after;
   if (chosen) {
     std::string params;
     for (const auto& [k, v] : chosen->params)
@@ -84,6 +87,17 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   confidence_text(d.verdict.confidence).c_str(), top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
                   top ? 100.0 * top->share : 0.0);
     std::string text = buf;
+    if (d.verdict.tentative) {
+      std::string others;
+      for (const Candidate& c : d.candidates)
+        if (&c != chosen && halves_excess(c.heldout_gap_after, d.verdict.heldout_gap_before, d.verdict.noise_floor))
+          others += (others.empty() ? "; so do " : ", ") + verdict_name(c.effects) + " (" + numerics::fmt(c.heldout_gap_after, "%.3g") + ")";
+      std::snprintf(buf, sizeof buf,
+                    " A tentative answer: it does not earn its parameters on the held-out likelihood (%+.1f ± %.1f nats over the "
+                    "baseline), nor does any candidate; it is the simplest that halves the gap's excess over the noise floor",
+                    chosen->evidence_nats, chosen->evidence_se_nats);
+      text += buf + others + ".";
+    }
     if (!d.verdict.alike_mechanisms.empty())
       text += " Runs at constant speed and one normal load cannot tell its mechanism from " +
               std::string(d.verdict.alike_mechanisms.size() > 1 ? "those of " : "that of ") + join(d.verdict.alike_mechanisms, ", ") +
@@ -175,6 +189,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"refitted_in_resamples", d.verdict.refitted},
                   {"indistinguishable_from", d.verdict.indistinguishable},
                   {"alike_mechanisms", d.verdict.alike_mechanisms},
+                  {"tentative", d.verdict.tentative},
                   {"noise_floor", d.verdict.noise_floor},
                   {"remaining_gap_in_floors", numerics::finite_or_null(d.verdict.remaining_floors)},
                   {"remaining_where", d.verdict.remaining_where},

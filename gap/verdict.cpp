@@ -202,7 +202,17 @@ Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& s
   const auto real = [&](double g) { return beyond_noise(g, floor, o); };
   if (k >= 0 && (!real(st[static_cast<std::size_t>(k)].heldout_gap) || halves_excess(st[static_cast<std::size_t>(k)].heldout_gap, gap_before, floor)))
     return {k, false};
-  return {-1, real(gap_before)};
+  if (!real(gap_before)) return {-1, false};
+  int simplest = -1;
+  for (std::size_t i = 0; i < cs.size(); ++i) {
+    if (!halves_excess(st[i].heldout_gap, gap_before, floor)) continue;
+    const auto s = static_cast<std::size_t>(simplest);
+    if (simplest < 0 || cs[i].extra_parameters < cs[s].extra_parameters ||
+        (cs[i].extra_parameters == cs[s].extra_parameters && st[i].heldout_gap < st[s].heldout_gap))
+      simplest = static_cast<int>(i);
+  }
+  if (simplest >= 0) return {simplest, false, true};
+  return {-1, true};
 }
 
 std::vector<Localization> localize(const std::vector<Item>& items, const std::vector<double>& r) {

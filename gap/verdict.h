@@ -120,7 +120,7 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
 std::vector<int> indistinguishable(const std::vector<Standing>& st, int chosen, const Multiplicity& m);
 
 // A held-out gap the data's noise cannot account for: above unexplained_floors noise floors. The
-// verdict calls such a gap `unexplained` when no earning candidate halves it (decide), and only
+// verdict calls such a gap `unexplained` when no candidate halves it (decide), and only
 // such a gap is worth a pair (pipeline.h pair).
 inline bool beyond_noise(double gap, double noise_floor, const DiagnosisOptions& o) { return gap > o.unexplained_floors * noise_floor; }
 
@@ -132,11 +132,16 @@ inline bool halves_excess(double after, double before, double floor) {
 }
 
 // The verdict rule with the open world: `index` ≥ 0 names a candidate; else `unexplained` when
-// the held-out gap lies above unexplained_floors noise floors and no earning candidate halves its
-// excess over the floor, else "none". Without a floor nothing is called unexplained.
+// the held-out gap lies above unexplained_floors noise floors and no candidate halves its excess
+// over the floor, else "none". Without a floor nothing is called unexplained.
+// When no earning candidate explains a gap beyond the noise but some candidate halves its excess
+// all the same, "look outside the catalogue" would be false advice: the simplest such candidate
+// (fewest extra parameters, then the smallest held-out gap) is named, `tentative` — its likelihood
+// did not decide it, so evidence among such candidates does not order them either.
 struct Decision {
   int index = -1;
   bool unexplained = false;
+  bool tentative = false;  // named for halving the excess, without earning its parameters
 };
 Decision decide(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m, const DiagnosisOptions& o,
                 double gap_before, double floor);
