@@ -64,6 +64,35 @@ TEST(Report, NamedVerdictGivesTheEffectItsParametersAndTheShrink) {
   EXPECT_TRUE(report_json(d)["verdict"]["confidence"].is_null());
 }
 
+// A tentative verdict (verdict.h Decision::tentative) says it did not earn on likelihood, with its
+// evidence, and names the other candidates that halve the excess: 0.08 does (excess 0.078 ≤ half of
+// 0.339), 0.25 does not; "closest" is the smallest held-out gap, not the first in the ranking.
+TEST(Report, ATentativeVerdictSaysItDidNotEarnAndWhatElseHalvesTheGap) {
+  Diagnosis d = made_up();
+  d.candidates.front().evidence_nats = -24.4;
+  d.candidates.front().evidence_se_nats = 15.0;
+  Candidate film, lift;
+  film.effects = {"squeeze_film"}, film.heldout_gap_after = 0.08;
+  lift.effects = {"hydrodynamic_lift"}, lift.heldout_gap_after = 0.25;
+  d.candidates.push_back(film);
+  d.candidates.push_back(lift);
+  d.verdict.effects = {"slip_transient"};
+  d.verdict.tentative = true;
+  d.verdict.heldout_gap_after = 0.157;
+  d.verdict.remaining_floors = 0.157 / 0.02;
+  const std::string s = conclusion(d, &d.candidates.front());
+  EXPECT_NE(s.find("A tentative answer: it does not earn its parameters on the held-out likelihood (-24.4 ± 15.0 nats over the baseline), "
+                   "nor does any candidate; it is the simplest that halves the gap's excess over the noise floor; so do squeeze_film (0.08)."),
+            std::string::npos)
+      << s;
+  EXPECT_EQ(s.find("hydrodynamic_lift"), std::string::npos) << s;
+  EXPECT_TRUE(report_json(d)["verdict"]["tentative"].get<bool>());
+  d.verdict = {};
+  d.verdict.unexplained = true;
+  d.verdict.noise_floor = 0.02;
+  EXPECT_NE(conclusion(d, nullptr).find("closest squeeze_film at 0.08"), std::string::npos);
+}
+
 TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {
   Diagnosis d = made_up();
   d.verdict.unexplained = true;
