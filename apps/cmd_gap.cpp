@@ -369,6 +369,7 @@ void run_selftest(const SelftestArgs& args) {
                             {"named_or_indistinguishable_fraction", numerics::finite_or_null(sum.named_or_indistinguishable_fraction)},
                             {"mean_names_per_verdict", numerics::finite_or_null(sum.mean_names_per_verdict)},
                             {"deciding_proposals", sum.deciding_proposals}, {"deciding_proposals_for_truth", sum.deciding_proposals_for_truth},
+                            {"tentative_verdicts", sum.tentative_verdicts}, {"tentative_right", sum.tentative_right},
                             {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
                             {"confusion", sum.confusion}};
   j["reliability"] = nlohmann::json::array();
@@ -399,6 +400,9 @@ void run_selftest(const SelftestArgs& args) {
     if (sum.deciding_proposals)
       std::printf("  proposed tests that decide (>= %g floors), run on the truth: %d of %d came out for it\n", gap::kDecidingFloors,
                   sum.deciding_proposals_for_truth, sum.deciding_proposals);
+    if (sum.tentative_verdicts)
+      std::printf("  tentative verdicts (a candidate that halves the gap without earning): %d of %d right\n", sum.tentative_right,
+                  sum.tentative_verdicts);
     for (const auto& [e, s] : sum.mean_shrink) {
       std::printf("  mean gap shrink, %s: held-out %.0f %%", e.c_str(), 100.0 * s);
       if (const auto t = sum.mean_test_shrink.find(e); t != sum.mean_test_shrink.end()) std::printf(", test block %.0f %%", 100.0 * t->second);

@@ -264,12 +264,18 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
 
 }  // namespace
 
+bool SelftestRow::tentative() const {
+  const auto it = std::find_if(candidates.begin(), candidates.end(), [&](const CandidateFigures& k) { return k.effect == verdict; });
+  return it != candidates.end() && !it->earns;
+}
+
 SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
   SelftestSummary out;
   int effect_right = 0, controls_none = 0, visible_right = 0, among_named = 0, names = 0;
   std::map<std::string, std::pair<double, int>> shrink, test_shrink;
   for (const SelftestRow& row : rows) {
     ++out.confusion[row.c.true_effect][row.verdict];
+    if (row.tentative()) ++out.tentative_verdicts, out.tentative_right += row.correct;
     if (row.c.true_effect == "none") {
       ++out.controls, controls_none += row.correct;
     } else {

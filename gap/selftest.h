@@ -97,6 +97,9 @@ struct SelftestRow {
   std::vector<std::string> alike_mechanisms;        // Verdict::alike_mechanisms (empty in journals from before)
   std::vector<ProposalCheck> proposal_checks;       // pairs that hold the truth (empty in journals from before)
   std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
+  // Named without earning its parameters (Verdict::tentative), read from the verdict's candidate
+  // figures; false for none, unexplained and journals without candidates.
+  bool tentative() const;
 };
 
 // An effect is visible in its data when the calibrated baseline misses the held-out items by more
@@ -125,6 +128,8 @@ struct SelftestSummary {
   // Proposed tests run on the truth (SelftestRow::proposal_checks) whose proposed separation was
   // two floors or more — the ones the conclusion names — and how many of them came out for the truth.
   int deciding_proposals = 0, deciding_proposals_for_truth = 0;
+  // Tentative verdicts (SelftestRow::tentative) of effect cases and controls, and how many were right.
+  int tentative_verdicts = 0, tentative_right = 0;
   double controls_none_fraction = 0.0;
   std::map<std::string, double> mean_shrink;  // per true effect, of correctly identified cases: 1 − after/before
   std::map<std::string, double> mean_test_shrink;  // the same on the test block (cases that have one)

@@ -90,6 +90,25 @@ TEST(SelftestSummary, ProposedTestsCountWhenTheyDecideAndForTheTruthWhenItCameNe
   EXPECT_EQ(s.deciding_proposals_for_truth, 1);
 }
 
+// A verdict whose candidate did not earn is tentative (verdict.h Decision::tentative); the summary
+// counts such verdicts and the right ones among them, controls included; none is never tentative.
+TEST(SelftestSummary, TentativeVerdictsAreCountedFromTheVerdictsCandidate) {
+  std::vector<SelftestRow> rows{row("rate_dependent_static", "rate_dependent_static", 0.04, kIndependentGenerator),
+                                row("squeeze_film", "rate_dependent_static", 0.1, kIndependentGenerator),
+                                row("slip_transient", "slip_transient", 0.9, kIndependentGenerator),
+                                row("none", "none", 0.7, kIndependentGenerator)};
+  rows[0].candidates = {{"squeeze_film", 1.9, 16.3, 0.042, false}, {"rate_dependent_static", -24.4, 15.0, 0.089, false}};
+  rows[1].candidates = {{"rate_dependent_static", -3.0, 5.0, 0.02, false}};
+  rows[2].candidates = {{"slip_transient", 60.0, 6.0, 0.005, true}};
+  rows[3].candidates = {{"squeeze_film", 1.0, 2.0, 0.01, false}};
+  EXPECT_TRUE(rows[0].tentative());
+  EXPECT_FALSE(rows[2].tentative());
+  EXPECT_FALSE(rows[3].tentative());
+  const SelftestSummary s = summarise(rows);
+  EXPECT_EQ(s.tentative_verdicts, 2);
+  EXPECT_EQ(s.tentative_right, 1);
+}
+
 TEST(SelftestSummary, ReliabilityBinsCoverZeroToOneInclusive) {
   const std::vector<SelftestRow> rows{row("a", "a", 0.0, kRigGenerator), row("a", "b", 0.5, kRigGenerator), row("a", "a", 0.89, kRigGenerator),
                                       row("a", "a", 0.9, kRigGenerator), row("a", "b", 1.0, kIndependentGenerator)};
