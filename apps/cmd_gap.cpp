@@ -248,8 +248,8 @@ void run_diagnose(const DiagnoseArgs& args) {
   // The overlay shows the verdict's candidate (not merely the best-ranked one).
   if (const gap::Candidate* chosen = gap::verdict_candidate(d)) comparison.predict(chosen->rig, chosen->model, args.seed, &after);
   write_overlays(dir / "overlay.csv", bundle, before, after, rig.normal_load_N, provenance);
-  std::printf("%s\nverdict: %s (held-out gap %.4g -> %.4g, confidence %s) -> %s\n", d.verdict.conclusion.c_str(),
-              gap::verdict_name(d.verdict).c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
+  std::printf("%s\nverdict: %s%s (held-out gap %.4g -> %.4g, confidence %s) -> %s\n", d.verdict.conclusion.c_str(),
+              gap::verdict_name(d.verdict).c_str(), d.verdict.tentative ? ", tentative" : "", d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
               gap::confidence_text(d.verdict.confidence).c_str(), args.out.c_str());
   if (tb) {
     std::printf("test block %s: gap %.4g -> %.4g (shrink %.0f %%)", args.test.c_str(), tb->gap_before, tb->gap_after, 100.0 * tb->shrink());
