@@ -90,6 +90,11 @@ void run_ehl(const EhlArgs& args) {
   if (!solved.converged)
     throw std::runtime_error(solved.mixed ? "mixed-lubrication solve did not converge: " + solved.mixed->message
                                           : "EHL solve did not converge (residual " + fmt(f.residual, "%.3g") + "): " + f.message);
+  // The surfaces' flash temperature is Jaeger's fast-source limit (moving_heat_source.h): say when
+  // the slower surface is too slow for it (it then overstates the rise).
+  if (j["surface_peclet_number"].is_number() && j["surface_peclet_number"].get<double>() < 5.0)
+    std::fprintf(stderr, "tribo: warning: the slower surface's Peclet number is %s, below the fast-source model's 5: its flash temperature is overstated\n",
+                 fmt(j["surface_peclet_number"].get<double>(), "%.3g").c_str());
   if (args.plot && run_plot_script("ehl", args.out) != 0)
     std::fprintf(stderr, "tribo: warning: plotting failed (needs python3-matplotlib)\n");
 }
@@ -99,7 +104,7 @@ void run_ehl(const EhlArgs& args) {
 void add_ehl_command(CLI::App& app) {
   auto args = std::make_shared<EhlArgs>();
   CLI::App* cmd = app.add_subcommand("ehl", "Solve an elastohydrodynamic line or point contact: film, pressure and traction (TOML config)");
-  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime by load sharing or [profile] (a waviness or a measured trace; on a ball, ridges across the track) for it node by node, on a ball [surface] (a generated or measured height map), [material] hardness_Pa with [profile] (the pressure cap where the surfaces touch), [solver])")->required();
+  cmd->add_option("config", args->config, "TOML config ([contact], [lubricant], optional [roughness] for the mixed regime by load sharing or [profile] (a waviness or a measured trace; on a ball, ridges across the track) for it node by node, on a ball [surface] (a generated or measured height map), [material] hardness_Pa with [profile] (the pressure cap where the surfaces touch), [solids] the bodies' thermal constants for their surfaces' flash temperature, [solver])")->required();
   cmd->add_option("--out", args->out, "output directory (ehl.json, x_m.npy, pressure_Pa.npy, film_m.npy; a point contact y_m.npy too)")->capture_default_str();
   CLI::Option* plot = cmd->add_flag("--plot", args->plot, "also draw ehl.png: pressure and film along the contact (python3-matplotlib)");
   add_summary_only_flag(cmd, args->summary_only, "ehl.json")->excludes(plot);

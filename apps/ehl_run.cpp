@@ -241,6 +241,25 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   } else {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
   }
+  // The surfaces' flash temperature (ehl_traction.h, moving_heat_source.h): both of one solid, on
+  // when [solids] is given; the heat reaches them through the film, so it needs the oil's conductivity.
+  if (auto s = root.table("solids")) {
+    lub::HeatedSolid solid;
+    solid.thermal_conductivity_W_per_m_K = s->required_number("thermal_conductivity_W_per_m_K", Range::positive);
+    solid.density_kg_per_m3 = s->required_number("density_kg_per_m3", Range::positive);
+    solid.specific_heat_J_per_kg_K = s->required_number("specific_heat_J_per_kg_K", Range::positive);
+    if (!(run.heating.thermal_conductivity_W_per_m_K > 0.0))
+      s->fail("thermal_conductivity_W_per_m_K",
+              "the surfaces warm by the heat the film passes them: give [lubricant] thermal_conductivity_W_per_m_K too");
+    if (!(std::abs(run.sliding_speed_m_per_s) < 2.0 * run.contact.mean_speed_m_per_s))
+      s->fail("thermal_conductivity_W_per_m_K", "the surfaces' heating needs both surfaces moving through the contact: the sliding speed " +
+                                                    numerics::shortest(run.sliding_speed_m_per_s) + " m/s must stay below twice the mean speed " +
+                                                    numerics::shortest(run.contact.mean_speed_m_per_s) +
+                                                    " m/s (a surface at rest sees a stationary heat source, outside the fast-source model)");
+    s->finish();
+    run.heating.surfaces = solid;
+    run.heating.mean_speed_m_per_s = run.contact.mean_speed_m_per_s;
+  }
   if (auto r = root.table("roughness")) {
     EhlRun::Roughness rough;
     rough.summits.summit_density_per_m2 = r->required_number("summit_density_per_m2", Range::positive);
@@ -394,7 +413,11 @@ nlohmann::json lubricant_inputs(const EhlRun& run) {
           {"compressible", run.lubricant.compressible},
           {"eyring_stress_Pa", std::isinf(run.eyring_stress_Pa) ? nlohmann::json("newtonian") : nlohmann::json(run.eyring_stress_Pa)},
           {"thermal_conductivity_W_per_m_K", run.heating.thermal_conductivity_W_per_m_K},
-          {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K}};
+          {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K},
+          {"surfaces", run.heating.surfaces ? nlohmann::json{{"thermal_conductivity_W_per_m_K", run.heating.surfaces->thermal_conductivity_W_per_m_K},
+                                                             {"density_kg_per_m3", run.heating.surfaces->density_kg_per_m3},
+                                                             {"specific_heat_J_per_kg_K", run.heating.surfaces->specific_heat_J_per_kg_K}}
+                                            : nlohmann::json(nullptr)}};
 }
 
 nlohmann::json roughness_inputs(const EhlRun::Roughness& r) {
@@ -447,9 +470,11 @@ nlohmann::json mixed_json(const Result& m, const MixedNumbers& n, const std::str
 // a solution: those fields are null then.
 struct TractionNumbers {
   double friction_coefficient, force, max_shear_stress_Pa, max_film_temperature_rise_K;
+  double max_surface_temperature_rise_K, surface_peclet_number;  // written only with [solids]
 };
 template <class Film, class Mixed>
-void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed* mixed, const TractionNumbers& t, const std::string& force_key) {
+void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed* mixed, const TractionNumbers& t, const std::string& force_key,
+                  bool surfaces) {
   j["converged"] = converged;
   j["iterations"] = f.iterations;
   j["continuation_steps"] = f.continuation_steps;
@@ -470,6 +495,9 @@ void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed*
                                    std::string("max_film_temperature_rise_K")})
       j[key] = nullptr;
   }
+  // The surfaces' flash temperature and the smaller of their Péclet numbers (null without [solids]).
+  j["max_surface_temperature_rise_K"] = surfaces && converged ? nlohmann::json(t.max_surface_temperature_rise_K) : nlohmann::json(nullptr);
+  j["surface_peclet_number"] = surfaces && converged ? nlohmann::json(t.surface_peclet_number) : nlohmann::json(nullptr);
 }
 
 // ehl.json's inputs.profile: the waviness, or the measured trace and what the filter kept of it.
@@ -619,7 +647,9 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
   j["linear_solver"] = f.linear_solver;
   j["krylov_iterations"] = f.krylov_iterations;
   film_summary(j, f, out.converged, out.mixed_point ? &*out.mixed_point : nullptr,
-               {t.friction_coefficient, t.force_N, t.max_shear_stress_Pa, t.max_film_temperature_rise_K}, "traction_N");
+               {t.friction_coefficient, t.force_N, t.max_shear_stress_Pa, t.max_film_temperature_rise_K, t.max_surface_temperature_rise_K,
+                t.surface_peclet_number},
+               "traction_N", run.heating.surfaces.has_value());
   const auto g = lub::reference::point_contact_groups(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s,
                                                       run.lubricant.viscosity_Pa_s, run.lubricant.pressure_viscosity_per_Pa);
   j["dimensionless"] = {{"W", g.load}, {"U", g.speed}, {"G", g.material}};
@@ -680,7 +710,9 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
   j["geometry"] = "line";
   j["hertz_half_width_m"] = f.hertz_half_width_m;
   film_summary(j, f, out.converged, out.mixed ? &*out.mixed : nullptr,
-               {t.friction_coefficient, t.force_per_length_N_per_m, t.max_shear_stress_Pa, t.max_film_temperature_rise_K}, "traction_N_per_m");
+               {t.friction_coefficient, t.force_per_length_N_per_m, t.max_shear_stress_Pa, t.max_film_temperature_rise_K,
+                t.max_surface_temperature_rise_K, t.surface_peclet_number},
+               "traction_N_per_m", run.heating.surfaces.has_value());
   const lub::EhlLineContact& c = run.contact;
   const auto g = lub::reference::line_contact_groups(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa,
                                                      c.mean_speed_m_per_s, run.lubricant.viscosity_Pa_s,

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,35 +14,100 @@ namespace tribo::lubrication {
 
 namespace {
 
-// The shear stress at one node: τ = τ0 asinh(η e^{−γΔT(τ)} Δu/(τ0 h)) with ΔT = |τ Δu| h/(12 k),
-// for Δu ≥ 0 (the caller carries the sign). No heating when k = 0; the isothermal stress (with its
-// temperature rise) when γ = 0.
-double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, const FilmHeating& heat, double* rise_K) {
+// The shear stress at one node: τ = τ0 asinh(η e^{−γΔT(τ)} Δu/(τ0 h)) for Δu ≥ 0 (the caller
+// carries the sign), ΔT(τ) = film_rise(τ) the film's mean temperature rise, which grows with τ
+// (Walls below). No heating when `heated` is false; the isothermal stress (with the rise it
+// makes) when γ = 0.
+template <class FilmRise>
+double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, bool heated, double gamma, const FilmRise& film_rise,
+                       double* rise_K) {
   const bool newtonian = std::isinf(tau0);
   const auto stress_at = [&](double temperature_rise_K) {
-    const double newtonian_stress = viscosity_Pa_s * std::exp(-heat.temperature_viscosity_per_K * temperature_rise_K) * du / h;
+    const double newtonian_stress = viscosity_Pa_s * std::exp(-gamma * temperature_rise_K) * du / h;
     return newtonian ? newtonian_stress : tau0 * std::asinh(newtonian_stress / tau0);
   };
-  const auto rise_at = [&](double tau) { return tau * du * h / (12.0 * heat.thermal_conductivity_W_per_m_K); };
-  const double isothermal = stress_at(0.0);
-  if (!(heat.thermal_conductivity_W_per_m_K > 0.0)) {  // no heating modelled
+  if (!heated) {
     *rise_K = 0.0;
-    return isothermal;
+    return stress_at(0.0);
   }
-  if (heat.temperature_viscosity_per_K == 0.0 || isothermal == 0.0) {  // the film heats, its viscosity does not follow
-    *rise_K = rise_at(isothermal);
-    return isothermal;
+  // The stress cannot exceed the one at the rise the walls alone make (τ = 0).
+  const double ceiling = stress_at(film_rise(0.0));
+  if (gamma == 0.0 || ceiling == 0.0) {  // the film heats, its viscosity does not follow
+    *rise_K = film_rise(ceiling);
+    return ceiling;
   }
-  // g(τ) = τ − stress_at(ΔT(τ)) rises from −isothermal at 0 to ≥ 0 at `isothermal`: bisection to
+  // g(τ) = τ − stress_at(ΔT(τ)) rises from −ceiling at 0 to ≥ 0 at the ceiling: bisection to
   // the last bit (each step halves the bracket; 200 steps are far more than 53 bits need).
-  double lo = 0.0, hi = isothermal;
+  double lo = 0.0, hi = ceiling;
   for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
-    (mid - stress_at(rise_at(mid)) < 0.0 ? lo : hi) = mid;
+    (mid - stress_at(film_rise(mid)) < 0.0 ? lo : hi) = mid;
   }
   const double tau = 0.5 * (lo + hi);
-  *rise_K = rise_at(tau);
+  *rise_K = film_rise(tau);
   return tau;
+}
+
+// The two walls of one line of nodes along x (the header's partition): their flash temperatures
+// from the heat handed to them at and upstream of each node; at the bulk temperature without
+// FilmHeating::surfaces. Nodes are visited in increasing x: prepare(i), then settle(i, …) once τ
+// is known.
+class Walls {
+ public:
+  Walls(const std::vector<double>& x_m, double sliding_speed_m_per_s, const FilmHeating& heat) : k_(heat.thermal_conductivity_W_per_m_K) {
+    if (!heat.surfaces) return;
+    const double u1 = heat.mean_speed_m_per_s + 0.5 * sliding_speed_m_per_s, u2 = heat.mean_speed_m_per_s - 0.5 * sliding_speed_m_per_s;
+    first_.emplace(x_m, u1, *heat.surfaces);
+    second_.emplace(x_m, u2, *heat.surfaces);
+    q1_.assign(x_m.size(), 0.0), q2_.assign(x_m.size(), 0.0);
+  }
+  void new_line() {
+    std::fill(q1_.begin(), q1_.end(), 0.0);
+    std::fill(q2_.begin(), q2_.end(), 0.0);
+  }
+  void prepare(std::size_t i) {
+    if (!first_) return;
+    a1_ = first_->upstream_rise_K(i, q1_.data()), a2_ = second_->upstream_rise_K(i, q2_.data());
+    s1_ = first_->own_weight(i), s2_ = second_->own_weight(i);
+  }
+  // The film's mean temperature rise at the prepared node for the heat Q = |τΔu| (W/m²) it makes in a film h.
+  double film_rise_K(double heat_W_per_m2, double h) const {
+    const Split w = split(heat_W_per_m2, h);
+    return 0.5 * (w.t1 + w.t2) + heat_W_per_m2 * h / (12.0 * k_);
+  }
+  // Keep the prepared node's heat (0 and h ignored where the film does not shear).
+  void settle(std::size_t i, double heat_W_per_m2, double h) {
+    if (!first_) return;
+    const Split w = heat_W_per_m2 > 0.0 ? split(heat_W_per_m2, h) : Split{a1_, a2_, 0.0, 0.0};
+    q1_[i] = w.q1, q2_[i] = w.q2;
+    max_rise_K_ = std::max({max_rise_K_, w.t1, w.t2});
+  }
+  double max_surface_rise_K() const { return max_rise_K_; }
+
+ private:
+  struct Split {
+    double t1, t2, q1, q2;
+  };
+  // Wall 1 takes q1 = Q/2 + c D, wall 2 q2 = Q/2 − c D, with c = k/h and D = T2 − T1, T_i = a_i + s_i q_i:
+  // D (1 + c (s1 + s2)) = a2 − a1 + (s2 − s1) Q/2.
+  Split split(double heat, double h) const {
+    if (!first_) return {0.0, 0.0, 0.5 * heat, 0.5 * heat};
+    const double c = k_ / h;
+    const double d = (a2_ - a1_ + (s2_ - s1_) * 0.5 * heat) / (1.0 + c * (s1_ + s2_));
+    const double q1 = 0.5 * heat + c * d, q2 = heat - q1;
+    return {a1_ + s1_ * q1, a2_ + s2_ * q2, q1, q2};
+  }
+  double k_;
+  std::optional<MovingSurface> first_, second_;
+  std::vector<double> q1_, q2_;
+  double a1_ = 0.0, a2_ = 0.0, s1_ = 0.0, s2_ = 0.0, max_rise_K_ = 0.0;
+};
+
+// The smaller Péclet number of the two surfaces over the half-length of the sheared zone [x_lo, x_hi].
+double surface_peclet(const FilmHeating& heat, double sliding_speed_m_per_s, double x_lo, double x_hi) {
+  if (!heat.surfaces || !(x_hi > x_lo)) return 0.0;
+  const double slower = heat.mean_speed_m_per_s - 0.5 * std::abs(sliding_speed_m_per_s);
+  return peclet_number(*heat.surfaces, slower, 0.5 * (x_hi - x_lo));
 }
 
 // The inputs both tractions check; `load` in the unit of `load_unit`.
@@ -59,6 +126,15 @@ void check_traction_inputs(const PiezoviscousLubricant& lubricant, double slidin
     throw std::invalid_argument("EHL traction: the film's thermal conductivity and temperature-viscosity coefficient must be finite and >= 0, got " +
                                 numerics::shortest(heating.thermal_conductivity_W_per_m_K) + " W/(m K) and " +
                                 numerics::shortest(heating.temperature_viscosity_per_K) + " 1/K");
+  if (heating.surfaces) {
+    if (!(heating.thermal_conductivity_W_per_m_K > 0.0))
+      throw std::invalid_argument("EHL traction: the surfaces' heating needs the film's thermal conductivity (the heat reaches them through it)");
+    validate(*heating.surfaces);
+    if (!(std::abs(sliding_speed_m_per_s) < 2.0 * heating.mean_speed_m_per_s))
+      throw std::invalid_argument("EHL traction: the surfaces' heating needs both surfaces moving through the contact, |sliding speed| < 2 × mean speed; got " +
+                                  numerics::shortest(sliding_speed_m_per_s) + " and " + numerics::shortest(heating.mean_speed_m_per_s) +
+                                  " m/s (a surface at rest sees a stationary heat source, outside the fast-source model)");
+  }
 }
 
 // The pressure at and below which a node counts as cavitated: 1e-9 of the peak, the EHL solvers'
@@ -72,16 +148,29 @@ double cavitation_floor_Pa(const std::vector<double>& pressure_Pa) {
 }
 
 // τ at one node of pressure p and film h (0 where the film is cavitated, p ≤ floor), its sign Δu's;
-// where() names the node in the error (formatted only then).
+// the node's heat is handed to `walls` (prepared for this node). where() names the node in the
+// error (formatted only then).
 template <class Where>
 double node_stress_Pa(const PiezoviscousLubricant& lubricant, double p, double floor_Pa, double h, double du, double tau0,
-                      const FilmHeating& heating, double* rise_K, const Where& where) {
+                      const FilmHeating& heating, Walls& walls, std::size_t node, double* rise_K, const Where& where) {
   *rise_K = 0.0;
-  if (!(p > floor_Pa)) return 0.0;  // cavitated (or at the domain's edge)
+  if (!(p > floor_Pa)) {  // cavitated (or at the domain's edge)
+    walls.settle(node, 0.0, h);
+    return 0.0;
+  }
   if (!(h > 0.0)) throw std::invalid_argument("EHL traction: non-positive film " + numerics::shortest(h) + " m at " + where());
-  const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, p).ratio;
-  return (du < 0.0 ? -1.0 : 1.0) * shear_stress_Pa(eta, std::abs(du), h, tau0, heating, rise_K);
+  const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, p).ratio, speed = std::abs(du);
+  const double tau = shear_stress_Pa(eta, speed, h, tau0, heating.thermal_conductivity_W_per_m_K > 0.0, heating.temperature_viscosity_per_K,
+                                     [&](double t) { return walls.film_rise_K(t * speed, h); }, rise_K);
+  walls.settle(node, tau * speed, h);
+  return du < 0.0 ? -tau : tau;
 }
+
+// The x-range of the nodes whose film shears (p above the floor), for the surfaces' Péclet number.
+struct ShearedRange {
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  void add(double x) { lo = std::min(lo, x), hi = std::max(hi, x); }
+};
 
 }  // namespace
 
@@ -94,15 +183,21 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
   EhlTraction out;
   std::vector<double> tau(n, 0.0);
   const double floor_Pa = cavitation_floor_Pa(film.pressure_Pa);
+  Walls walls(film.x_m, sliding_speed_m_per_s, heating);
+  ShearedRange sheared;
   for (std::size_t i = 0; i < n; ++i) {
     double rise_K = 0.0;
-    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], floor_Pa, film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating,
-                            &rise_K, [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
+    walls.prepare(i);
+    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], floor_Pa, film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating, walls,
+                            i, &rise_K, [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
+    if (film.pressure_Pa[i] > floor_Pa) sheared.add(film.x_m[i]);
     out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau[i]));
     out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
   }
   for (std::size_t i = 1; i < n; ++i) out.force_per_length_N_per_m += 0.5 * (tau[i] + tau[i - 1]) * (film.x_m[i] - film.x_m[i - 1]);
   out.friction_coefficient = out.force_per_length_N_per_m / load_per_length_N_per_m;
+  out.max_surface_temperature_rise_K = walls.max_surface_rise_K();
+  out.surface_peclet_number = surface_peclet(heating, sliding_speed_m_per_s, sheared.lo, sheared.hi);
   return out;
 }
 
@@ -116,19 +211,27 @@ EhlPointTraction ehl_point_traction(const EhlPointResult& film, const Piezovisco
   const double cell = (film.x_m[1] - film.x_m[0]) * (film.y_m[1] - film.y_m[0]);
   EhlPointTraction out;
   const double floor_Pa = cavitation_floor_Pa(film.pressure_Pa);
-  for (std::size_t j = 0; j < ny; ++j)
+  Walls walls(film.x_m, sliding_speed_m_per_s, heating);  // each line of nodes along x in turn
+  ShearedRange sheared;
+  for (std::size_t j = 0; j < ny; ++j) {
+    walls.new_line();
     for (std::size_t i = 0; i < nx; ++i) {
       double rise_K = 0.0;
       const std::size_t k = i + nx * j;
+      walls.prepare(i);
       const double tau = node_stress_Pa(lubricant, film.pressure_Pa[k], floor_Pa, film.film_m[k], sliding_speed_m_per_s, eyring_stress_Pa,
-                                        heating, &rise_K, [&] {
+                                        heating, walls, i, &rise_K, [&] {
                                           return "x = " + numerics::shortest(film.x_m[i]) + " m, y = " + numerics::shortest(film.y_m[j]) + " m";
                                         });
+      if (film.pressure_Pa[k] > floor_Pa) sheared.add(film.x_m[i]);
       out.force_N += tau * cell;
       out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau));
       out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
     }
+  }
   out.friction_coefficient = out.force_N / load_N;
+  out.max_surface_temperature_rise_K = walls.max_surface_rise_K();
+  out.surface_peclet_number = surface_peclet(heating, sliding_speed_m_per_s, sheared.lo, sheared.hi);
   return out;
 }
 

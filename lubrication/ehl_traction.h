@@ -8,13 +8,22 @@
 // Above a few τ0 the stress grows only with ln Δu: the flat, slowly falling traction curves of
 // EHL rigs, where the Newtonian film would give a friction coefficient far above one.
 // Heat (optional, FilmHeating): the shear dissipates τΔu/h per unit volume, conducted to both
-// surfaces, which stay at the bulk temperature; across a Couette film the temperature is then
-// parabolic, T − T_wall = (τΔu/(2kh)) z(h − z), its mean over the film ΔT = τΔu h/(12k). The
-// viscosity is taken at that mean, η(p) exp(−γ ΔT) (viscosity.h's exponential temperature law), and
-// τ solves τ = τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)) at each node — one root, as the right side falls
-// with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls: μ(Δu)
-// rises, peaks and falls, the shape of measured EHL traction curves. The surfaces' own flash
-// temperature (Jaeger, viscosity.h) is left out: it would heat the film from outside as well.
+// surfaces; across a Couette film between walls at T1 and T2 the temperature is then
+// T(z) = T1 + (T2 − T1) z/h + (τΔu/(2kh)) z(h − z), its mean over the film
+//   ΔT = (T1 + T2)/2 + τΔu h/(12k).
+// The viscosity is taken at that mean, η(p) exp(−γ ΔT) (viscosity.h's exponential temperature law),
+// and τ solves τ = τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)) at each node — one root, as the right side
+// falls with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls:
+// μ(Δu) rises, peaks and falls, the shape of measured EHL traction curves.
+// The walls stay at the bulk temperature (T1 = T2 = 0 above it) unless FilmHeating::surfaces is set:
+// then each surface warms by its flash temperature, Jaeger's fast moving heat source
+// (moving_heat_source.h), the surfaces passing the contact at u1 = u_m + Δu/2 and u2 = u_m − Δu/2
+// towards increasing x. The film hands wall 1 the heat τΔu/2 + k(T2 − T1)/h per unit area and wall
+// 2 the rest, so the slower, hotter surface passes heat through the film to the faster one. A
+// node's wall temperatures depend only on the heat at and upstream of it, so the nodes are solved
+// from the inlet (along each line of nodes in x for a point contact; heat spreads in y only with
+// the solid's conduction, left out as in the fast-source limit). The thesis §5.2b: heat from more
+// than the film's own shear moves the traction maximum to a lower speed.
 // Left out: the Poiseuille shear (h/2) dp/dx, equal and opposite on the two surfaces, so it adds
 // no net traction to their sum and is small on each beside the Couette term in the loaded zone;
 // the cavitated outlet (p = 0 at the nodes past the film's rupture, where the gap holds striations
@@ -23,8 +32,11 @@
 // coefficient μ = F / w; over a point contact's area F = ∫∫ τ dA (each node its cell), μ = F / W.
 #pragma once
 
+#include <optional>
+
 #include "lubrication/ehl_line.h"
 #include "lubrication/ehl_point.h"
+#include "lubrication/moving_heat_source.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
@@ -33,6 +45,10 @@ namespace tribo::lubrication {
 struct FilmHeating {
   double thermal_conductivity_W_per_m_K = 0.0;  // k of the lubricant (mineral oils ≈ 0.13)
   double temperature_viscosity_per_K = 0.0;     // γ in η ∝ exp(−γ ΔT) (viscosity.h: 0.03 for light mineral oils)
+  // The surfaces' flash temperature: on when `surfaces` is set (then the film's k must be > 0).
+  // Both surfaces are of one solid, moving at u_m ± Δu/2 with u_m = mean_speed_m_per_s.
+  std::optional<HeatedSolid> surfaces;
+  double mean_speed_m_per_s = 0.0;
 };
 
 struct EhlTraction {
@@ -40,11 +56,18 @@ struct EhlTraction {
   double friction_coefficient = 0.0;
   double max_shear_stress_Pa = 0.0;
   double max_film_temperature_rise_K = 0.0;  // the largest mean film temperature rise ΔT (0 isothermal)
+  // With FilmHeating::surfaces: the largest flash temperature rise of either surface, and the
+  // smaller of the two surfaces' Péclet numbers u l/(2κ) over the sheared zone's half-length l
+  // (moving_heat_source.h: the fast-source model wants it above 5). Both 0 without.
+  double max_surface_temperature_rise_K = 0.0;
+  double surface_peclet_number = 0.0;
 };
 
 // Throws std::invalid_argument for a sliding speed that is not finite, an Eyring stress that is
 // not positive (+∞ is the Newtonian film), a non-positive load, negative or non-finite heating
-// constants, or a film with fewer than two nodes or a non-positive film thickness where the
+// constants, surface heating without the film's conductivity, with a bad solid or with a surface
+// that does not move through the contact (|Δu| ≥ 2 u_m: a surface at rest sees a stationary source,
+// outside the fast-source model), or a film with fewer than two nodes or a non-positive film thickness where the
 // pressure is positive.
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
                               double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating = {});
@@ -56,6 +79,8 @@ struct EhlPointTraction {
   double friction_coefficient = 0.0;
   double max_shear_stress_Pa = 0.0;
   double max_film_temperature_rise_K = 0.0;
+  double max_surface_temperature_rise_K = 0.0;  // as EhlTraction
+  double surface_peclet_number = 0.0;
 };
 // Throws std::invalid_argument as ehl_line_traction (a non-positive load in N), and for fields whose
 // sizes do not match the grid.

@@ -49,11 +49,34 @@ assert abs(s['max_pressure_Pa'] / p_hertz - 1) < 0.05, (s['max_pressure_Pa'], p_
 assert 0 < s['minimum_film_m'] < s['central_film_m'] < 1e-6, s
 assert 0 < s['friction_coefficient'] < 0.2, s['friction_coefficient']
 assert s['max_film_temperature_rise_K'] == 0, s  # no conductivity given: an isothermal film
+assert s['max_surface_temperature_rise_K'] is None and s['surface_peclet_number'] is None, s  # no [solids]
 x, p, h = (np.load(d + '/' + s['fields'][k]) for k in ('x_m', 'pressure_Pa', 'film_m'))
 assert x.shape == p.shape == h.shape == (s['inputs']['nodes'],), (x.shape, p.shape, h.shape)
 assert abs(np.trapz(p, x) / 3e6 - 1) < 1e-9, np.trapz(p, x)  # the load balance, from the written profile
 assert s['provenance']['config_hash'], s['provenance']
 ")
+
+# [solids]: the surfaces warm by the heat the film hands them (lubrication/moving_heat_source.h), so
+# the film is warmer than its own heating alone makes it; the solids' constants are echoed; without
+# the oil's conductivity, with a constant missing, or with a surface at rest, the config is refused.
+set(heated "${contact}[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2.2e-8\neyring_stress_Pa = 5e6\nthermal_conductivity_W_per_m_K = 0.13\n")
+set(steel "[solids]\nthermal_conductivity_W_per_m_K = 46.0\ndensity_kg_per_m3 = 7800.0\nspecific_heat_J_per_kg_K = 460.0\n")
+run_ehl(film_heated "line contact, film heating" "${heated}")
+run_ehl(solids_heated "line contact, film and surface heating" "${heated}${steel}")
+expect_outputs(solids_heated "line contact, film and surface heating" "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+f = json.load(open(sys.argv[1] + '/../out_film_heated/ehl.json'))
+assert s['inputs']['surfaces'] == {'thermal_conductivity_W_per_m_K': 46.0, 'density_kg_per_m3': 7800.0, 'specific_heat_J_per_kg_K': 460.0}, s['inputs']
+assert f['inputs']['surfaces'] is None and f['max_surface_temperature_rise_K'] is None, f
+assert 0 < s['max_surface_temperature_rise_K'] < s['max_film_temperature_rise_K'], s
+assert s['max_film_temperature_rise_K'] > f['max_film_temperature_rise_K'], (s['max_film_temperature_rise_K'], f['max_film_temperature_rise_K'])
+assert s['surface_peclet_number'] > 5, s['surface_peclet_number']
+")
+expect_refused(solids_no_film_k "${contact}[lubricant]\nviscosity_Pa_s = 0.04\neyring_stress_Pa = 5e6\n${steel}" "solids.thermal_conductivity_W_per_m_K")
+expect_refused(solids_no_density "${heated}[solids]\nthermal_conductivity_W_per_m_K = 46.0\nspecific_heat_J_per_kg_K = 460.0\n" "solids.density_kg_per_m3")
+string(REPLACE "sliding_speed_m_per_s = 0.05" "sliding_speed_m_per_s = 2.0" at_rest "${heated}")
+expect_refused(solids_at_rest "${at_rest}${steel}" "solids")
 
 # No Eyring stress: the lubricant's τ0 has no default; a point contact takes load_N, not a load per length.
 expect_refused(no_tau "${contact}[lubricant]\nviscosity_Pa_s = 0.04\n" "lubricant.eyring_stress_Pa")

@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 #include "lubrication/ehl_line.h"
 #include "lubrication/ehl_traction.h"
+#include "tests/lubrication/heated_solids.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -25,6 +27,22 @@ EhlLineResult parabolic_film(double h0, double R, double a, double p, int nodes)
     f.pressure_Pa.push_back(p);
   }
   return f;
+}
+
+// The film's own heating (conductivity k, temperature coefficient γ), the walls at the bulk temperature.
+FilmHeating film_heating(double k, double gamma) {
+  FilmHeating h;
+  h.thermal_conductivity_W_per_m_K = k;
+  h.temperature_viscosity_per_K = gamma;
+  return h;
+}
+
+// The same, with both walls of `solid` warming as they pass the contact at u_m ± Δu/2.
+FilmHeating film_and_surface_heating(double k, double gamma, const HeatedSolid& solid, double mean_speed_m_per_s) {
+  FilmHeating h = film_heating(k, gamma);
+  h.surfaces = solid;
+  h.mean_speed_m_per_s = mean_speed_m_per_s;
+  return h;
 }
 
 PiezoviscousLubricant isoviscous(double eta) {
@@ -67,12 +85,12 @@ TEST(EhlTraction, EyringStressGrowsWithTheLogarithmOfTheSlidingSpeed) {
 TEST(EhlTraction, HeatedNewtonianFilmFollowsLambertW) {
   const double h = 1e-6, eta = 0.04, gamma = 0.03, k = 0.13, omega = 0.5671432904097838;
   const double du = std::sqrt(12.0 * k / (gamma * eta));  // s = 1
-  const EhlTraction t = ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5, {k, gamma});
+  const EhlTraction t = ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5, film_heating(k, gamma));
   EXPECT_NEAR(t.max_shear_stress_Pa, 12.0 * k * omega / (gamma * du * h), 1e-12 * t.max_shear_stress_Pa);
   EXPECT_NEAR(t.max_film_temperature_rise_K, omega / gamma, 1e-12 * omega / gamma);
   // A viscosity that does not follow the temperature (γ = 0): the isothermal stress, and the film
   // still as warm as that stress makes it, ΔT = τΔu h/(12k).
-  const EhlTraction flat = ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5, {k, 0.0});
+  const EhlTraction flat = ehl_line_traction(parabolic_film(h, 1e30, 1e-4, 1e6, 11), isoviscous(eta), du, kInf, 1e5, film_heating(k, 0.0));
   EXPECT_DOUBLE_EQ(flat.max_shear_stress_Pa, eta * du / h);
   EXPECT_NEAR(flat.max_film_temperature_rise_K, eta * du * du / (12.0 * k), 1e-12 * eta * du * du / (12.0 * k));
   // Without heating, the isothermal stress η Δu / h.
@@ -85,12 +103,70 @@ TEST(EhlTraction, HeatedNewtonianFilmFollowsLambertW) {
 TEST(EhlTraction, HeatedFilmTractionPeaksWhereLambertWIsOne) {
   const double h = 1e-6, eta = 0.04, gamma = 0.03, k = 0.13;
   const EhlLineResult film = parabolic_film(h, 1e30, 1e-4, 1e6, 11);
-  const auto tau = [&](double du) { return ehl_line_traction(film, isoviscous(eta), du, kInf, 1e5, {k, gamma}).max_shear_stress_Pa; };
+  const auto tau = [&](double du) { return ehl_line_traction(film, isoviscous(eta), du, kInf, 1e5, film_heating(k, gamma)).max_shear_stress_Pa; };
   const double du_peak = std::sqrt(12.0 * k * std::exp(1.0) / (gamma * eta));
   EXPECT_NEAR(tau(du_peak), std::sqrt(12.0 * k * eta / (gamma * std::exp(1.0))) / h, 1e-12 * tau(du_peak));
   EXPECT_GT(tau(du_peak), tau(0.98 * du_peak));
   EXPECT_GT(tau(du_peak), tau(1.02 * du_peak));
   EXPECT_LT(tau(10.0 * du_peak), 0.5 * tau(du_peak));
+}
+
+// The surfaces' flash temperature (FilmHeating::surfaces), on the solids of heated_solids.h.
+using test_solids::bearing_steel;
+using test_solids::soda_lime_glass;
+
+// Rolling fast, sliding slowly (Δu/u_m = 1e-3), a uniform Newtonian film at fixed viscosity (γ = 0)
+// makes a uniform heat Q = ηΔu²/h; each surface takes Q/2 and, at the outlet after L/u_m under the
+// film, is as warm as a half-space under Q/2 for that time: Q√(L/(π u_m))/e. The film's mean is the
+// walls' plus its own Qh/(12k). Tolerance 1e-3: the surfaces' speeds differ by 1e-3 of u_m, their
+// rises by half that, and the film passes the difference between them.
+TEST(EhlTraction, RollingFastEachSurfaceTakesHalfTheHeatAndWarmsAsAHalfSpace) {
+  const double h = 1e-6, eta = 0.04, k = 0.13, um = 10.0, du = 1e-3 * um, half = 1e-4;
+  const EhlTraction t = ehl_line_traction(parabolic_film(h, 1e30, half, 1e6, 201), isoviscous(eta), du, kInf, 1e5,
+                                          film_and_surface_heating(k, 0.0, bearing_steel(), um));
+  const double q = eta * du * du / h, walls = q * std::sqrt(2.0 * half / (M_PI * um)) / thermal_effusivity(bearing_steel());
+  EXPECT_NEAR(t.max_surface_temperature_rise_K, walls, 1e-3 * walls);
+  EXPECT_NEAR(t.max_film_temperature_rise_K, walls + q * h / (12.0 * k), 1e-3 * walls);
+  EXPECT_DOUBLE_EQ(t.max_shear_stress_Pa, eta * du / h);  // γ = 0: the heat does not touch the stress
+  EXPECT_NEAR(t.surface_peclet_number, peclet_number(bearing_steel(), um - 0.5 * du, half), 1e-12 * t.surface_peclet_number);
+}
+
+// A solid that conducts without limit stays at the bulk temperature: the film's own heating, to
+// the bisection's 1e-15, on a heated Eyring film.
+TEST(EhlTraction, ASolidThatConductsWithoutLimitLeavesTheFilmsOwnHeating) {
+  const EhlLineResult film = parabolic_film(2e-7, 0.01, 1e-4, 1e8, 401);
+  const PiezoviscousLubricant l = isoviscous(10.0);
+  const double film_only = ehl_line_traction(film, l, 1.0, 5e6, 1e5, film_heating(0.13, 0.03)).force_per_length_N_per_m;
+  const EhlTraction both = ehl_line_traction(film, l, 1.0, 5e6, 1e5, film_and_surface_heating(0.13, 0.03, {1e30, 7800.0, 460.0}, 4.0));
+  EXPECT_NEAR(both.force_per_length_N_per_m, film_only, 1e-12 * film_only);
+  EXPECT_LT(both.max_surface_temperature_rise_K, 1e-9);
+}
+
+// Thesis §5.2b: heat from beyond the film's own shear moves the traction maximum to a lower speed.
+// A uniform Newtonian film alone peaks at Δu* = √(12 k e/(γη)) (the test above). With the walls
+// warming too, a node whose walls add R_s per unit heat peaks at √(e h/(γη (h/(12k) + R_s))): the
+// inlet node at Δu* (R_s = 0), the outlet node below it, with R_s = √(L/(π u_m))/e. The whole
+// film's maximum lies between the two (within 5 %: the surfaces' speeds differ by up to Δu from
+// u_m, so the outlet's R_s by up to 15 % on either side of its value at u_m).
+TEST(EhlTraction, WarmSurfacesMoveTheTractionMaximumToALowerSpeed) {
+  const double h = 1e-6, eta = 4.0, gamma = 0.03, k = 0.13, um = 20.0, half = 1e-4;
+  const EhlLineResult film = parabolic_film(h, 1e30, half, 1e6, 201);
+  const FilmHeating heat = film_and_surface_heating(k, gamma, soda_lime_glass(), um);
+  const auto force = [&](double du) { return ehl_line_traction(film, isoviscous(eta), du, kInf, 1e5, heat).force_per_length_N_per_m; };
+  // The maximum by golden-section search over [0.5, 8] m/s (force is unimodal there).
+  double a = 0.5, b = 8.0;
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int i = 0; i < 60; ++i) {
+    const double c = b - g * (b - a), d = a + g * (b - a);
+    (force(c) > force(d) ? b : a) = (force(c) > force(d) ? d : c);
+  }
+  const double peak = 0.5 * (a + b);
+  const double film_alone = std::sqrt(12.0 * k * std::exp(1.0) / (gamma * eta));
+  const double r_s = std::sqrt(2.0 * half / (M_PI * um)) / thermal_effusivity(soda_lime_glass());
+  const double outlet = std::sqrt(std::exp(1.0) * h / (gamma * eta * (h / (12.0 * k) + r_s)));
+  std::printf("traction maximum: film alone %.3f m/s, outlet node %.3f m/s, whole film %.3f m/s\n", film_alone, outlet, peak);
+  EXPECT_LT(peak, film_alone);
+  EXPECT_GT(peak, 0.95 * outlet);
 }
 
 TEST(EhlTraction, BadInputIsRejected) {
@@ -99,8 +175,12 @@ TEST(EhlTraction, BadInputIsRejected) {
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 0.0, 1e5), std::invalid_argument);
   EXPECT_THROW(ehl_line_traction(film, l, std::nan(""), 5e6, 1e5), std::invalid_argument);
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, -1.0), std::invalid_argument);
-  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {-0.13, 0.03}), std::invalid_argument);
-  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {0.13, std::nan("")}), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, film_heating(-0.13, 0.03)), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, film_heating(0.13, std::nan(""))), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, film_and_surface_heating(0.0, 0.03, bearing_steel(), 4.0)), std::invalid_argument);  // no film conductivity
+  EXPECT_THROW(ehl_line_traction(film, l, 8.0, 5e6, 1e5, film_and_surface_heating(0.13, 0.03, bearing_steel(), 4.0)), std::invalid_argument);  // a surface at rest
+  EXPECT_THROW(ehl_line_traction(film, l, -9.0, 5e6, 1e5, film_and_surface_heating(0.13, 0.03, bearing_steel(), 4.0)), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, film_and_surface_heating(0.13, 0.03, {46.0, -1.0, 460.0}, 4.0)), std::invalid_argument);
   EhlLineResult collapsed = film;
   collapsed.film_m[5] = 0.0;
   EXPECT_THROW(ehl_line_traction(collapsed, l, 0.1, 5e6, 1e5), std::invalid_argument);
