@@ -169,6 +169,35 @@ TEST(EhlTraction, WarmSurfacesMoveTheTractionMaximumToALowerSpeed) {
   EXPECT_GT(peak, 0.95 * outlet);
 }
 
+// A point contact's surfaces warm line by line along x, each line of nodes as a line contact of
+// the same nodes would: on a film whose lines are pressurised over different lengths, the point's
+// largest surface and film temperature rises are the largest of the lines' own (to round-off).
+TEST(EhlTraction, EachLineOfAPointFilmWarmsItsSurfacesAsALineFilmWould) {
+  const int nx = 41, ny = 5;
+  const double dx = 5e-6, h = 5e-7, um = 5.0, du = 1.0, tau0 = 5e6;
+  const PiezoviscousLubricant l = isoviscous(5.0);
+  const FilmHeating heat = film_and_surface_heating(0.13, 0.03, bearing_steel(), um);
+  EhlPointResult point;
+  for (int i = 0; i < nx; ++i) point.x_m.push_back(i * dx);
+  for (int j = 0; j < ny; ++j) point.y_m.push_back(j * 2e-5);
+  double surface = 0.0, film_rise = 0.0;
+  for (int j = 0; j < ny; ++j) {
+    EhlLineResult line;
+    const int last = 10 + 7 * j;  // pressurised from node 2 to node `last`
+    for (int i = 0; i < nx; ++i) {
+      const double p = i >= 2 && i <= last ? 1e8 : 0.0;
+      line.x_m.push_back(point.x_m[i]), line.pressure_Pa.push_back(p), line.film_m.push_back(h);
+      point.pressure_Pa.push_back(p), point.film_m.push_back(h);
+    }
+    const EhlTraction t = ehl_line_traction(line, l, du, tau0, 1e5, heat);
+    surface = std::max(surface, t.max_surface_temperature_rise_K), film_rise = std::max(film_rise, t.max_film_temperature_rise_K);
+  }
+  const EhlPointTraction t = ehl_point_traction(point, l, du, tau0, 1.0, heat);
+  EXPECT_GT(surface, 0.1);
+  EXPECT_NEAR(t.max_surface_temperature_rise_K, surface, 1e-12 * surface);
+  EXPECT_NEAR(t.max_film_temperature_rise_K, film_rise, 1e-12 * film_rise);
+}
+
 TEST(EhlTraction, BadInputIsRejected) {
   const EhlLineResult film = parabolic_film(2e-7, 0.01, 1e-4, 1e6, 11);
   const PiezoviscousLubricant l = isoviscous(0.04);
