@@ -61,24 +61,33 @@ class Walls {
     second_.emplace(x_m, u2, *heat.surfaces);
     q1_.assign(x_m.size(), 0.0), q2_.assign(x_m.size(), 0.0);
   }
-  void new_line() {
+  // Start the line of nodes at y (0 for a line contact: `point` false), with its interface heat.
+  void new_line(const std::vector<double>& x_m, bool point, double y_m, const FilmHeating& heat) {
+    if (!first_) return;
     std::fill(q1_.begin(), q1_.end(), 0.0);
     std::fill(q2_.begin(), q2_.end(), 0.0);
+    interface_.assign(x_m.size(), 0.0);
+    const double r = heat.interface_heat_half_width_m;
+    for (std::size_t i = 0; i < x_m.size(); ++i)
+      if ((point ? x_m[i] * x_m[i] + y_m * y_m <= r * r : std::abs(x_m[i]) <= r)) interface_[i] = heat.interface_heat_W_per_m2;
   }
   void prepare(std::size_t i) {
     if (!first_) return;
     a1_ = first_->upstream_rise_K(i, q1_.data()), a2_ = second_->upstream_rise_K(i, q2_.data());
     s1_ = first_->own_weight(i), s2_ = second_->own_weight(i);
+    extra_ = interface_[i];
   }
   // The film's mean temperature rise at the prepared node for the heat Q = |τΔu| (W/m²) it makes in a film h.
   double film_rise_K(double heat_W_per_m2, double h) const {
     const Split w = split(heat_W_per_m2, h);
     return 0.5 * (w.t1 + w.t2) + heat_W_per_m2 * h / (12.0 * k_);
   }
-  // Keep the prepared node's heat (0 and h ignored where the film does not shear).
+  // Keep the prepared node's heat. Where the film does not shear (heat 0, h ignored) it does not
+  // conduct either: the interface heat there enters each surface half and half.
   void settle(std::size_t i, double heat_W_per_m2, double h) {
     if (!first_) return;
-    const Split w = heat_W_per_m2 > 0.0 ? split(heat_W_per_m2, h) : Split{a1_, a2_, 0.0, 0.0};
+    const double half = 0.5 * extra_;
+    const Split w = heat_W_per_m2 > 0.0 ? split(heat_W_per_m2, h) : Split{a1_ + s1_ * half, a2_ + s2_ * half, half, half};
     q1_[i] = w.q1, q2_[i] = w.q2;
     max_rise_K_ = std::max({max_rise_K_, w.t1, w.t2});
   }
@@ -88,19 +97,19 @@ class Walls {
   struct Split {
     double t1, t2, q1, q2;
   };
-  // Wall 1 takes q1 = Q/2 + c D, wall 2 q2 = Q/2 − c D, with c = k/h and D = T2 − T1, T_i = a_i + s_i q_i:
-  // D (1 + c (s1 + s2)) = a2 − a1 + (s2 − s1) Q/2.
+  // With Q the film's heat plus the interface's, wall 1 takes q1 = Q/2 + c D, wall 2 q2 = Q − q1,
+  // with c = k/h and D = T2 − T1, T_i = a_i + s_i q_i: D (1 + c (s1 + s2)) = a2 − a1 + (s2 − s1) Q/2.
   Split split(double heat, double h) const {
     if (!first_) return {0.0, 0.0, 0.5 * heat, 0.5 * heat};
-    const double c = k_ / h;
-    const double d = (a2_ - a1_ + (s2_ - s1_) * 0.5 * heat) / (1.0 + c * (s1_ + s2_));
-    const double q1 = 0.5 * heat + c * d, q2 = heat - q1;
+    const double c = k_ / h, total = heat + extra_;
+    const double d = (a2_ - a1_ + (s2_ - s1_) * 0.5 * total) / (1.0 + c * (s1_ + s2_));
+    const double q1 = 0.5 * total + c * d, q2 = total - q1;
     return {a1_ + s1_ * q1, a2_ + s2_ * q2, q1, q2};
   }
   double k_;
   std::optional<MovingSurface> first_, second_;
-  std::vector<double> q1_, q2_;
-  double a1_ = 0.0, a2_ = 0.0, s1_ = 0.0, s2_ = 0.0, max_rise_K_ = 0.0;
+  std::vector<double> q1_, q2_, interface_;
+  double a1_ = 0.0, a2_ = 0.0, s1_ = 0.0, s2_ = 0.0, extra_ = 0.0, max_rise_K_ = 0.0;
 };
 
 // The smaller Péclet number of the two surfaces over the half-length of the sheared zone [x_lo, x_hi].
@@ -126,6 +135,11 @@ void check_traction_inputs(const PiezoviscousLubricant& lubricant, double slidin
     throw std::invalid_argument("EHL traction: the film's thermal conductivity and temperature-viscosity coefficient must be finite and >= 0, got " +
                                 numerics::shortest(heating.thermal_conductivity_W_per_m_K) + " W/(m K) and " +
                                 numerics::shortest(heating.temperature_viscosity_per_K) + " 1/K");
+  if (!(heating.interface_heat_W_per_m2 >= 0.0) || !std::isfinite(heating.interface_heat_W_per_m2) ||
+      !(heating.interface_heat_half_width_m >= 0.0) || !std::isfinite(heating.interface_heat_half_width_m))
+    throw std::invalid_argument("EHL traction: the interface heat and its half-width must be finite and >= 0, got " +
+                                numerics::shortest(heating.interface_heat_W_per_m2) + " W/m2 over " +
+                                numerics::shortest(heating.interface_heat_half_width_m) + " m");
   if (heating.surfaces) {
     if (!(heating.thermal_conductivity_W_per_m_K > 0.0))
       throw std::invalid_argument("EHL traction: the surfaces' heating needs the film's thermal conductivity (the heat reaches them through it)");
@@ -184,6 +198,7 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
   std::vector<double> tau(n, 0.0);
   const double floor_Pa = cavitation_floor_Pa(film.pressure_Pa);
   Walls walls(film.x_m, sliding_speed_m_per_s, heating);
+  walls.new_line(film.x_m, false, 0.0, heating);
   ShearedRange sheared;
   for (std::size_t i = 0; i < n; ++i) {
     double rise_K = 0.0;
@@ -214,7 +229,7 @@ EhlPointTraction ehl_point_traction(const EhlPointResult& film, const Piezovisco
   Walls walls(film.x_m, sliding_speed_m_per_s, heating);  // each line of nodes along x in turn
   ShearedRange sheared;
   for (std::size_t j = 0; j < ny; ++j) {
-    walls.new_line();
+    walls.new_line(film.x_m, true, film.y_m[j], heating);
     for (std::size_t i = 0; i < nx; ++i) {
       double rise_K = 0.0;
       const std::size_t k = i + nx * j;

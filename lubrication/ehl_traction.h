@@ -18,12 +18,16 @@
 // The walls stay at the bulk temperature (T1 = T2 = 0 above it) unless FilmHeating::surfaces is set:
 // then each surface warms by its flash temperature, Jaeger's fast moving heat source
 // (moving_heat_source.h), the surfaces passing the contact at u1 = u_m + Δu/2 and u2 = u_m − Δu/2
-// towards increasing x. The film hands wall 1 the heat τΔu/2 + k(T2 − T1)/h per unit area and wall
-// 2 the rest, so the slower, hotter surface passes heat through the film to the faster one. A
+// towards increasing x. With Q the heat made at a node — the film's τΔu plus any made at the
+// interface outside it (FilmHeating::interface_heat_W_per_m2: the asperity contacts' friction in the
+// mixed regime) — wall 1 takes Q/2 + k(T2 − T1)/h per unit area and wall 2 the rest, so the slower,
+// hotter surface passes heat through the film to the faster one; the film's own rise τΔu h/(12k)
+// counts its own heat only. A
 // node's wall temperatures depend only on the heat at and upstream of it, so the nodes are solved
 // from the inlet (along each line of nodes in x for a point contact; heat spreads in y only with
 // the solid's conduction, left out as in the fast-source limit). The thesis §5.2b: heat from more
-// than the film's own shear moves the traction maximum to a lower speed.
+// than the film's own shear — metallic contacts' beside it — moves the traction maximum to a lower
+// speed.
 // Left out: the Poiseuille shear (h/2) dp/dx, equal and opposite on the two surfaces, so it adds
 // no net traction to their sum and is small on each beside the Couette term in the loaded zone;
 // the cavitated outlet (p = 0 at the nodes past the film's rupture, where the gap holds striations
@@ -49,6 +53,13 @@ struct FilmHeating {
   // Both surfaces are of one solid, moving at u_m ± Δu/2 with u_m = mean_speed_m_per_s.
   std::optional<HeatedSolid> surfaces;
   double mean_speed_m_per_s = 0.0;
+  // Heat made at the interface outside the film — the asperity contacts' boundary friction in the
+  // mixed regime (mixed_line.h, mixed_point.h set it) — in W/m², uniform over |x| ≤
+  // interface_heat_half_width_m on a line and over x² + y² ≤ its square on a point, entering the
+  // surfaces beside the film's own heat. Without `surfaces` the walls stay at the bulk temperature
+  // and it changes nothing.
+  double interface_heat_W_per_m2 = 0.0;
+  double interface_heat_half_width_m = 0.0;
 };
 
 struct EhlTraction {
@@ -65,7 +76,8 @@ struct EhlTraction {
 
 // Throws std::invalid_argument for a sliding speed that is not finite, an Eyring stress that is
 // not positive (+∞ is the Newtonian film), a non-positive load, negative or non-finite heating
-// constants, surface heating without the film's conductivity, with a bad solid or with a surface
+// constants, surface heating without the film's conductivity, with a bad solid, a negative or
+// non-finite interface heat or half-width, or with a surface
 // that does not move through the contact (|Δu| ≥ 2 u_m: a surface at rest sees a stationary source,
 // outside the fast-source model), or a film with fewer than two nodes or a non-positive film thickness where the
 // pressure is positive.

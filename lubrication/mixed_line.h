@@ -24,7 +24,10 @@
 // full EHL solve).
 // Friction: F = f_c w_c + F_f, with f_c the boundary friction coefficient of the asperity contacts
 // (a constant, as in Gelinck & Schipper) and F_f the film's traction (ehl_traction.h) at its own
-// pressures and films; μ = F / w.
+// pressures and films; μ = F / w. With the surfaces' flash temperature on (FilmHeating::surfaces),
+// the summits' friction heat f_c p_GW |Δu| enters the surfaces over the width 2b beside the film's
+// (ehl_traction.h), so a film sharing the contact with metal is warmer than a film alone — the
+// thesis' reading (§5.2b) of why its friction maximum falls at a lower speed than Crook's.
 // Left out: the asperity pressure's shape across the contact (its
 // mean is used, as Gelinck & Schipper do); micro-EHL films on the asperities; and the roughness in
 // the film's flow (no flow factors).

@@ -10,6 +10,7 @@
 
 #include "lubrication/mixed_line.h"
 #include "lubrication/reference/ehl_film.h"
+#include "tests/lubrication/heated_solids.h"
 #include "tests/lubrication/steel_roller_pair.h"
 
 namespace tribo::lubrication {
@@ -48,6 +49,32 @@ TEST(MixedLine, SlowRoughContactRunsAtTheBoundaryFriction) {
   EXPECT_LT(r.film_share, 0.02);
   EXPECT_LT(r.film_parameter, 1.0);
   EXPECT_NEAR(r.friction_coefficient, 0.1, 0.002);
+}
+
+// With the surfaces' flash temperature on, the summits' boundary friction heats them too: the
+// film's traction is ehl_line_traction's with the interface heat f_c p_GW Δu over the Hertz width,
+// p_GW the summits' load over that width (1e-12); f_c = 0 leaves the same share and a cooler film.
+TEST(MixedLine, TheSummitsFrictionHeatsTheSurfacesBesideTheFilm) {
+  MixedLineContact c = rough_rollers(0.3);
+  c.heating.thermal_conductivity_W_per_m_K = 0.13;
+  c.heating.temperature_viscosity_per_K = 0.03;
+  c.heating.surfaces = test_solids::bearing_steel();
+  c.heating.mean_speed_m_per_s = c.film.mean_speed_m_per_s;
+  const MixedLineResult r = solve_mixed_line(c, steel_rollers::mineral_oil(), coarse());
+  ASSERT_TRUE(r.converged) << r.message;
+  const double b = reference::hertz_line_half_width_m(c.film.load_per_length_N_per_m, c.film.reduced_radius_m, c.film.reduced_modulus_Pa);
+  FilmHeating heat = c.heating;
+  heat.interface_heat_W_per_m2 = 0.1 * r.asperity_load_per_length_N_per_m / (2.0 * b) * c.sliding_speed_m_per_s;
+  heat.interface_heat_half_width_m = b;
+  const EhlTraction t = ehl_line_traction(r.film, steel_rollers::mineral_oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa,
+                                          r.film_load_per_length_N_per_m, heat);
+  EXPECT_NEAR(r.traction.force_per_length_N_per_m, t.force_per_length_N_per_m, 1e-12 * t.force_per_length_N_per_m);
+  EXPECT_NEAR(r.traction.max_surface_temperature_rise_K, t.max_surface_temperature_rise_K, 1e-12 * t.max_surface_temperature_rise_K);
+  c.boundary_friction_coefficient = 0.0;
+  const MixedLineResult cold = solve_mixed_line(c, steel_rollers::mineral_oil(), coarse());
+  EXPECT_EQ(cold.film_share, r.film_share);
+  EXPECT_LT(cold.traction.max_surface_temperature_rise_K, r.traction.max_surface_temperature_rise_K);
+  EXPECT_GT(cold.film_friction_N_per_m, r.film_friction_N_per_m);
 }
 
 // In the mixed regime (0.3 m/s) the share found balances the load: the film solver called at

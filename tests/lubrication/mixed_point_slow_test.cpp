@@ -11,6 +11,7 @@
 #include "lubrication/mixed_point.h"
 #include "lubrication/reference/ehl_point_film.h"
 #include "tests/lubrication/ball_on_disc.h"
+#include "tests/lubrication/heated_solids.h"
 
 namespace tribo::lubrication {
 namespace {
@@ -47,6 +48,29 @@ TEST(MixedPoint, TheShareFoundBalancesTheLoadWithGreenwoodWilliamson) {
       std::numbers::pi * a * a * contact::gw_at_separation(c.asperities, film.central_film_m - c.summit_height_m).pressure_Pa;
   EXPECT_NEAR(r.film_share * c.film.load_N + asperities, c.film.load_N, o.tolerance * c.film.load_N);
   EXPECT_NEAR(r.friction_coefficient, (0.1 * asperities + r.traction.force_N) / c.film.load_N, 1e-12);
+}
+
+// With the surfaces' flash temperature on, the summits' boundary friction heats them over the Hertz
+// circle: the film's traction is ehl_point_traction's with the interface heat f_c p_GW Δu over
+// r ≤ a, p_GW the summits' load over π a² (1e-12), and the film is warmer than with f_c = 0.
+TEST(MixedPoint, TheSummitsFrictionHeatsTheSurfacesBesideTheFilm) {
+  MixedPointContact c = rough_ball(0.1);
+  c.heating.thermal_conductivity_W_per_m_K = 0.13;
+  c.heating.temperature_viscosity_per_K = 0.03;
+  c.heating.surfaces = test_solids::bearing_steel();
+  c.heating.mean_speed_m_per_s = c.film.mean_speed_m_per_s;
+  const MixedPointResult r = solve_mixed_point(c, ball_oil(), coarse_mixed());
+  ASSERT_TRUE(r.converged) << r.message;
+  const double a = reference::hertz_point_radius_m(c.film.load_N, kBallRadius_m, kBallModulus_Pa);
+  FilmHeating heat = c.heating;
+  heat.interface_heat_W_per_m2 = 0.1 * r.asperity_load_N / (std::numbers::pi * a * a) * std::abs(c.sliding_speed_m_per_s);
+  heat.interface_heat_half_width_m = a;
+  const EhlPointTraction t = ehl_point_traction(r.film, ball_oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa, r.film_load_N, heat);
+  EXPECT_NEAR(r.traction.force_N, t.force_N, 1e-12 * t.force_N);
+  EXPECT_NEAR(r.traction.max_surface_temperature_rise_K, t.max_surface_temperature_rise_K, 1e-12 * t.max_surface_temperature_rise_K);
+  FilmHeating cool = c.heating;  // the film's heat alone into the same surfaces
+  EXPECT_LT(ehl_point_traction(r.film, ball_oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa, r.film_load_N, cool).max_surface_temperature_rise_K,
+            r.traction.max_surface_temperature_rise_K);
 }
 
 }  // namespace
