@@ -241,13 +241,22 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
   } else {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
   }
-  // The surfaces' flash temperature (ehl_traction.h, moving_heat_source.h): both of one solid, on
-  // when [solids] is given; the heat reaches them through the film, so it needs the oil's conductivity.
+  // The surfaces' flash temperature (ehl_traction.h, moving_heat_source.h), on when [solids] is given
+  // (both surfaces of that solid, unless [solids.second] gives the one moving at u2 = u_m − Δu/2: a
+  // steel ball on a glass disc); the heat reaches them through the film, so it needs the oil's conductivity.
   if (auto s = root.table("solids")) {
-    lub::HeatedSolid solid;
-    solid.thermal_conductivity_W_per_m_K = s->required_number("thermal_conductivity_W_per_m_K", Range::positive);
-    solid.density_kg_per_m3 = s->required_number("density_kg_per_m3", Range::positive);
-    solid.specific_heat_J_per_kg_K = s->required_number("specific_heat_J_per_kg_K", Range::positive);
+    const auto read_solid = [](ConfigTable& t) {
+      lub::HeatedSolid solid;
+      solid.thermal_conductivity_W_per_m_K = t.required_number("thermal_conductivity_W_per_m_K", Range::positive);
+      solid.density_kg_per_m3 = t.required_number("density_kg_per_m3", Range::positive);
+      solid.specific_heat_J_per_kg_K = t.required_number("specific_heat_J_per_kg_K", Range::positive);
+      return solid;
+    };
+    const lub::HeatedSolid solid = read_solid(*s);
+    if (auto second = s->table("second")) {
+      run.heating.second_surface = read_solid(*second);
+      second->finish();
+    }
     if (!(run.heating.thermal_conductivity_W_per_m_K > 0.0))
       s->fail("thermal_conductivity_W_per_m_K",
               "the surfaces warm by the heat the film passes them: give [lubricant] thermal_conductivity_W_per_m_K too");
@@ -404,6 +413,14 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
 
 namespace {
 
+// ehl.json's inputs of a [solids] table (null when absent).
+nlohmann::json solid_inputs(const std::optional<lub::HeatedSolid>& solid) {
+  if (!solid) return nullptr;
+  return {{"thermal_conductivity_W_per_m_K", solid->thermal_conductivity_W_per_m_K},
+          {"density_kg_per_m3", solid->density_kg_per_m3},
+          {"specific_heat_J_per_kg_K", solid->specific_heat_J_per_kg_K}};
+}
+
 // ehl.json's inputs beyond the contact's geometry: the sliding and the lubricant.
 nlohmann::json lubricant_inputs(const EhlRun& run) {
   return {{"sliding_speed_m_per_s", run.sliding_speed_m_per_s},
@@ -414,10 +431,8 @@ nlohmann::json lubricant_inputs(const EhlRun& run) {
           {"eyring_stress_Pa", std::isinf(run.eyring_stress_Pa) ? nlohmann::json("newtonian") : nlohmann::json(run.eyring_stress_Pa)},
           {"thermal_conductivity_W_per_m_K", run.heating.thermal_conductivity_W_per_m_K},
           {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K},
-          {"surfaces", run.heating.surfaces ? nlohmann::json{{"thermal_conductivity_W_per_m_K", run.heating.surfaces->thermal_conductivity_W_per_m_K},
-                                                             {"density_kg_per_m3", run.heating.surfaces->density_kg_per_m3},
-                                                             {"specific_heat_J_per_kg_K", run.heating.surfaces->specific_heat_J_per_kg_K}}
-                                            : nlohmann::json(nullptr)}};
+          {"surfaces", solid_inputs(run.heating.surfaces)},
+          {"second_surface", solid_inputs(run.heating.second_surface)}};
 }
 
 nlohmann::json roughness_inputs(const EhlRun::Roughness& r) {

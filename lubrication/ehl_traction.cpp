@@ -48,6 +48,9 @@ double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, 
   return tau;
 }
 
+// The solid of the surface moving at u2 (FilmHeating::second_surface, else the first's).
+const HeatedSolid& second_solid(const FilmHeating& heat) { return heat.second_surface ? *heat.second_surface : *heat.surfaces; }
+
 // The two walls of one line of nodes along x (the header's partition): their flash temperatures
 // from the heat handed to them at and upstream of each node; at the bulk temperature without
 // FilmHeating::surfaces. Nodes are visited in increasing x: prepare(i), then settle(i, …) once τ
@@ -58,7 +61,7 @@ class Walls {
     if (!heat.surfaces) return;
     const double u1 = heat.mean_speed_m_per_s + 0.5 * sliding_speed_m_per_s, u2 = heat.mean_speed_m_per_s - 0.5 * sliding_speed_m_per_s;
     first_.emplace(x_m, u1, *heat.surfaces);
-    second_.emplace(x_m, u2, *heat.surfaces);
+    second_.emplace(x_m, u2, second_solid(heat));
     q1_.assign(x_m.size(), 0.0), q2_.assign(x_m.size(), 0.0);
   }
   // Start the line of nodes at y (0 for a line contact: `point` false), with its interface heat.
@@ -112,11 +115,12 @@ class Walls {
   double a1_ = 0.0, a2_ = 0.0, s1_ = 0.0, s2_ = 0.0, extra_ = 0.0, max_rise_K_ = 0.0;
 };
 
-// The smaller Péclet number of the two surfaces over the half-length of the sheared zone [x_lo, x_hi].
+// The smaller of the two surfaces' Péclet numbers over the half-length of the sheared zone [x_lo, x_hi].
 double surface_peclet(const FilmHeating& heat, double sliding_speed_m_per_s, double x_lo, double x_hi) {
   if (!heat.surfaces || !(x_hi > x_lo)) return 0.0;
-  const double slower = heat.mean_speed_m_per_s - 0.5 * std::abs(sliding_speed_m_per_s);
-  return peclet_number(*heat.surfaces, slower, 0.5 * (x_hi - x_lo));
+  const double l = 0.5 * (x_hi - x_lo), du = 0.5 * sliding_speed_m_per_s;
+  return std::min(peclet_number(*heat.surfaces, heat.mean_speed_m_per_s + du, l),
+                  peclet_number(second_solid(heat), heat.mean_speed_m_per_s - du, l));
 }
 
 // The inputs both tractions check; `load` in the unit of `load_unit`.
@@ -140,10 +144,13 @@ void check_traction_inputs(const PiezoviscousLubricant& lubricant, double slidin
     throw std::invalid_argument("EHL traction: the interface heat and its half-width must be finite and >= 0, got " +
                                 numerics::shortest(heating.interface_heat_W_per_m2) + " W/m2 over " +
                                 numerics::shortest(heating.interface_heat_half_width_m) + " m");
+  if (heating.second_surface && !heating.surfaces)
+    throw std::invalid_argument("EHL traction: a second surface's solid without the first's (FilmHeating::surfaces)");
   if (heating.surfaces) {
     if (!(heating.thermal_conductivity_W_per_m_K > 0.0))
       throw std::invalid_argument("EHL traction: the surfaces' heating needs the film's thermal conductivity (the heat reaches them through it)");
     validate(*heating.surfaces);
+    if (heating.second_surface) validate(*heating.second_surface);
     if (!(std::abs(sliding_speed_m_per_s) < 2.0 * heating.mean_speed_m_per_s))
       throw std::invalid_argument("EHL traction: the surfaces' heating needs both surfaces moving through the contact, |sliding speed| < 2 × mean speed; got " +
                                   numerics::shortest(sliding_speed_m_per_s) + " and " + numerics::shortest(heating.mean_speed_m_per_s) +

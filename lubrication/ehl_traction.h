@@ -18,7 +18,7 @@
 // The walls stay at the bulk temperature (T1 = T2 = 0 above it) unless FilmHeating::surfaces is set:
 // then each surface warms by its flash temperature, Jaeger's fast moving heat source
 // (moving_heat_source.h), the surfaces passing the contact at u1 = u_m + Δu/2 and u2 = u_m − Δu/2
-// towards increasing x. With Q the heat made at a node — the film's τΔu plus any made at the
+// towards increasing x, each with its own solid's effusivity. With Q the heat made at a node — the film's τΔu plus any made at the
 // interface outside it (FilmHeating::interface_heat_W_per_m2: the asperity contacts' friction in the
 // mixed regime) — wall 1 takes Q/2 + k(T2 − T1)/h per unit area and wall 2 the rest, so the slower,
 // hotter surface passes heat through the film to the faster one; the film's own rise τΔu h/(12k)
@@ -50,8 +50,10 @@ struct FilmHeating {
   double thermal_conductivity_W_per_m_K = 0.0;  // k of the lubricant (mineral oils ≈ 0.13)
   double temperature_viscosity_per_K = 0.0;     // γ in η ∝ exp(−γ ΔT) (viscosity.h: 0.03 for light mineral oils)
   // The surfaces' flash temperature: on when `surfaces` is set (then the film's k must be > 0).
-  // Both surfaces are of one solid, moving at u_m ± Δu/2 with u_m = mean_speed_m_per_s.
+  // The surfaces move at u1,2 = u_m ± Δu/2 with u_m = mean_speed_m_per_s; both are of the solid
+  // `surfaces` unless `second_surface` gives the one moving at u2 (a steel ball on a glass disc).
   std::optional<HeatedSolid> surfaces;
+  std::optional<HeatedSolid> second_surface;
   double mean_speed_m_per_s = 0.0;
   // Heat made at the interface outside the film — the asperity contacts' boundary friction in the
   // mixed regime (mixed_line.h, mixed_point.h set it) — in W/m², uniform over |x| ≤

@@ -73,6 +73,16 @@ assert 0 < s['max_surface_temperature_rise_K'] < s['max_film_temperature_rise_K'
 assert s['max_film_temperature_rise_K'] > f['max_film_temperature_rise_K'], (s['max_film_temperature_rise_K'], f['max_film_temperature_rise_K'])
 assert s['surface_peclet_number'] > 5, s['surface_peclet_number']
 ")
+run_ehl(solids_two "line contact, a steel surface on a glass one" "${heated}${steel}[solids.second]\nthermal_conductivity_W_per_m_K = 1.0\ndensity_kg_per_m3 = 2500.0\nspecific_heat_J_per_kg_K = 840.0\n")
+expect_outputs(solids_two "line contact, a steel surface on a glass one" "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+steel = json.load(open(sys.argv[1] + '/../out_solids_heated/ehl.json'))
+assert s['inputs']['second_surface'] == {'thermal_conductivity_W_per_m_K': 1.0, 'density_kg_per_m3': 2500.0, 'specific_heat_J_per_kg_K': 840.0}, s['inputs']
+assert steel['inputs']['second_surface'] is None, steel['inputs']
+assert s['max_surface_temperature_rise_K'] > steel['max_surface_temperature_rise_K'], (s['max_surface_temperature_rise_K'], steel['max_surface_temperature_rise_K'])
+")
+expect_refused(solids_second_bad "${heated}${steel}[solids.second]\nthermal_conductivity_W_per_m_K = 1.0\ndensity_kg_per_m3 = 2500.0\n" "solids.second.specific_heat_J_per_kg_K")
 expect_refused(solids_no_film_k "${contact}[lubricant]\nviscosity_Pa_s = 0.04\neyring_stress_Pa = 5e6\n${steel}" "solids.thermal_conductivity_W_per_m_K")
 expect_refused(solids_no_density "${heated}[solids]\nthermal_conductivity_W_per_m_K = 46.0\nspecific_heat_J_per_kg_K = 460.0\n" "solids.density_kg_per_m3")
 string(REPLACE "sliding_speed_m_per_s = 0.05" "sliding_speed_m_per_s = 2.0" at_rest "${heated}")

@@ -262,6 +262,27 @@ TEST(EhlTraction, MetallicFrictionHeatMovesTheFilmsTractionMaximumLower) {
   EXPECT_GT(with_metal, 0.95 * outlet);
 }
 
+// Two solids (a steel surface against a glass one), the film conducting so well (k = 1e6 W/(m K))
+// that both walls are at one temperature: the heat divides in proportion to the effusivities
+// (Blok's partition), and at the outlet both surfaces are at 2Q√(L/(π u_m))/(e1 + e2). Rolling fast,
+// sliding at 1e-3 of it, a uniform Newtonian film at fixed viscosity; tolerance 1e-3 as above.
+TEST(EhlTraction, TwoSolidsShareTheHeatByTheirEffusivities) {
+  const double h = 1e-6, eta = 0.04, um = 10.0, du = 1e-3 * um, half = 1e-4;
+  FilmHeating heat = film_and_surface_heating(1e6, 0.0, bearing_steel(), um);
+  heat.second_surface = soda_lime_glass();
+  const EhlTraction t = ehl_line_traction(parabolic_film(h, 1e30, half, 1e6, 201), isoviscous(eta), du, kInf, 1e5, heat);
+  const double q = eta * du * du / h;
+  const double walls = 2.0 * q * std::sqrt(2.0 * half / (M_PI * um)) / (thermal_effusivity(bearing_steel()) + thermal_effusivity(soda_lime_glass()));
+  EXPECT_NEAR(t.max_surface_temperature_rise_K, walls, 1e-3 * walls);
+  // The smaller Péclet number is steel's (its diffusivity is 27 times glass's), on the faster surface.
+  EXPECT_NEAR(t.surface_peclet_number, peclet_number(bearing_steel(), um + 0.5 * du, half), 1e-12 * t.surface_peclet_number);
+  // Glass alone on both sides runs (e1 + e2)/(2 e_glass) times warmer.
+  heat.surfaces = soda_lime_glass();
+  const double glass = ehl_line_traction(parabolic_film(h, 1e30, half, 1e6, 201), isoviscous(eta), du, kInf, 1e5, heat).max_surface_temperature_rise_K;
+  EXPECT_NEAR(glass / t.max_surface_temperature_rise_K,
+              (thermal_effusivity(bearing_steel()) + thermal_effusivity(soda_lime_glass())) / (2.0 * thermal_effusivity(soda_lime_glass())), 2e-3);
+}
+
 TEST(EhlTraction, BadInputIsRejected) {
   const EhlLineResult film = parabolic_film(2e-7, 0.01, 1e-4, 1e6, 11);
   const PiezoviscousLubricant l = isoviscous(0.04);
@@ -277,6 +298,9 @@ TEST(EhlTraction, BadInputIsRejected) {
   FilmHeating negative = film_and_surface_heating(0.13, 0.03, bearing_steel(), 4.0);
   negative.interface_heat_W_per_m2 = -1.0;
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, negative), std::invalid_argument);
+  FilmHeating second_alone = film_heating(0.13, 0.03);
+  second_alone.second_surface = bearing_steel();
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, second_alone), std::invalid_argument);
   EhlLineResult collapsed = film;
   collapsed.film_m[5] = 0.0;
   EXPECT_THROW(ehl_line_traction(collapsed, l, 0.1, 5e6, 1e5), std::invalid_argument);
