@@ -57,6 +57,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     TRIBO_FUZZ_CHECK(std::isfinite(run.sliding_speed_m_per_s));
     TRIBO_FUZZ_CHECK(run.eyring_stress_Pa > 0.0);
     TRIBO_FUZZ_CHECK(run.heating.thermal_conductivity_W_per_m_K >= 0.0 && run.heating.temperature_viscosity_per_K >= 0.0);
+    if (run.heating.surfaces) {  // [solids]: positive constants, the film conducting, both surfaces moving
+      TRIBO_FUZZ_CHECK(run.heating.thermal_conductivity_W_per_m_K > 0.0 && run.heating.surfaces->density_kg_per_m3 > 0.0);
+      TRIBO_FUZZ_CHECK(std::abs(run.sliding_speed_m_per_s) < 2.0 * run.heating.mean_speed_m_per_s);
+    }
+    TRIBO_FUZZ_CHECK(!run.heating.second_surface || run.heating.surfaces);
   } catch (const tribo::cli::InputError& e) {
     TRIBO_FUZZ_CHECK(std::string_view(e.what()).find(path) != std::string_view::npos);  // names the config
   } catch (const std::invalid_argument&) {
