@@ -56,10 +56,7 @@ TEST(MixedLine, SlowRoughContactRunsAtTheBoundaryFriction) {
 // p_GW the summits' load over that width (1e-12); f_c = 0 leaves the same share and a cooler film.
 TEST(MixedLine, TheSummitsFrictionHeatsTheSurfacesBesideTheFilm) {
   MixedLineContact c = rough_rollers(0.3);
-  c.heating.thermal_conductivity_W_per_m_K = 0.13;
-  c.heating.temperature_viscosity_per_K = 0.03;
-  c.heating.surfaces = test_solids::bearing_steel();
-  c.heating.mean_speed_m_per_s = c.film.mean_speed_m_per_s;
+  c.heating = test_solids::oil_between_steel(c.film.mean_speed_m_per_s);
   const MixedLineResult r = solve_mixed_line(c, steel_rollers::mineral_oil(), coarse());
   ASSERT_TRUE(r.converged) << r.message;
   const double b = reference::hertz_line_half_width_m(c.film.load_per_length_N_per_m, c.film.reduced_radius_m, c.film.reduced_modulus_Pa);

@@ -55,10 +55,7 @@ TEST(MixedPoint, TheShareFoundBalancesTheLoadWithGreenwoodWilliamson) {
 // r ≤ a, p_GW the summits' load over π a² (1e-12), and the film is warmer than with f_c = 0.
 TEST(MixedPoint, TheSummitsFrictionHeatsTheSurfacesBesideTheFilm) {
   MixedPointContact c = rough_ball(0.1);
-  c.heating.thermal_conductivity_W_per_m_K = 0.13;
-  c.heating.temperature_viscosity_per_K = 0.03;
-  c.heating.surfaces = test_solids::bearing_steel();
-  c.heating.mean_speed_m_per_s = c.film.mean_speed_m_per_s;
+  c.heating = test_solids::oil_between_steel(c.film.mean_speed_m_per_s);
   const MixedPointResult r = solve_mixed_point(c, ball_oil(), coarse_mixed());
   ASSERT_TRUE(r.converged) << r.message;
   const double a = reference::hertz_point_radius_m(c.film.load_N, kBallRadius_m, kBallModulus_Pa);
