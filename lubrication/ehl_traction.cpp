@@ -51,28 +51,37 @@ double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, 
 // The solid of the surface moving at u2 (FilmHeating::second_surface, else the first's).
 const HeatedSolid& second_solid(const FilmHeating& heat) { return heat.second_surface ? *heat.second_surface : *heat.surfaces; }
 
+// The surfaces' speeds u1,2 = u_m ± Δu/2.
+struct SurfaceSpeeds {
+  double u1, u2;
+};
+SurfaceSpeeds surface_speeds(const FilmHeating& heat, double sliding_speed_m_per_s) {
+  return {heat.mean_speed_m_per_s + 0.5 * sliding_speed_m_per_s, heat.mean_speed_m_per_s - 0.5 * sliding_speed_m_per_s};
+}
+
 // The two walls of one line of nodes along x (the header's partition): their flash temperatures
 // from the heat handed to them at and upstream of each node; at the bulk temperature without
 // FilmHeating::surfaces. Nodes are visited in increasing x: prepare(i), then settle(i, …) once τ
 // is known.
 class Walls {
  public:
-  Walls(const std::vector<double>& x_m, double sliding_speed_m_per_s, const FilmHeating& heat) : k_(heat.thermal_conductivity_W_per_m_K) {
+  Walls(const std::vector<double>& x_m, double sliding_speed_m_per_s, const FilmHeating& heat)
+      : x_m_(x_m), heat_(heat), k_(heat.thermal_conductivity_W_per_m_K) {
     if (!heat.surfaces) return;
-    const double u1 = heat.mean_speed_m_per_s + 0.5 * sliding_speed_m_per_s, u2 = heat.mean_speed_m_per_s - 0.5 * sliding_speed_m_per_s;
-    first_.emplace(x_m, u1, *heat.surfaces);
-    second_.emplace(x_m, u2, second_solid(heat));
+    const SurfaceSpeeds u = surface_speeds(heat, sliding_speed_m_per_s);
+    first_.emplace(x_m, u.u1, *heat.surfaces);
+    second_.emplace(x_m, u.u2, second_solid(heat));
     q1_.assign(x_m.size(), 0.0), q2_.assign(x_m.size(), 0.0);
   }
   // Start the line of nodes at y (0 for a line contact: `point` false), with its interface heat.
-  void new_line(const std::vector<double>& x_m, bool point, double y_m, const FilmHeating& heat) {
+  void new_line(bool point, double y_m) {
     if (!first_) return;
     std::fill(q1_.begin(), q1_.end(), 0.0);
     std::fill(q2_.begin(), q2_.end(), 0.0);
-    interface_.assign(x_m.size(), 0.0);
-    const double r = heat.interface_heat_half_width_m;
-    for (std::size_t i = 0; i < x_m.size(); ++i)
-      if ((point ? x_m[i] * x_m[i] + y_m * y_m <= r * r : std::abs(x_m[i]) <= r)) interface_[i] = heat.interface_heat_W_per_m2;
+    interface_.assign(x_m_.size(), 0.0);
+    const double r = heat_.interface_heat_half_width_m;
+    for (std::size_t i = 0; i < x_m_.size(); ++i)
+      if ((point ? x_m_[i] * x_m_[i] + y_m * y_m <= r * r : std::abs(x_m_[i]) <= r)) interface_[i] = heat_.interface_heat_W_per_m2;
   }
   void prepare(std::size_t i) {
     if (!first_) return;
@@ -109,6 +118,8 @@ class Walls {
     const double q1 = 0.5 * total + c * d, q2 = total - q1;
     return {a1_ + s1_ * q1, a2_ + s2_ * q2, q1, q2};
   }
+  const std::vector<double>& x_m_;
+  const FilmHeating& heat_;
   double k_;
   std::optional<MovingSurface> first_, second_;
   std::vector<double> q1_, q2_, interface_;
@@ -118,9 +129,9 @@ class Walls {
 // The smaller of the two surfaces' Péclet numbers over the half-length of the sheared zone [x_lo, x_hi].
 double surface_peclet(const FilmHeating& heat, double sliding_speed_m_per_s, double x_lo, double x_hi) {
   if (!heat.surfaces || !(x_hi > x_lo)) return 0.0;
-  const double l = 0.5 * (x_hi - x_lo), du = 0.5 * sliding_speed_m_per_s;
-  return std::min(peclet_number(*heat.surfaces, heat.mean_speed_m_per_s + du, l),
-                  peclet_number(second_solid(heat), heat.mean_speed_m_per_s - du, l));
+  const double l = 0.5 * (x_hi - x_lo);
+  const SurfaceSpeeds u = surface_speeds(heat, sliding_speed_m_per_s);
+  return std::min(peclet_number(*heat.surfaces, u.u1, l), peclet_number(second_solid(heat), u.u2, l));
 }
 
 // The inputs both tractions check; `load` in the unit of `load_unit`.
@@ -205,7 +216,7 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
   std::vector<double> tau(n, 0.0);
   const double floor_Pa = cavitation_floor_Pa(film.pressure_Pa);
   Walls walls(film.x_m, sliding_speed_m_per_s, heating);
-  walls.new_line(film.x_m, false, 0.0, heating);
+  walls.new_line(false, 0.0);
   ShearedRange sheared;
   for (std::size_t i = 0; i < n; ++i) {
     double rise_K = 0.0;
@@ -236,7 +247,7 @@ EhlPointTraction ehl_point_traction(const EhlPointResult& film, const Piezovisco
   Walls walls(film.x_m, sliding_speed_m_per_s, heating);  // each line of nodes along x in turn
   ShearedRange sheared;
   for (std::size_t j = 0; j < ny; ++j) {
-    walls.new_line(film.x_m, true, film.y_m[j], heating);
+    walls.new_line(true, film.y_m[j]);
     for (std::size_t i = 0; i < nx; ++i) {
       double rise_K = 0.0;
       const std::size_t k = i + nx * j;

@@ -78,11 +78,11 @@ struct EhlTraction {
 
 // Throws std::invalid_argument for a sliding speed that is not finite, an Eyring stress that is
 // not positive (+∞ is the Newtonian film), a non-positive load, negative or non-finite heating
-// constants, surface heating without the film's conductivity, with a bad solid, a negative or
-// non-finite interface heat or half-width, or with a surface
-// that does not move through the contact (|Δu| ≥ 2 u_m: a surface at rest sees a stationary source,
-// outside the fast-source model), or a film with fewer than two nodes or a non-positive film thickness where the
-// pressure is positive.
+// constants, a negative or non-finite interface heat or half-width, surface heating without the
+// film's conductivity, with a bad solid (or a second solid without the first) or with a surface
+// that does not move through the contact (|Δu| ≥ 2 u_m: a surface at rest sees a stationary
+// source, outside the fast-source model), or a film with fewer than two nodes or a non-positive
+// film thickness where the pressure is positive.
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
                               double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating = {});
 

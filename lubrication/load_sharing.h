@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "contact/greenwood_williamson.h"
+#include "lubrication/ehl_traction.h"
 #include "numerics/format.h"
 
 namespace tribo::lubrication::load_sharing {
@@ -20,6 +21,18 @@ struct Options {
   double min_share = 1e-6;
   int max_film_solves = 60;
 };
+
+// The film's heating with the summits' boundary friction heat f_c p_GW |Δu| entering the surfaces
+// over the contact (half-width b of a line, radius a of a point), when their flash temperature is
+// on (ehl_traction.h); unchanged without it.
+inline FilmHeating with_summits_heat(FilmHeating heating, double boundary_friction_coefficient, double summit_pressure_Pa,
+                                     double sliding_speed_m_per_s, double contact_half_width_m) {
+  if (heating.surfaces) {
+    heating.interface_heat_W_per_m2 = boundary_friction_coefficient * summit_pressure_Pa * std::abs(sliding_speed_m_per_s);
+    heating.interface_heat_half_width_m = contact_half_width_m;
+  }
+  return heating;
+}
 
 // The inputs a mixed contact shares, checked: summits whose E* is the bodies' E'/2, y_s ≥ 0,
 // f_c ≥ 0, and the options. Throws std::invalid_argument starting with `what` ("mixed line

@@ -49,13 +49,9 @@ MixedLineResult solve_mixed_line(const MixedLineContact& c, const PiezoviscousLu
   if (!load_sharing::take_outcome(out, searched, c.asperities.summit_std_m, o.tolerance)) return out;
   out.film_load_per_length_N_per_m = out.film_share * w;
   out.asperity_load_per_length_N_per_m = searched.found.asperity_load_N_per_m;  // take_outcome moved only the film
-  // With the surfaces' flash temperature on, the summits' boundary friction heats them too, uniformly
-  // over the contact (their mean pressure, as the load balance takes it; ehl_traction.h).
-  FilmHeating heating = c.heating;
-  if (heating.surfaces) {
-    heating.interface_heat_W_per_m2 = c.boundary_friction_coefficient * searched.found.summits.pressure_Pa * std::abs(c.sliding_speed_m_per_s);
-    heating.interface_heat_half_width_m = half_width_m;
-  }
+  // The summits' friction heats the surfaces too, at their mean pressure, as the load balance takes it.
+  const FilmHeating heating = load_sharing::with_summits_heat(c.heating, c.boundary_friction_coefficient, searched.found.summits.pressure_Pa,
+                                                              c.sliding_speed_m_per_s, half_width_m);
   out.traction = ehl_line_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, heating);
   out.boundary_friction_N_per_m = c.boundary_friction_coefficient * out.asperity_load_per_length_N_per_m;
   out.film_friction_N_per_m = out.traction.force_per_length_N_per_m;

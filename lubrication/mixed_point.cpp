@@ -49,13 +49,9 @@ MixedPointResult solve_mixed_point(const MixedPointContact& c, const Piezoviscou
   if (!load_sharing::take_outcome(out, searched, c.asperities.summit_std_m, o.tolerance)) return out;
   out.film_load_N = out.film_share * w;
   out.asperity_load_N = searched.found.asperity_load_N;  // take_outcome moved only the film
-  // With the surfaces' flash temperature on, the summits' boundary friction heats them too, uniformly
-  // over the contact (their mean pressure, as the load balance takes it; ehl_traction.h).
-  FilmHeating heating = c.heating;
-  if (heating.surfaces) {
-    heating.interface_heat_W_per_m2 = c.boundary_friction_coefficient * searched.found.summits.pressure_Pa * std::abs(c.sliding_speed_m_per_s);
-    heating.interface_heat_half_width_m = a;
-  }
+  // The summits' friction heats the surfaces too, at their mean pressure, as the load balance takes it.
+  const FilmHeating heating = load_sharing::with_summits_heat(c.heating, c.boundary_friction_coefficient, searched.found.summits.pressure_Pa,
+                                                              c.sliding_speed_m_per_s, a);
   out.traction = ehl_point_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, heating);
   out.boundary_friction_N = c.boundary_friction_coefficient * out.asperity_load_N;
   out.film_friction_N = out.traction.force_N;

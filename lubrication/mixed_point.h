@@ -10,8 +10,9 @@
 // s ∈ (0, 1] solves s W + π a² p_GW(h_c(s) − y_s) = W (lubrication/load_sharing.h). Friction
 // F = f_c W_c + F_f, F_f the film's Eyring traction (ehl_traction.h) at its own pressures and
 // films; μ = F / W. With the surfaces' flash temperature on, the summits' friction heat enters
-// them over the Hertz circle beside the film's, as on the line (mixed_line.h). Left out, as for the line: the asperity pressure's shape over the circle,
-// micro-EHL films on the asperities, the roughness in the film's flow.
+// them over the Hertz circle beside the film's, as on the line (mixed_line.h). Left out, as for
+// the line: the asperity pressure's shape over the circle, micro-EHL films on the asperities, the
+// roughness in the film's flow.
 #pragma once
 
 #include <limits>

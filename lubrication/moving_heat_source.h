@@ -22,9 +22,9 @@
 //   T_i = Σ_{j<i} W_ij q_j + W_ii q_i,
 // W_ii taking the part of node i's own cell upstream of x_i. A uniform flux is integrated exactly;
 // a smooth one converges at order 3/2 in the spacing (the flux's change over a node's own cell,
-// ∝ Δ, meets the kernel's singularity there, whose integral is ∝ √Δ; observed in the tests). Because a node's rise depends only on the flux at and upstream of it, a
-// flux that depends on the temperature (the film's shear heat, ehl_traction.h) is found node by
-// node from the leading edge.
+// ∝ Δ, meets the kernel's singularity there, whose integral is ∝ √Δ; observed in the tests).
+// Because a node's rise depends only on the flux at and upstream of it, a flux that depends on the
+// temperature (the film's shear heat, ehl_traction.h) is found node by node from the leading edge.
 #pragma once
 
 #include <cstddef>
@@ -32,7 +32,7 @@
 
 namespace tribo::lubrication {
 
-// The solid a moving surface belongs to (both surfaces of a contact are taken as the same solid).
+// The solid a moving surface belongs to.
 struct HeatedSolid {
   double thermal_conductivity_W_per_m_K = 0.0;  // k (hardened bearing steel ≈ 46)
   double density_kg_per_m3 = 0.0;               // ρ (steel ≈ 7800)
@@ -55,14 +55,12 @@ class MovingSurface {
   // are not finite, a speed that is not finite and positive, or a bad solid.
   MovingSurface(const std::vector<double>& x_m, double speed_m_per_s, const HeatedSolid& solid);
 
-  std::size_t nodes() const { return n_; }
   // Σ_{j<i} W_ij q_j (K): the rise at node i from the flux upstream of it; q has one value per node (W/m²).
   double upstream_rise_K(std::size_t i, const double* flux_W_per_m2) const;
   // W_ii (K m²/W): the rise at node i per unit flux over its own cell upstream of it.
   double own_weight(std::size_t i) const { return w_[i * (i + 1) / 2 + i]; }
 
  private:
-  std::size_t n_;
   std::vector<double> w_;  // row i holds W_i0 … W_ii
 };
 
