@@ -237,6 +237,9 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     run.heating.thermal_conductivity_W_per_m_K = l->number("thermal_conductivity_W_per_m_K", 0.0, Range::non_negative);
     run.heating.temperature_viscosity_per_K =
         l->number("temperature_viscosity_per_K", lub::Lubricant{}.temperature_viscosity_per_K, Range::non_negative);
+    // The limiting shear stress τ_L = τ_L0 + Λ p (ehl_traction.h): off unless either is given.
+    run.limiting_shear.stress_Pa = l->number("limiting_shear_stress_Pa", 0.0, Range::non_negative);
+    run.limiting_shear.pressure_coefficient = l->number("limiting_shear_pressure_coefficient", 0.0, Range::non_negative);
     l->finish();
   } else {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
@@ -431,6 +434,8 @@ nlohmann::json lubricant_inputs(const EhlRun& run) {
           {"eyring_stress_Pa", std::isinf(run.eyring_stress_Pa) ? nlohmann::json("newtonian") : nlohmann::json(run.eyring_stress_Pa)},
           {"thermal_conductivity_W_per_m_K", run.heating.thermal_conductivity_W_per_m_K},
           {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K},
+          {"limiting_shear_stress_Pa", run.limiting_shear.stress_Pa},
+          {"limiting_shear_pressure_coefficient", run.limiting_shear.pressure_coefficient},
           {"surfaces", solid_inputs(run.heating.surfaces)},
           {"second_surface", solid_inputs(run.heating.second_surface)}};
 }
@@ -453,6 +458,7 @@ Mixed mixed_contact(const EhlRun& run, const Film& film) {
   mc.boundary_friction_coefficient = run.roughness->boundary_friction_coefficient;
   mc.sliding_speed_m_per_s = run.sliding_speed_m_per_s;
   mc.eyring_stress_Pa = run.eyring_stress_Pa;
+  mc.limiting_shear = run.limiting_shear;
   mc.heating = run.heating;
   return mc;
 }
@@ -486,10 +492,11 @@ nlohmann::json mixed_json(const Result& m, const MixedNumbers& n, const std::str
 struct TractionNumbers {
   double friction_coefficient, force, max_shear_stress_Pa, max_film_temperature_rise_K;
   double max_surface_temperature_rise_K, surface_peclet_number;  // written only with [solids]
+  double limited_node_share;                                      // written only with a limiting shear
 };
 template <class Film, class Mixed>
 void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed* mixed, const TractionNumbers& t, const std::string& force_key,
-                  bool surfaces) {
+                  bool surfaces, bool limited) {
   j["converged"] = converged;
   j["iterations"] = f.iterations;
   j["continuation_steps"] = f.continuation_steps;
@@ -513,6 +520,8 @@ void film_summary(nlohmann::json& j, const Film& f, bool converged, const Mixed*
   // The surfaces' flash temperature and the smaller of their Péclet numbers (null without [solids]).
   j["max_surface_temperature_rise_K"] = surfaces && converged ? nlohmann::json(t.max_surface_temperature_rise_K) : nlohmann::json(nullptr);
   j["surface_peclet_number"] = surfaces && converged ? nlohmann::json(t.surface_peclet_number) : nlohmann::json(nullptr);
+  // The share of the sheared nodes at the limiting shear stress (null without one).
+  j["limited_node_share"] = limited && converged ? nlohmann::json(t.limited_node_share) : nlohmann::json(nullptr);
 }
 
 // ehl.json's inputs.profile: the waviness, or the measured trace and what the filter kept of it.
@@ -610,7 +619,7 @@ void solve_profile(const EhlRun& run, EhlSolve& out) {
   out.converged = out.film.converged;
   out.summary["regime"] = "mixed (node by node, lubrication/ehl_line.h: Hu & Zhu's unified model)";
   const auto traction_of = [&](const lub::EhlLineResult& f) {
-    return lub::ehl_line_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating);
+    return lub::ehl_line_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, w, run.heating, run.limiting_shear);
   };
   profile_friction(out.film, out.converged, w, run.profile->boundary_friction_coefficient, traction_of, out.traction,
                    &lub::EhlTraction::force_per_length_N_per_m, "per_length_N_per_m", "N_per_m", out.summary);
@@ -624,7 +633,8 @@ void solve_point_profile(const EhlRun& run, EhlSolve& out) {
   out.converged = out.point_film->converged;
   out.summary["regime"] = "mixed (node by node, lubrication/ehl_point.h: Hu & Zhu's unified model, ridges across the track)";
   const auto traction_of = [&](const lub::EhlPointResult& f) {
-    return lub::ehl_point_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating);
+    return lub::ehl_point_traction(f, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating,
+                                   run.limiting_shear);
   };
   profile_friction(*out.point_film, out.converged, c.load_N, run.profile->boundary_friction_coefficient, traction_of, out.point_traction,
                    &lub::EhlPointTraction::force_N, "N", "N", out.summary);
@@ -652,7 +662,8 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
     out.converged = out.point_film->converged;
     if (out.converged)
       out.point_traction =
-          lub::ehl_point_traction(*out.point_film, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating);
+          lub::ehl_point_traction(*out.point_film, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa, c.load_N, run.heating,
+                                  run.limiting_shear);
     j["regime"] = "full film (smooth surfaces)";
   }
   const lub::EhlPointResult& f = *out.point_film;
@@ -663,8 +674,8 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
   j["krylov_iterations"] = f.krylov_iterations;
   film_summary(j, f, out.converged, out.mixed_point ? &*out.mixed_point : nullptr,
                {t.friction_coefficient, t.force_N, t.max_shear_stress_Pa, t.max_film_temperature_rise_K, t.max_surface_temperature_rise_K,
-                t.surface_peclet_number},
-               "traction_N", run.heating.surfaces.has_value());
+                t.surface_peclet_number, t.limited_node_share},
+               "traction_N", run.heating.surfaces.has_value(), run.limiting_shear.on());
   const auto g = lub::reference::point_contact_groups(c.load_N, c.reduced_radius_m, c.reduced_modulus_Pa, c.mean_speed_m_per_s,
                                                       run.lubricant.viscosity_Pa_s, run.lubricant.pressure_viscosity_per_Pa);
   j["dimensionless"] = {{"W", g.load}, {"U", g.speed}, {"G", g.material}};
@@ -717,7 +728,7 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
     out.converged = out.film.converged;
     if (out.converged)  // no traction from a film that is not a solution
       out.traction = lub::ehl_line_traction(out.film, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa,
-                                            run.contact.load_per_length_N_per_m, run.heating);
+                                            run.contact.load_per_length_N_per_m, run.heating, run.limiting_shear);
     j["regime"] = "full film (smooth surfaces)";
   }
   const lub::EhlLineResult& f = out.film;
@@ -726,8 +737,8 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
   j["hertz_half_width_m"] = f.hertz_half_width_m;
   film_summary(j, f, out.converged, out.mixed ? &*out.mixed : nullptr,
                {t.friction_coefficient, t.force_per_length_N_per_m, t.max_shear_stress_Pa, t.max_film_temperature_rise_K,
-                t.max_surface_temperature_rise_K, t.surface_peclet_number},
-               "traction_N_per_m", run.heating.surfaces.has_value());
+                t.max_surface_temperature_rise_K, t.surface_peclet_number, t.limited_node_share},
+               "traction_N_per_m", run.heating.surfaces.has_value(), run.limiting_shear.on());
   const lub::EhlLineContact& c = run.contact;
   const auto g = lub::reference::line_contact_groups(c.load_per_length_N_per_m, c.reduced_radius_m, c.reduced_modulus_Pa,
                                                      c.mean_speed_m_per_s, run.lubricant.viscosity_Pa_s,

@@ -31,6 +31,7 @@ struct EhlRun {
   double sliding_speed_m_per_s = 0.0;  // u1 − u2 (the traction's; the film depends on u_m only)
   lubrication::PiezoviscousLubricant lubricant;
   double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film
+  lubrication::LimitingShear limiting_shear;  // τ_L0 + Λ p; off unless [lubricant] gives either
   lubrication::FilmHeating heating;    // off unless [lubricant] thermal_conductivity_W_per_m_K is given
   lubrication::EhlLineOptions options;
   // With [roughness]: the rough contact's mixed regime by load sharing (mixed_line.h, mixed_point.h) — the summits,
@@ -81,7 +82,7 @@ struct EhlRun {
 
 // Reads and checks `path`: [contact] (geometry = "line" with load_per_length_N_per_m, or "point"
 // with load_N; radius, modulus, entrainment, and the sliding speed or the slide-to-roll ratio), [lubricant] (η0, α, law, compressible,
-// eyring_stress_Pa, the film's heating), optionally [roughness] (summit density, radius, standard
+// eyring_stress_Pa, the limiting shear, the film's heating), optionally [roughness] (summit density, radius, standard
 // deviation and mean height, boundary friction coefficient) or [profile] (a waviness's amplitude and
 // wavelength or a measured trace's file, the boundary layers' thickness and contact margin, boundary
 // friction coefficient) and, for a point, [surface] (a generated or measured height map), and

@@ -14,17 +14,17 @@ namespace tribo::lubrication {
 
 namespace {
 
-// The shear stress at one node: τ = τ0 asinh(η e^{−γΔT(τ)} Δu/(τ0 h)) for Δu ≥ 0 (the caller
-// carries the sign), ΔT(τ) = film_rise(τ) the film's mean temperature rise, which grows with τ
-// (Walls below). No heating when `heated` is false; the isothermal stress (with the rise it
-// makes) when γ = 0.
+// The shear stress at one node: τ = min(τ0 asinh(η e^{−γΔT(τ)} Δu/(τ0 h)), τ_L) for Δu ≥ 0 (the
+// caller carries the sign), ΔT(τ) = film_rise(τ) the film's mean temperature rise, which grows
+// with τ (Walls below), τ_L = limit_Pa (+∞: no limit). No heating when `heated` is false; the
+// isothermal stress (with the rise it makes) when γ = 0.
 template <class FilmRise>
-double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, bool heated, double gamma, const FilmRise& film_rise,
-                       double* rise_K) {
+double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, double limit_Pa, bool heated, double gamma,
+                       const FilmRise& film_rise, double* rise_K) {
   const bool newtonian = std::isinf(tau0);
   const auto stress_at = [&](double temperature_rise_K) {
     const double newtonian_stress = viscosity_Pa_s * std::exp(-gamma * temperature_rise_K) * du / h;
-    return newtonian ? newtonian_stress : tau0 * std::asinh(newtonian_stress / tau0);
+    return std::min(newtonian ? newtonian_stress : tau0 * std::asinh(newtonian_stress / tau0), limit_Pa);
   };
   if (!heated) {
     *rise_K = 0.0;
@@ -36,7 +36,8 @@ double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, 
     *rise_K = film_rise(ceiling);
     return ceiling;
   }
-  // g(τ) = τ − stress_at(ΔT(τ)) rises from −ceiling at 0 to ≥ 0 at the ceiling: bisection to
+  // g(τ) = τ − stress_at(ΔT(τ)) rises from −ceiling at 0 to ≥ 0 at the ceiling (the limit does
+  // not change that: min with a constant keeps stress_at falling in τ): bisection to
   // the last bit (each step halves the bracket; 200 steps are far more than 53 bits need).
   double lo = 0.0, hi = ceiling;
   for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
@@ -136,8 +137,12 @@ double surface_peclet(const FilmHeating& heat, double sliding_speed_m_per_s, dou
 
 // The inputs both tractions check; `load` in the unit of `load_unit`.
 void check_traction_inputs(const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s, double eyring_stress_Pa, double load,
-                           const char* load_name, const FilmHeating& heating) {
+                           const char* load_name, const FilmHeating& heating, const LimitingShear& limit) {
   validate(lubricant);
+  if (!(limit.stress_Pa >= 0.0) || !std::isfinite(limit.stress_Pa) || !(limit.pressure_coefficient >= 0.0) ||
+      !std::isfinite(limit.pressure_coefficient))
+    throw std::invalid_argument("EHL traction: the limiting shear stress and its pressure coefficient must be finite and >= 0, got " +
+                                numerics::shortest(limit.stress_Pa) + " Pa and " + numerics::shortest(limit.pressure_coefficient));
   if (!std::isfinite(sliding_speed_m_per_s))
     throw std::invalid_argument("EHL traction: the sliding speed must be finite, got " + numerics::shortest(sliding_speed_m_per_s) + " m/s");
   if (!(eyring_stress_Pa > 0.0))
@@ -180,35 +185,48 @@ double cavitation_floor_Pa(const std::vector<double>& pressure_Pa) {
 }
 
 // τ at one node of pressure p and film h (0 where the film is cavitated, p ≤ floor), its sign Δu's;
-// the node's heat is handed to `walls` (prepared for this node). where() names the node in the
-// error (formatted only then).
+// the node's heat is handed to `walls` (prepared for this node); *limited tells whether τ is at
+// the limit. where() names the node in the error (formatted only then).
 template <class Where>
 double node_stress_Pa(const PiezoviscousLubricant& lubricant, double p, double floor_Pa, double h, double du, double tau0,
-                      const FilmHeating& heating, Walls& walls, std::size_t node, double* rise_K, const Where& where) {
+                      const LimitingShear& limit, const FilmHeating& heating, Walls& walls, std::size_t node, double* rise_K,
+                      bool* limited, const Where& where) {
   *rise_K = 0.0;
+  *limited = false;
   if (!(p > floor_Pa)) {  // cavitated (or at the domain's edge)
     walls.settle(node, 0.0, h);
     return 0.0;
   }
   if (!(h > 0.0)) throw std::invalid_argument("EHL traction: non-positive film " + numerics::shortest(h) + " m at " + where());
   const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, p).ratio, speed = std::abs(du);
-  const double tau = shear_stress_Pa(eta, speed, h, tau0, heating.thermal_conductivity_W_per_m_K > 0.0, heating.temperature_viscosity_per_K,
-                                     [&](double t) { return walls.film_rise_K(t * speed, h); }, rise_K);
+  const double limit_Pa = limit.at(p);
+  const double tau = shear_stress_Pa(eta, speed, h, tau0, limit_Pa, heating.thermal_conductivity_W_per_m_K > 0.0,
+                                     heating.temperature_viscosity_per_K, [&](double t) { return walls.film_rise_K(t * speed, h); }, rise_K);
+  // At the limit the bisection ends within its last bits of τ_L.
+  *limited = speed > 0.0 && tau >= limit_Pa * (1.0 - 1e-12);
   walls.settle(node, tau * speed, h);
   return du < 0.0 ? -tau : tau;
 }
 
-// The x-range of the nodes whose film shears (p above the floor), for the surfaces' Péclet number.
+// The nodes whose film shears (p above the floor): their x-range, for the surfaces' Péclet number,
+// and how many of them are at the limiting shear stress.
 struct ShearedRange {
   double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
-  void add(double x) { lo = std::min(lo, x), hi = std::max(hi, x); }
+  long nodes = 0, limited = 0;
+  void add(double x, bool at_limit) { lo = std::min(lo, x), hi = std::max(hi, x), ++nodes, limited += at_limit ? 1 : 0; }
+  double limited_share() const { return nodes > 0 ? static_cast<double>(limited) / static_cast<double>(nodes) : 0.0; }
 };
 
 }  // namespace
 
+double LimitingShear::at(double pressure_Pa) const {
+  return on() ? stress_Pa + pressure_coefficient * std::max(pressure_Pa, 0.0) : std::numeric_limits<double>::infinity();
+}
+
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
-                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating) {
-  check_traction_inputs(lubricant, sliding_speed_m_per_s, eyring_stress_Pa, load_per_length_N_per_m, "load per length (N/m)", heating);
+                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating,
+                              const LimitingShear& limit) {
+  check_traction_inputs(lubricant, sliding_speed_m_per_s, eyring_stress_Pa, load_per_length_N_per_m, "load per length (N/m)", heating, limit);
   const std::size_t n = film.x_m.size();
   if (n < 2 || film.pressure_Pa.size() != n || film.film_m.size() != n)
     throw std::invalid_argument("EHL traction: the film needs at least two nodes with x, pressure and film thickness each");
@@ -220,10 +238,11 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
   ShearedRange sheared;
   for (std::size_t i = 0; i < n; ++i) {
     double rise_K = 0.0;
+    bool limited = false;
     walls.prepare(i);
-    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], floor_Pa, film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, heating, walls,
-                            i, &rise_K, [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
-    if (film.pressure_Pa[i] > floor_Pa) sheared.add(film.x_m[i]);
+    tau[i] = node_stress_Pa(lubricant, film.pressure_Pa[i], floor_Pa, film.film_m[i], sliding_speed_m_per_s, eyring_stress_Pa, limit, heating,
+                            walls, i, &rise_K, &limited, [&] { return "x = " + numerics::shortest(film.x_m[i]) + " m"; });
+    if (film.pressure_Pa[i] > floor_Pa) sheared.add(film.x_m[i], limited);
     out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau[i]));
     out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
   }
@@ -231,12 +250,13 @@ EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubri
   out.friction_coefficient = out.force_per_length_N_per_m / load_per_length_N_per_m;
   out.max_surface_temperature_rise_K = walls.max_surface_rise_K();
   out.surface_peclet_number = surface_peclet(heating, sliding_speed_m_per_s, sheared.lo, sheared.hi);
+  out.limited_node_share = sheared.limited_share();
   return out;
 }
 
 EhlPointTraction ehl_point_traction(const EhlPointResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
-                                    double eyring_stress_Pa, double load_N, const FilmHeating& heating) {
-  check_traction_inputs(lubricant, sliding_speed_m_per_s, eyring_stress_Pa, load_N, "load (N)", heating);
+                                    double eyring_stress_Pa, double load_N, const FilmHeating& heating, const LimitingShear& limit) {
+  check_traction_inputs(lubricant, sliding_speed_m_per_s, eyring_stress_Pa, load_N, "load (N)", heating, limit);
   const std::size_t nx = film.x_m.size(), ny = film.y_m.size();
   if (nx < 2 || ny < 2 || film.pressure_Pa.size() != nx * ny || film.film_m.size() != nx * ny)
     throw std::invalid_argument("EHL traction: the point contact's pressure and film need nx × ny = " + std::to_string(nx * ny) +
@@ -250,13 +270,14 @@ EhlPointTraction ehl_point_traction(const EhlPointResult& film, const Piezovisco
     walls.new_line(true, film.y_m[j]);
     for (std::size_t i = 0; i < nx; ++i) {
       double rise_K = 0.0;
+      bool limited = false;
       const std::size_t k = i + nx * j;
       walls.prepare(i);
       const double tau = node_stress_Pa(lubricant, film.pressure_Pa[k], floor_Pa, film.film_m[k], sliding_speed_m_per_s, eyring_stress_Pa,
-                                        heating, walls, i, &rise_K, [&] {
+                                        limit, heating, walls, i, &rise_K, &limited, [&] {
                                           return "x = " + numerics::shortest(film.x_m[i]) + " m, y = " + numerics::shortest(film.y_m[j]) + " m";
                                         });
-      if (film.pressure_Pa[k] > floor_Pa) sheared.add(film.x_m[i]);
+      if (film.pressure_Pa[k] > floor_Pa) sheared.add(film.x_m[i], limited);
       out.force_N += tau * cell;
       out.max_shear_stress_Pa = std::max(out.max_shear_stress_Pa, std::abs(tau));
       out.max_film_temperature_rise_K = std::max(out.max_film_temperature_rise_K, rise_K);
@@ -265,6 +286,7 @@ EhlPointTraction ehl_point_traction(const EhlPointResult& film, const Piezovisco
   out.friction_coefficient = out.force_N / load_N;
   out.max_surface_temperature_rise_K = walls.max_surface_rise_K();
   out.surface_peclet_number = surface_peclet(heating, sliding_speed_m_per_s, sheared.lo, sheared.hi);
+  out.limited_node_share = sheared.limited_share();
   return out;
 }
 

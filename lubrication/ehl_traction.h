@@ -7,13 +7,21 @@
 // τ0 the Eyring stress (a few MPa for mineral oils; Johnson & Tevaarwerk, Evans & Johnson 1986).
 // Above a few τ0 the stress grows only with ln Δu: the flat, slowly falling traction curves of
 // EHL rigs, where the Newtonian film would give a friction coefficient far above one.
+// Limiting shear (optional, LimitingShear): above a stress that grows with pressure,
+//   τ_L(p) = τ_L0 + Λ p    (Johnson & Tevaarwerk 1977's plastic limit; Bair & Winer 1979),
+// the film shears as a plastic solid and the stress stays at τ_L: τ = min(τ_Eyring, τ_L(p)). At
+// high pressure the Eyring stress τ0 ln(2ηΔu/(τ0 h)) would keep growing with η(p) without bound;
+// with the limit the traction coefficient of a contact sheared at its limit everywhere is
+// τ_L0 A/W + Λ, the plateau of measured traction curves (Λ a few hundredths to about a tenth for
+// mineral oils, falling with temperature; Greenwood's review, Lubricants 8 (2020) 51, names the
+// limit beside shear thinning). Λ is taken at the bulk temperature.
 // Heat (optional, FilmHeating): the shear dissipates τΔu/h per unit volume, conducted to both
 // surfaces; across a Couette film between walls at T1 and T2 the temperature is then
 // T(z) = T1 + (T2 − T1) z/h + (τΔu/(2kh)) z(h − z), its mean over the film
 //   ΔT = (T1 + T2)/2 + τΔu h/(12k).
 // The viscosity is taken at that mean, η(p) exp(−γ ΔT) (viscosity.h's exponential temperature law),
-// and τ solves τ = τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)) at each node — one root, as the right side
-// falls with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls:
+// and τ solves τ = min(τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)), τ_L(p)) at each node — one root, as
+// the right side falls with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls:
 // μ(Δu) rises, peaks and falls, the shape of measured EHL traction curves.
 // The walls stay at the bulk temperature (T1 = T2 = 0 above it) unless FilmHeating::surfaces is set:
 // then each surface warms by its flash temperature, Jaeger's fast moving heat source
@@ -64,6 +72,15 @@ struct FilmHeating {
   double interface_heat_half_width_m = 0.0;
 };
 
+// The lubricant's limiting shear stress τ_L(p) = τ_L0 + Λ p; off (no limit) when both are 0.
+struct LimitingShear {
+  double stress_Pa = 0.0;             // τ_L0, the limit at ambient pressure
+  double pressure_coefficient = 0.0;  // Λ = dτ_L/dp (dimensionless)
+  bool on() const { return stress_Pa > 0.0 || pressure_coefficient > 0.0; }
+  // τ_L at pressure p (+∞ when off).
+  double at(double pressure_Pa) const;
+};
+
 struct EhlTraction {
   double force_per_length_N_per_m = 0.0;
   double friction_coefficient = 0.0;
@@ -74,6 +91,8 @@ struct EhlTraction {
   // (moving_heat_source.h: the fast-source model wants it above 5). Both 0 without.
   double max_surface_temperature_rise_K = 0.0;
   double surface_peclet_number = 0.0;
+  // With a LimitingShear: the share of the sheared nodes whose stress is at the limit (0 without).
+  double limited_node_share = 0.0;
 };
 
 // Throws std::invalid_argument for a sliding speed that is not finite, an Eyring stress that is
@@ -82,9 +101,11 @@ struct EhlTraction {
 // film's conductivity, with a bad solid (or a second solid without the first) or with a surface
 // that does not move through the contact (|Δu| ≥ 2 u_m: a surface at rest sees a stationary
 // source, outside the fast-source model), or a film with fewer than two nodes or a non-positive
-// film thickness where the pressure is positive.
+// film thickness where the pressure is positive, and a limiting shear stress or pressure coefficient
+// that is negative or not finite.
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
-                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating = {});
+                              double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating = {},
+                              const LimitingShear& limit = {});
 
 // The same shear over a point contact's nodes (ehl_point.h), each node standing for its Δx Δy
 // cell: traction force F = Σ τ Δx Δy over the pressurised nodes, μ = F / W.
@@ -95,10 +116,12 @@ struct EhlPointTraction {
   double max_film_temperature_rise_K = 0.0;
   double max_surface_temperature_rise_K = 0.0;  // as EhlTraction
   double surface_peclet_number = 0.0;
+  double limited_node_share = 0.0;
 };
 // Throws std::invalid_argument as ehl_line_traction (a non-positive load in N), and for fields whose
 // sizes do not match the grid.
 EhlPointTraction ehl_point_traction(const EhlPointResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
-                                    double eyring_stress_Pa, double load_N, const FilmHeating& heating = {});
+                                    double eyring_stress_Pa, double load_N, const FilmHeating& heating = {},
+                                    const LimitingShear& limit = {});
 
 }  // namespace tribo::lubrication

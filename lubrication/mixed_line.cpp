@@ -52,7 +52,8 @@ MixedLineResult solve_mixed_line(const MixedLineContact& c, const PiezoviscousLu
   // The summits' friction heats the surfaces too, at their mean pressure, as the load balance takes it.
   const FilmHeating heating = load_sharing::with_summits_heat(c.heating, c.boundary_friction_coefficient, searched.found.summits.pressure_Pa,
                                                               c.sliding_speed_m_per_s, half_width_m);
-  out.traction = ehl_line_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, heating);
+  out.traction = ehl_line_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, heating,
+                                   c.limiting_shear);
   out.boundary_friction_N_per_m = c.boundary_friction_coefficient * out.asperity_load_per_length_N_per_m;
   out.film_friction_N_per_m = out.traction.force_per_length_N_per_m;
   out.friction_coefficient = (out.boundary_friction_N_per_m + out.film_friction_N_per_m) / w;

@@ -50,6 +50,7 @@ struct MixedLineContact {
   double boundary_friction_coefficient = 0.1;  // f_c ≥ 0 of the asperity contacts
   double sliding_speed_m_per_s = 0.0;          // Δu, for the film's traction
   double eyring_stress_Pa = std::numeric_limits<double>::infinity();  // τ0; +∞: Newtonian film
+  LimitingShear limiting_shear;                                       // τ_L0 + Λ p; off by default
   FilmHeating heating;                                                // off by default
 };
 

@@ -52,7 +52,8 @@ MixedPointResult solve_mixed_point(const MixedPointContact& c, const Piezoviscou
   // The summits' friction heats the surfaces too, at their mean pressure, as the load balance takes it.
   const FilmHeating heating = load_sharing::with_summits_heat(c.heating, c.boundary_friction_coefficient, searched.found.summits.pressure_Pa,
                                                               c.sliding_speed_m_per_s, a);
-  out.traction = ehl_point_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, heating);
+  out.traction = ehl_point_traction(out.film, lubricant, c.sliding_speed_m_per_s, c.eyring_stress_Pa, out.film_share * w, heating,
+                                   c.limiting_shear);
   out.boundary_friction_N = c.boundary_friction_coefficient * out.asperity_load_N;
   out.film_friction_N = out.traction.force_N;
   out.friction_coefficient = (out.boundary_friction_N + out.film_friction_N) / w;

@@ -283,6 +283,76 @@ TEST(EhlTraction, TwoSolidsShareTheHeatByTheirEffusivities) {
               (thermal_effusivity(bearing_steel()) + thermal_effusivity(soda_lime_glass())) / (2.0 * thermal_effusivity(soda_lime_glass())), 2e-3);
 }
 
+// The limiting shear stress τ_L = τ_L0 + Λ p (LimitingShear), on closed forms.
+//
+// A Newtonian film over the parabolic gap at a uniform pressure, its limit half the stress at the
+// centre: the middle |x| < x_c, where ηΔu/h > τ_L, shears at τ_L, the rest as before. With
+// h(x_c) = ηΔu/τ_L = 2 h0, x_c = √(2R h0), and
+//   F = τ_L 2x_c + ηΔu √(2R/h0) · 2 (atan(a/√(2R h0)) − π/4).
+// The trapezoidal rule's O(Δx²) at the two kinks and over the arctan part leaves under 1e-5 with
+// 20001 nodes; the share of nodes at the limit is x_c/a = 1/20 to a node at each kink.
+TEST(EhlTraction, ANewtonianFilmAboveItsLimitShearsAtTheLimitInTheMiddleOnly) {
+  const double h0 = 2e-7, R = 0.01, eta = 0.04, du = 1.0, w = 1e5, p = 1e6;
+  const double l = std::sqrt(2.0 * R * h0), a = 20.0 * l;
+  const double tau_limit = 0.5 * eta * du / h0;  // τ_L0 + Λ p with Λ = 0.05 and τ_L0 the rest
+  const LimitingShear limit{tau_limit - 0.05 * p, 0.05};
+  const int nodes = 20001;
+  const EhlTraction t = ehl_line_traction(parabolic_film(h0, R, a, p, nodes), isoviscous(eta), du, kInf, w, {}, limit);
+  const double x_c = l;
+  const double exact = tau_limit * 2.0 * x_c + eta * du * std::sqrt(2.0 * R / h0) * 2.0 * (std::atan(a / l) - std::atan(1.0));
+  EXPECT_NEAR(t.force_per_length_N_per_m, exact, 1e-5 * exact);
+  EXPECT_DOUBLE_EQ(t.max_shear_stress_Pa, tau_limit);
+  EXPECT_NEAR(t.limited_node_share, x_c / a, 2.0 / nodes);
+  // Without the limit the centre shears at ηΔu/h0, twice the limit; nothing is limited.
+  const EhlTraction free = ehl_line_traction(parabolic_film(h0, R, a, p, nodes), isoviscous(eta), du, kInf, w);
+  EXPECT_DOUBLE_EQ(free.max_shear_stress_Pa, 2.0 * tau_limit);
+  EXPECT_EQ(free.limited_node_share, 0.0);
+}
+
+// A Hertzian pressure p_H √(1 − x²/b²) under a film stiff enough that the Eyring stress exceeds the
+// limit everywhere: every node shears at τ_L0 + Λ p, so F = Λ (π/2) p_H b + τ_L0 2b and, over the
+// Hertz load w = (π/2) p_H b, μ = Λ + 4 τ_L0/(π p_H) — the plateau of a traction curve at its
+// limit. Tolerance 1e-5: the trapezoidal rule's O(Δx^{3/2}) at the semi-ellipse's ends and the
+// half cells at its edges (unsheared, p = 0), with Δx = b/10⁴.
+TEST(EhlTraction, AContactShearedAtItsLimitEverywhereHasTheLimitsFrictionCoefficient) {
+  const double p_h = 1e9, b = 1e-4, h = 1e-7, lambda = 0.05, tau_l0 = 2e6, tau0 = 5e6;
+  const int nodes = 20001;
+  EhlLineResult film;
+  for (int i = 0; i < nodes; ++i) {
+    const double x = -b + 2.0 * b * i / (nodes - 1);
+    film.x_m.push_back(x);
+    film.film_m.push_back(h);
+    film.pressure_Pa.push_back(p_h * std::sqrt(std::max(1.0 - x * x / (b * b), 0.0)));
+  }
+  // η = 1e6 Pa s: the Eyring stress τ0 asinh(ηΔu/(τ0 h)) = 76 MPa, above τ_L ≤ 52 MPa.
+  const double w = 0.5 * M_PI * p_h * b;
+  const EhlTraction t = ehl_line_traction(film, isoviscous(1e6), 1.0, tau0, w, {}, LimitingShear{tau_l0, lambda});
+  EXPECT_NEAR(t.friction_coefficient, lambda + 4.0 * tau_l0 / (M_PI * p_h), 1e-5 * lambda);
+  EXPECT_DOUBLE_EQ(t.limited_node_share, 1.0);
+  EXPECT_DOUBLE_EQ(t.max_shear_stress_Pa, tau_l0 + lambda * p_h);
+}
+
+// Heat and the limit. A film held at its limit makes the heat τ_L Δu, so its mean temperature rise
+// is τ_L Δu h/(12k) whatever its viscosity (1e-12). The limit caps the heated stress, not the
+// isothermal one: the Lambert-W film of HeatedNewtonianFilmFollowsLambertW (s = 1) under a limit
+// between its heated stress 12kΩ/(γΔu h) and its isothermal ηΔu/h shears as without the limit.
+TEST(EhlTraction, AFilmAtItsLimitHeatsByTheLimitsStressAndTheLimitCapsTheHeatedStress) {
+  const double h = 1e-6, k = 0.13, gamma = 0.03, du = 1.0, p = 1e8, lambda = 0.05;
+  const EhlLineResult film = parabolic_film(h, 1e30, 1e-4, p, 11);
+  const EhlTraction held = ehl_line_traction(film, isoviscous(100.0), du, kInf, 1e5, film_heating(k, gamma), LimitingShear{0.0, lambda});
+  const double tau_limit = lambda * p;
+  EXPECT_DOUBLE_EQ(held.max_shear_stress_Pa, tau_limit);
+  EXPECT_NEAR(held.max_film_temperature_rise_K, tau_limit * du * h / (12.0 * k), 1e-12 * tau_limit * du * h / (12.0 * k));
+  EXPECT_DOUBLE_EQ(held.limited_node_share, 1.0);
+
+  const double eta = 0.04, omega = 0.5671432904097838, du_s1 = std::sqrt(12.0 * k / (gamma * eta));
+  const double heated = 12.0 * k * omega / (gamma * du_s1 * h), isothermal = eta * du_s1 / h;
+  const LimitingShear between{0.0, 0.5 * (heated + isothermal) / p};
+  const EhlTraction capped = ehl_line_traction(film, isoviscous(eta), du_s1, kInf, 1e5, film_heating(k, gamma), between);
+  EXPECT_NEAR(capped.max_shear_stress_Pa, heated, 1e-12 * heated);
+  EXPECT_EQ(capped.limited_node_share, 0.0);
+}
+
 TEST(EhlTraction, BadInputIsRejected) {
   const EhlLineResult film = parabolic_film(2e-7, 0.01, 1e-4, 1e6, 11);
   const PiezoviscousLubricant l = isoviscous(0.04);
@@ -301,6 +371,9 @@ TEST(EhlTraction, BadInputIsRejected) {
   FilmHeating second_alone = film_heating(0.13, 0.03);
   second_alone.second_surface = bearing_steel();
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, second_alone), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {}, LimitingShear{0.0, -0.05}), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {}, LimitingShear{std::nan(""), 0.05}), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {}, LimitingShear{kInf, 0.0}), std::invalid_argument);
   EhlLineResult collapsed = film;
   collapsed.film_m[5] = 0.0;
   EXPECT_THROW(ehl_line_traction(collapsed, l, 0.1, 5e6, 1e5), std::invalid_argument);
