@@ -74,6 +74,24 @@ TEST(MixedLine, TheSummitsFrictionHeatsTheSurfacesBesideTheFilm) {
   EXPECT_GT(cold.film_friction_N_per_m, r.film_friction_N_per_m);
 }
 
+// The film's traction takes the contact's limiting shear stress (LimitingShear): the same film
+// sheared under the same limit apart gives the same force (1e-12), and a limit of a tenth of the
+// unlimited peak stress per peak pressure lowers the film's friction without moving the share.
+TEST(MixedLine, TheFilmsTractionIsCappedAtTheLimitingShearStress) {
+  MixedLineContact c = rough_rollers(0.3);
+  const MixedLineResult free = solve_mixed_line(c, steel_rollers::mineral_oil(), coarse());
+  ASSERT_TRUE(free.converged) << free.message;
+  c.limiting_shear.pressure_coefficient = 0.1 * free.traction.max_shear_stress_Pa / free.film.max_pressure_Pa;
+  const MixedLineResult r = solve_mixed_line(c, steel_rollers::mineral_oil(), coarse());
+  ASSERT_TRUE(r.converged) << r.message;
+  const EhlTraction t = ehl_line_traction(r.film, steel_rollers::mineral_oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa,
+                                          r.film_load_per_length_N_per_m, c.heating, c.limiting_shear);
+  EXPECT_NEAR(r.traction.force_per_length_N_per_m, t.force_per_length_N_per_m, 1e-12 * t.force_per_length_N_per_m);
+  EXPECT_GT(r.traction.limited_node_share, 0.0);
+  EXPECT_EQ(r.film_share, free.film_share);
+  EXPECT_LT(r.film_friction_N_per_m, free.film_friction_N_per_m);
+}
+
 // In the mixed regime (0.3 m/s) the share found balances the load: the film solver called at
 // s w and s E' gives the reported central film, and Greenwood–Williamson at d = h_c − y_s over
 // the whole load's Hertz width carries the rest, to the stated tolerance.
