@@ -136,6 +136,8 @@ HomogeniseRun load_homogenise_run(const toml::table& doc, const std::filesystem:
     homogenise::MicroEhl m;
     m.eyring_stress_Pa = e->number("eyring_stress_Pa", m.eyring_stress_Pa, Range::positive);
     m.tip_roughness_m = e->number("tip_roughness_m", m.tip_roughness_m, Range::positive);
+    m.limiting_shear.stress_Pa = e->number("limiting_shear_stress_Pa", 0.0, Range::non_negative);
+    m.limiting_shear.pressure_coefficient = e->number("limiting_shear_pressure_coefficient", 0.0, Range::non_negative);
     m.min_speed_m_per_s = e->number("min_speed_m_per_s", m.min_speed_m_per_s, Range::positive);
     m.max_speed_m_per_s = e->number("max_speed_m_per_s", m.max_speed_m_per_s, Range::positive);
     m.speeds_per_decade = static_cast<int>(e->integer("speeds_per_decade", m.speeds_per_decade, 1, 100));

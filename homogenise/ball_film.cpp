@@ -46,7 +46,8 @@ BallFilmNode solve_node(const HomogeniseOptions& o, const lubrication::Piezovisc
         node.left_out[j] = film.message;
         continue;
       }
-      const lubrication::EhlPointTraction f = lubrication::ehl_point_traction(film, oil, u, o.micro_ehl->eyring_stress_Pa, s * w);
+      const lubrication::EhlPointTraction f = lubrication::ehl_point_traction(film, oil, u, o.micro_ehl->eyring_stress_Pa, s * w, {},
+                                                                                 o.micro_ehl->limiting_shear);
       node.central_film_m[j] = film.central_film_m;
       node.traction_N[j] = f.force_N;
       if (film.central_film_m < last_film_m) last_film_m = film.central_film_m, ++usable;

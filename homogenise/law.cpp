@@ -163,6 +163,8 @@ nlohmann::json law_json(const HomogeniseOptions& o, const CellTable& cells, cons
                 {"dropped_separations_m", dropped_on_table_axis(o, cells)}};
   if (films) {
     j["micro_ehl"] = {{"eyring_stress_Pa", o.micro_ehl->eyring_stress_Pa},
+                      {"limiting_shear_stress_Pa", o.micro_ehl->limiting_shear.stress_Pa},
+                      {"limiting_shear_pressure_coefficient", o.micro_ehl->limiting_shear.pressure_coefficient},
                       {"tip_roughness_m", o.micro_ehl->tip_roughness_m},
                       {"pressure_viscosity_per_Pa", o.lubricant.pressure_viscosity_per_Pa},
                       {"min_speed_m_per_s", o.micro_ehl->min_speed_m_per_s},

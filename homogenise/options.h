@@ -17,6 +17,7 @@
 
 #include "contact/surface.h"
 #include "contact/thermoelastic.h"
+#include "lubrication/limiting_shear.h"
 #include "lubrication/micro_ehl.h"
 #include "lubrication/viscosity.h"
 
@@ -49,6 +50,7 @@ struct MicroEhl {
   double eyring_stress_Pa = lubrication::MicroEhlOptions{}.eyring_stress_Pa;
   double tip_roughness_m = lubrication::MicroEhlOptions{}.tip_roughness_m;  // hand-set: thesis Appendix V
   lubrication::PressureViscosityLaw pressure_viscosity_law = lubrication::MicroEhlOptions{}.law;  // of the films' shear
+  lubrication::LimitingShear limiting_shear;  // τ_L0 + Λ p of the films (the spots' and a ball's); off by default
   double min_speed_m_per_s = 1e-6;
   double max_speed_m_per_s = 10.0;
   int speeds_per_decade = 2;

@@ -139,10 +139,7 @@ double surface_peclet(const FilmHeating& heat, double sliding_speed_m_per_s, dou
 void check_traction_inputs(const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s, double eyring_stress_Pa, double load,
                            const char* load_name, const FilmHeating& heating, const LimitingShear& limit) {
   validate(lubricant);
-  if (!(limit.stress_Pa >= 0.0) || !std::isfinite(limit.stress_Pa) || !(limit.pressure_coefficient >= 0.0) ||
-      !std::isfinite(limit.pressure_coefficient))
-    throw std::invalid_argument("EHL traction: the limiting shear stress and its pressure coefficient must be finite and >= 0, got " +
-                                numerics::shortest(limit.stress_Pa) + " Pa and " + numerics::shortest(limit.pressure_coefficient));
+  validate(limit, "EHL traction");
   if (!std::isfinite(sliding_speed_m_per_s))
     throw std::invalid_argument("EHL traction: the sliding speed must be finite, got " + numerics::shortest(sliding_speed_m_per_s) + " m/s");
   if (!(eyring_stress_Pa > 0.0))
@@ -219,9 +216,6 @@ struct ShearedRange {
 
 }  // namespace
 
-double LimitingShear::at(double pressure_Pa) const {
-  return on() ? stress_Pa + pressure_coefficient * std::max(pressure_Pa, 0.0) : std::numeric_limits<double>::infinity();
-}
 
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
                               double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating,

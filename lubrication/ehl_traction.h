@@ -7,14 +7,11 @@
 // τ0 the Eyring stress (a few MPa for mineral oils; Johnson & Tevaarwerk, Evans & Johnson 1986).
 // Above a few τ0 the stress grows only with ln Δu: the flat, slowly falling traction curves of
 // EHL rigs, where the Newtonian film would give a friction coefficient far above one.
-// Limiting shear (optional, LimitingShear): above a stress that grows with pressure,
-//   τ_L(p) = τ_L0 + Λ p    (Johnson & Tevaarwerk 1977's plastic limit; Bair & Winer 1979),
-// the film shears as a plastic solid and the stress stays at τ_L: τ = min(τ_Eyring, τ_L(p)). At
-// high pressure the Eyring stress τ0 ln(2ηΔu/(τ0 h)) would keep growing with η(p) without bound;
-// with the limit the traction coefficient of a contact sheared at its limit everywhere is
-// τ_L0 A/W + Λ, the plateau of measured traction curves (Λ a few hundredths to about a tenth for
-// mineral oils, falling with temperature; Greenwood's review, Lubricants 8 (2020) 51, names the
-// limit beside shear thinning). Λ is taken at the bulk temperature.
+// Limiting shear (optional, limiting_shear.h): τ = min(τ_Eyring, τ_L0 + Λ p). At high pressure
+// the Eyring stress τ0 ln(2ηΔu/(τ0 h)) would keep growing with η(p) without bound; with the limit
+// the traction coefficient of a contact sheared at its limit everywhere is τ_L0 A/W + Λ, the
+// plateau of measured traction curves (Greenwood's review, Lubricants 8 (2020) 51, names the limit
+// beside shear thinning).
 // Heat (optional, FilmHeating): the shear dissipates τΔu/h per unit volume, conducted to both
 // surfaces; across a Couette film between walls at T1 and T2 the temperature is then
 // T(z) = T1 + (T2 − T1) z/h + (τΔu/(2kh)) z(h − z), its mean over the film
@@ -48,6 +45,7 @@
 
 #include "lubrication/ehl_line.h"
 #include "lubrication/ehl_point.h"
+#include "lubrication/limiting_shear.h"
 #include "lubrication/moving_heat_source.h"
 #include "lubrication/piezoviscous.h"
 
@@ -70,15 +68,6 @@ struct FilmHeating {
   // and it changes nothing.
   double interface_heat_W_per_m2 = 0.0;
   double interface_heat_half_width_m = 0.0;
-};
-
-// The lubricant's limiting shear stress τ_L(p) = τ_L0 + Λ p; off (no limit) when both are 0.
-struct LimitingShear {
-  double stress_Pa = 0.0;             // τ_L0, the limit at ambient pressure
-  double pressure_coefficient = 0.0;  // Λ = dτ_L/dp (dimensionless)
-  bool on() const { return stress_Pa > 0.0 || pressure_coefficient > 0.0; }
-  // τ_L at pressure p (+∞ when off).
-  double at(double pressure_Pa) const;
 };
 
 struct EhlTraction {

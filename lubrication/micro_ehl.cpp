@@ -1,5 +1,6 @@
 #include "lubrication/micro_ehl.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,7 @@ void validate(const MicroEhlOptions& o) {
   positive(o.tip_roughness_m, "tip_roughness_m");
   positive(o.interface_shear_strength_Pa, "interface_shear_strength_Pa");
   positive(o.viscosity_Pa_s, "viscosity_Pa_s");
+  validate(o.limiting_shear, "micro-EHL");
 }
 
 namespace {
@@ -52,7 +54,8 @@ SpotFilm spot_film(const contact::ContactSpot& spot, double eta_u, const MicroEh
                      contact::gw_integral(SummitDistribution::gaussian, 1.0, 0.0);
   // asinh(x) with ln x = ln ηU + ln R(p̄) − ln(τ0 h_c): R alone reaches 1e7–1e10 at the hardness.
   const double ln_x = std::log(eta_u) + log_viscosity_ratio(o, spot.mean_pressure_Pa) - std::log(o.eyring_stress_Pa * f.central_film_m);
-  f.fluid_shear_Pa = o.eyring_stress_Pa * (ln_x > 20.0 ? std::log(2.0) + ln_x : std::asinh(std::exp(ln_x)));
+  f.fluid_shear_Pa = std::min(o.eyring_stress_Pa * (ln_x > 20.0 ? std::log(2.0) + ln_x : std::asinh(std::exp(ln_x))),
+                              o.limiting_shear.at(spot.mean_pressure_Pa));
   f.shear_Pa = f.boundary_share * o.interface_shear_strength_Pa + (1.0 - f.boundary_share) * f.fluid_shear_Pa;
   return f;
 }

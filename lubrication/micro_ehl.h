@@ -12,7 +12,8 @@
 //             share of the spot is the Greenwood–Williamson real-area ratio at the film's height,
 //               b = F_1(h_c/σ_tip) / F_1(0)   (Gaussian summits; 1 at h_c = 0, e^{−Λ²/2}-fast beyond);
 //   fluid     Eyring shear of the Couette film at the spot's mean pressure p̄ (ehl_traction.h's
-//             form, isothermal): τ_f = τ0 asinh(η(p̄) U / (τ0 h_c)), η(p̄) = η R(p̄) with Roelands'
+//             form, isothermal): τ_f = τ0 asinh(η(p̄) U / (τ0 h_c)), capped at the limiting shear
+//             stress τ_L0 + Λ p̄ when one is given (limiting_shear.h), η(p̄) = η R(p̄) with Roelands'
 //             pressure ratio R (piezoviscous.h; the default, as in the EHL solvers) or Barus' e^{α p̄}.
 //             At a steel spot's pressure, the hardness 1.18 GPa, Barus gives e^{23.6} and Roelands
 //             (thesis oil) e^{15.9}: Barus overstates η by 2000× there, and τ_f by 7.7 τ0;
@@ -34,6 +35,7 @@
 #include <vector>
 
 #include "contact/contact_spots.h"
+#include "lubrication/limiting_shear.h"
 #include "lubrication/piezoviscous.h"
 
 namespace tribo::lubrication {
@@ -46,13 +48,16 @@ struct MicroEhlOptions {
   double viscosity_Pa_s = Lubricant{}.viscosity_Pa_s;  // η0, for Roelands' index z (piezoviscous.h)
   // Eyring stress τ0 (a few MPa for mineral oils: Johnson & Tevaarwerk 1977; Evans & Johnson 1986).
   double eyring_stress_Pa = 5.0e6;
+  // τ_L0 + Λ p̄, the film's limiting shear stress; off by default (the oil's, when measured).
+  LimitingShear limiting_shear;
   // σ_tip: roughness of the tips below the contact grid. Hand-set: default the thesis slider's
   // post-test finish along the sliding direction, 1–1.5 µin CLA (Appendix V), Rq ≈ 1.25 CLA = 40 nm.
   double tip_roughness_m = 40e-9;
   double interface_shear_strength_Pa = 1.18e9 / 5.3;  // τ_i of the boundary junctions
 };
 
-// Throws std::invalid_argument naming the first field that is not positive and finite.
+// Throws std::invalid_argument naming the first field that is not positive and finite (the limiting
+// shear's: not finite and >= 0).
 void validate(const MicroEhlOptions& options);
 
 struct SpotFilm {

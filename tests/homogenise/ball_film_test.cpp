@@ -106,7 +106,8 @@ Film film_at_share(const HomogeniseOptions& o, double share, double u) {
   const lubrication::EhlPointResult f =
       lubrication::solve_ehl_point({w, o.pin.radius_m, share * 2.0 * o.e_star_Pa, 0.5 * u}, ball_oil(o), grid);
   EXPECT_TRUE(f.converged) << f.message;
-  return {f.central_film_m, lubrication::ehl_point_traction(f, ball_oil(o), u, o.micro_ehl->eyring_stress_Pa, w).force_N};
+  return {f.central_film_m,
+          lubrication::ehl_point_traction(f, ball_oil(o), u, o.micro_ehl->eyring_stress_Pa, w, {}, o.micro_ehl->limiting_shear).force_N};
 }
 
 TEST(BallFilm, TheFaceIsHertzsCircleAndTheAsperitiesCarryThePatchPressureOverIt) {
@@ -200,6 +201,31 @@ TEST(BallFilm, FilmsThinnerThanTheRestSeparationNeedNotBeSolved) {
       EXPECT_NEAR(a.at(h).traction_N / b.at(h).traction_N, 1.0, 1e-9) << k << ' ' << h;
     }
   }
+}
+
+TEST(BallFilm, NoFilmShearsAboveItsLimitingShearStress) {
+  // [micro_ehl] limiting_shear_pressure_coefficient Λ: each solved film shears at no more than Λ p
+  // anywhere, so its traction is at most Λ times the load it carries, Λ s W (its pressures
+  // integrate to s W to the solver's load balance, 1e-6 here), and the fastest films reach it
+  // (above 0.9 of it); the limit lowers the traction of the film at share 0.05 and 1 m/s.
+  HomogeniseOptions o = ball_options();
+  o.micro_ehl->limiting_shear.pressure_coefficient = 0.02;
+  const BallFilmTable t = ball_film(o, 40e-9);
+  int solved = 0;
+  double nearest = 0.0;
+  for (std::size_t k = 1; k < t.eta_u_Pa_m.size(); ++k)
+    for (std::size_t j = 0; j < t.share.size(); ++j) {
+      if (std::isnan(t.traction_N[k][j])) continue;
+      ++solved;
+      const double bound = 0.02 * t.share[j] * o.pin.normal_load_N;
+      EXPECT_LE(t.traction_N[k][j], bound * (1.0 + 1e-6)) << k << " " << j;
+      nearest = std::max(nearest, t.traction_N[k][j] / bound);
+    }
+  EXPECT_GT(solved, 10);
+  EXPECT_GT(nearest, 0.9);
+  const Film f = film_at_share(o, 0.05, 1.0);
+  HomogeniseOptions unlimited = ball_options();
+  EXPECT_LT(f.traction_N, film_at_share(unlimited, 0.05, 1.0).traction_N);
 }
 
 TEST(BallFilm, AKilledRunResumesFromTheSpeedNodesItKept) {

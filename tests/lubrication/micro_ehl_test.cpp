@@ -96,6 +96,25 @@ TEST(MicroEhl, RoelandsFilmShearsLessThanBarusAtTheHardnessByTheLogOfTheirRatio)
   EXPECT_NEAR(drop, 23.6 - 15.9, 0.1);  // the two logs to 0.05 each
 }
 
+// With a limiting shear stress the fluid shear is min(Eyring, τ_L0 + Λ p̄): at the hardness the
+// thesis oil's Roelands film shears above τ_L = 1 MPa + 0.05 p̄ = 60 MPa (asserted), which caps it
+// exactly; at 1 MPa the Eyring stress lies below the limit and is kept, bit for bit. The spot's
+// shear mixes the capped stress as before.
+TEST(MicroEhl, FluidShearStopsAtTheLimitingShearStress) {
+  MicroEhlOptions o;
+  o.limiting_shear = {1e6, 0.05};
+  const MicroEhlOptions free;
+  const double eta_u = 0.021 * 0.3;
+  contact::ContactSpot s = hard_spot();
+  const SpotFilm capped = spot_film(s, eta_u, o);
+  ASSERT_GT(spot_film(s, eta_u, free).fluid_shear_Pa, 1e6 + 0.05 * s.mean_pressure_Pa);
+  EXPECT_DOUBLE_EQ(capped.fluid_shear_Pa, 1e6 + 0.05 * s.mean_pressure_Pa);
+  EXPECT_NEAR(capped.shear_Pa, capped.boundary_share * o.interface_shear_strength_Pa + (1.0 - capped.boundary_share) * capped.fluid_shear_Pa, 1e-6);
+  s.mean_pressure_Pa = 1e6;
+  ASSERT_LT(spot_film(s, eta_u, free).fluid_shear_Pa, 1e6);
+  EXPECT_EQ(spot_film(s, eta_u, o).fluid_shear_Pa, spot_film(s, eta_u, free).fluid_shear_Pa);
+}
+
 // Thick films leave almost no junction: at ηU = 1 Pa m (a 0.05 Pa s oil at 20 m/s) the film is
 // ≈ 0.2 µm, five tip roughnesses (b = F_1(5)/F_1(0) ≈ 1e-7), and the spot shears as fluid.
 TEST(MicroEhl, ThickFilmsShearAsFluid) {
@@ -133,6 +152,9 @@ TEST(MicroEhl, NegativeSpeedsAndEmptySpotsAreRefused) {
   MicroEhlOptions bad;
   bad.tip_roughness_m = 0.0;
   EXPECT_THROW(validate(bad), std::invalid_argument);
+  MicroEhlOptions negative_limit;
+  negative_limit.limiting_shear.pressure_coefficient = -0.05;
+  EXPECT_THROW(validate(negative_limit), std::invalid_argument);
 }
 
 }  // namespace
