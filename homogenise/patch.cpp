@@ -85,7 +85,7 @@ void validate(const HomogeniseOptions& o) {
     if (!(e->min_speed_m_per_s > 0 && e->max_speed_m_per_s > e->min_speed_m_per_s && std::isfinite(e->max_speed_m_per_s)))
       bad("micro_ehl speeds must satisfy 0 < min_speed_m_per_s < max_speed_m_per_s (finite)");
     if (e->speeds_per_decade < 1 || e->speeds_per_decade > 100) bad("micro_ehl speeds_per_decade must lie in [1, 100]");
-    lubrication::validate(e->limiting_shear, "micro_ehl");
+    lubrication::validate(e->limiting_shear, "homogenise: micro_ehl");
     if (!(o.lubricant.pressure_viscosity_per_Pa > 0)) bad("micro_ehl needs the lubricant's pressure_viscosity_per_Pa > 0");
   }
   if (const auto& m = o.measured_heights_m) {

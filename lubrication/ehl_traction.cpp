@@ -36,6 +36,12 @@ double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, 
     *rise_K = film_rise(ceiling);
     return ceiling;
   }
+  // At the limit when the film is still above it at the heat the limit makes: τ_L exactly (the
+  // bisection would end a few ulps short of it).
+  if (ceiling == limit_Pa && stress_at(film_rise(limit_Pa)) == limit_Pa) {
+    *rise_K = film_rise(limit_Pa);
+    return limit_Pa;
+  }
   // g(τ) = τ − stress_at(ΔT(τ)) rises from −ceiling at 0 to ≥ 0 at the ceiling (the limit does
   // not change that: min with a constant keeps stress_at falling in τ): bisection to
   // the last bit (each step halves the bracket; 200 steps are far more than 53 bits need).
@@ -199,8 +205,7 @@ double node_stress_Pa(const PiezoviscousLubricant& lubricant, double p, double f
   const double limit_Pa = limit.at(p);
   const double tau = shear_stress_Pa(eta, speed, h, tau0, limit_Pa, heating.thermal_conductivity_W_per_m_K > 0.0,
                                      heating.temperature_viscosity_per_K, [&](double t) { return walls.film_rise_K(t * speed, h); }, rise_K);
-  // At the limit the bisection ends within its last bits of τ_L.
-  *limited = speed > 0.0 && tau >= limit_Pa * (1.0 - 1e-12);
+  *limited = speed > 0.0 && tau >= limit_Pa;  // shear_stress_Pa returns τ_L exactly there
   walls.settle(node, tau * speed, h);
   return du < 0.0 ? -tau : tau;
 }
@@ -215,7 +220,6 @@ struct ShearedRange {
 };
 
 }  // namespace
-
 
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
                               double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating,

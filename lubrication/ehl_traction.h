@@ -105,7 +105,7 @@ struct EhlPointTraction {
   double max_film_temperature_rise_K = 0.0;
   double max_surface_temperature_rise_K = 0.0;  // as EhlTraction
   double surface_peclet_number = 0.0;
-  double limited_node_share = 0.0;
+  double limited_node_share = 0.0;  // as EhlTraction: the share of the sheared nodes at the limit
 };
 // Throws std::invalid_argument as ehl_line_traction (a non-positive load in N), and for fields whose
 // sizes do not match the grid.

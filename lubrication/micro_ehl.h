@@ -56,8 +56,8 @@ struct MicroEhlOptions {
   double interface_shear_strength_Pa = 1.18e9 / 5.3;  // τ_i of the boundary junctions
 };
 
-// Throws std::invalid_argument naming the first field that is not positive and finite (the limiting
-// shear's: not finite and >= 0).
+// Throws std::invalid_argument naming the first field that is not positive and finite, or a limiting
+// shear stress or pressure coefficient that is negative or not finite.
 void validate(const MicroEhlOptions& options);
 
 struct SpotFilm {

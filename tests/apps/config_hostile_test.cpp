@@ -80,6 +80,8 @@ TEST(ConfigHostile, MicroEhlAxisMustReachTheStribeckSpeeds) {
              {kHomogenise, "key 'micro_ehl.max_speed_m_per_s'", "max_m_per_s = 2"});
   expect_all(homogenise_error(surface + "[micro_ehl]\ntip_roughness_m = -1e-9\n"), {"key 'micro_ehl.tip_roughness_m'"});
   expect_all(homogenise_error(surface + "[micro_ehl]\nspeeds_per_decade = 1000\n"), {"key 'micro_ehl.speeds_per_decade'", "at most"});
+  expect_all(homogenise_error(surface + "[micro_ehl]\nlimiting_shear_pressure_coefficient = -0.05\n"),
+             {"key 'micro_ehl.limiting_shear_pressure_coefficient'", "negative"});
   EXPECT_EQ(homogenise_error(surface + "[micro_ehl]\n"), "");
   expect_all(homogenise_error(surface + "[micro_ehl]\npressure_viscosity_law = \"free_volume\"\n"),
              {"key 'micro_ehl.pressure_viscosity_law'", "roelands", "barus"});

@@ -121,6 +121,20 @@ TEST(RenamedKeys, FlowFactorSurfaceSizeAndGridLiveInDomain) {
   expect_all(input_error_of([&] { load_flow_factor_run(grid); }), {grid.string(), "key 'surface.grid'", "use 'domain.grid'"});
 }
 
+// [micro_ehl]'s limiting shear stress reaches the films the homogenisation solves (the spots' through
+// micro_ehl_options, a ball's through its options); absent, there is no limit.
+TEST(MicroEhlConfig, TheLimitingShearStressReachesTheFilms) {
+  const std::string surface = "[surface]\nrms_height_m = 1e-7\ncorrelation_length_m = 1e-5\n";
+  const HomogeniseRun limited = load_homogenise_run(
+      write_file("micro-ehl-limit.toml", surface + "[micro_ehl]\nlimiting_shear_stress_Pa = 1e6\nlimiting_shear_pressure_coefficient = 0.05\n"));
+  const lubrication::MicroEhlOptions films = homogenise::micro_ehl_options(limited.options);
+  EXPECT_EQ(films.limiting_shear.stress_Pa, 1e6);
+  EXPECT_EQ(films.limiting_shear.pressure_coefficient, 0.05);
+  EXPECT_EQ(limited.options.micro_ehl->limiting_shear.at(1e9), 1e6 + 0.05 * 1e9);
+  const HomogeniseRun free = load_homogenise_run(write_file("micro-ehl-free.toml", surface + "[micro_ehl]\n"));
+  EXPECT_FALSE(free.options.micro_ehl->limiting_shear.on());
+}
+
 // The same [surface] and [domain] tables give the same surface in contact, homogenise and
 // flow-factors, with the defaults of apps/surface_config.h where keys are left out.
 TEST(SurfaceConfig, ThreeCommandsReadOneSurface) {

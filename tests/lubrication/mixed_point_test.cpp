@@ -31,6 +31,26 @@ TEST(MixedPoint, SmoothSurfacesLeaveTheWholeLoadToTheFilm) {
   EXPECT_NEAR(r.friction_coefficient, t.friction_coefficient, 1e-12 * t.friction_coefficient);
 }
 
+// The film's traction takes the contact's limiting shear stress: on the same smooth ball, a limit of
+// half the unlimited peak stress per peak pressure gives the smooth film's traction under that
+// limit (1e-12), some nodes at it, and a lower friction.
+TEST(MixedPoint, TheFilmsTractionIsCappedAtTheLimitingShearStress) {
+  MixedPointContact c = rough_ball(0.5);
+  c.asperities.summit_std_m = 1e-9;
+  c.summit_height_m = 0.0;
+  const MixedPointResult free = solve_mixed_point(c, ball_oil(), coarse_mixed());
+  ASSERT_TRUE(free.converged) << free.message;
+  c.limiting_shear.pressure_coefficient = 0.5 * free.traction.max_shear_stress_Pa / free.film.max_pressure_Pa;
+  const MixedPointResult r = solve_mixed_point(c, ball_oil(), coarse_mixed());
+  ASSERT_TRUE(r.converged) << r.message;
+  const EhlPointResult smooth = solve_ehl_point(c.film, ball_oil(), coarse_mixed().film);
+  const EhlPointTraction t =
+      ehl_point_traction(smooth, ball_oil(), c.sliding_speed_m_per_s, c.eyring_stress_Pa, c.film.load_N, {}, c.limiting_shear);
+  EXPECT_NEAR(r.friction_coefficient, t.friction_coefficient, 1e-12 * t.friction_coefficient);
+  EXPECT_GT(r.traction.limited_node_share, 0.0);
+  EXPECT_LT(r.friction_coefficient, free.friction_coefficient);
+}
+
 TEST(MixedPoint, BadInputIsRejected) {
   MixedPointContact c = rough_ball(1.0);
   c.asperities.e_star_Pa *= 1.1;  // not the bodies' E'/2
