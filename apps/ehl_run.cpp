@@ -240,6 +240,10 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     // The limiting shear stress τ_L = τ_L0 + Λ p (ehl_traction.h): off unless either is given.
     run.limiting_shear.stress_Pa = l->number("limiting_shear_stress_Pa", 0.0, Range::non_negative);
     run.limiting_shear.pressure_coefficient = l->number("limiting_shear_pressure_coefficient", 0.0, Range::non_negative);
+    run.limiting_shear.temperature_coefficient_per_K = l->number("limiting_shear_temperature_per_K", 0.0, Range::non_negative);
+    if (run.limiting_shear.temperature_coefficient_per_K > 0.0 && !run.limiting_shear.on())
+      l->fail("limiting_shear_temperature_per_K",
+              "needs a limit to act on: limiting_shear_stress_Pa or limiting_shear_pressure_coefficient > 0");
     l->finish();
   } else {
     root.fail("lubricant", "the [lubricant] table is required (at least eyring_stress_Pa, the lubricant's Eyring stress τ0)");
@@ -436,6 +440,7 @@ nlohmann::json lubricant_inputs(const EhlRun& run) {
           {"temperature_viscosity_per_K", run.heating.temperature_viscosity_per_K},
           {"limiting_shear_stress_Pa", run.limiting_shear.stress_Pa},
           {"limiting_shear_pressure_coefficient", run.limiting_shear.pressure_coefficient},
+          {"limiting_shear_temperature_per_K", run.limiting_shear.temperature_coefficient_per_K},
           {"surfaces", solid_inputs(run.heating.surfaces)},
           {"second_surface", solid_inputs(run.heating.second_surface)}};
 }

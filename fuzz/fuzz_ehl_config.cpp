@@ -59,6 +59,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     TRIBO_FUZZ_CHECK(run.heating.thermal_conductivity_W_per_m_K >= 0.0 && run.heating.temperature_viscosity_per_K >= 0.0);
     TRIBO_FUZZ_CHECK(run.limiting_shear.stress_Pa >= 0.0 && std::isfinite(run.limiting_shear.stress_Pa));  // τ_L0 + Λ p: finite, >= 0
     TRIBO_FUZZ_CHECK(run.limiting_shear.pressure_coefficient >= 0.0 && std::isfinite(run.limiting_shear.pressure_coefficient));
+    TRIBO_FUZZ_CHECK(run.limiting_shear.temperature_coefficient_per_K >= 0.0 && std::isfinite(run.limiting_shear.temperature_coefficient_per_K));
     if (run.heating.surfaces) {  // [solids]: positive constants, the film conducting, both surfaces moving
       TRIBO_FUZZ_CHECK(run.heating.thermal_conductivity_W_per_m_K > 0.0 && run.heating.surfaces->density_kg_per_m3 > 0.0);
       TRIBO_FUZZ_CHECK(std::abs(run.sliding_speed_m_per_s) < 2.0 * run.heating.mean_speed_m_per_s);

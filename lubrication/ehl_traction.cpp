@@ -16,43 +16,45 @@ namespace {
 
 // The shear stress at one node: τ = min(τ0 asinh(η e^{−γΔT(τ)} Δu/(τ0 h)), τ_L) for Δu ≥ 0 (the
 // caller carries the sign), ΔT(τ) = film_rise(τ) the film's mean temperature rise, which grows
-// with τ (Walls below), τ_L = limit_Pa (+∞: no limit). No heating when `heated` is false; the
-// isothermal stress (with the rise it makes) when γ = 0.
+// with τ (Walls below), τ_L = limit_Pa e^{−β ΔT} (limit_Pa +∞: no limit; β = limit_beta). No
+// heating when `heated` is false; the isothermal stress (with the rise it makes) when γ = β = 0.
+// *limited tells whether the limit is the smaller at the stress found.
 template <class FilmRise>
-double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, double limit_Pa, bool heated, double gamma,
-                       const FilmRise& film_rise, double* rise_K) {
+double shear_stress_Pa(double viscosity_Pa_s, double du, double h, double tau0, double limit_Pa, double limit_beta, bool heated,
+                       double gamma, const FilmRise& film_rise, double* rise_K, bool* limited) {
   const bool newtonian = std::isinf(tau0);
-  const auto stress_at = [&](double temperature_rise_K) {
+  const auto eyring_at = [&](double temperature_rise_K) {
     const double newtonian_stress = viscosity_Pa_s * std::exp(-gamma * temperature_rise_K) * du / h;
-    return std::min(newtonian ? newtonian_stress : tau0 * std::asinh(newtonian_stress / tau0), limit_Pa);
+    return newtonian ? newtonian_stress : tau0 * std::asinh(newtonian_stress / tau0);
   };
-  if (!heated) {
-    *rise_K = 0.0;
-    return stress_at(0.0);
-  }
+  const auto limit_at = [&](double temperature_rise_K) {
+    return limit_beta == 0.0 ? limit_Pa : limit_Pa * std::exp(-limit_beta * temperature_rise_K);
+  };
+  const auto stress_at = [&](double temperature_rise_K) { return std::min(eyring_at(temperature_rise_K), limit_at(temperature_rise_K)); };
+  const auto found = [&](double tau, double temperature_rise_K) {
+    *rise_K = temperature_rise_K;
+    *limited = du > 0.0 && eyring_at(temperature_rise_K) >= limit_at(temperature_rise_K);
+    return tau;
+  };
+  if (!heated) return found(stress_at(0.0), 0.0);
   // The stress cannot exceed the one at the rise the walls alone make (τ = 0).
   const double ceiling = stress_at(film_rise(0.0));
-  if (gamma == 0.0 || ceiling == 0.0) {  // the film heats, its viscosity does not follow
-    *rise_K = film_rise(ceiling);
-    return ceiling;
-  }
-  // At the limit when the film is still above it at the heat the limit makes: τ_L exactly (the
-  // bisection would end a few ulps short of it).
-  if (ceiling == limit_Pa && stress_at(film_rise(limit_Pa)) == limit_Pa) {
-    *rise_K = film_rise(limit_Pa);
-    return limit_Pa;
-  }
+  // The film heats, but neither its viscosity nor its limit follows.
+  if ((gamma == 0.0 && limit_beta == 0.0) || ceiling == 0.0) return found(ceiling, film_rise(ceiling));
+  // At a limit that does not follow the temperature, when the film is still above it at the heat
+  // the limit makes: τ_L exactly (the bisection would end a few ulps short of it).
+  if (limit_beta == 0.0 && ceiling == limit_Pa && stress_at(film_rise(limit_Pa)) == limit_Pa) return found(limit_Pa, film_rise(limit_Pa));
   // g(τ) = τ − stress_at(ΔT(τ)) rises from −ceiling at 0 to ≥ 0 at the ceiling (the limit does
-  // not change that: min with a constant keeps stress_at falling in τ): bisection to
-  // the last bit (each step halves the bracket; 200 steps are far more than 53 bits need).
+  // not change that: both the Eyring stress and the limit fall as the film warms, and so does
+  // their minimum): bisection to the last bit (each step halves the bracket; 200 steps are far
+  // more than 53 bits need).
   double lo = 0.0, hi = ceiling;
   for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
     (mid - stress_at(film_rise(mid)) < 0.0 ? lo : hi) = mid;
   }
   const double tau = 0.5 * (lo + hi);
-  *rise_K = film_rise(tau);
-  return tau;
+  return found(tau, film_rise(tau));
 }
 
 // The solid of the surface moving at u2 (FilmHeating::second_surface, else the first's).
@@ -202,10 +204,9 @@ double node_stress_Pa(const PiezoviscousLubricant& lubricant, double p, double f
   }
   if (!(h > 0.0)) throw std::invalid_argument("EHL traction: non-positive film " + numerics::shortest(h) + " m at " + where());
   const double eta = lubricant.viscosity_Pa_s * viscosity_ratio(lubricant, p).ratio, speed = std::abs(du);
-  const double limit_Pa = limit.at(p);
-  const double tau = shear_stress_Pa(eta, speed, h, tau0, limit_Pa, heating.thermal_conductivity_W_per_m_K > 0.0,
-                                     heating.temperature_viscosity_per_K, [&](double t) { return walls.film_rise_K(t * speed, h); }, rise_K);
-  *limited = speed > 0.0 && tau >= limit_Pa;  // shear_stress_Pa returns τ_L exactly there
+  const double tau = shear_stress_Pa(eta, speed, h, tau0, limit.at(p), limit.temperature_coefficient_per_K,
+                                     heating.thermal_conductivity_W_per_m_K > 0.0, heating.temperature_viscosity_per_K,
+                                     [&](double t) { return walls.film_rise_K(t * speed, h); }, rise_K, limited);
   walls.settle(node, tau * speed, h);
   return du < 0.0 ? -tau : tau;
 }

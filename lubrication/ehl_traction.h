@@ -17,8 +17,8 @@
 // T(z) = T1 + (T2 − T1) z/h + (τΔu/(2kh)) z(h − z), its mean over the film
 //   ΔT = (T1 + T2)/2 + τΔu h/(12k).
 // The viscosity is taken at that mean, η(p) exp(−γ ΔT) (viscosity.h's exponential temperature law),
-// and τ solves τ = min(τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)), τ_L(p)) at each node — one root, as
-// the right side falls with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls:
+// and τ solves τ = min(τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)), τ_L(p) e^{−βΔT(τ)}) at each node
+// (β of LimitingShear, 0 by default) — one root, as the right side falls with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls:
 // μ(Δu) rises, peaks and falls, the shape of measured EHL traction curves.
 // The walls stay at the bulk temperature (T1 = T2 = 0 above it) unless FilmHeating::surfaces is set:
 // then each surface warms by its flash temperature, Jaeger's fast moving heat source

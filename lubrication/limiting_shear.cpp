@@ -9,10 +9,12 @@
 namespace tribo::lubrication {
 
 void validate(const LimitingShear& limit, const char* who) {
-  if (!(limit.stress_Pa >= 0.0) || !std::isfinite(limit.stress_Pa) || !(limit.pressure_coefficient >= 0.0) ||
-      !std::isfinite(limit.pressure_coefficient))
-    throw std::invalid_argument(std::string(who) + ": the limiting shear stress and its pressure coefficient must be finite and >= 0, got " +
-                                numerics::shortest(limit.stress_Pa) + " Pa and " + numerics::shortest(limit.pressure_coefficient));
+  const auto good = [](double x) { return x >= 0.0 && std::isfinite(x); };
+  if (!good(limit.stress_Pa) || !good(limit.pressure_coefficient) || !good(limit.temperature_coefficient_per_K))
+    throw std::invalid_argument(std::string(who) +
+                                ": the limiting shear stress and its pressure and temperature coefficients must be finite and >= 0, got " +
+                                numerics::shortest(limit.stress_Pa) + " Pa, " + numerics::shortest(limit.pressure_coefficient) + " and " +
+                                numerics::shortest(limit.temperature_coefficient_per_K) + " 1/K");
 }
 
 }  // namespace tribo::lubrication

@@ -68,6 +68,7 @@ d = sys.argv[1]
 s = json.load(open(d + '/ehl.json'))
 e = json.load(open(d + '/../out_ehl/ehl.json'))
 assert s['inputs']['limiting_shear_pressure_coefficient'] == 0.03 and s['inputs']['limiting_shear_stress_Pa'] == 1e6, s['inputs']
+assert s['inputs']['limiting_shear_temperature_per_K'] == 0, s['inputs']
 assert e['limited_node_share'] is None and e['inputs']['limiting_shear_pressure_coefficient'] == 0, e
 assert 0 < s['limited_node_share'] <= 1, s['limited_node_share']
 x, p = np.load(d + '/x_m.npy'), np.load(d + '/pressure_Pa.npy')
@@ -77,6 +78,8 @@ assert s['friction_coefficient'] <= bound * (1 + 1e-9) and s['friction_coefficie
 assert s['max_shear_stress_Pa'] <= 1e6 + 0.03 * s['max_pressure_Pa'], s
 ")
 expect_refused(limited_negative "${contact}[lubricant]\nviscosity_Pa_s = 0.04\neyring_stress_Pa = 5e6\nlimiting_shear_pressure_coefficient = -0.03\n" "lubricant.limiting_shear_pressure_coefficient")
+# The limit's temperature coefficient without a limit to act on is refused.
+expect_refused(limited_beta_alone "${contact}[lubricant]\nviscosity_Pa_s = 0.04\neyring_stress_Pa = 5e6\nlimiting_shear_temperature_per_K = 0.01\n" "lubricant.limiting_shear_temperature_per_K")
 
 # [solids]: the surfaces warm by the heat the film hands them (lubrication/moving_heat_source.h), so
 # the film is warmer than its own heating alone makes it; the solids' constants are echoed; without

@@ -353,6 +353,25 @@ TEST(EhlTraction, AFilmAtItsLimitHeatsByTheLimitsStressAndTheLimitCapsTheHeatedS
   EXPECT_EQ(capped.limited_node_share, 0.0);
 }
 
+// A limit that falls as the film warms, τ_L e^{−βΔT}, on a film held at it (γ = 0, a viscosity
+// far above): τ e^{βτΔu h/(12k)} = τ_L, so τ = 12k W(x)/(βΔu h) with x = βτ_L Δu h/(12k) — Lambert's
+// W again. At x = 1, τ = Ω τ_L and ΔT = Ω/β; at twice the speed x = 2, W(2) = 0.8526055020137255,
+// and the traction has fallen: a traction curve at its limit turns over as the film warms (1e-12).
+TEST(EhlTraction, ALimitThatFallsWithTemperatureFollowsLambertW) {
+  const double h = 1e-6, k = 0.13, p = 1e8, lambda = 0.05, beta = 0.01, omega = 0.5671432904097838, w2 = 0.8526055020137255;
+  const double tau_limit = lambda * p, du = 12.0 * k / (beta * tau_limit * h);  // x = 1
+  const EhlLineResult film = parabolic_film(h, 1e30, 1e-4, p, 11);
+  LimitingShear limit{0.0, lambda};
+  limit.temperature_coefficient_per_K = beta;
+  const EhlTraction t1 = ehl_line_traction(film, isoviscous(100.0), du, kInf, 1e5, film_heating(k, 0.0), limit);
+  EXPECT_NEAR(t1.max_shear_stress_Pa, omega * tau_limit, 1e-12 * tau_limit);
+  EXPECT_NEAR(t1.max_film_temperature_rise_K, omega / beta, 1e-12 * omega / beta);
+  EXPECT_EQ(t1.limited_node_share, 1.0);
+  const EhlTraction t2 = ehl_line_traction(film, isoviscous(100.0), 2.0 * du, kInf, 1e5, film_heating(k, 0.0), limit);
+  EXPECT_NEAR(t2.max_shear_stress_Pa, w2 / 2.0 * tau_limit, 1e-12 * tau_limit);
+  EXPECT_LT(t2.force_per_length_N_per_m, t1.force_per_length_N_per_m);
+}
+
 TEST(EhlTraction, BadInputIsRejected) {
   const EhlLineResult film = parabolic_film(2e-7, 0.01, 1e-4, 1e6, 11);
   const PiezoviscousLubricant l = isoviscous(0.04);
@@ -374,6 +393,7 @@ TEST(EhlTraction, BadInputIsRejected) {
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {}, LimitingShear{0.0, -0.05}), std::invalid_argument);
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {}, LimitingShear{std::nan(""), 0.05}), std::invalid_argument);
   EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {}, LimitingShear{kInf, 0.0}), std::invalid_argument);
+  EXPECT_THROW(ehl_line_traction(film, l, 0.1, 5e6, 1e5, {}, LimitingShear{0.0, 0.05, -0.01}), std::invalid_argument);
   EhlLineResult collapsed = film;
   collapsed.film_m[5] = 0.0;
   EXPECT_THROW(ehl_line_traction(collapsed, l, 0.1, 5e6, 1e5), std::invalid_argument);
