@@ -14,12 +14,18 @@ namespace {
 
 using namespace ball_on_disc;
 
-// Summits far below the film (σ_s = 1 nm against h_c ≈ 0.13 µm) carry nothing: the film takes the
-// whole load, and the point is the smooth EHL contact's, film and traction alike (one film solve).
-TEST(MixedPoint, SmoothSurfacesLeaveTheWholeLoadToTheFilm) {
+// The rough ball at 0.5 m/s with summits far below the film (σ_s = 1 nm against h_c ≈ 0.13 µm).
+MixedPointContact ball_with_negligible_summits() {
   MixedPointContact c = rough_ball(0.5);
   c.asperities.summit_std_m = 1e-9;
   c.summit_height_m = 0.0;
+  return c;
+}
+
+// Such summits carry nothing: the film takes the whole load, and the point is the smooth EHL
+// contact's, film and traction alike (one film solve).
+TEST(MixedPoint, SmoothSurfacesLeaveTheWholeLoadToTheFilm) {
+  const MixedPointContact c = ball_with_negligible_summits();
   const MixedPointResult r = solve_mixed_point(c, ball_oil(), coarse_mixed());
   ASSERT_TRUE(r.converged) << r.message;
   EXPECT_EQ(r.film_share, 1.0);
@@ -35,9 +41,7 @@ TEST(MixedPoint, SmoothSurfacesLeaveTheWholeLoadToTheFilm) {
 // half the unlimited peak stress per peak pressure gives the smooth film's traction under that
 // limit (1e-12), some nodes at it, and a lower friction.
 TEST(MixedPoint, TheFilmsTractionIsCappedAtTheLimitingShearStress) {
-  MixedPointContact c = rough_ball(0.5);
-  c.asperities.summit_std_m = 1e-9;
-  c.summit_height_m = 0.0;
+  MixedPointContact c = ball_with_negligible_summits();
   const MixedPointResult free = solve_mixed_point(c, ball_oil(), coarse_mixed());
   ASSERT_TRUE(free.converged) << free.message;
   c.limiting_shear.pressure_coefficient = 0.5 * free.traction.max_shear_stress_Pa / free.film.max_pressure_Pa;
