@@ -18,8 +18,9 @@
 //   ΔT = (T1 + T2)/2 + τΔu h/(12k).
 // The viscosity is taken at that mean, η(p) exp(−γ ΔT) (viscosity.h's exponential temperature law),
 // and τ solves τ = min(τ0 asinh(η(p) e^{−γΔT(τ)} Δu/(τ0 h)), τ_L(p) e^{−βΔT(τ)}) at each node
-// (β of LimitingShear, 0 by default) — one root, as the right side falls with τ (bisection). As Δu grows the heating outruns the shear rate and the traction falls:
-// μ(Δu) rises, peaks and falls, the shape of measured EHL traction curves.
+// (β of LimitingShear, 0 by default) — one root, as the right side falls with τ (bisection). As
+// Δu grows the heating outruns the shear rate and the traction falls: μ(Δu) rises, peaks and
+// falls, the shape of measured EHL traction curves.
 // The walls stay at the bulk temperature (T1 = T2 = 0 above it) unless FilmHeating::surfaces is set:
 // then each surface warms by its flash temperature, Jaeger's fast moving heat source
 // (moving_heat_source.h), the surfaces passing the contact at u1 = u_m + Δu/2 and u2 = u_m − Δu/2
@@ -90,8 +91,8 @@ struct EhlTraction {
 // film's conductivity, with a bad solid (or a second solid without the first) or with a surface
 // that does not move through the contact (|Δu| ≥ 2 u_m: a surface at rest sees a stationary
 // source, outside the fast-source model), or a film with fewer than two nodes or a non-positive
-// film thickness where the pressure is positive, and a limiting shear stress or pressure coefficient
-// that is negative or not finite.
+// film thickness where the pressure is positive, and a limiting shear stress, pressure coefficient
+// or temperature coefficient that is negative or not finite.
 EhlTraction ehl_line_traction(const EhlLineResult& film, const PiezoviscousLubricant& lubricant, double sliding_speed_m_per_s,
                               double eyring_stress_Pa, double load_per_length_N_per_m, const FilmHeating& heating = {},
                               const LimitingShear& limit = {});
