@@ -351,6 +351,17 @@ void run_selftest(const SelftestArgs& args) {
     reliability << b.lower << "," << b.upper << "," << b.verdicts << "," << b.right << ","
                 << (b.verdicts ? static_cast<double>(b.right) / b.verdicts : std::nan("")) << "\n";
   write_csv_atomically(dir / "reliability.csv", reliability.str(), provenance);
+  // The share named by the effect's strength in noise floors (gap::detection_table); the last bin is open.
+  std::ostringstream detection;
+  detection << "generator,signal_floors_from,signal_floors_to,effect_cases,named,named_or_listed\n";
+  for (const auto& [g, bins] : r.detection)
+    for (const gap::DetectionBin& b : bins) {
+      detection << g << "," << b.lower_floors << ",";
+      if (std::isfinite(b.upper_floors)) detection << b.upper_floors;
+      else detection << "inf";
+      detection << "," << b.effect_cases << "," << b.named << "," << b.named_or_listed << "\n";
+    }
+  write_csv_atomically(dir / "detection.csv", detection.str(), provenance);
   nlohmann::json j;
   j["provenance"] = provenance;
   j["quick"] = args.quick;
@@ -375,6 +386,10 @@ void run_selftest(const SelftestArgs& args) {
   j["reliability"] = nlohmann::json::array();
   for (const auto& b : r.reliability)
     j["reliability"].push_back({{"confidence_from", b.lower}, {"confidence_to", b.upper}, {"verdicts", b.verdicts}, {"right", b.right}});
+  for (const auto& [g, bins] : r.detection)
+    for (const gap::DetectionBin& b : bins)
+      j["detection"][g].push_back({{"signal_floors_from", b.lower_floors}, {"signal_floors_to", numerics::finite_or_null(b.upper_floors)},
+                                   {"effect_cases", b.effect_cases}, {"named", b.named}, {"named_or_listed", b.named_or_listed}});
   j["cases"] = nlohmann::json::array();
   for (const auto& row : r.rows) j["cases"].push_back(row_json(row, args.quick, commit));
   write_file_atomically(dir / "selftest.json", j.dump(2) + "\n");

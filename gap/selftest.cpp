@@ -269,6 +269,13 @@ bool SelftestRow::tentative() const {
   return it != candidates.end() && !it->earns;
 }
 
+bool SelftestRow::truth_named_or_listed() const {
+  const auto listed = [&](const std::vector<std::string>& names) {
+    return std::find(names.begin(), names.end(), c.true_effect) != names.end();
+  };
+  return correct || listed(indistinguishable_from) || listed(alike_mechanisms);
+}
+
 SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
   SelftestSummary out;
   int effect_right = 0, controls_none = 0, visible_right = 0, among_named = 0, names = 0;
@@ -322,6 +329,17 @@ std::vector<ReliabilityBin> reliability_table(const std::vector<SelftestRow>& ro
   return bins;
 }
 
+std::vector<DetectionBin> detection_table(const std::vector<SelftestRow>& rows) {
+  std::vector<DetectionBin> bins{{0.0, 1.0}, {1.0, 2.0}, {2.0, 3.0}, {3.0, 5.0}, {5.0, 10.0}, {10.0}};
+  for (const SelftestRow& row : rows) {
+    const double floors = row.signal_floors();
+    if (row.c.true_effect == "none" || !std::isfinite(floors)) continue;
+    const auto bin = std::find_if(bins.begin(), bins.end(), [&](const DetectionBin& b) { return floors < b.upper_floors; });
+    ++bin->effect_cases, bin->named += row.correct, bin->named_or_listed += row.truth_named_or_listed();
+  }
+  return bins;
+}
+
 SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const SyntheticOptions& synthetic, DiagnosisOptions diagnosis,
                             const std::function<void(const SelftestRow&)>& on_row, const std::vector<SelftestRow>& finished) {
   SelftestResult out;
@@ -342,7 +360,9 @@ SelftestResult run_selftest(const std::vector<SelftestCase>& cases, const Synthe
     std::vector<SelftestRow> mine;
     for (const SelftestRow& r : out.rows)
       if (r.c.generator == g) mine.push_back(r);
-    if (!mine.empty()) out.by_generator[g] = summarise(mine);
+    if (mine.empty()) continue;
+    out.by_generator[g] = summarise(mine);
+    out.detection[g] = detection_table(mine);
   }
   out.reliability = reliability_table(out.rows);
   return out;

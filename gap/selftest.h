@@ -97,6 +97,8 @@ struct SelftestRow {
   std::vector<std::string> alike_mechanisms;        // Verdict::alike_mechanisms (empty in journals from before)
   std::vector<ProposalCheck> proposal_checks;       // pairs that hold the truth (empty in journals from before)
   std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
+  // The truth is the verdict or named beside it (indistinguishable_from, alike_mechanisms).
+  bool truth_named_or_listed() const;
   // Named without earning its parameters (Verdict::tentative), read from the verdict's candidate
   // figures; false for none, unexplained and journals without candidates.
   bool tentative() const;
@@ -142,6 +144,17 @@ struct ReliabilityBin {
   int verdicts = 0, right = 0;
 };
 
+// The share named by the strength of the effect (SelftestRow::signal_floors): effect cases whose
+// signal lies in [lower_floors, upper_floors), how many were named, and how many had the truth named
+// or listed beside the verdict (indistinguishable_from, alike_mechanisms: what the report tells a
+// reader to tell apart by a further test). A bar such as "90 % named" is read against it: below about
+// two floors the data hold little an effect could be told by (kVisibleSignalFloors), and a share
+// that stays flat above that is the method's, not the noise's. Cases without a floor are left out.
+struct DetectionBin {
+  double lower_floors = 0.0, upper_floors = std::numeric_limits<double>::infinity();
+  int effect_cases = 0, named = 0, named_or_listed = 0;
+};
+
 struct SelftestResult {
   std::vector<SelftestRow> rows;
   // Over all cases (both generators), kept for callers of the one-generator selftest.
@@ -151,11 +164,14 @@ struct SelftestResult {
   std::map<std::string, double> mean_shrink, mean_test_shrink;
   std::map<std::string, SelftestSummary> by_generator;  // "rig", "independent"
   std::vector<ReliabilityBin> reliability;              // over both generators
+  std::map<std::string, std::vector<DetectionBin>> detection;  // by generator
 };
 
 // Summaries from rows (used by run_selftest; exposed for tests and resumed journals).
 SelftestSummary summarise(const std::vector<SelftestRow>& rows);
 std::vector<ReliabilityBin> reliability_table(const std::vector<SelftestRow>& rows);
+// Bins of 0–1, 1–2, 2–3, 3–5, 5–10 and ≥ 10 noise floors.
+std::vector<DetectionBin> detection_table(const std::vector<SelftestRow>& rows);
 
 // The quick set (CI) or the full set. First generator: every effect × seeds, controls, and the
 // second-effect case. Independent generator: quick — one effect and one control; full — every

@@ -109,6 +109,34 @@ TEST(SelftestSummary, TentativeVerdictsAreCountedFromTheVerdictsCandidate) {
   EXPECT_EQ(s.tentative_right, 1);
 }
 
+// The detection table bins effects by their signal in noise floors; the named-or-listed count takes
+// the truth named beside the verdict (either list), and controls and rows without a floor stay out.
+TEST(SelftestSummary, DetectionTableCountsByTheEffectsSignal) {
+  std::vector<SelftestRow> rows{row("slip_transient", "slip_transient", 0.9, kRigGenerator, 0.012, 0.01),   // 0.6 floors, named
+                                row("squeeze_film", "rate_dependent_static", 0.4, kRigGenerator, 0.05, 0.02),  // 2.5, listed alike
+                                row("rate_dependent_static", "strain_rate_hardening", 0.3, kRigGenerator, 0.06, 0.02),  // 3.0, listed
+                                row("thermal_thinning", "hydrodynamic_lift", 0.2, kRigGenerator, 0.099, 0.02),  // 4.95, missed
+                                row("instrument", "instrument", 1.0, kRigGenerator, 2.0, 0.02),               // 100 floors, named
+                                row("none", "none", 1.0, kRigGenerator, 0.02, 0.02),                          // a control
+                                row("viscous_friction", "none", 0.5, kRigGenerator, 0.5, 0.5)};               // no floor
+  for (std::size_t i = 0; i + 1 < rows.size(); ++i) rows[i].noise_floor = 0.02;
+  rows[1].alike_mechanisms = {"squeeze_film"};
+  rows[2].indistinguishable_from = {"rate_dependent_static"};
+  rows[3].alike_mechanisms = {"slip_transient"};
+  EXPECT_TRUE(rows[1].truth_named_or_listed());
+  EXPECT_FALSE(rows[3].truth_named_or_listed());
+  const std::vector<DetectionBin> bins = detection_table(rows);
+  ASSERT_EQ(bins.size(), 6u);
+  const std::vector<int> cases{1, 0, 1, 2, 0, 1}, named{1, 0, 0, 0, 0, 1}, listed{1, 0, 1, 1, 0, 1};
+  for (std::size_t b = 0; b < bins.size(); ++b) {
+    EXPECT_EQ(bins[b].effect_cases, cases[b]) << "bin " << b;
+    EXPECT_EQ(bins[b].named, named[b]) << "bin " << b;
+    EXPECT_EQ(bins[b].named_or_listed, listed[b]) << "bin " << b;
+  }
+  EXPECT_DOUBLE_EQ(bins[2].lower_floors, 2.0);
+  EXPECT_TRUE(std::isinf(bins.back().upper_floors));
+}
+
 TEST(SelftestSummary, ReliabilityBinsCoverZeroToOneInclusive) {
   const std::vector<SelftestRow> rows{row("a", "a", 0.0, kRigGenerator), row("a", "b", 0.5, kRigGenerator), row("a", "a", 0.89, kRigGenerator),
                                       row("a", "a", 0.9, kRigGenerator), row("a", "b", 1.0, kIndependentGenerator)};

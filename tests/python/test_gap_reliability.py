@@ -1,0 +1,50 @@
+"""tools/gap_reliability.py pools the journals of several selftest sets: a case diagnosed in two
+sets counts once (the later row), and the detection table bins the withheld effects by their signal
+in noise floors as gap::detection_table does (tests/gap/selftest_summary_test.cpp holds the same
+bins), the truth named or listed beside the verdict counted apart."""
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from helpers import SOURCE_DIR
+
+TOOL = os.path.join(SOURCE_DIR, "tools", "gap_reliability.py")
+
+
+def case(seed, truth, verdict, floors, confidence=0.5, beside=(), generator="independent"):
+    return {"seed": seed, "generator": generator, "true_effect": truth, "verdict": verdict, "correct": truth == verdict,
+            "confidence": confidence, "noise_floor": 0.02, "heldout_gap_before": 0.02 * floors,
+            "indistinguishable_from": [], "alike_mechanisms": list(beside)}
+
+
+class GapReliability(unittest.TestCase):
+    def test_pools_sets_and_bins_effects_by_signal(self):
+        old = [case(1, "squeeze_film", "none", 0.5), case(2, "instrument", "instrument", 12.0)]
+        new = [case(1, "squeeze_film", "rate_dependent_static", 2.5, beside=["squeeze_film"]),  # replaces seed 1
+               case(3, "thermal_thinning", "hydrodynamic_lift", 4.0),
+               case(4, "none", "none", 0.8, confidence=0.7),
+               case(5, "slip_transient", "slip_transient", 0.3, generator="rig")]
+        with tempfile.TemporaryDirectory() as root:
+            dirs = []
+            for name, rows in (("a", old), ("b", new)):
+                os.mkdir(os.path.join(root, name))
+                with open(os.path.join(root, name, "cases.jsonl"), "w") as f:
+                    f.writelines(json.dumps(r) + "\n" for r in rows)
+                dirs.append(os.path.join(root, name))
+            out = subprocess.run([sys.executable, TOOL, *dirs], capture_output=True, text=True, check=True).stdout
+        self.assertIn("5 cases; 1 'none' verdicts, 1 of them controls", out)
+        table = {tuple(line.split(",")[:3]): tuple(int(x) for x in line.split(",")[3:])
+                 for line in out.splitlines() if line.startswith(("independent,", "rig,"))}
+        self.assertEqual(table[("independent", "2", "3")], (1, 0, 1))   # seed 1 from set b: listed, not named
+        self.assertEqual(table[("independent", "3", "5")], (1, 0, 0))
+        self.assertEqual(table[("independent", "10", "inf")], (1, 1, 1))
+        self.assertEqual(table[("independent", "0", "1")], (0, 0, 0))   # set a's row of seed 1 is gone; controls stay out
+        self.assertEqual(table[("rig", "0", "1")], (1, 1, 1))
+
+
+if __name__ == "__main__":
+    unittest.main()
