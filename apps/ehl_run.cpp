@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -349,6 +350,11 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
     } else {
       run.options.nodes = static_cast<int>(s->integer("nodes", run.options.nodes, 11, 20001));
       run.options.complementarity = complementarity(run.options.complementarity);
+      // "fitted": the inlet moved out, at the given node spacing, until the film no longer feels it
+      // (lubrication::fit_inlet_to_film; solved in the run).
+      run.fitted_domain = s->choice("domain", "given", {"given", "fitted"}) == "fitted";
+      if (run.fitted_domain && s->has("inlet_over_half_width"))
+        s->fail("inlet_over_half_width", "domain = \"fitted\" moves the inlet; give it or fit it, not both");
       run.options.inlet_over_half_width = s->number("inlet_over_half_width", run.options.inlet_over_half_width);
       run.options.outlet_over_half_width = s->number("outlet_over_half_width", run.options.outlet_over_half_width);
       run.options.tolerance = s->number("tolerance", run.options.tolerance, Range::positive);
@@ -387,6 +393,9 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
                         2.0 * side / (run.point_options.nodes_y - 1), *run.surface_map, run.profile->surface);
     }
   } else {
+    if (run.fitted_domain && (run.roughness || run.profile))
+      root.fail("solver.domain", std::string("\"fitted\" fits a smooth line contact's inlet; with [") + (run.roughness ? "roughness" : "profile") +
+                                     "] give solver.inlet_over_half_width");
     if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
     if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
     const double b = lub::reference::hertz_line_half_width_m(run.contact.load_per_length_N_per_m, run.contact.reduced_radius_m,
@@ -707,6 +716,7 @@ void solve_point(const EhlRun& run, EhlSolve& out) {
 
 EhlSolve solve_ehl_run(const EhlRun& run) {
   EhlSolve out;
+  out.line_options = run.options;
   const auto start = std::chrono::steady_clock::now();
   nlohmann::json& j = out.summary;
   if (run.point) {
@@ -728,9 +738,18 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                             "per_length_N_per_m", "N_per_m");
   } else if (run.profile) {
     solve_profile(run, out);
+  } else if (run.fitted_domain) {
+    const lub::FittedLineInlet fit = lub::fit_inlet_to_film(run.contact, run.lubricant, run.options);
+    if (!fit.settled) std::fprintf(stderr, "tribo: warning: solver.domain = \"fitted\": %s\n", fit.message.c_str());
+    out.film = fit.result;
+    out.converged = out.film.converged;
+    out.line_options = fit.options;
+    j["inlet_fit"] = {{"settled", fit.settled}, {"solves", fit.solves}, {"message", fit.message}};
   } else {
     out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
     out.converged = out.film.converged;
+  }
+  if (!run.roughness && !run.profile) {
     if (out.converged)  // no traction from a film that is not a solution
       out.traction = lub::ehl_line_traction(out.film, run.lubricant, run.sliding_speed_m_per_s, run.eyring_stress_Pa,
                                             run.contact.load_per_length_N_per_m, run.heating, run.limiting_shear);
@@ -758,7 +777,10 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                  {"reduced_radius_m", c.reduced_radius_m},
                  {"reduced_modulus_Pa", c.reduced_modulus_Pa},
                  {"mean_speed_m_per_s", c.mean_speed_m_per_s},
-                 {"nodes", run.options.nodes}};
+                 {"nodes", out.line_options.nodes},
+                 {"domain", run.fitted_domain ? "fitted" : "given"},
+                 {"inlet_over_half_width", out.line_options.inlet_over_half_width},
+                 {"outlet_over_half_width", out.line_options.outlet_over_half_width}};
   j["inputs"].update(lubricant_inputs(run));
   if (run.roughness) j["inputs"]["roughness"] = roughness_inputs(*run.roughness);
   if (run.profile) j["inputs"]["profile"] = profile_inputs(*run.profile);

@@ -27,7 +27,9 @@ struct EhlRun {
   // geometry = "point": a ball on a flat (ehl_point.h); `contact` then unused.
   std::optional<lubrication::EhlPointContact> point;
   lubrication::EhlPointOptions point_options;
-  bool fitted_domain = false;  // [solver] domain = "fitted": point_options' extents from the expected film
+  // [solver] domain = "fitted": a point contact's extents from the expected film (fit_domain_to_film),
+  // a smooth line contact's inlet moved out until the film no longer feels it (fit_inlet_to_film).
+  bool fitted_domain = false;
   double sliding_speed_m_per_s = 0.0;  // u1 − u2 (the traction's; the film depends on u_m only)
   lubrication::PiezoviscousLubricant lubricant;
   double eyring_stress_Pa = 0.0;       // τ0; +inf for a Newtonian film
@@ -99,6 +101,7 @@ struct EhlSolve {
   std::optional<lubrication::MixedPointResult> mixed_point;  // geometry = "point" with roughness
   std::optional<lubrication::MixedLineResult> mixed;  // with roughness
   bool converged = false;
+  lubrication::EhlLineOptions line_options;  // the line solve's (the run's, or its fitted inlet's)
   nlohmann::json summary;  // ehl.json without "provenance" and "fields"
 };
 

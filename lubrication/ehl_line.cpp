@@ -446,6 +446,44 @@ EhlLineResult solve_ehl_line(const EhlLineContact& contact, const PiezoviscousLu
   return solve_line(contact, nullptr, lubricant, options);
 }
 
+FittedLineInlet fit_inlet_to_film(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant, const EhlLineOptions& given,
+                                  double film_tolerance, double max_inlet) {
+  if (!(film_tolerance > 0.0)) throw std::invalid_argument("EHL line inlet: the film tolerance must be positive, got " + shortest(film_tolerance));
+  if (!(max_inlet < given.inlet_over_half_width))
+    throw std::invalid_argument("EHL line inlet: the limit " + shortest(max_inlet) + " must lie before the given inlet " +
+                                shortest(given.inlet_over_half_width));
+  constexpr int kMaxNodes = 20001;
+  const double spacing = (given.outlet_over_half_width - given.inlet_over_half_width) / (given.nodes - 1);
+  FittedLineInlet out;
+  out.options = given;
+  out.result = solve_ehl_line(contact, lubricant, given);
+  out.solves = 1;
+  EhlLineOptions options = given;
+  for (;;) {
+    EhlLineOptions longer = options;
+    longer.inlet_over_half_width = -1.0 + 1.5 * (options.inlet_over_half_width + 1.0);
+    longer.nodes = 1 + static_cast<int>(std::lround((longer.outlet_over_half_width - longer.inlet_over_half_width) / spacing));
+    if (longer.inlet_over_half_width < max_inlet || longer.nodes > kMaxNodes) {
+      out.message = "the film still moved with the inlet at X = " + shortest(options.inlet_over_half_width) + " (the next, " +
+                    shortest(longer.inlet_over_half_width) + " with " + std::to_string(longer.nodes) + " nodes, is past the limit)";
+      return out;
+    }
+    const EhlLineResult next = solve_ehl_line(contact, lubricant, longer);
+    ++out.solves;
+    const EhlLineResult& last = out.result;
+    if (last.converged && next.converged &&
+        std::abs(next.central_film_m - last.central_film_m) <= film_tolerance * next.central_film_m) {
+      out.settled = true;
+      out.message = "inlet at X = " + shortest(options.inlet_over_half_width) + ": the central film within " + shortest(film_tolerance) +
+                    " of the one at " + shortest(longer.inlet_over_half_width);
+      return out;
+    }
+    options = longer;
+    out.options = longer;
+    out.result = next;
+  }
+}
+
 EhlLineResult solve_ehl_line(const EhlLineContact& contact, const EhlRoughness& roughness, const PiezoviscousLubricant& lubricant,
                              const EhlLineOptions& options) {
   return solve_line(contact, &roughness, lubricant, options);

@@ -120,6 +120,25 @@ struct EhlLineResult {
   std::string message;
 };
 
+// The smooth contact's inlet moved out until the film no longer feels it: solved on `given`, then on
+// inlets 1.5 times as far from the contact's edge (X = −1) each time, the node spacing kept (the nodes
+// grow with the domain), until two converged solves in a row give central films within
+// `film_tolerance` (relative) of each other; the shorter of the two is kept. A thick film — a fast
+// or viscous contact — is starved by the default inlet at −4.5 b (u_m = 20 m/s on the rollers of
+// docs/lubrication.md: not converged there, 3.00 µm at −8 b, 3.03 µm at −12 b), and its solve may
+// not converge at all; a thin one keeps `given`. Stops unsettled (settled false, message) past
+// max_inlet_over_half_width or 20001 nodes. Throws std::invalid_argument as solve_ehl_line does, and
+// for a tolerance ≤ 0 or a limit not beyond given's inlet.
+struct FittedLineInlet {
+  EhlLineOptions options;  // given's, with the inlet (and nodes) found
+  EhlLineResult result;    // the contact solved on them
+  int solves = 0;
+  bool settled = false;
+  std::string message;
+};
+FittedLineInlet fit_inlet_to_film(const EhlLineContact& contact, const PiezoviscousLubricant& lubricant, const EhlLineOptions& given,
+                                  double film_tolerance = 5e-3, double max_inlet_over_half_width = -100.0);
+
 // Throws std::invalid_argument for bad input (non-positive or non-finite contact data, a domain
 // that does not start before X = −1 and end after X = 0, fewer than 11 nodes); never throws for non-convergence (see
 // `converged` and `message`).

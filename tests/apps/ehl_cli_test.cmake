@@ -304,3 +304,22 @@ assert c['plastic_nodes'] - 4 <= np.count_nonzero(flow) <= c['plastic_nodes'], (
 ")
 expect_refused(hardness_alone "${ball}[material]\nhardness_Pa = 6.656e8\n" "material")
 expect_refused(hardness_negative "${crawling_ball}${flat_profile}[material]\nhardness_Pa = -1\n" "material.hardness_Pa")
+
+# A thick line film (u_m = 5 m/s on R = 0.02 m rollers, h_c ≈ 1.2 µm) with [solver] domain = "fitted":
+# the inlet moved out past the default −4.5 b at the given node spacing (lubrication::fit_inlet_to_film)
+# until the central film settled, echoed among the inputs with the fit's account. Refused: a fitted
+# inlet with an inlet given, or on a rough contact.
+set(thick "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 2e5\nreduced_radius_m = 0.02\nreduced_modulus_Pa = 2.27e11\nmean_speed_m_per_s = 5.0\n[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n")
+run_ehl(line_fitted "fitted line inlet" "${thick}[solver]\nnodes = 101\ndomain = \"fitted\"\n" --summary-only)
+expect_outputs(line_fitted "fitted line inlet" "
+import json, sys
+s = json.load(open(sys.argv[1] + '/ehl.json'))
+i, f = s['inputs'], s['inlet_fit']
+assert s['converged'] and f['settled'] and f['solves'] >= 3, (s['message'], f)
+assert i['domain'] == 'fitted' and i['inlet_over_half_width'] < -4.5 and i['outlet_over_half_width'] == 1.5, i
+spacing = (i['outlet_over_half_width'] - i['inlet_over_half_width']) / (i['nodes'] - 1)
+assert abs(spacing - 0.06) < 1e-3, (spacing, i)  # the given spacing, 6/100
+assert 1.0e-6 < s['central_film_m'] < 1.4e-6, s['central_film_m']
+")
+expect_refused(line_fitted_inlet "${thick}[solver]\ndomain = \"fitted\"\ninlet_over_half_width = -6\n" "solver.inlet_over_half_width")
+expect_refused(line_fitted_rough "${thick}[solver]\ndomain = \"fitted\"\n[profile]\namplitude_m = 1e-8\nwavelength_m = 1e-4\nboundary_friction_coefficient = 0.1\n" "solver.domain")
