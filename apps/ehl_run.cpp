@@ -393,9 +393,8 @@ EhlRun load_ehl_run(const toml::table& doc, const std::filesystem::path& path) {
                         2.0 * side / (run.point_options.nodes_y - 1), *run.surface_map, run.profile->surface);
     }
   } else {
-    if (run.fitted_domain && (run.roughness || run.profile))
-      root.fail("solver.domain", std::string("\"fitted\" fits a smooth line contact's inlet; with [") + (run.roughness ? "roughness" : "profile") +
-                                     "] give solver.inlet_over_half_width");
+    if (run.fitted_domain && run.profile)
+      root.fail("solver.domain", "\"fitted\" fits a line contact's inlet to its smooth film; with [profile] give solver.inlet_over_half_width");
     if (!(run.options.inlet_over_half_width < -1.0)) root.fail("solver.inlet_over_half_width", "must lie before the contact, below -1");
     if (!(run.options.outlet_over_half_width > 1.0)) root.fail("solver.outlet_over_half_width", "must lie past the contact, above 1");
     const double b = lub::reference::hertz_line_half_width_m(run.contact.load_per_length_N_per_m, run.contact.reduced_radius_m,
@@ -724,10 +723,21 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
     j["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
   }
+  // The fitted inlet: the smooth contact's at the full load (a film's share s < 1 is at most a little
+  // thicker, s^−0.2 by the film fits, and only where the summits carry the rest: at low speed).
+  std::optional<lub::FittedLineInlet> fit;
+  if (run.fitted_domain && !run.profile) {
+    fit = lub::fit_inlet_to_film(run.contact, run.lubricant, run.options);
+    // Unsettled, the given inlet (with [roughness], the smooth film the fit solves may not exist at
+    // low speed, where the summits carry the load: the inlet is then not what matters).
+    if (!fit->settled) std::fprintf(stderr, "tribo: warning: solver.domain = \"fitted\": %s\n", fit->message.c_str());
+    out.line_options = fit->options;
+    j["inlet_fit"] = {{"settled", fit->settled}, {"solves", fit->solves}, {"message", fit->message}};
+  }
   if (run.roughness) {
     const auto mc = mixed_contact<lub::MixedLineContact>(run, run.contact);
     lub::MixedLineOptions mo;
-    mo.film = run.options;
+    mo.film = out.line_options;
     const lub::MixedLineResult& m = out.mixed.emplace(lub::solve_mixed_line(mc, run.lubricant, mo));
     out.film = m.film;
     out.traction = m.traction;
@@ -738,13 +748,9 @@ EhlSolve solve_ehl_run(const EhlRun& run) {
                             "per_length_N_per_m", "N_per_m");
   } else if (run.profile) {
     solve_profile(run, out);
-  } else if (run.fitted_domain) {
-    const lub::FittedLineInlet fit = lub::fit_inlet_to_film(run.contact, run.lubricant, run.options);
-    if (!fit.settled) std::fprintf(stderr, "tribo: warning: solver.domain = \"fitted\": %s\n", fit.message.c_str());
-    out.film = fit.result;
+  } else if (fit) {
+    out.film = fit->result;
     out.converged = out.film.converged;
-    out.line_options = fit.options;
-    j["inlet_fit"] = {{"settled", fit.settled}, {"solves", fit.solves}, {"message", fit.message}};
   } else {
     out.film = lub::solve_ehl_line(run.contact, run.lubricant, run.options);
     out.converged = out.film.converged;

@@ -458,19 +458,33 @@ FittedLineInlet fit_inlet_to_film(const EhlLineContact& contact, const Piezovisc
   out.options = given;
   out.result = solve_ehl_line(contact, lubricant, given);
   out.solves = 1;
+  // Unsettled: given's options and solve are returned, with why.
+  const auto unsettled = [&](const std::string& why) {
+    FittedLineInlet kept;
+    kept.options = given;
+    kept.result = out.options.nodes == given.nodes && out.options.inlet_over_half_width == given.inlet_over_half_width
+                      ? out.result
+                      : solve_ehl_line(contact, lubricant, given);
+    kept.solves = out.solves;
+    kept.message = why + "; the given inlet kept";
+    return kept;
+  };
   EhlLineOptions options = given;
   for (;;) {
     EhlLineOptions longer = options;
     longer.inlet_over_half_width = -1.0 + 1.5 * (options.inlet_over_half_width + 1.0);
     longer.nodes = 1 + static_cast<int>(std::lround((longer.outlet_over_half_width - longer.inlet_over_half_width) / spacing));
-    if (longer.inlet_over_half_width < max_inlet || longer.nodes > kMaxNodes) {
-      out.message = "the film still moved with the inlet at X = " + shortest(options.inlet_over_half_width) + " (the next, " +
-                    shortest(longer.inlet_over_half_width) + " with " + std::to_string(longer.nodes) + " nodes, is past the limit)";
-      return out;
-    }
+    if (longer.inlet_over_half_width < max_inlet || longer.nodes > kMaxNodes)
+      return unsettled("the film still moved with the inlet at X = " + shortest(options.inlet_over_half_width) + " (the next, " +
+                       shortest(longer.inlet_over_half_width) + " with " + std::to_string(longer.nodes) + " nodes, is past the limit)");
     const EhlLineResult next = solve_ehl_line(contact, lubricant, longer);
     ++out.solves;
     const EhlLineResult& last = out.result;
+    // Two solves in a row that do not converge: not the inlet's doing (a film collapsing on too
+    // coarse a grid, say), and longer domains would only cost more.
+    if (!last.converged && !next.converged)
+      return unsettled("the solves at X = " + shortest(options.inlet_over_half_width) + " and " + shortest(longer.inlet_over_half_width) +
+                       " did not converge (" + next.message + ")");
     if (last.converged && next.converged &&
         std::abs(next.central_film_m - last.central_film_m) <= film_tolerance * next.central_film_m) {
       out.settled = true;

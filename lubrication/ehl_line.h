@@ -126,9 +126,11 @@ struct EhlLineResult {
 // `film_tolerance` (relative) of each other; the shorter of the two is kept. A thick film — a fast
 // or viscous contact — is starved by the default inlet at −4.5 b (u_m = 20 m/s on the rollers of
 // docs/lubrication.md: not converged there, 3.00 µm at −8 b, 3.03 µm at −12 b), and its solve may
-// not converge at all; a thin one keeps `given`. Stops unsettled (settled false, message) past
-// max_inlet_over_half_width or 20001 nodes. Throws std::invalid_argument as solve_ehl_line does, and
-// for a tolerance ≤ 0 or a limit not beyond given's inlet.
+// not converge at all; a thin one keeps `given`. Stops unsettled — `given` and its solve returned,
+// settled false, the message says why — past max_inlet_over_half_width or 20001 nodes, or after two
+// solves in a row that do not converge (not the inlet's doing: a film collapsing on too coarse a
+// grid, and longer domains would only cost more). Throws std::invalid_argument as solve_ehl_line
+// does, and for a tolerance ≤ 0 or a limit not beyond given's inlet.
 struct FittedLineInlet {
   EhlLineOptions options;  // given's, with the inlet (and nodes) found
   EhlLineResult result;    // the contact solved on them

@@ -308,7 +308,7 @@ expect_refused(hardness_negative "${crawling_ball}${flat_profile}[material]\nhar
 # A thick line film (u_m = 5 m/s on R = 0.02 m rollers, h_c ≈ 1.2 µm) with [solver] domain = "fitted":
 # the inlet moved out past the default −4.5 b at the given node spacing (lubrication::fit_inlet_to_film)
 # until the central film settled, echoed among the inputs with the fit's account. Refused: a fitted
-# inlet with an inlet given, or on a rough contact.
+# inlet with an inlet given, or with a [profile] (whose samples are placed on the given domain).
 set(thick "[contact]\ngeometry = \"line\"\nload_per_length_N_per_m = 2e5\nreduced_radius_m = 0.02\nreduced_modulus_Pa = 2.27e11\nmean_speed_m_per_s = 5.0\n[lubricant]\nviscosity_Pa_s = 0.04\npressure_viscosity_per_Pa = 2e-8\neyring_stress_Pa = 5e6\n")
 run_ehl(line_fitted "fitted line inlet" "${thick}[solver]\nnodes = 101\ndomain = \"fitted\"\n" --summary-only)
 expect_outputs(line_fitted "fitted line inlet" "

@@ -61,6 +61,25 @@ TEST(EhlLineInlet, ThinFilmKeepsTheGivenInlet) {
   EXPECT_EQ(fitted.result.central_film_m, solve_ehl_line(r.contact, r.oil, r.options).central_film_m);
 }
 
+// A contact whose film collapses on the given grid (1 mm/s at 100 kN/m on 201 nodes: Newton stalls
+// with the film driven to zero, examples/ehl-rough-line.toml's slowest speed without its summits) is
+// not the inlet's doing: after two solves that fail the fit stops, unsettled, with the given inlet.
+TEST(EhlLineInlet, FailingSolvesStopTheFitWithTheGivenInlet) {
+  const EhlLineContact crawling{1e5, 0.01, 2.26e11, 1e-3};
+  PiezoviscousLubricant oil;
+  oil.viscosity_Pa_s = 0.04;
+  oil.pressure_viscosity_per_Pa = 2.2e-8;
+  EhlLineOptions given;
+  given.nodes = 201;
+  const FittedLineInlet fitted = fit_inlet_to_film(crawling, oil, given);
+  EXPECT_FALSE(fitted.settled);
+  EXPECT_EQ(fitted.solves, 2);
+  EXPECT_FALSE(fitted.result.converged);
+  EXPECT_DOUBLE_EQ(fitted.options.inlet_over_half_width, -4.5);
+  EXPECT_EQ(fitted.options.nodes, 201);
+  EXPECT_NE(fitted.message.find("did not converge"), std::string::npos) << fitted.message;
+}
+
 TEST(EhlLineInlet, RefusesAToleranceOrLimitThatCannotBeMet) {
   const Rollers r;
   EXPECT_THROW(fit_inlet_to_film(r.contact, r.oil, r.options, 0.0), std::invalid_argument);
