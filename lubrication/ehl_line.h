@@ -126,7 +126,9 @@ struct EhlLineResult {
 // `film_tolerance` (relative) of each other; the shorter of the two is kept. A thick film — a fast
 // or viscous contact — is starved by the default inlet at −4.5 b (u_m = 20 m/s on the rollers of
 // docs/lubrication.md: not converged there, 3.00 µm at −8 b, 3.03 µm at −12 b), and its solve may
-// not converge at all; a thin one keeps `given`. Stops unsettled — `given` and its solve returned,
+// not converge at all; a thin one keeps `given`. The rule bounds the change between successive
+// inlets, not the distance to the flooded film: a light load's film, hung on a long, nearly rigid
+// inlet, converges slowly and can be short by more (docs/lubrication.md, Crook's rollers). Stops unsettled — `given` and its solve returned,
 // settled false, the message says why — past max_inlet_over_half_width or 20001 nodes, or after two
 // solves in a row that do not converge (not the inlet's doing: a film collapsing on too coarse a
 // grid, and longer domains would only cost more). Throws std::invalid_argument as solve_ehl_line
