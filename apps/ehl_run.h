@@ -28,7 +28,8 @@ struct EhlRun {
   std::optional<lubrication::EhlPointContact> point;
   lubrication::EhlPointOptions point_options;
   // [solver] domain = "fitted": a point contact's extents from the expected film (fit_domain_to_film),
-  // a smooth line contact's inlet moved out until the film no longer feels it (fit_inlet_to_film).
+  // a line contact's inlet moved out until its smooth film no longer feels it (fit_inlet_to_film;
+  // with [roughness] too, not with [profile]).
   bool fitted_domain = false;
   double sliding_speed_m_per_s = 0.0;  // u1 − u2 (the traction's; the film depends on u_m only)
   lubrication::PiezoviscousLubricant lubricant;
