@@ -458,13 +458,12 @@ FittedLineInlet fit_inlet_to_film(const EhlLineContact& contact, const Piezovisc
   out.options = given;
   out.result = solve_ehl_line(contact, lubricant, given);
   out.solves = 1;
-  // Unsettled: given's options and solve are returned, with why.
+  const EhlLineResult on_given = out.result;
+  // Unsettled: given's options and its solve (the first) are returned, with why.
   const auto unsettled = [&](const std::string& why) {
     FittedLineInlet kept;
     kept.options = given;
-    kept.result = out.options.nodes == given.nodes && out.options.inlet_over_half_width == given.inlet_over_half_width
-                      ? out.result
-                      : solve_ehl_line(contact, lubricant, given);
+    kept.result = on_given;
     kept.solves = out.solves;
     kept.message = why + "; the given inlet kept";
     return kept;
