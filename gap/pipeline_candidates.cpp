@@ -218,6 +218,49 @@ std::vector<Candidate> nest(const FitProblem& p, const Baseline& b, std::vector<
   return singles;
 }
 
+namespace {
+
+// A pair's fit with one member taken out: the other member's parameters, baseline and rig as the
+// pair left them. Without the instrument every friction reading is the contact's, so its levels
+// are scaled by the gain the pair read them through: the reading, which the data pin down, is kept.
+Candidate without_partner(const Candidate& member, const Candidate& pr) {
+  Candidate from = member;
+  from.rig = pr.rig;
+  from.model.baseline = pr.model.baseline;
+  for (auto& [name, values] : from.model.effects)
+    if (const auto it = pr.model.effects.find(name); it != pr.model.effects.end()) values = it->second;
+  if (from.model.instrument && pr.model.instrument) from.model.instrument = pr.model.instrument;
+  if (pr.model.instrument && !from.model.instrument) {
+    const double gain = pr.model.get(rig::kInstrument, "gain");
+    from.model.baseline.mu_s *= gain, from.model.baseline.mu_k *= gain;
+  }
+  return from;
+}
+
+}  // namespace
+
+std::vector<Candidate> reduce_pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, const Candidate& pr,
+                                   int comparisons) {
+  std::vector<std::size_t> members;
+  for (std::size_t k = 0; k < singles.size(); ++k)
+    if (singles[k].effects.size() == 1 && std::count(pr.effects.begin(), pr.effects.end(), singles[k].effects[0]) > 0 &&
+        pr.train_gap < singles[k].train_gap)
+      members.push_back(k);
+  std::vector<Candidate> projected(members.size());
+  numerics::parallel_for(members.size(), [&](std::size_t m) {
+    projected[m] = refine(p, b, without_partner(singles[members[m]], pr), comparisons);
+  });
+  for (std::size_t m = 0; m < members.size(); ++m) {
+    Candidate& single = singles[members[m]];
+    if (projected[m].train_gap < single.train_gap) {
+      projected[m].fit.wall_s += single.fit.wall_s;
+      single = std::move(projected[m]);
+    }
+  }
+  rank(singles);
+  return singles;
+}
+
 Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons, double noise_floor) {
   Paired out{std::move(singles), comparisons};
   if (out.candidates.size() < 2) return out;
@@ -230,7 +273,9 @@ Paired pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singl
   out.comparisons = static_cast<int>(out.candidates.size()) + 1;
   for (Candidate& c : out.candidates) judge(p, b, out.comparisons, c);
   const std::vector<std::string> both{out.candidates[0].effects[0], out.candidates[1].effects[0]};
-  out.candidates.push_back(refine(p, b, search(p, b, both, p.options.seed * 7919 + 104729, out.comparisons), out.comparisons));
+  Candidate paired = refine(p, b, search(p, b, both, p.options.seed * 7919 + 104729, out.comparisons), out.comparisons);
+  out.candidates = reduce_pair(p, b, std::move(out.candidates), paired, out.comparisons);
+  out.candidates.push_back(std::move(paired));
   rank(out.candidates);
   return out;
 }
