@@ -126,6 +126,12 @@ std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, st
 // it then fits train better. Returns the candidates ranked.
 std::vector<Candidate> nest(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, int comparisons);
 
+// A pair's fit with its other member taken out, as a start for `member`: the member's parameters,
+// the baseline and the rig as the pair left them. Without the instrument every friction reading is
+// the contact's, so the levels are scaled by the gain the pair read them through: the reading,
+// which the data pin down, is kept.
+Candidate without_partner(const Candidate& member, const Candidate& pr);
+
 // A pair nests each of its members (the other taken out, at its null: an instrument of gain 1
 // and no lag is no instrument). Each member whose single fits train worse than the pair is refined
 // again from the pair's fit without the other member (its levels read through the other's gain

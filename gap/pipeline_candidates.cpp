@@ -218,11 +218,6 @@ std::vector<Candidate> nest(const FitProblem& p, const Baseline& b, std::vector<
   return singles;
 }
 
-namespace {
-
-// A pair's fit with one member taken out: the other member's parameters, baseline and rig as the
-// pair left them. Without the instrument every friction reading is the contact's, so its levels
-// are scaled by the gain the pair read them through: the reading, which the data pin down, is kept.
 Candidate without_partner(const Candidate& member, const Candidate& pr) {
   Candidate from = member;
   from.rig = pr.rig;
@@ -236,8 +231,6 @@ Candidate without_partner(const Candidate& member, const Candidate& pr) {
   }
   return from;
 }
-
-}  // namespace
 
 std::vector<Candidate> reduce_pair(const FitProblem& p, const Baseline& b, std::vector<Candidate> singles, const Candidate& pr,
                                    int comparisons) {

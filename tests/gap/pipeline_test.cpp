@@ -232,6 +232,41 @@ TEST_F(ViscousPipeline, SearchOfTheWithheldEffectEarnsItsParameter) {
   EXPECT_EQ(c.extra_parameters, 1);
 }
 
+// The instrument taken out of a pair keeps what was read: at gain 0.8 a contact μs of 0.4 reads
+// 0.32, so the member alone starts from μs 0.32 and μk 0.2 (0.8 × 0.25), with the pair's own
+// parameters for the member (c = 45 N s/m) and its rig, and no instrument. The other way round, the
+// instrument alone takes the pair's gain and lag and keeps the contact's levels.
+TEST(Pipeline, APairWithoutItsInstrumentKeepsTheReadLevels) {
+  Candidate pr;
+  pr.effects = {"viscous_friction", rig::kInstrument};
+  pr.rig.stiffness_N_per_m = 1234.0;
+  pr.model = rig::coulomb(0.4, 0.25);
+  pr.model.set("viscous_friction", "coefficient_N_s_per_m", 45.0);
+  pr.model.add(rig::kInstrument);
+  pr.model.set(rig::kInstrument, "gain", 0.8);
+  pr.model.set(rig::kInstrument, "lag_s", 2e-3);
+  Candidate viscous;
+  viscous.effects = {"viscous_friction"};
+  viscous.model = rig::coulomb(0.3, 0.2);
+  viscous.model.set("viscous_friction", "coefficient_N_s_per_m", 10.0);
+  const Candidate from = without_partner(viscous, pr);
+  EXPECT_DOUBLE_EQ(from.model.baseline.mu_s, 0.32);
+  EXPECT_DOUBLE_EQ(from.model.baseline.mu_k, 0.2);
+  EXPECT_EQ(from.model.get("viscous_friction", "coefficient_N_s_per_m"), 45.0);
+  EXPECT_FALSE(from.model.instrument.has_value());
+  EXPECT_EQ(from.rig.stiffness_N_per_m, 1234.0);
+
+  Candidate instrument;
+  instrument.effects = {rig::kInstrument};
+  instrument.model = rig::coulomb(0.3, 0.2);
+  instrument.model.add(rig::kInstrument);
+  const Candidate gain = without_partner(instrument, pr);
+  EXPECT_EQ(gain.model.get(rig::kInstrument, "gain"), 0.8);
+  EXPECT_EQ(gain.model.get(rig::kInstrument, "lag_s"), 2e-3);
+  EXPECT_EQ(gain.model.baseline.mu_s, 0.4);
+  EXPECT_TRUE(gain.model.effects.empty());
+}
+
 // Refinement continues the search's fit: Levenberg–Marquardt accepts no step uphill, so the
 // training cost (the fits' weighted sum of squares) cannot rise — to the simulation's round-off.
 TEST_F(ViscousPipeline, RefinementNeverLeavesTheTrainingCostHigher) {
