@@ -224,10 +224,13 @@ Candidate without_partner(const Candidate& member, const Candidate& pr) {
   from.model.baseline = pr.model.baseline;
   for (auto& [name, values] : from.model.effects)
     if (const auto it = pr.model.effects.find(name); it != pr.model.effects.end()) values = it->second;
-  if (from.model.instrument && pr.model.instrument) from.model.instrument = pr.model.instrument;
-  if (pr.model.instrument && !from.model.instrument) {
-    const double gain = pr.model.get(rig::kInstrument, "gain");
-    from.model.baseline.mu_s *= gain, from.model.baseline.mu_k *= gain;
+  if (pr.model.instrument) {
+    if (from.model.instrument) {
+      from.model.instrument = pr.model.instrument;
+    } else {
+      const double gain = pr.model.get(rig::kInstrument, "gain");
+      from.model.baseline.mu_s *= gain, from.model.baseline.mu_k *= gain;
+    }
   }
   return from;
 }
@@ -243,13 +246,9 @@ std::vector<Candidate> reduce_pair(const FitProblem& p, const Baseline& b, std::
   numerics::parallel_for(members.size(), [&](std::size_t m) {
     projected[m] = refine(p, b, without_partner(singles[members[m]], pr), comparisons);
   });
-  for (std::size_t m = 0; m < members.size(); ++m) {
-    Candidate& single = singles[members[m]];
-    if (projected[m].train_gap < single.train_gap) {
-      projected[m].fit.wall_s += single.fit.wall_s;
-      single = std::move(projected[m]);
-    }
-  }
+  // refine() counts in the start's time, which without_partner copied from the single.
+  for (std::size_t m = 0; m < members.size(); ++m)
+    if (Candidate& single = singles[members[m]]; projected[m].train_gap < single.train_gap) single = std::move(projected[m]);
   rank(singles);
   return singles;
 }
