@@ -20,7 +20,7 @@
 namespace {
 
 const std::vector<std::string> kEffects{"none",          "slip_transient", "viscous_friction",     "thermal_thinning",
-                                        "hydrodynamic_lift", "squeeze_film", "rate_dependent_static"};
+                                        "hydrodynamic_lift", "squeeze_film", "rate_dependent_static", "rate_and_state"};
 
 const std::filesystem::path kBundle = std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/gap/data/foreign-coulomb-control";
 
@@ -76,6 +76,53 @@ void BM_PredictPaperK2254Effect(benchmark::State& state) {
   predict_paper_k2254(state, -1, effect);
 }
 BENCHMARK(BM_PredictPaperK2254Effect)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
+
+// The measured velocity step (basalt gouge, BRAVA; ../shared/data/real, skipped without it): one
+// 118-s run driven at 3 then 10 µm/s, at the calibrated Coulomb baseline of the 2026-12-05 report
+// (μs 0.6164, μk 0.6060, ζ 0.110, k 1.021e6 N/m), one effect added (an index into kEffects).
+void BM_PredictVelocityStep(benchmark::State& state) {
+  using namespace tribo;
+  const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/velstep-basalt-brava";
+  if (!std::filesystem::exists(dir)) {
+    state.SkipWithError("../shared/data/real/velstep-basalt-brava not found");
+    return;
+  }
+  const gap::ExperimentBundle bundle = gap::read_bundle(dir);
+  rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
+  rig.stiffness_N_per_m = 1.021e6;
+  gap::set_damping_ratio(rig, 0.1101);
+  const gap::Comparison comparison(bundle, rig);
+  rig::FrictionModel model = rig::coulomb(0.6164, 0.6060);
+  const auto effect = static_cast<std::size_t>(state.range(0));
+  if (effect > 0) model.add(kEffects.at(effect));
+  state.SetLabel(kEffects.at(effect));
+  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+BENCHMARK(BM_PredictVelocityStep)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
+
+// The same record where a fit's search wanders into chatter: μs = μk with hydrodynamic lift that
+// drops steeply near U = 0 (max_fraction 0.095, U½ 40 µm/s), stiffness 1.037e6 N/m and
+// 520.8 N s/m — a grid start of the lift candidate. Every slip re-attaches at once from 0.8 s on;
+// the event rate limit (Comparison::limit_events) ends the run there, where the whole run's
+// budget let it chatter through 384 000 events (1.2 s) first.
+void BM_PredictVelocityStepChatter(benchmark::State& state) {
+  using namespace tribo;
+  const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/velstep-basalt-brava";
+  if (!std::filesystem::exists(dir)) {
+    state.SkipWithError("../shared/data/real/velstep-basalt-brava not found");
+    return;
+  }
+  const gap::ExperimentBundle bundle = gap::read_bundle(dir);
+  rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
+  rig.stiffness_N_per_m = 1.037e6;
+  rig.damping_N_s_per_m = 520.8;
+  const gap::Comparison comparison(bundle, rig);
+  rig::FrictionModel model = rig::coulomb(0.6141, 0.6141);
+  model.set("hydrodynamic_lift", "max_fraction", 0.095);
+  model.set("hydrodynamic_lift", "half_speed_m_per_s", 3.981e-5);
+  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+BENCHMARK(BM_PredictVelocityStepChatter)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

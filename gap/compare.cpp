@@ -797,7 +797,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
       case RunPlan::Kind::drive_history: {
         const bool history = plan.kind == RunPlan::Kind::drive_history;
         options.duration_s = plan.duration_s + plan.simulated_extra_s;
-        options.max_events = Comparison::event_budget(rig, options.duration_s);
+        Comparison::limit_events(options, rig);
         // A constant-speed run ends at its kWindowEvents-th event or, sliding without an event,
         // where it settles; a trace for the report spans the record, its features read off the
         // same prefix (its run reports where it settled).
@@ -908,7 +908,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
       case RunPlan::Kind::regime_point: {
         const double mu_scale = std::max(model.baseline.mu_s, 0.05);
         options.duration_s = std::clamp(6.0 * mu_scale * W / (k * plan.v_m_per_s) + 1.0, 1.0, 60.0);
-        options.max_events = Comparison::event_budget(rig, options.duration_s);
+        Comparison::limit_events(options, rig);
         const rig::SimulationResult r = rig::simulate(rig, rig::Drive::constant(plan.v_m_per_s), law, options);
         if (!r.summary.completed) break;
         const rig::RunObservables o = rig::summarise(rig, r.samples, r.events, rig::analysis_start_s(0.0, r.summary.end_time_s));
@@ -1231,6 +1231,13 @@ long Comparison::event_budget(const rig::RigParameters& rig, double duration_s) 
   const double periods = duration_s * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
   if (!std::isfinite(periods)) return kFewestEvents;
   return std::max(kFewestEvents, static_cast<long>(std::ceil(kEventsPerPeriod * periods)));
+}
+
+void Comparison::limit_events(rig::SimulationOptions& options, const rig::RigParameters& rig) {
+  options.max_events = event_budget(rig, options.duration_s);
+  const double rate_per_s = kEventsPerPeriod * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
+  options.max_event_rate_per_s = std::isfinite(rate_per_s) ? rate_per_s : 0.0;
+  options.events_before_rate_limit = kFewestEvents;
 }
 
 double Comparison::scale(const std::string& observable) const {

@@ -177,6 +177,10 @@ class Comparison {
   static constexpr double kEventsPerPeriod = 20.0;
   static constexpr long kFewestEvents = 1000;
   static long event_budget(const rig::RigParameters& rig, double duration_s);
+  // A prediction's event limits: event_budget over options.duration_s, and the same rate judged
+  // as the run spends it (rig::SimulationOptions::max_event_rate_per_s, after kFewestEvents), so
+  // that a run which chatters from some instant on stops there instead of after the whole budget.
+  static void limit_events(rig::SimulationOptions& options, const rig::RigParameters& rig);
 
  private:
   std::vector<Item> items_;

@@ -190,6 +190,8 @@ void validate(const SimulationOptions& o) {
   if (!(o.settle_tolerance_fraction > 0.0) || !std::isfinite(o.settle_tolerance_fraction)) bad("settle_tolerance_fraction must be finite and positive");
   if (o.stop_when_settled && !(o.settle_window_periods > 0.0)) bad("stop_when_settled needs settle_window_periods > 0");
   if (!std::isfinite(o.initial_displacement_m)) bad("initial_displacement_m must be finite");
+  if (!(o.max_event_rate_per_s >= 0.0) || !std::isfinite(o.max_event_rate_per_s)) bad("max_event_rate_per_s must be finite and >= 0");
+  if (o.events_before_rate_limit < 0) bad("events_before_rate_limit must be >= 0");
   for (std::size_t i = 0; i < o.output_times_s.size(); ++i) {
     const double t = o.output_times_s[i];
     if (!std::isfinite(t) || t < 0.0 || (i > 0 && !(t > o.output_times_s[i - 1])))
@@ -368,9 +370,16 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   settle();
   while (t < t_end && !settled_stop) {
     if (options.stop_after_events > 0 && summary.events >= options.stop_after_events) break;
-    if (summary.events > options.max_events) {
-      summary.message = "stopped after " + std::to_string(summary.events) + " events at t = " + numerics::shortest(t) +
-                        " s (max_events reached: chattering between stick and slip?)";
+    const bool over_budget = summary.events > options.max_events;
+    const bool over_rate = options.max_event_rate_per_s > 0.0 &&
+                           static_cast<double>(summary.events) >
+                               static_cast<double>(options.events_before_rate_limit) + options.max_event_rate_per_s * t;
+    if (over_budget || over_rate) {
+      const std::string limit = over_budget ? "max_events reached"
+                                            : "more than " + std::to_string(options.events_before_rate_limit) + " + " +
+                                                  numerics::shortest(options.max_event_rate_per_s) + " per s";
+      summary.message = "stopped after " + std::to_string(summary.events) + " events at t = " + numerics::shortest(t) + " s (" + limit +
+                        ": chattering between stick and slip?)";
       summary.end_time_s = t;
       return summary;
     }

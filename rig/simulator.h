@@ -38,6 +38,12 @@ struct SimulationOptions {
   std::vector<double> output_times_s;
   // A run with more events than this stops and says so (e.g. chattering at a velocity match).
   long max_events = 2'000'000;
+  // When > 0: the run also stops, in the same way, once its events by time t outnumber
+  // events_before_rate_limit + max_event_rate_per_s × t. A budget in proportion to the duration,
+  // judged as it is spent: a run that chatters (a Zeno sequence of velocity matches, thousands
+  // of events a period) stops where it starts to, not after the whole run's budget.
+  double max_event_rate_per_s = 0.0;
+  long events_before_rate_limit = 1000;
   // When > 0: the run ends, completed, at the first phase boundary after this many events — a
   // caller that reads a periodic response needs a number of cycles, not the whole duration.
   long stop_after_events = 0;

@@ -245,6 +245,42 @@ TEST(Comparison, EventBudgetStopsChatteringPredictionsAndLeavesStickSlipAlone) {
   EXPECT_LT(stick_slip.summary.events, budget / 10);
 }
 
+// The same budget judged as the run spends it (Comparison::limit_events): the chatter above, in a
+// prediction 100 times as long, stops at the instant it starts — after kFewestEvents plus
+// kEventsPerPeriod per natural period elapsed (1175 events), not after the 200-s run's budget of
+// 64 800. Stick-slip, whose events come at a small fraction of that rate, ends as without it.
+TEST(Comparison, EventRateStopsChatteringWhereItStarts) {
+  const rig::RigParameters rig;
+  rig::FrictionModel lift = rig::coulomb(0.357, 0.357);
+  lift.set("hydrodynamic_lift", "max_fraction", 0.475);
+  lift.set("hydrodynamic_lift", "half_speed_m_per_s", 4e-5);
+  rig::SimulationOptions o;
+  o.duration_s = 200.0;
+  Comparison::limit_events(o, rig);
+  EXPECT_EQ(o.max_events, Comparison::event_budget(rig, o.duration_s));
+  const double rate_per_s = Comparison::kEventsPerPeriod * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
+  EXPECT_NEAR(o.max_event_rate_per_s, rate_per_s, 1e-9 * rate_per_s);
+
+  o.relative_tolerance = o.displacement_tolerance_fraction = Comparison::kCoarsestTolerance;
+  const rig::SimulationResult coarse = rig::simulate(rig, rig::Drive::constant(6e-3), *rig::make_friction_law(lift), o);
+  EXPECT_FALSE(coarse.summary.completed);
+  EXPECT_NEAR(coarse.summary.end_time_s, 0.539, 0.001);  // stuck at the first breakaway, as above
+  // One event over the limit at the instant it stops (all of them within the last microseconds).
+  EXPECT_NEAR(static_cast<double>(coarse.summary.events), Comparison::kFewestEvents + rate_per_s * coarse.summary.end_time_s, 2.0);
+  EXPECT_LT(coarse.summary.events, o.max_events / 50);
+
+  rig::SimulationOptions unlimited = o;
+  unlimited.relative_tolerance = unlimited.displacement_tolerance_fraction = 1e-10;
+  unlimited.max_event_rate_per_s = 0.0;
+  unlimited.duration_s = o.duration_s = 20.0;
+  const auto coulomb = rig::make_friction_law(rig::coulomb(0.36, 0.16));
+  const rig::SimulationResult limited_run = rig::simulate(rig, rig::Drive::constant(4.5e-2), *coulomb, o);
+  const rig::SimulationResult free_run = rig::simulate(rig, rig::Drive::constant(4.5e-2), *coulomb, unlimited);
+  ASSERT_TRUE(limited_run.summary.completed) << limited_run.summary.message;
+  EXPECT_GT(limited_run.summary.events, 20);
+  EXPECT_EQ(limited_run.summary.events, free_run.summary.events);
+}
+
 // A bundle of static-friction points only, from a Coulomb rig: calibration recovers μs to 1 %
 // (noise 1 % of μk W on each point, averaged over points) and nothing earns its parameters.
 TEST(Diagnosis, StaticPointsOnlyCalibrateMuSAndAnswerNone) {

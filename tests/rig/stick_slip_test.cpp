@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -186,6 +187,19 @@ TEST(SteadySliding, SlowStickSlipNeverCountsAsSettled) {
   EXPECT_GE(r.events.size(), 8u);  // 5 cycles of ≈ 18 s after the first breakaway at ≈ 27 s
   EXPECT_TRUE(std::isnan(r.summary.settled_at_s));
   EXPECT_EQ(r.summary.end_time_s, o.duration_s);
+}
+
+TEST(StickSlip, EventRateOptionsAreChecked) {
+  const RigParameters rig;
+  auto law = make_coulomb(0.3, 0.2);
+  SimulationOptions o;
+  o.max_event_rate_per_s = -1.0;
+  EXPECT_THROW(simulate(rig, Drive::constant(1e-3), *law, o), std::invalid_argument);
+  o.max_event_rate_per_s = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(simulate(rig, Drive::constant(1e-3), *law, o), std::invalid_argument);
+  o.max_event_rate_per_s = 10.0;
+  o.events_before_rate_limit = -1;
+  EXPECT_THROW(simulate(rig, Drive::constant(1e-3), *law, o), std::invalid_argument);
 }
 
 TEST(SteadySliding, SettleOptionsAreChecked) {
