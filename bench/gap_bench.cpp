@@ -78,9 +78,10 @@ void BM_PredictPaperK2254Effect(benchmark::State& state) {
 BENCHMARK(BM_PredictPaperK2254Effect)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 
 // The measured velocity step (basalt gouge, BRAVA; ../shared/data/real, skipped without it): one
-// 118-s run driven at 3 then 10 µm/s, at the calibrated Coulomb baseline of the 2026-12-05 report
-// (μs 0.6164, μk 0.6060, ζ 0.110, k 1.021e6 N/m), one effect added (an index into kEffects).
-void BM_PredictVelocityStep(benchmark::State& state) {
+// 118-s run driven at 3 then 10 µm/s. `model`'s predictions of it on a rig of the given stiffness
+// and damping ratio, timed.
+void predict_velocity_step(benchmark::State& state, double stiffness_N_per_m, double damping_ratio,
+                           const tribo::rig::FrictionModel& model) {
   using namespace tribo;
   const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/velstep-basalt-brava";
   if (!std::filesystem::exists(dir)) {
@@ -89,38 +90,33 @@ void BM_PredictVelocityStep(benchmark::State& state) {
   }
   const gap::ExperimentBundle bundle = gap::read_bundle(dir);
   rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
-  rig.stiffness_N_per_m = 1.021e6;
-  gap::set_damping_ratio(rig, 0.1101);
+  rig.stiffness_N_per_m = stiffness_N_per_m;
+  gap::set_damping_ratio(rig, damping_ratio);
   const gap::Comparison comparison(bundle, rig);
-  rig::FrictionModel model = rig::coulomb(0.6164, 0.6060);
+  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+
+// At the calibrated Coulomb baseline of the 2026-12-05 report (μs 0.6164, μk 0.6060, ζ 0.110,
+// k 1.021e6 N/m), one effect added (an index into kEffects).
+void BM_PredictVelocityStep(benchmark::State& state) {
   const auto effect = static_cast<std::size_t>(state.range(0));
+  tribo::rig::FrictionModel model = tribo::rig::coulomb(0.6164, 0.6060);
   if (effect > 0) model.add(kEffects.at(effect));
   state.SetLabel(kEffects.at(effect));
-  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+  predict_velocity_step(state, 1.021e6, 0.1101, model);
 }
 BENCHMARK(BM_PredictVelocityStep)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
 
-// The same record where a fit's search wanders into chatter: μs = μk with hydrodynamic lift that
-// drops steeply near U = 0 (max_fraction 0.095, U½ 40 µm/s), stiffness 1.037e6 N/m and
-// 520.8 N s/m — a grid start of the lift candidate. Every slip re-attaches at once from 0.8 s on;
-// the event rate limit (Comparison::limit_events) ends the run there, where the whole run's
-// budget let it chatter through 384 000 events (1.2 s) first.
+// Where a fit's search wanders into chatter: μs = μk with hydrodynamic lift that drops steeply near
+// U = 0 (max_fraction 0.095, U½ 40 µm/s), k 1.037e6 N/m, ζ 0.256 (520.8 N s/m) — a grid start of the lift
+// candidate. Every slip re-attaches at once from 0.8 s on; the event rate limit
+// (Comparison::limit_events) ends the run there, where the whole run's budget let it chatter
+// through 384 000 events (1.2 s) first.
 void BM_PredictVelocityStepChatter(benchmark::State& state) {
-  using namespace tribo;
-  const std::filesystem::path dir = std::filesystem::path(TRIBO_SOURCE_DIR) / "../shared/data/real/velstep-basalt-brava";
-  if (!std::filesystem::exists(dir)) {
-    state.SkipWithError("../shared/data/real/velstep-basalt-brava not found");
-    return;
-  }
-  const gap::ExperimentBundle bundle = gap::read_bundle(dir);
-  rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
-  rig.stiffness_N_per_m = 1.037e6;
-  rig.damping_N_s_per_m = 520.8;
-  const gap::Comparison comparison(bundle, rig);
-  rig::FrictionModel model = rig::coulomb(0.6141, 0.6141);
+  tribo::rig::FrictionModel model = tribo::rig::coulomb(0.6141, 0.6141);
   model.set("hydrodynamic_lift", "max_fraction", 0.095);
   model.set("hydrodynamic_lift", "half_speed_m_per_s", 3.981e-5);
-  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+  predict_velocity_step(state, 1.037e6, 0.2559, model);
 }
 BENCHMARK(BM_PredictVelocityStepChatter)->Unit(benchmark::kMillisecond);
 
