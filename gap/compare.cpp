@@ -1227,15 +1227,19 @@ void Comparison::set_integration_tolerance(double relative_tolerance) {
   tolerance_ = relative_tolerance;
 }
 
+double Comparison::event_rate_per_s(const rig::RigParameters& rig) {
+  return kEventsPerPeriod * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
+}
+
 long Comparison::event_budget(const rig::RigParameters& rig, double duration_s) {
-  const double periods = duration_s * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
-  if (!std::isfinite(periods)) return kFewestEvents;
-  return std::max(kFewestEvents, static_cast<long>(std::ceil(kEventsPerPeriod * periods)));
+  const double events = event_rate_per_s(rig) * duration_s;
+  if (!std::isfinite(events)) return kFewestEvents;
+  return std::max(kFewestEvents, static_cast<long>(std::ceil(events)));
 }
 
 void Comparison::limit_events(rig::SimulationOptions& options, const rig::RigParameters& rig) {
   options.max_events = event_budget(rig, options.duration_s);
-  const double rate_per_s = kEventsPerPeriod * rig.natural_frequency_rad_per_s() / (2.0 * M_PI);
+  const double rate_per_s = event_rate_per_s(rig);
   options.max_event_rate_per_s = std::isfinite(rate_per_s) ? rate_per_s : 0.0;
   options.events_before_rate_limit = kFewestEvents;
 }

@@ -177,6 +177,7 @@ class Comparison {
   static constexpr double kEventsPerPeriod = 20.0;
   static constexpr long kFewestEvents = 1000;
   static long event_budget(const rig::RigParameters& rig, double duration_s);
+  static double event_rate_per_s(const rig::RigParameters& rig);  // kEventsPerPeriod per natural period
   // A prediction's event limits: event_budget over options.duration_s, and the same rate judged
   // as the run spends it (rig::SimulationOptions::max_event_rate_per_s, after kFewestEvents), so
   // that a run which chatters from some instant on stops there instead of after the whole budget.
