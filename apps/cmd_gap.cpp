@@ -8,6 +8,8 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "apps/commands.h"
 #include "apps/config.h"
@@ -30,6 +32,7 @@ namespace {
 
 struct DiagnoseArgs {
   std::string experiment, model, test, out = "out/gap";
+  std::vector<std::string> candidates;  // as given: all "+name" (added to the defaults) or all plain names
   std::uint64_t seed = 1;
   bool quick = false, plot = true;
 };
@@ -182,6 +185,33 @@ gap::ExperimentBundle read_bundle_or_exit(const std::string& dir) {
   return bundle;
 }
 
+// The candidates `--candidates` asks for: plain names replace the defaults of the bundle's kind,
+// "+name" adds to them (rate_and_state, which the catalogue tries on drive histories only, on a
+// stick-slip record whose material is known to age so: paper, rock). Checked against the
+// catalogue; an effect the model already has, or one named twice, is refused.
+std::vector<std::string> chosen_candidates(const std::vector<std::string>& given, const rig::FrictionModel& model, const std::string& kind) {
+  if (given.empty()) return {};
+  const bool adding = given.front().rfind('+', 0) == 0;
+  std::vector<std::string> out = adding ? gap::default_candidates(model, kind) : std::vector<std::string>{};
+  for (const std::string& g : given) {
+    if ((g.rfind('+', 0) == 0) != adding)
+      throw InputError("--candidates: '" + g + "': either every name adds to the defaults (+name) or none does");
+    const std::string name = adding ? g.substr(1) : g;
+    try {
+      rig::effect_info(name);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("--candidates: ") + e.what());
+    }
+    if (model.has(name)) throw InputError("--candidates: the model already has '" + name + "'");
+    if (std::count(out.begin(), out.end(), name)) {
+      if (adding) continue;  // already a default of this kind
+      throw InputError("--candidates: '" + name + "' named twice");
+    }
+    out.push_back(name);
+  }
+  return out;
+}
+
 void run_diagnose(const DiagnoseArgs& args) {
   const gap::ExperimentBundle bundle = read_bundle_or_exit(args.experiment);
   std::optional<gap::ExperimentBundle> test;
@@ -193,6 +223,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   }
   const GapModel model = load_gap_model(args.model);
   gap::DiagnosisOptions o = fitting_options(args.quick, args.seed);
+  o.candidates = chosen_candidates(args.candidates, model.friction, bundle.kind);
   for (const std::string& key : model.missing_rig_keys) {
     const bool in_bundle = key == "stiffness_N_per_m" ? bundle.stiffness_N_per_m.has_value()
                            : key == "damping_N_s_per_m" ? bundle.damping_N_s_per_m.has_value()
@@ -205,7 +236,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   const rig::RigParameters rig = gap::apply_bundle_rig(bundle, model.rig);
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
-  const int candidates = static_cast<int>(gap::default_candidates(model.friction, bundle.kind).size());
+  const int candidates = static_cast<int>(o.candidates.empty() ? gap::default_candidates(model.friction, bundle.kind).size() : o.candidates.size());
   // Steps reported: calibration, each candidate, the four leading refined, a pair, its
   // refinement and its two members refined from it, and the leaders' refits for the resamples.
   Progress progress("gap: fitting", 1 + candidates + std::min(4, candidates) + 4 + 1);
@@ -225,6 +256,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   nlohmann::json provenance = provenance_json(args.model, inputs);
   provenance["experiment"] = std::filesystem::absolute(args.experiment).string();
   provenance["seed"] = args.seed;
+  if (!args.candidates.empty()) provenance["candidates"] = args.candidates;
   nlohmann::json j = report_json(d);
   j["provenance"] = provenance;
   std::optional<gap::TestBlockGap> tb;
@@ -451,6 +483,11 @@ void add_gap_command(CLI::App& app) {
                        "fitted baseline, the verdict's candidate and those named beside it predict it, on data no fit or verdict saw");
   diagnose->add_option("--out", diagnose_args->out, "Output directory")->capture_default_str();
   diagnose->add_option("--seed", diagnose_args->seed, "Seed of random starts, bootstrap and instrument noise")->capture_default_str();
+  diagnose->add_option("--candidates", diagnose_args->candidates,
+                       "Catalogue effects to try, comma-separated (default: those the catalogue tries on the bundle's kind; "
+                       "rate_and_state only on velocity steps and slide-hold-slide); +name adds to the defaults, e.g. "
+                       "--candidates +rate_and_state on a stick-slip record of a material that ages so")
+      ->delimiter(',');
   diagnose->add_flag("--quick", diagnose_args->quick, "Fewer iterations per fit");
   diagnose->add_flag("!--no-plot", diagnose_args->plot, "Skip the PNG plots");
   diagnose->callback([diagnose_args] { run_diagnose(*diagnose_args); });

@@ -52,6 +52,17 @@ if(NOT status6 EQUAL 2 OR NOT err6 MATCHES "no-such-bundle" OR EXISTS ${WORK}/ou
   message(FATAL_ERROR "tribo gap diagnose, missing test bundle: expected status 2 naming it and no output, got ${status6}: ${err6}")
 endif()
 
+# `--candidates`: an effect the catalogue does not know, or adding and replacing mixed, is refused
+# before any fit, naming it, and nothing is written.
+foreach(given "+no_such_effect" "+rate_and_state,viscous_friction")
+  execute_process(COMMAND ${TRIBO} gap diagnose --experiment ${EXAMPLES}/gap-thesis-observations --model ${EXAMPLES}/gap-thesis-baseline.toml
+                          --candidates ${given} --out ${WORK}/out_gap_candidates
+                  RESULT_VARIABLE status8 ERROR_VARIABLE err8)
+  if(NOT status8 EQUAL 2 OR NOT err8 MATCHES "--candidates: .*(no_such_effect|viscous_friction)" OR EXISTS ${WORK}/out_gap_candidates)
+    message(FATAL_ERROR "tribo gap diagnose --candidates ${given}: expected status 2 naming it and no output, got ${status8}: ${err8}")
+  endif()
+endforeach()
+
 # An output folder that exists but takes no files (/proc/self, even for root) is refused before
 # the run, naming it.
 execute_process(COMMAND ${TRIBO} rig ${EXAMPLES}/rig-coulomb.toml --out /proc/self RESULT_VARIABLE status7 ERROR_VARIABLE err7)
