@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """How often the gap diagnosis' verdicts were right, from selftest outputs.
 
-    python3 tools/gap_reliability.py DIR [DIR ...]
+    python3 tools/gap_reliability.py [--plot PNG] DIR [DIR ...]
 
 Each DIR holds a `cases.jsonl` of `tribo gap selftest`. A case (seed and generator) diagnosed in
 several DIRs counts once, with the last DIR's row (give them oldest first). Prints the share of
@@ -12,6 +12,10 @@ the share of the withheld effects named by their strength in noise floors (the c
 baseline's held-out gap over the noise floor; the bins of gap::detection_table, `detection.csv` of
 one set), with the cases whose truth was named or listed beside the verdict (indistinguishable or
 alike at one load). Rows of journals without a noise floor are left out of that table.
+
+With --plot PNG (needs matplotlib), both tables drawn: the reliability diagram (share right
+against the mean confidence of each bin, with the diagonal a calibrated confidence would follow)
+and the share named against the signal, per generator.
 """
 import json
 import sys
@@ -32,12 +36,62 @@ def named_or_listed(r):
 
 
 def detection(rows):
-    print("generator,signal_floors_from,signal_floors_to,effect_cases,named,named_or_listed")
+    """Per generator, (lo, hi, cases, named, named or listed) of each signal bin."""
+    table = {}
     for g in sorted({r.get("generator", "rig") for r in rows}):
         effects = [r for r in rows if r.get("generator", "rig") == g and r["true_effect"] != "none" and signal_floors(r) is not None]
+        table[g] = []
         for lo, hi in FLOOR_BINS:
             sel = [r for r in effects if lo <= signal_floors(r) < hi]
-            print(f"{g},{lo:g},{hi:g},{len(sel)},{sum(bool(r['correct']) for r in sel)},{sum(named_or_listed(r) for r in sel)}")
+            table[g].append((lo, hi, len(sel), sum(bool(r["correct"]) for r in sel), sum(named_or_listed(r) for r in sel)))
+    return table
+
+
+def reliability(rows):
+    """Per verdict kind, (lo, hi, verdicts, right, mean confidence) of each confidence bin."""
+    table = {}
+    for kind, pick in (("effect", lambda r: r["verdict"] != "none"), ("none", lambda r: r["verdict"] == "none")):
+        table[kind] = []
+        for lo, hi in BINS:
+            sel = [r for r in rows if pick(r) and r["confidence"] is not None and lo <= r["confidence"] < hi]
+            mean = sum(r["confidence"] for r in sel) / len(sel) if sel else None
+            table[kind].append((lo, min(hi, 1.0), len(sel), sum(bool(r["correct"]) for r in sel), mean))
+    return table
+
+
+def plot(path, rel, det, n_cases):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, (a, b) = plt.subplots(1, 2, figsize=(11, 4.5))
+    a.plot([0, 1], [0, 1], color="0.6", lw=1, ls="--", label="calibrated")
+    for kind, marker in (("effect", "o"), ("none", "s")):
+        pts = [(m, right / n, n) for lo, hi, n, right, m in rel[kind] if n]
+        a.plot([p[0] for p in pts], [p[1] for p in pts], marker=marker, label="verdict: an effect or unexplained" if kind == "effect" else "verdict: none")
+        for x, y, n in pts:
+            a.annotate(str(n), (x, y), textcoords="offset points", xytext=(4, -10), fontsize=7)
+    a.set(xlim=(0, 1), ylim=(-0.05, 1.02), xlabel="stated confidence (bin mean)", ylabel="share of verdicts right",
+          title="Reliability of the confidence (numbers: verdicts)")
+    a.legend(loc="lower right", fontsize=8)
+    labels = [f"{lo:g}–{hi:g}" if hi != float("inf") else f"≥{lo:g}" for lo, hi in FLOOR_BINS]
+    x = range(len(labels))
+    for k, (g, bins) in enumerate(det.items()):
+        named = [right / n if n else float("nan") for lo, hi, n, right, listed in bins]
+        listed = [lst / n if n else float("nan") for lo, hi, n, right, lst in bins]
+        line, = b.plot([i + 0.05 * k for i in x], named, marker="o", label=f"{g}: named")
+        b.plot([i + 0.05 * k for i in x], listed, marker="^", ls=":", color=line.get_color(), label=f"{g}: named or listed beside")
+        for i, (lo, hi, n, right, lst) in enumerate(bins):
+            if n:
+                b.annotate(str(n), (i + 0.05 * k, right / n), textcoords="offset points", xytext=(4, -10), fontsize=7, color=line.get_color())
+    b.axhline(0.9, color="0.6", lw=1, ls="--")
+    b.set(xticks=list(x), ylim=(-0.05, 1.02), xlabel="signal: calibrated baseline's held-out gap (noise floors)",
+          ylabel="share of withheld effects", title="Withheld effects named, by signal (numbers: cases)")
+    b.set_xticklabels(labels)
+    b.legend(loc="lower right", fontsize=8)
+    fig.suptitle(f"Gap diagnosis on its validation sets ({n_cases} cases)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
 
 
 def latest_rows(dirs):
@@ -59,17 +113,28 @@ def main(argv):
     if len(argv) < 2 or argv[1] in ("-h", "--help"):
         print(__doc__.strip())
         return 0 if len(argv) >= 2 else 2
-    rows = latest_rows(argv[1:])
+    args, png = argv[1:], None
+    if args[0] == "--plot":
+        if len(args) < 3:
+            sys.exit("--plot needs a PNG path and at least one DIR")
+        png, args = args[1], args[2:]
+    rows = latest_rows(args)
     nones = [r for r in rows if r["verdict"] == "none"]
     right = sum(r["true_effect"] == "none" for r in nones)
     print(f"{len(rows)} cases; {len(nones)} 'none' verdicts, {right} of them controls"
           + (f": reliability of 'none' {right / len(nones):.3f}" if nones else ""))
+    rel, det = reliability(rows), detection(rows)
     print("kind,confidence_from,confidence_to,verdicts,right")
-    for kind, pick in (("effect", lambda r: r["verdict"] != "none"), ("none", lambda r: r["verdict"] == "none")):
-        for lo, hi in BINS:
-            sel = [r for r in rows if pick(r) and r["confidence"] is not None and lo <= r["confidence"] < hi]
-            print(f"{kind},{lo:g},{min(hi, 1.0):g},{len(sel)},{sum(bool(r['correct']) for r in sel)}")
-    detection(rows)
+    for kind, bins in rel.items():
+        for lo, hi, n, right, _ in bins:
+            print(f"{kind},{lo:g},{hi:g},{n},{right}")
+    print("generator,signal_floors_from,signal_floors_to,effect_cases,named,named_or_listed")
+    for g, bins in det.items():
+        for lo, hi, n, right, listed in bins:
+            print(f"{g},{lo:g},{hi:g},{n},{right},{listed}")
+    if png:
+        plot(png, rel, det, len(rows))
+        print(f"wrote {png}")
     return 0
 
 

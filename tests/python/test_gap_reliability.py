@@ -45,6 +45,26 @@ class GapReliability(unittest.TestCase):
         self.assertEqual(table[("independent", "0", "1")], (0, 0, 0))   # set a's row of seed 1 is gone; controls stay out
         self.assertEqual(table[("rig", "0", "1")], (1, 1, 1))
 
+    def test_plot_draws_both_tables_into_a_png(self):
+        rows = [case(1, "instrument", "instrument", 12.0, confidence=0.95), case(2, "none", "none", 0.4, confidence=0.7),
+                case(3, "squeeze_film", "rate_dependent_static", 6.0, confidence=0.3)]
+        with tempfile.TemporaryDirectory() as root:
+            with open(os.path.join(root, "cases.jsonl"), "w") as f:
+                f.writelines(json.dumps(r) + "\n" for r in rows)
+            png = os.path.join(root, "reliability.png")
+            out = subprocess.run([sys.executable, TOOL, "--plot", png, root], capture_output=True, text=True, check=True).stdout
+            with open(png, "rb") as f:
+                self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+        self.assertIn("wrote " + png, out)
+        self.assertIn("effect,0.9,1,1,1", out)   # the instrument, named at 95 %: right
+        self.assertIn("effect,0,0.5,1,0", out)   # the film taken for ageing at 30 %: wrong
+        self.assertIn("none,0.7,0.8,1,1", out)
+
+    def test_plot_without_a_directory_is_refused(self):
+        run = subprocess.run([sys.executable, TOOL, "--plot", "x.png"], capture_output=True, text=True)
+        self.assertNotEqual(run.returncode, 0)
+        self.assertIn("--plot needs a PNG path", run.stderr)
+
 
 if __name__ == "__main__":
     unittest.main()
