@@ -124,5 +124,39 @@ TEST(MeasuredRegime, AWeakOscillationTheDisplacementShowsIsRead) {
   }
 }
 
+
+// A stick-slip record whose level wanders along the track by more than a cycle's drop (paper on
+// paper at 42 µm/s, docs/gap.md): drops of 0.04 every 2 s, the stick ramps rising 0.04 between
+// them, on a level that wanders by ± 0.1 over 100 s. Hysteresis at 30 % / 70 % of the whole range
+// read the wander's extremes as the cycle's; the zigzag at 40 % of the typical fall reads the
+// cycles: their period to 2 % (the sampling, 10 ms, and the fall's 20 ms) and their drop to 5 %.
+TEST(MeasuredRegime, ALevelWanderingAlongTheTrackIsNotReadAsTheCycle) {
+  const double period = 2.0, drop = 0.04, fall = 0.02, wander = 0.1;
+  ExperimentBundle b;
+  gap::Run r;
+  r.run_id = "wander";
+  r.v_m_per_s = 4.2e-5;
+  for (double t = 0.0; t <= 300.0; t += 1e-2) {
+    const double phase = std::fmod(t, period);
+    const double ramp = phase < period - fall ? drop * phase / (period - fall) : drop * (period - phase) / fall;
+    r.trace.t_s.push_back(t);
+    r.trace.mu.push_back(0.3 + wander * std::sin(2.0 * M_PI * t / 100.0) + ramp);
+  }
+  b.runs.push_back(r);
+  const Comparison c(b, rig::RigParameters{});
+  double peak = 0.0, trough = 0.0;
+  bool have_period = false;
+  for (const Item& it : c.items()) {
+    if (it.observable == "period_s") {
+      have_period = true;
+      EXPECT_NEAR(it.measured, period, 0.02 * period);
+    }
+    if (it.observable == "mu_peak") peak = it.measured;
+    if (it.observable == "mu_trough") trough = it.measured;
+  }
+  EXPECT_TRUE(have_period);
+  EXPECT_NEAR(peak - trough, drop, 0.05 * drop);
+}
+
 }  // namespace
 }  // namespace tribo::gap
