@@ -33,6 +33,7 @@ namespace {
 struct DiagnoseArgs {
   std::string experiment, model, test, out = "out/gap";
   std::vector<std::string> candidates;  // as given: all "+name" (added to the defaults) or all plain names
+  std::string friction_channel;         // overrides the bundle's [rig] friction_channel when given
   std::uint64_t seed = 1;
   bool quick = false, plot = true;
 };
@@ -213,7 +214,8 @@ std::vector<std::string> chosen_candidates(const std::vector<std::string>& given
 }
 
 void run_diagnose(const DiagnoseArgs& args) {
-  const gap::ExperimentBundle bundle = read_bundle_or_exit(args.experiment);
+  gap::ExperimentBundle bundle = read_bundle_or_exit(args.experiment);
+  if (!args.friction_channel.empty()) bundle.spring_force_channel = args.friction_channel == "spring_force";
   std::optional<gap::ExperimentBundle> test;
   if (!args.test.empty()) {
     test = read_bundle_or_exit(args.test);
@@ -257,6 +259,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   provenance["experiment"] = std::filesystem::absolute(args.experiment).string();
   provenance["seed"] = args.seed;
   if (!args.candidates.empty()) provenance["candidates"] = args.candidates;
+  if (!args.friction_channel.empty()) provenance["friction_channel"] = args.friction_channel;
   nlohmann::json j = report_json(d);
   j["provenance"] = provenance;
   std::optional<gap::TestBlockGap> tb;
@@ -488,6 +491,11 @@ void add_gap_command(CLI::App& app) {
                        "rate_and_state only on velocity steps and slide-hold-slide); +name adds to the defaults, e.g. "
                        "--candidates +rate_and_state on a stick-slip record of a material that ages so")
       ->delimiter(',');
+  diagnose->add_option("--friction-channel", diagnose_args->friction_channel,
+                       "How the record's friction was measured, where its experiment.toml does not say ([rig] friction_channel): "
+                       "inertia_corrected (the thesis' k (x + x''/wn^2), the default) or spring_force (k x alone, a rig without an "
+                       "accelerometer); the simulation reads its own the same way")
+      ->check(CLI::IsMember({"inertia_corrected", "spring_force"}));
   diagnose->add_flag("--quick", diagnose_args->quick, "Fewer iterations per fit");
   diagnose->add_flag("!--no-plot", diagnose_args->plot, "Skip the PNG plots");
   diagnose->callback([diagnose_args] { run_diagnose(*diagnose_args); });

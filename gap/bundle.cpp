@@ -131,13 +131,20 @@ ExperimentBundle read_bundle(const fs::path& dir) {
                        "[rig] kind must be \"pin_on_disc\", \"velocity_step\" or \"slide_hold_slide\"");
         b.kind = *s;
       }
+      if (const toml::node* channel = rig->get("friction_channel")) {
+        const auto s = channel->value<std::string>();
+        if (!s || (*s != "inertia_corrected" && *s != "spring_force"))
+          rig::fail_at(toml_file, static_cast<long>(channel->source().begin.line),
+                       "[rig] friction_channel must be \"inertia_corrected\" or \"spring_force\"");
+        b.spring_force_channel = *s == "spring_force";
+      }
       if (const toml::node* u = rig->get("relative_uncertainty")) {
         const toml::table* table = u->as_table();
         if (!table) rig::fail_at(toml_file, static_cast<long>(u->source().begin.line), "[rig] relative_uncertainty must be a table");
         b.relative_uncertainty = relative_uncertainties(*table, b, toml_file);
       }
       const std::set<std::string> known{"mass_kg", "stiffness_N_per_m", "damping_N_s_per_m", "normal_load_N", "slider_radius_m", "kind",
-                                        "relative_uncertainty"};
+                                        "relative_uncertainty", "friction_channel"};
       for (const auto& [key, node] : *rig)
         if (!known.count(std::string(key.str())))
           b.warnings.push_back(toml_file.string() + ": unknown key [rig] " + std::string(key.str()) + " ignored");
@@ -235,6 +242,7 @@ void write_bundle(const ExperimentBundle& b, const fs::path& dir) {
     key("damping_N_s_per_m", b.damping_N_s_per_m);
     key("normal_load_N", b.normal_load_N);
     key("slider_radius_m", b.slider_radius_m);
+    if (b.spring_force_channel) os << "friction_channel = \"spring_force\"\n";
     if (!b.relative_uncertainty.empty()) {
       os << "\n[rig.relative_uncertainty]\n";
       for (const auto& [k, u] : b.relative_uncertainty) os << k << " = " << u << "\n";

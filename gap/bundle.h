@@ -63,6 +63,10 @@ struct ExperimentBundle {
   // [rig] key → relative uncertainty u ∈ (0, 1) of the value given there (refinable keys only:
   // refinable_rig_keys()).
   std::map<std::string, double> relative_uncertainty;
+  // [rig] friction_channel: "inertia_corrected" (the default: the thesis' F = k (x + ẍ/ω_n²),
+  // (4.2.3)) or "spring_force" (k x alone, a rig without an accelerometer): how the traces'
+  // friction was measured, and so how the simulation reads its own.
+  bool spring_force_channel = false;
   std::vector<StaticPoint> static_points;
   std::vector<Run> runs;
   std::vector<RegimePoint> regimes;

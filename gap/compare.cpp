@@ -660,14 +660,18 @@ struct Simulated {
   rig::SimulationSummary summary;
 };
 
+// The friction channel read as the plan's record was (RunPlan::spring_force_channel).
 Simulated run_simulation(const rig::RigParameters& rig, const rig::Drive& drive, const rig::FrictionLaw& law,
-                         const rig::FrictionModel& model, std::uint64_t seed, const rig::SimulationOptions& options) {
+                         const rig::FrictionModel& model, std::uint64_t seed, const rig::SimulationOptions& options,
+                         const RunPlan& plan) {
   Simulated s;
   rig::SimulationResult r = rig::simulate(rig, drive, law, options);
   s.summary = r.summary;
   s.samples = std::move(r.samples);
   s.events = std::move(r.events);
-  if (!s.samples.empty()) s.friction_N = rig::measure_friction_N(rig, rig::instrument_from(model, seed), s.samples);
+  rig::InstrumentModel instrument = rig::instrument_from(model, seed);
+  instrument.inertia_corrected = !plan.spring_force_channel;
+  if (!s.samples.empty()) s.friction_N = rig::measure_friction_N(rig, instrument, s.samples);
   return s;
 }
 
@@ -723,7 +727,7 @@ Simulated simulate_steps(const rig::RigParameters& rig, const RunPlan& plan, con
       if (t >= plan.step_times_s[k] && t <= t_end) options.output_times_s.push_back(t - plan.step_times_s[k]);
     options.start_in_steady_sliding = k == 0;
     options.initial_displacement_m = x_end;
-    const Simulated seg = run_simulation(rig, rig::Drive::constant(plan.step_speeds_m_per_s[k]), law, model, seed + k, options);
+    const Simulated seg = run_simulation(rig, rig::Drive::constant(plan.step_speeds_m_per_s[k]), law, model, seed + k, options, plan);
     if (!seg.summary.completed || seg.samples.empty()) {
       all.summary = seg.summary;
       all.summary.completed = false;
@@ -751,7 +755,7 @@ Simulated simulate_history(const rig::RigParameters& rig, const RunPlan& plan, c
   options.duration_s = plan.duration_s;
   options.start_in_steady_sliding = true;
   options.relock_at_drive_steps = true;
-  return run_simulation(rig, rig::Drive::steps(plan.step_times_s, plan.step_speeds_m_per_s), law, model, seed, options);
+  return run_simulation(rig, rig::Drive::steps(plan.step_times_s, plan.step_speeds_m_per_s), law, model, seed, options, plan);
 }
 
 // How much longer than the measured record a constant-speed run is simulated (RunPlan): enough
@@ -883,7 +887,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           sim = plan.carry_law_state ? simulate_history(rig, plan, law, model, seed, options)
                                      : simulate_steps(rig, plan, law, model, seed, options);
         } else {
-          sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), law, model, seed, options);
+          sim = run_simulation(rig, rig::Drive::constant(plan.v_m_per_s), law, model, seed, options, plan);
         }
         if (!sim.summary.completed || sim.samples.size() < 3) break;
         // Where the features' simulation ends: at the record's end (and its extra cycles), at the
@@ -1077,6 +1081,7 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     s.x = tr.x_m;
     RunPlan plan;
     plan.label = "run " + run.run_id;
+    plan.spring_force_channel = bundle.spring_force_channel;
     plan.v_m_per_s = run.v_m_per_s;
     plan.duration_s = tr.t_s.back() - tr.t_s.front();
     plan.sample_spacing_s = median_spacing(tr.t_s);

@@ -109,6 +109,7 @@ struct RunPlan {
   // contact ages through a hold); else each segment restarts the law (velocity steps, see
   // compare.cpp: the one-run form changed the velocity-step fits and is not yet understood).
   bool carry_law_state = false;
+  bool spring_force_channel = false;  // the bundle's friction_channel: the simulation reads k x alone
 };
 
 struct SimulatedRun {

@@ -35,6 +35,7 @@ std::vector<double> measure_friction_N(const RigParameters& rig, const Instrumen
       a = (1.0 - w) * s0.xddot_m_per_s2 + w * s1.xddot_m_per_s2;
     }
     if (ins.lag_s == 0.0) a = samples[i].xddot_m_per_s2;
+    if (!ins.inertia_corrected) a = 0.0;
     out[i] = ins.gain * rig.stiffness_N_per_m * (samples[i].x_m + a / wn2);  // thesis (4.2.3)
   }
   if (ins.time_constant_s > 0.0) {

@@ -25,6 +25,10 @@ struct InstrumentModel {
   double time_constant_s = 0.0;
   double noise_N = 0.0;
   std::uint64_t seed = 1;
+  // Whether the channel adds the accelerometer's inertia term, g k (x + ẍ/ω_n²) (4.2.3), or shows
+  // the spring force alone, g k x: a rig without the thesis' accelerometer (paper on paper,
+  // Colas et al. 2019). In a slip the two differ by M ẍ, as much as the drop itself.
+  bool inertia_corrected = true;
 };
 
 // The model's instrument if it has one, else the ideal (4.2.3) instrument.

@@ -151,6 +151,23 @@ TEST_F(BundleTest, RelativeUncertaintyRoundTripsAndBadOnesAreRejected) {
   EXPECT_NE(error().find("experiment.toml:3: [rig] relative_uncertainty must be a table"), std::string::npos) << error();
 }
 
+// [rig] friction_channel: how the traces' friction was measured, written and read back, and
+// refused with the line and the reason when it is neither reading.
+TEST_F(BundleTest, FrictionChannelRoundTripsAndAnUnknownOneIsRejected) {
+  ExperimentBundle b;
+  b.static_points = {{0.5, 0.31}};
+  write_bundle(b, dir_);
+  EXPECT_FALSE(read_bundle(dir_).spring_force_channel);
+  b.spring_force_channel = true;
+  write_bundle(b, dir_);
+  const ExperimentBundle c = read_bundle(dir_);
+  EXPECT_TRUE(c.spring_force_channel);
+  EXPECT_TRUE(c.warnings.empty());
+  write("experiment.toml", "[rig]\nstiffness_N_per_m = 168.0\nfriction_channel = \"strain_gauge\"\n");
+  EXPECT_NE(error().find("experiment.toml:3: [rig] friction_channel must be \"inertia_corrected\" or \"spring_force\""), std::string::npos)
+      << error();
+}
+
 TEST_F(BundleTest, WrongNumberOfValuesAndEmptyBundleAreRejected) {
   EXPECT_NE(error().find("no data"), std::string::npos) << error();
   write("static_friction.csv", "phi_dot_per_s,mu_s\n0.1,0.3,4\n");

@@ -259,6 +259,25 @@ TEST(Instrument, IdealChannelsReadTheTrueFrictionOfAnUndampedRig) {
   }
 }
 
+// A rig without an accelerometer (paper on paper, Colas et al. 2019) records the spring force
+// k x alone: it differs from the true friction by the slider's inertia, M ẍ. In an undamped
+// Coulomb slip the friction stays at μk W while k x swings about it by (μs − μk) W either way, so
+// the spring force's range over a cycle is 2 (μs − μk) W against the friction's μs − μk.
+TEST(Instrument, TheSpringForceChannelReadsKxAndMissesTheInertia) {
+  RigParameters rig;
+  rig.damping_N_s_per_m = 0.0;
+  const auto r = run(rig, coulomb(0.3, 0.2), 1e-3, 3.0);
+  const auto spring = measure_friction_N(rig, InstrumentModel{.inertia_corrected = false}, r.samples);
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = 0; i < r.samples.size(); ++i) {
+    ASSERT_NEAR(spring[i], rig.stiffness_N_per_m * r.samples[i].x_m, 1e-12 * rig.normal_load_N) << "sample " << i;
+    ASSERT_NEAR(spring[i] + rig.mass_kg * r.samples[i].xddot_m_per_s2, r.samples[i].friction_N, 1e-9 * rig.normal_load_N) << "sample " << i;
+    if (r.samples[i].t_s > 1.0) lo = std::min(lo, spring[i]), hi = std::max(hi, spring[i]);
+  }
+  // Over the last two seconds' cycles, to the integrator's event location (1e-3 of the drop).
+  EXPECT_NEAR(hi - lo, 2.0 * (0.3 - 0.2) * rig.normal_load_N, 1e-3 * 0.1 * rig.normal_load_N);
+}
+
 TEST(Instrument, GainScalesAndNoiseHasTheRequestedRms) {
   RigParameters rig;
   rig.damping_N_s_per_m = 0.0;
