@@ -214,11 +214,16 @@ std::vector<std::string> chosen_candidates(const std::vector<std::string>& given
 }
 
 void run_diagnose(const DiagnoseArgs& args) {
-  gap::ExperimentBundle bundle = read_bundle_or_exit(args.experiment);
-  if (!args.friction_channel.empty()) bundle.spring_force_channel = args.friction_channel == "spring_force";
+  // `--friction-channel` says how this machine measures friction: the test bundle's too.
+  const auto read_as_measured = [&](const std::string& dir) {
+    gap::ExperimentBundle b = read_bundle_or_exit(dir);
+    if (!args.friction_channel.empty()) b.spring_force_channel = args.friction_channel == "spring_force";
+    return b;
+  };
+  const gap::ExperimentBundle bundle = read_as_measured(args.experiment);
   std::optional<gap::ExperimentBundle> test;
   if (!args.test.empty()) {
-    test = read_bundle_or_exit(args.test);
+    test = read_as_measured(args.test);
     // A constant-speed diagnosis may be tested on the slide-hold-slide it proposes (gap/discriminate.h).
     if (test->kind != bundle.kind && !(bundle.kind == "pin_on_disc" && test->kind == "slide_hold_slide"))
       throw InputError(args.test + "/experiment.toml: [rig] kind '" + test->kind + "' is not the diagnosed bundle's '" + bundle.kind + "'");
@@ -492,9 +497,9 @@ void add_gap_command(CLI::App& app) {
                        "--candidates +rate_and_state on a stick-slip record of a material that ages so")
       ->delimiter(',');
   diagnose->add_option("--friction-channel", diagnose_args->friction_channel,
-                       "How the record's friction was measured, where its experiment.toml does not say ([rig] friction_channel): "
-                       "inertia_corrected (the thesis' k (x + x''/wn^2), the default) or spring_force (k x alone, a rig without an "
-                       "accelerometer); the simulation reads its own the same way")
+                       "How the records' friction was measured (the experiment's and the --test bundle's, over their "
+                       "experiment.toml's [rig] friction_channel): inertia_corrected (the thesis' k (x + x''/wn^2), the default) "
+                       "or spring_force (k x alone, a rig without an accelerometer); the simulation reads its own the same way")
       ->check(CLI::IsMember({"inertia_corrected", "spring_force"}));
   diagnose->add_flag("--quick", diagnose_args->quick, "Fewer iterations per fit");
   diagnose->add_flag("!--no-plot", diagnose_args->plot, "Skip the PNG plots");
