@@ -186,12 +186,12 @@ gap::ExperimentBundle read_bundle_or_exit(const std::string& dir) {
   return bundle;
 }
 
-// The candidates `--candidates` asks for: plain names replace the defaults of the bundle's kind,
-// "+name" adds to them (rate_and_state, which the catalogue tries on drive histories only, on a
-// stick-slip record whose material is known to age so: paper, rock). Checked against the
-// catalogue; an effect the model already has, or one named twice, is refused.
+// The candidates to try: the defaults of the bundle's kind without `--candidates`; with it, plain
+// names replace those defaults and "+name" adds to them (rate_and_state, which the catalogue tries
+// on drive histories only, on a stick-slip record whose material is known to age so: paper, rock).
+// Checked against the catalogue; an effect the model already has, or one named twice, is refused.
 std::vector<std::string> chosen_candidates(const std::vector<std::string>& given, const rig::FrictionModel& model, const std::string& kind) {
-  if (given.empty()) return {};
+  if (given.empty()) return gap::default_candidates(model, kind);
   const bool adding = given.front().rfind('+', 0) == 0;
   std::vector<std::string> out = adding ? gap::default_candidates(model, kind) : std::vector<std::string>{};
   for (const std::string& g : given) {
@@ -243,7 +243,7 @@ void run_diagnose(const DiagnoseArgs& args) {
   const rig::RigParameters rig = gap::apply_bundle_rig(bundle, model.rig);
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
-  const int candidates = static_cast<int>(o.candidates.empty() ? gap::default_candidates(model.friction, bundle.kind).size() : o.candidates.size());
+  const int candidates = static_cast<int>(o.candidates.size());
   // Steps reported: calibration, each candidate, the four leading refined, a pair, its
   // refinement and its two members refined from it, and the leaders' refits for the resamples.
   Progress progress("gap: fitting", 1 + candidates + std::min(4, candidates) + 4 + 1);

@@ -26,16 +26,18 @@ std::vector<double> measure_friction_N(const RigParameters& rig, const Instrumen
   std::vector<double> out(samples.size());
   std::size_t j = 0;  // first sample with t ≥ t − τ, advanced monotonically
   for (std::size_t i = 0; i < samples.size(); ++i) {
-    const double t_lag = samples[i].t_s - ins.lag_s;
-    while (j + 1 < samples.size() && samples[j + 1].t_s <= t_lag) ++j;
-    double a = samples[j].xddot_m_per_s2;
-    if (ins.lag_s > 0.0 && t_lag > samples[j].t_s && j + 1 < samples.size()) {
-      const Sample &s0 = samples[j], &s1 = samples[j + 1];
-      const double w = (t_lag - s0.t_s) / (s1.t_s - s0.t_s);
-      a = (1.0 - w) * s0.xddot_m_per_s2 + w * s1.xddot_m_per_s2;
+    double a = 0.0;  // the accelerometer's reading, τ behind; none on a spring-force channel
+    if (ins.inertia_corrected) {
+      const double t_lag = samples[i].t_s - ins.lag_s;
+      while (j + 1 < samples.size() && samples[j + 1].t_s <= t_lag) ++j;
+      a = samples[j].xddot_m_per_s2;
+      if (ins.lag_s > 0.0 && t_lag > samples[j].t_s && j + 1 < samples.size()) {
+        const Sample &s0 = samples[j], &s1 = samples[j + 1];
+        const double w = (t_lag - s0.t_s) / (s1.t_s - s0.t_s);
+        a = (1.0 - w) * s0.xddot_m_per_s2 + w * s1.xddot_m_per_s2;
+      }
+      if (ins.lag_s == 0.0) a = samples[i].xddot_m_per_s2;
     }
-    if (ins.lag_s == 0.0) a = samples[i].xddot_m_per_s2;
-    if (!ins.inertia_corrected) a = 0.0;
     out[i] = ins.gain * rig.stiffness_N_per_m * (samples[i].x_m + a / wn2);  // thesis (4.2.3)
   }
   if (ins.time_constant_s > 0.0) {
