@@ -40,12 +40,15 @@ struct FitProblem {
   std::vector<FitParameter> search_base;   // the same without the rig keys: the candidates' searches hold the rig
   std::vector<std::string> candidates;     // the options' or default_candidates()
   double median_v_m_per_s = 0.0;           // the data's median driven speed
+  bool spring_force_channel = false;       // the bundle's friction channel shows k x alone: no accelerometer lag to fit
   std::shared_ptr<std::mutex> progress_mutex = std::make_shared<std::mutex>();
 
   // The options' progress callback, serialised (stages report from parallel fits).
   void report(const std::string& what) const;
   // The baseline parameters and, unless `with_rig` is false, the rig keys, then the effects'
-  // fitted parameters (with the effects they imply).
+  // fitted parameters (with the effects they imply). On a spring-force channel the instrument's
+  // accelerometer lag is held at 0: the channel reads no acceleration, so the data cannot inform it
+  // and it would be counted as a parameter the candidate does not have.
   std::vector<FitParameter> space_of(const std::vector<std::string>& effects, bool with_rig) const;
 };
 

@@ -62,7 +62,8 @@ void FitProblem::report(const std::string& what) const {
 std::vector<FitParameter> FitProblem::space_of(const std::vector<std::string>& effects, bool with_rig) const {
   std::vector<FitParameter> space = with_rig ? base_space : search_base;
   for (const auto& e : implied_effects(effects, model))
-    for (FitParameter q : effect_parameters(e)) space.push_back(q);
+    for (FitParameter q : effect_parameters(e))
+      if (!(spring_force_channel && q.effect == rig::kInstrument && q.name == "lag_s")) space.push_back(q);
   return space;
 }
 
@@ -78,6 +79,7 @@ FitProblem make_fit_problem(const ExperimentBundle& bundle, const rig::RigParame
   p.comparison = std::make_shared<const Comparison>(bundle, model_rig);
   const Comparison& comparison = *p.comparison;
   p.model_rig = model_rig;
+  p.spring_force_channel = bundle.spring_force_channel;
   p.model = model;
   p.options = options;
   p.items = comparison.items();

@@ -49,6 +49,26 @@ TEST(Pipeline, TheProblemSplitsByUnitAndWeighsEveryObservableTheSame) {
   EXPECT_FALSE(p.candidates.empty());
 }
 
+// A spring-force channel reads no acceleration, so the instrument's accelerometer lag cannot be
+// informed by it: the instrument candidate is searched, and counted, without it — the gain, the
+// sensor's time constant and the noise stay.
+TEST(Pipeline, OnASpringForceChannelTheInstrumentHasNoLagToFit) {
+  const auto instrument_names = [](const FitProblem& p) {
+    std::vector<std::string> names;
+    for (const FitParameter& q : p.space_of({rig::kInstrument}, false))
+      if (q.target == FitParameter::Target::effect) names.push_back(q.name);
+    return names;
+  };
+  ExperimentBundle b = static_points_bundle();
+  const FitProblem thesis = make_fit_problem(b, rig::RigParameters{}, rig::coulomb(0.36, 0.2), static_options());
+  b.spring_force_channel = true;
+  const FitProblem spring = make_fit_problem(b, rig::RigParameters{}, rig::coulomb(0.36, 0.2), static_options());
+  const std::vector<std::string> with = instrument_names(thesis), without = instrument_names(spring);
+  EXPECT_EQ(std::count(with.begin(), with.end(), "lag_s"), 1);
+  EXPECT_EQ(std::count(without.begin(), without.end(), "lag_s"), 0);
+  EXPECT_EQ(without.size() + 1, with.size());
+}
+
 // Bad options and candidates the model cannot take are refused before the bundle is read.
 TEST(Pipeline, TheProblemRefusesBadOptionsBeforeAnyWork) {
   DiagnosisOptions o = static_options();
