@@ -239,6 +239,13 @@ Extremum locate_extremum(const SmoothedSignal& S, double ta, double tb, bool max
 // next falls below the lower one, a minimum the converse.
 struct TurningPoints {
   std::vector<std::size_t> peaks, troughs;
+  // Per peak, the position in `troughs` of the first trough after it (troughs.size() when none):
+  // the trough its fall ends in; the one before that position, when there is one, ends its rise.
+  std::vector<std::size_t> next_trough() const {
+    std::vector<std::size_t> out;
+    for (std::size_t p : peaks) out.push_back(static_cast<std::size_t>(std::upper_bound(troughs.begin(), troughs.end(), p) - troughs.begin()));
+    return out;
+  }
 };
 TurningPoints band_turning_points(const std::vector<double>& y, double lo_v, double range) {
   const double hi = lo_v + 0.7 * range, lo = lo_v + 0.3 * range;
@@ -306,20 +313,20 @@ TurningPoints cycle_turning_points(const std::vector<double>& y, double lo_v, do
   TurningPoints band = band_turning_points(y, lo_v, range);
   const TurningPoints fine = zigzag_turning_points(y, 0.1 * range);
   std::vector<double> falls;
-  for (std::size_t p : fine.peaks) {
-    const auto next = std::upper_bound(fine.troughs.begin(), fine.troughs.end(), p);
-    if (next != fine.troughs.end()) falls.push_back(y[p] - y[*next]);
-  }
+  const std::vector<std::size_t> fine_next = fine.next_trough();
+  for (std::size_t i = 0; i < fine.peaks.size(); ++i)
+    if (fine_next[i] < fine.troughs.size()) falls.push_back(y[fine.peaks[i]] - y[fine.troughs[fine_next[i]]]);
   if (falls.empty()) return band;
   const auto q = falls.begin() + static_cast<long>(0.9 * static_cast<double>(falls.size() - 1));
   std::nth_element(falls.begin(), q, falls.end());
   TurningPoints zigzag = zigzag_turning_points(y, std::max(0.1 * range, 0.4 * *q));
   if (!(zigzag.peaks.size() > 2 * band.peaks.size() + 2)) return band;
   std::vector<double> rise, fall;
-  for (std::size_t p : zigzag.peaks) {
-    const auto next = std::upper_bound(zigzag.troughs.begin(), zigzag.troughs.end(), p);
-    if (next != zigzag.troughs.end()) fall.push_back(static_cast<double>(*next - p));
-    if (next != zigzag.troughs.begin()) rise.push_back(static_cast<double>(p - *(next - 1)));
+  const std::vector<std::size_t> next = zigzag.next_trough();
+  for (std::size_t i = 0; i < zigzag.peaks.size(); ++i) {
+    const std::size_t p = zigzag.peaks[i], n = next[i];
+    if (n < zigzag.troughs.size()) fall.push_back(static_cast<double>(zigzag.troughs[n] - p));
+    if (n > 0) rise.push_back(static_cast<double>(p - zigzag.troughs[n - 1]));
   }
   if (rise.empty() || fall.empty()) return band;
   return 3.0 * numerics::median(fall) <= numerics::median(rise) ? zigzag : band;
@@ -380,7 +387,9 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
     if (regime) *regime = "steady_sliding";
     return f;
   }
-  const auto [peaks, troughs] = cycle_turning_points(muw, lo_v, range);
+  const TurningPoints turning = cycle_turning_points(muw, lo_v, range);
+  const std::vector<std::size_t>& peaks = turning.peaks;
+  const std::vector<std::size_t>& troughs = turning.troughs;
   if (peaks.empty()) {
     if (regime) *regime = "steady_sliding";
     return f;
@@ -401,12 +410,12 @@ Features analyse_constant_speed(const Signal& s, double spacing_s, double& slip_
     f["mean_mu"] = time_average(tw, muw, peak.front().t, peak.back().t);
     if (!s.x.empty()) f["peak_to_peak_m"] = x_range(peak.front().t, peak.back().t);
   }
+  const std::vector<std::size_t> next = turning.next_trough();
   for (std::size_t i = 0; i < peaks.size(); ++i) {
-    const auto next = std::upper_bound(troughs.begin(), troughs.end(), peaks[i]);
-    const std::size_t n = static_cast<std::size_t>(next - troughs.begin());
-    if (next != troughs.end()) fall.push_back(trough[n].t - peak[i].t);
-    if (next != troughs.begin()) rise.push_back(peak[i].t - trough[n - 1].t);
-    bottom.push_back(next != troughs.end() ? trough[n].value : lo_v);
+    const std::size_t n = next[i];
+    if (n < troughs.size()) fall.push_back(trough[n].t - peak[i].t);
+    if (n > 0) rise.push_back(peak[i].t - trough[n - 1].t);
+    bottom.push_back(n < troughs.size() ? trough[n].value : lo_v);
   }
   f["mu_peak"] = mean(mp);
   if (!mt.empty()) f["mu_trough"] = mean(mt);
