@@ -163,7 +163,12 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     if (!test->gap_beside.empty()) {
       md << " The candidates the held-out data did not tell from the verdict, on it:";
       for (const auto& [name, g] : test->gap_beside) md << " " << name << " " << fmt(g, "%.4g") << ";";
-      md << " the one nearest the record is the one this test decides for.";
+      if (!test->decided_for.empty())
+        md << " **this test decides for `" << test->decided_for << "`**: every other named misses the record by " << fmt(test->decision_floors, "%.1f")
+           << " noise floors or more.";
+      else
+        md << " this test does not decide: the nearest leads by " << fmt(test->decision_floors, "%.1f")
+           << " noise floors (two decide), or it cannot part mechanisms alike at constant speed (a hold or a load twice or half the diagnosed one can).";
     }
     md << "\n\n";
   } else {
@@ -277,7 +282,9 @@ void run_diagnose(const DiagnoseArgs& args) {
     provenance["test"] = std::filesystem::absolute(args.test).string();
     j["provenance"] = provenance;
     j["test_block"] = {{"bundle", args.test}, {"items", tb->items}, {"gap_before", tb->gap_before}, {"gap_after", tb->gap_after},
-                       {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}, {"gap_beside", tb->gap_beside}};
+                       {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}, {"gap_beside", tb->gap_beside},
+                       {"decided_for", tb->decided_for.empty() ? nlohmann::json() : nlohmann::json(tb->decided_for)},
+                       {"decision_floors", numerics::finite_or_null(tb->decision_floors)}};
   }
   write_file_atomically(dir / "gap_report.json", j.dump(2) + "\n");
   write_file_atomically(dir / "report.md", markdown_report(d, args, j, tb));
@@ -294,6 +301,10 @@ void run_diagnose(const DiagnoseArgs& args) {
   if (tb) {
     std::printf("test block %s: gap %.4g -> %.4g (shrink %.0f %%)", args.test.c_str(), tb->gap_before, tb->gap_after, 100.0 * tb->shrink());
     for (const auto& [name, g] : tb->gap_beside) std::printf("; %s %.4g", name.c_str(), g);
+    if (!tb->decided_for.empty())
+      std::printf("; it decides for %s (by %.1f noise floors)", tb->decided_for.c_str(), tb->decision_floors);
+    else if (!tb->gap_beside.empty())
+      std::printf("; it does not decide (%.1f noise floors)", tb->decision_floors);
     std::printf("\n");
   }
   if (args.plot && run_plot_script("gap", args.out) != 0)

@@ -1,11 +1,33 @@
 #include "gap/test_block.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 #include "gap/compare.h"
+#include "gap/discriminate.h"
 #include "gap/verdict.h"
+#include "rig/friction_model.h"
 
 namespace tribo::gap {
+namespace {
+
+// Whether two candidates hold mechanisms the catalogue calls alike at constant speed
+// (rig::EffectInfo::alike_at_constant_speed).
+bool alike(const std::vector<std::string>& as, const std::vector<std::string>& bs) {
+  for (const std::string& x : as)
+    for (const std::string& y : bs) {
+      const auto& tx = rig::effect_info(x).alike_at_constant_speed;
+      const auto& ty = rig::effect_info(y).alike_at_constant_speed;
+      if (std::count(tx.begin(), tx.end(), y) || std::count(ty.begin(), ty.end(), x)) return true;
+    }
+  return false;
+}
+
+}  // namespace
 
 TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParameters& model_rig, const Diagnosis& d,
                             std::uint64_t seed, const std::optional<rig::RigParameters>& diagnosed_rig) {
@@ -31,10 +53,29 @@ TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParamete
   out.gap_before = gap_of(d.rig, d.calibrated);
   const Candidate* chosen = verdict_candidate(d);
   out.gap_after = chosen ? gap_of(chosen->rig, chosen->model) : out.gap_before;
+  struct Named {
+    double gap;
+    const Candidate* c;
+  };
+  std::vector<Named> named;
+  if (chosen) named.push_back({out.gap_after, chosen});
   for (const std::string& name : d.verdict.beside())
     for (const Candidate& c : d.candidates)
-      if (verdict_name(c.effects) == name) out.gap_beside[name] = gap_of(c.rig, c.model);
+      if (verdict_name(c.effects) == name) named.push_back({out.gap_beside[name] = gap_of(c.rig, c.model), &c});
   out.noise_floor = breakdown(items, comparison.relative_noise(), all).gap;
+  out.decision_floors = std::numeric_limits<double>::quiet_NaN();
+  if (named.size() < 2 || !chosen || !(out.noise_floor > 0.0)) return out;
+  std::sort(named.begin(), named.end(), [](const Named& a, const Named& b) { return a.gap < b.gap; });
+  const bool other_load = diagnosed_rig && std::max(model_rig.normal_load_N / diagnosed_rig->normal_load_N,
+                                                    diagnosed_rig->normal_load_N / model_rig.normal_load_N) >= kHeavierLoadFactor;
+  const bool parts = other_load || parts_alike_mechanisms(test);
+  bool decides = true;
+  out.decision_floors = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 1; k < named.size(); ++k) {
+    out.decision_floors = std::min(out.decision_floors, (named[k].gap - named[0].gap) / out.noise_floor);
+    if (!parts && alike(named[0].c->effects, named[k].c->effects)) decides = false;
+  }
+  if (decides && out.decision_floors >= kDecidingFloors) out.decided_for = verdict_name(named[0].c->effects);
   return out;
 }
 

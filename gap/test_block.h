@@ -26,6 +26,14 @@ struct TestBlockGap {
   // The gap of each candidate named beside the verdict (Verdict::beside), by name: on a test the
   // diagnosis proposed (discriminate.h), the one nearest the record is the one the test decides for.
   std::map<std::string, double> gap_beside;
+  // What the test decides among the verdict and those beside it: the one nearest the record, when
+  // every other is farther by kDecidingFloors noise floors or more (discriminate.h) and, for a
+  // mechanism alike at constant speed, the test parts the two (a hold, a velocity step, or a normal
+  // load kHeavierLoadFactor from the diagnosed one's). Empty when it does not decide or nothing
+  // was named beside the verdict; `decision_floors` is the smallest margin, in floors, of the
+  // nearest over the others (NaN then).
+  std::string decided_for;
+  double decision_floors = 0.0;
   double shrink() const { return gap_before > 0.0 ? 1.0 - gap_after / gap_before : 0.0; }
 };
 

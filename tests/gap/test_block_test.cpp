@@ -11,8 +11,10 @@
 //     halves the gap on that generator's runs at four speeds between the diagnosed five.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
+#include "gap/discriminate.h"
 #include "gap/selftest.h"
 #include "gap/test_block.h"
 #include "tests/gap/one_candidate_fit.h"
@@ -99,6 +101,65 @@ TEST(TestBlock, ATestOnAStifferSpringIsPredictedOnTheCalibratedRigScaledAsTheTol
   const TestBlockGap unscaled = test_block_gap(test, told, d, 1);
   std::printf("stiffer spring: truth on the scaled rig %.2e, on the diagnosed one %.4f\n", scaled.gap_after, unscaled.gap_after);
   EXPECT_GT(unscaled.gap_after, 0.1);
+}
+
+// What a test decides: the one of the verdict and those beside it nearest the record, when every
+// other misses it by two noise floors more. Viscous friction as the truth, at 1 % noise, against
+// the Coulomb baseline named beside it: c = 35 N s/m leaves the baseline several floors out, so
+// the test decides for the truth — the verdict, or the one beside it when the verdict is wrong.
+TEST(TestBlock, ATestDecidesForTheCandidateNearestTheRecordWhenTheOthersMissItByTwoFloors) {
+  const rig::FrictionModel truth = viscous_truth(), coulomb = rig::coulomb(0.32, 0.19);
+  const ExperimentBundle test = test_runs(truth, 0.01);
+  Diagnosis right = diagnosis_of(coulomb, truth, "viscous_friction");
+  Candidate other;
+  other.effects = {"thermal_thinning"};
+  other.model = coulomb;
+  right.candidates.push_back(other);
+  right.verdict.indistinguishable = {"thermal_thinning"};
+  const TestBlockGap t = test_block_gap(test, rig::RigParameters{}, right, 1);
+  std::printf("decision: %s by %.1f floors\n", t.decided_for.c_str(), t.decision_floors);
+  ASSERT_GT(t.decision_floors, kDecidingFloors);
+  EXPECT_NEAR(t.decision_floors, (t.gap_beside.at("thermal_thinning") - t.gap_after) / t.noise_floor, 1e-12);
+  EXPECT_EQ(t.decided_for, "viscous_friction");
+  // The same pair with the verdict and the one beside it swapped.
+  Diagnosis wrong = diagnosis_of(coulomb, coulomb, "thermal_thinning");
+  Candidate truth_beside;
+  truth_beside.effects = {"viscous_friction"};
+  truth_beside.model = truth;
+  wrong.candidates.push_back(truth_beside);
+  wrong.verdict.indistinguishable = {"viscous_friction"};
+  EXPECT_EQ(test_block_gap(test, rig::RigParameters{}, wrong, 1).decided_for, "viscous_friction");
+  // Nothing beside the verdict: nothing to decide.
+  const TestBlockGap alone = test_block_gap(test, rig::RigParameters{}, diagnosis_of(coulomb, truth, "viscous_friction"), 1);
+  EXPECT_TRUE(alone.decided_for.empty());
+  EXPECT_TRUE(std::isnan(alone.decision_floors));
+}
+
+// Mechanisms alike at constant speed (rig::EffectInfo::alike_at_constant_speed: a squeeze film and
+// the junction locus) are parted only by a test that holds what parts them — here a normal load
+// twice the diagnosed one. The rule reads the candidates' names, so the same two models as above
+// serve, named squeeze_film and rate_dependent_static: on runs at the diagnosed load the margin is
+// as large, and the test still does not decide; at the heavier load it does.
+TEST(TestBlock, AlikeMechanismsAreDecidedOnlyByATestThatPartsThem) {
+  const rig::FrictionModel truth = viscous_truth(), coulomb = rig::coulomb(0.32, 0.19);
+  Diagnosis d = diagnosis_of(coulomb, truth, "squeeze_film");
+  Candidate alike;
+  alike.effects = {"rate_dependent_static"};
+  alike.model = coulomb;
+  d.candidates.push_back(alike);
+  d.verdict.alike_mechanisms = {"rate_dependent_static"};
+  const TestBlockGap same_load = test_block_gap(test_runs(truth, 0.01), rig::RigParameters{}, d, 1, rig::RigParameters{});
+  EXPECT_GT(same_load.decision_floors, kDecidingFloors);
+  EXPECT_TRUE(same_load.decided_for.empty());
+  SyntheticOptions o;
+  o.speeds_m_per_s = o.test_speeds_m_per_s;
+  rig::RigParameters heavier;
+  heavier.normal_load_N *= kHeavierLoadFactor;
+  const ExperimentBundle test = synthesize_bundle(heavier, truth, o, 17);
+  const TestBlockGap t = test_block_gap(test, apply_bundle_rig(test, rig::RigParameters{}), d, 1, rig::RigParameters{});
+  std::printf("heavier load: decision %s by %.1f floors\n", t.decided_for.c_str(), t.decision_floors);
+  EXPECT_GT(t.decision_floors, kDecidingFloors);
+  EXPECT_EQ(t.decided_for, "squeeze_film");
 }
 
 TEST(TestBlock, ADiagnosisOfTheIndependentGeneratorHalvesTheGapAtSpeedsItNeverSaw) {
