@@ -335,7 +335,8 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
   j["proposal_checks"] = nlohmann::json::array();
   for (const gap::ProposalCheck& k : row.proposal_checks)
     j["proposal_checks"].push_back({{"against", k.against}, {"test", k.test}, {"separation_floors", numerics::finite_or_null(k.floors)},
-                                    {"gap_verdict", k.gap_verdict}, {"gap_against", k.gap_against}, {"truth_nearer", k.truth_nearer}});
+                                    {"gap_verdict", k.gap_verdict}, {"gap_against", k.gap_against}, {"truth_nearer", k.truth_nearer},
+                                    {"decided_for", k.decided_for.empty() ? nlohmann::json() : nlohmann::json(k.decided_for)}});
   j["git_commit"] = row.git_commit.empty() ? build : row.git_commit;
   return j;
 }

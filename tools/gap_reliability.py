@@ -11,7 +11,11 @@ by their confidence, for the named ("effect") and the "none" verdicts apart; the
 the share of the withheld effects named by their strength in noise floors (the calibrated
 baseline's held-out gap over the noise floor; the bins of gap::detection_table, `detection.csv` of
 one set), with the cases whose truth was named or listed beside the verdict (indistinguishable or
-alike at one load). Rows of journals without a noise floor are left out of that table.
+alike at one load), and those named once the test the diagnosis proposed is run: where the selftest
+ran a proposed test on the truth (`proposal_checks`), what its record decides (`decided_for`, as
+`tribo gap diagnose --test` states it) replaces the verdict — a wrong verdict may be put right so, a
+right one overturned; in journals from before that field, the one of the pair nearer the record
+where the proposed separation is two noise floors or more. Rows of journals without a noise floor are left out of that table.
 
 With --plot PNG (needs matplotlib), both tables drawn: the reliability diagram (share right
 against the mean confidence of each bin, with the diagonal a calibrated confidence would follow)
@@ -35,15 +39,31 @@ def named_or_listed(r):
     return bool(r["correct"]) or r["true_effect"] in beside
 
 
+DECIDING_FLOORS = 2.0  # gap::kDecidingFloors
+
+
+def named_after_test(r):
+    """Whether the truth is named once the deciding proposed test, if any, has been run."""
+    right = bool(r["correct"])
+    for k in r.get("proposal_checks") or []:
+        if "decided_for" in k:  # the record's own decision (journals from 2026-12-05 on)
+            if k["decided_for"] is not None:
+                right = k["decided_for"] == r["true_effect"]
+        elif k.get("separation_floors") is not None and k["separation_floors"] >= DECIDING_FLOORS:
+            right = bool(k["truth_nearer"])
+    return right
+
+
 def detection(rows):
-    """Per generator, (lo, hi, cases, named, named or listed) of each signal bin."""
+    """Per generator, (lo, hi, cases, named, named or listed, named after the proposed test) of each signal bin."""
     table = {}
     for g in sorted({r.get("generator", "rig") for r in rows}):
         effects = [r for r in rows if r.get("generator", "rig") == g and r["true_effect"] != "none" and signal_floors(r) is not None]
         table[g] = []
         for lo, hi in FLOOR_BINS:
             sel = [r for r in effects if lo <= signal_floors(r) < hi]
-            table[g].append((lo, hi, len(sel), sum(bool(r["correct"]) for r in sel), sum(named_or_listed(r) for r in sel)))
+            table[g].append((lo, hi, len(sel), sum(bool(r["correct"]) for r in sel), sum(named_or_listed(r) for r in sel),
+                             sum(named_after_test(r) for r in sel)))
     return table
 
 
@@ -77,11 +97,13 @@ def plot(path, rel, det, n_cases):
     labels = [f"{lo:g}–{hi:g}" if hi != float("inf") else f"≥{lo:g}" for lo, hi in FLOOR_BINS]
     x = range(len(labels))
     for k, (g, bins) in enumerate(det.items()):
-        named = [right / n if n else float("nan") for lo, hi, n, right, listed in bins]
-        listed = [lst / n if n else float("nan") for lo, hi, n, right, lst in bins]
+        named = [right / n if n else float("nan") for lo, hi, n, right, listed, after in bins]
+        listed = [lst / n if n else float("nan") for lo, hi, n, right, lst, after in bins]
+        tested = [after / n if n else float("nan") for lo, hi, n, right, lst, after in bins]
         line, = b.plot([i + 0.05 * k for i in x], named, marker="o", label=f"{g}: named")
         b.plot([i + 0.05 * k for i in x], listed, marker="^", ls=":", color=line.get_color(), label=f"{g}: named or listed beside")
-        for i, (lo, hi, n, right, lst) in enumerate(bins):
+        b.plot([i + 0.05 * k for i in x], tested, marker="s", ls="--", color=line.get_color(), label=f"{g}: named after the proposed test")
+        for i, (lo, hi, n, right, lst, after) in enumerate(bins):
             if n:
                 b.annotate(str(n), (i + 0.05 * k, right / n), textcoords="offset points", xytext=(4, -10), fontsize=7, color=line.get_color())
     b.axhline(0.9, color="0.6", lw=1, ls="--")
@@ -128,10 +150,10 @@ def main(argv):
     for kind, bins in rel.items():
         for lo, hi, n, right, _ in bins:
             print(f"{kind},{lo:g},{hi:g},{n},{right}")
-    print("generator,signal_floors_from,signal_floors_to,effect_cases,named,named_or_listed")
+    print("generator,signal_floors_from,signal_floors_to,effect_cases,named,named_or_listed,named_after_proposed_test")
     for g, bins in det.items():
-        for lo, hi, n, right, listed in bins:
-            print(f"{g},{lo:g},{hi:g},{n},{right},{listed}")
+        for lo, hi, n, right, listed, after in bins:
+            print(f"{g},{lo:g},{hi:g},{n},{right},{listed},{after}")
     if png:
         plot(png, rel, det, len(rows))
         print(f"wrote {png}")
