@@ -163,12 +163,15 @@ std::string markdown_report(const gap::Diagnosis& d, const DiagnoseArgs& args, c
     if (!test->gap_beside.empty()) {
       md << " The candidates the held-out data did not tell from the verdict, on it:";
       for (const auto& [name, g] : test->gap_beside) md << " " << name << " " << fmt(g, "%.4g") << ";";
-      if (!test->decided_for.empty())
-        md << " **this test decides for `" << test->decided_for << "`**: every other named misses the record by " << fmt(test->decision_floors, "%.1f")
-           << " noise floors or more.";
+      if (!test->ruled_out.empty())
+        md << " it rules out " << numerics::join(test->ruled_out, ", ") << " (each misses the record by " << fmt(test->decision_floors, "%.1f")
+           << " noise floors or more beyond the nearest)";
       else
-        md << " this test does not decide: the nearest leads by " << fmt(test->decision_floors, "%.1f")
-           << " noise floors (two decide), or it cannot part mechanisms alike at constant speed (a hold or a load twice or half the diagnosed one can).";
+        md << " it rules none out (two noise floors beyond the nearest would, and only a hold or a load twice or half the diagnosed one parts mechanisms alike at constant speed)";
+      if (!test->decided_for.empty())
+        md << "; **it decides for `" << test->decided_for << "`**.";
+      else
+        md << "; " << numerics::join(test->standing, ", ") << " still stand, nearest first; the verdict after it: `" << test->verdict_after << "`.";
     }
     md << "\n\n";
   } else {
@@ -283,7 +286,9 @@ void run_diagnose(const DiagnoseArgs& args) {
     j["provenance"] = provenance;
     j["test_block"] = {{"bundle", args.test}, {"items", tb->items}, {"gap_before", tb->gap_before}, {"gap_after", tb->gap_after},
                        {"noise_floor", tb->noise_floor}, {"shrink", tb->shrink()}, {"gap_beside", tb->gap_beside},
+                       {"standing", tb->standing}, {"ruled_out", tb->ruled_out},
                        {"decided_for", tb->decided_for.empty() ? nlohmann::json() : nlohmann::json(tb->decided_for)},
+                       {"verdict_after", tb->verdict_after.empty() ? nlohmann::json() : nlohmann::json(tb->verdict_after)},
                        {"decision_floors", numerics::finite_or_null(tb->decision_floors)}};
   }
   write_file_atomically(dir / "gap_report.json", j.dump(2) + "\n");
@@ -301,10 +306,9 @@ void run_diagnose(const DiagnoseArgs& args) {
   if (tb) {
     std::printf("test block %s: gap %.4g -> %.4g (shrink %.0f %%)", args.test.c_str(), tb->gap_before, tb->gap_after, 100.0 * tb->shrink());
     for (const auto& [name, g] : tb->gap_beside) std::printf("; %s %.4g", name.c_str(), g);
-    if (!tb->decided_for.empty())
-      std::printf("; it decides for %s (by %.1f noise floors)", tb->decided_for.c_str(), tb->decision_floors);
-    else if (!tb->gap_beside.empty())
-      std::printf("; it does not decide (%.1f noise floors)", tb->decision_floors);
+    if (!tb->ruled_out.empty())
+      std::printf("; it rules out %s (%.1f noise floors or more)", numerics::join(tb->ruled_out, ", ").c_str(), tb->decision_floors);
+    if (!tb->verdict_after.empty()) std::printf("; verdict after it: %s", tb->verdict_after.c_str());
     std::printf("\n");
   }
   if (args.plot && run_plot_script("gap", args.out) != 0)
@@ -336,7 +340,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
   for (const gap::ProposalCheck& k : row.proposal_checks)
     j["proposal_checks"].push_back({{"against", k.against}, {"test", k.test}, {"separation_floors", numerics::finite_or_null(k.floors)},
                                     {"gap_verdict", k.gap_verdict}, {"gap_against", k.gap_against}, {"truth_nearer", k.truth_nearer},
-                                    {"decided_for", k.decided_for.empty() ? nlohmann::json() : nlohmann::json(k.decided_for)}});
+                                    {"verdict_after", k.verdict_after.empty() ? nlohmann::json() : nlohmann::json(k.verdict_after)}});
   j["git_commit"] = row.git_commit.empty() ? build : row.git_commit;
   return j;
 }

@@ -54,7 +54,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       for (const nlohmann::json& k : j.value("proposal_checks", nlohmann::json::array()))
         r.proposal_checks.push_back({k.at("against").get<std::string>(), k.at("test").get<std::string>(), number(k, "separation_floors"),
                                      number(k, "gap_verdict"), number(k, "gap_against"), k.value("truth_nearer", false),
-                                     k.contains("decided_for") && k["decided_for"].is_string() ? k["decided_for"].get<std::string>() : std::string()});
+                                     k.contains("verdict_after") && k["verdict_after"].is_string() ? k["verdict_after"].get<std::string>() : std::string()});
       for (const nlohmann::json& c : j.value("candidates", nlohmann::json::array()))
         r.candidates.push_back({c.at("effect").get<std::string>(), number(c, "evidence_nats"), number(c, "evidence_se_nats"),
                                 number(c, "heldout_gap"), c.value("earns", false)});

@@ -225,7 +225,7 @@ std::vector<ProposalCheck> check_proposals(const SelftestCase& sc, const Synthet
     k.against = other, k.test = best->test, k.floors = best->floors;
     k.gap_verdict = t.gap_after, k.gap_against = t.gap_beside.at(other);
     k.truth_nearer = sc.true_effect == verdict ? k.gap_verdict < k.gap_against : k.gap_against < k.gap_verdict;
-    k.decided_for = t.decided_for;
+    k.verdict_after = t.verdict_after;
     out.push_back(k);
   }
   return out;

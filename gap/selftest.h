@@ -72,7 +72,7 @@ struct ProposalCheck {
   double floors = 0.0;             // its separation of the pair as proposed (ProposedSeparation::floors)
   double gap_verdict = 0.0, gap_against = 0.0;  // each fitted model's gap on the truth's record
   bool truth_nearer = false;       // the one of the pair that is the truth has the smaller gap
-  std::string decided_for;         // what the record decides, as `tribo gap diagnose --test` states it (TestBlockGap); empty: undecided
+  std::string verdict_after;       // the verdict once its record is seen, as `tribo gap diagnose --test` states it (TestBlockGap)
 };
 
 struct SelftestRow {

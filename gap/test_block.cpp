@@ -69,13 +69,19 @@ TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParamete
   const bool other_load = diagnosed_rig && std::max(model_rig.normal_load_N / diagnosed_rig->normal_load_N,
                                                     diagnosed_rig->normal_load_N / model_rig.normal_load_N) >= kHeavierLoadFactor;
   const bool parts = other_load || parts_alike_mechanisms(test);
-  bool decides = true;
-  out.decision_floors = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 1; k < named.size(); ++k) {
-    out.decision_floors = std::min(out.decision_floors, (named[k].gap - named[0].gap) / out.noise_floor);
-    if (!parts && alike(named[0].c->effects, named[k].c->effects)) decides = false;
+  for (const Named& n : named) {
+    const double margin = (n.gap - named.front().gap) / out.noise_floor;
+    const std::string name = verdict_name(n.c->effects);
+    if (margin >= kDecidingFloors && (parts || !alike(named.front().c->effects, n.c->effects))) {
+      if (out.ruled_out.empty()) out.decision_floors = margin;
+      out.ruled_out.push_back(name);
+    } else {
+      out.standing.push_back(name);
+    }
   }
-  if (decides && out.decision_floors >= kDecidingFloors) out.decided_for = verdict_name(named[0].c->effects);
+  if (out.standing.size() == 1) out.decided_for = out.standing.front();
+  const std::string verdict = verdict_name(d.verdict);
+  out.verdict_after = std::count(out.standing.begin(), out.standing.end(), verdict) ? verdict : out.standing.front();
   return out;
 }
 

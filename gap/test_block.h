@@ -11,6 +11,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gap/bundle.h"
 #include "gap/diagnosis.h"
@@ -26,13 +27,16 @@ struct TestBlockGap {
   // The gap of each candidate named beside the verdict (Verdict::beside), by name: on a test the
   // diagnosis proposed (discriminate.h), the one nearest the record is the one the test decides for.
   std::map<std::string, double> gap_beside;
-  // What the test decides among the verdict and those beside it: the one nearest the record, when
-  // every other is farther by kDecidingFloors noise floors or more (discriminate.h) and, for a
-  // mechanism alike at constant speed, the test parts the two (a hold, a velocity step, or a normal
-  // load kHeavierLoadFactor from the diagnosed one's). Empty when it does not decide or nothing
-  // was named beside the verdict; `decision_floors` is the smallest margin, in floors, of the
-  // nearest over the others (NaN then).
-  std::string decided_for;
+  // What the test decides among the verdict and those named beside it. One is ruled out when it
+  // misses the record by kDecidingFloors noise floors (discriminate.h) more than the nearest does,
+  // unless its mechanism is alike at constant speed to the nearest's and the test cannot part such
+  // mechanisms (no hold, no velocity step, no normal load kHeavierLoadFactor from the diagnosed
+  // one's). `standing`: the rest, nearest first; `decided_for` the one left when one is; the verdict
+  // after the test is the verdict while it stands, else the nearest. All empty when nothing was
+  // named beside the verdict (or there is no verdict's candidate); `decision_floors` the margin of
+  // the nearest ruled out over the nearest, in floors (NaN when none is ruled out).
+  std::vector<std::string> standing, ruled_out;
+  std::string decided_for, verdict_after;
   double decision_floors = 0.0;
   double shrink() const { return gap_before > 0.0 ? 1.0 - gap_after / gap_before : 0.0; }
 };

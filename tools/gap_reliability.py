@@ -12,8 +12,8 @@ the share of the withheld effects named by their strength in noise floors (the c
 baseline's held-out gap over the noise floor; the bins of gap::detection_table, `detection.csv` of
 one set), with the cases whose truth was named or listed beside the verdict (indistinguishable or
 alike at one load), and those named once the test the diagnosis proposed is run: where the selftest
-ran a proposed test on the truth (`proposal_checks`), what its record decides (`decided_for`, as
-`tribo gap diagnose --test` states it) replaces the verdict — a wrong verdict may be put right so, a
+ran a proposed test on the truth (`proposal_checks`), the verdict once its record is seen (`verdict_after`,
+as `tribo gap diagnose --test` states it) replaces the verdict — a wrong verdict may be put right so, a
 right one overturned; in journals from before that field, the one of the pair nearer the record
 where the proposed separation is two noise floors or more. Rows of journals without a noise floor are left out of that table.
 
@@ -46,9 +46,9 @@ def named_after_test(r):
     """Whether the truth is named once the deciding proposed test, if any, has been run."""
     right = bool(r["correct"])
     for k in r.get("proposal_checks") or []:
-        if "decided_for" in k:  # the record's own decision (journals from 2026-12-05 on)
-            if k["decided_for"] is not None:
-                right = k["decided_for"] == r["true_effect"]
+        if "verdict_after" in k:  # the record's own decision (journals from 2026-12-05 on)
+            if k["verdict_after"] is not None:
+                right = k["verdict_after"] == r["true_effect"]
         elif k.get("separation_floors") is not None and k["separation_floors"] >= DECIDING_FLOORS:
             right = bool(k["truth_nearer"])
     return right

@@ -119,7 +119,7 @@ TEST(ConfigHostile, AJournalRowOfTheWrongTypesIsSkippedAndTheValidOneKept) {
                       << "{\"quick\":true,\"seed\":1e300," << row << "}\n"
                       << "{\"quick\":true,\"seed\":7,\"confidence_bootstrap\":0.66,\"stage_wall_s\":{\"candidates\":12.5,\"refinement\":\"x\"},"
                       << R"("proposal_checks":[{"against":"squeeze_film","test":"stiffer_spring","separation_floors":5.2,"gap_verdict":0.1,)"
-                      << R"("gap_against":0.08,"truth_nearer":true,"decided_for":"squeeze_film"}],)" << row << "}\n";
+                      << R"("gap_against":0.08,"truth_nearer":true,"verdict_after":"squeeze_film"}],)" << row << "}\n";
   const std::vector<gap::SelftestRow> rows = finished_rows(file, true);
   ASSERT_EQ(rows.size(), 1u);
   EXPECT_EQ(rows[0].c.seed, 7u);
@@ -132,7 +132,7 @@ TEST(ConfigHostile, AJournalRowOfTheWrongTypesIsSkippedAndTheValidOneKept) {
   EXPECT_EQ(rows[0].proposal_checks[0].test, "stiffer_spring");
   EXPECT_EQ(rows[0].proposal_checks[0].floors, 5.2);
   EXPECT_TRUE(rows[0].proposal_checks[0].truth_nearer);
-  EXPECT_EQ(rows[0].proposal_checks[0].decided_for, "squeeze_film");  // what its record decided; a journal from before has none
+  EXPECT_EQ(rows[0].proposal_checks[0].verdict_after, "squeeze_film");  // the verdict once its record was seen; a journal from before has none
   EXPECT_TRUE(finished_rows(file, false).empty());
   std::filesystem::remove(file);
 }

@@ -103,35 +103,45 @@ TEST(TestBlock, ATestOnAStifferSpringIsPredictedOnTheCalibratedRigScaledAsTheTol
   EXPECT_GT(unscaled.gap_after, 0.1);
 }
 
-// What a test decides: the one of the verdict and those beside it nearest the record, when every
-// other misses it by two noise floors more. Viscous friction as the truth, at 1 % noise, against
-// the Coulomb baseline named beside it: c = 35 N s/m leaves the baseline several floors out, so
-// the test decides for the truth — the verdict, or the one beside it when the verdict is wrong.
-TEST(TestBlock, ATestDecidesForTheCandidateNearestTheRecordWhenTheOthersMissItByTwoFloors) {
+// What a test decides: a candidate named is ruled out when it misses the record by two noise
+// floors more than the nearest. Viscous friction as the truth, at 1 % noise, against the Coulomb
+// baseline named beside it: c = 35 N s/m leaves the baseline several floors out, so the test
+// decides for the truth — the verdict, or the one beside it when the verdict is wrong, which then
+// becomes the verdict after the test.
+TEST(TestBlock, ATestRulesOutTheCandidatesThatMissTheRecordByTwoFloorsMoreThanTheNearest) {
   const rig::FrictionModel truth = viscous_truth(), coulomb = rig::coulomb(0.32, 0.19);
   const ExperimentBundle test = test_runs(truth, 0.01);
-  Diagnosis right = diagnosis_of(coulomb, truth, "viscous_friction");
-  Candidate other;
-  other.effects = {"thermal_thinning"};
-  other.model = coulomb;
-  right.candidates.push_back(other);
-  right.verdict.indistinguishable = {"thermal_thinning"};
+  const auto named = [](Diagnosis d, const std::string& effect, const rig::FrictionModel& model) {
+    Candidate c;
+    c.effects = {effect};
+    c.model = model;
+    d.candidates.push_back(c);
+    d.verdict.indistinguishable.push_back(effect);
+    return d;
+  };
+  const Diagnosis right = named(diagnosis_of(coulomb, truth, "viscous_friction"), "thermal_thinning", coulomb);
   const TestBlockGap t = test_block_gap(test, rig::RigParameters{}, right, 1);
   std::printf("decision: %s by %.1f floors\n", t.decided_for.c_str(), t.decision_floors);
   ASSERT_GT(t.decision_floors, kDecidingFloors);
   EXPECT_NEAR(t.decision_floors, (t.gap_beside.at("thermal_thinning") - t.gap_after) / t.noise_floor, 1e-12);
+  EXPECT_EQ(t.ruled_out, std::vector<std::string>{"thermal_thinning"});
   EXPECT_EQ(t.decided_for, "viscous_friction");
-  // The same pair with the verdict and the one beside it swapped.
-  Diagnosis wrong = diagnosis_of(coulomb, coulomb, "thermal_thinning");
-  Candidate truth_beside;
-  truth_beside.effects = {"viscous_friction"};
-  truth_beside.model = truth;
-  wrong.candidates.push_back(truth_beside);
-  wrong.verdict.indistinguishable = {"viscous_friction"};
-  EXPECT_EQ(test_block_gap(test, rig::RigParameters{}, wrong, 1).decided_for, "viscous_friction");
+  EXPECT_EQ(t.verdict_after, "viscous_friction");
+  // The same pair with the verdict and the one beside it swapped: the verdict is ruled out.
+  const TestBlockGap swapped = test_block_gap(test, rig::RigParameters{}, named(diagnosis_of(coulomb, coulomb, "thermal_thinning"), "viscous_friction", truth), 1);
+  EXPECT_EQ(swapped.decided_for, "viscous_friction");
+  EXPECT_EQ(swapped.verdict_after, "viscous_friction");
+  // Two named that predict the record alike both stand (the truth twice, as two names): the test
+  // rules out the wrong verdict and decides for neither; the nearer standing one is the verdict after.
+  const Diagnosis three = named(named(diagnosis_of(coulomb, coulomb, "thermal_thinning"), "viscous_friction", truth), "hydrodynamic_lift", truth);
+  const TestBlockGap pair = test_block_gap(test, rig::RigParameters{}, three, 1);
+  EXPECT_EQ(pair.ruled_out, std::vector<std::string>{"thermal_thinning"});
+  EXPECT_EQ(pair.standing.size(), 2u);
+  EXPECT_TRUE(pair.decided_for.empty());
+  EXPECT_EQ(pair.verdict_after, pair.standing.front());
   // Nothing beside the verdict: nothing to decide.
   const TestBlockGap alone = test_block_gap(test, rig::RigParameters{}, diagnosis_of(coulomb, truth, "viscous_friction"), 1);
-  EXPECT_TRUE(alone.decided_for.empty());
+  EXPECT_TRUE(alone.standing.empty() && alone.decided_for.empty() && alone.verdict_after.empty());
   EXPECT_TRUE(std::isnan(alone.decision_floors));
 }
 
@@ -149,8 +159,10 @@ TEST(TestBlock, AlikeMechanismsAreDecidedOnlyByATestThatPartsThem) {
   d.candidates.push_back(alike);
   d.verdict.alike_mechanisms = {"rate_dependent_static"};
   const TestBlockGap same_load = test_block_gap(test_runs(truth, 0.01), rig::RigParameters{}, d, 1, rig::RigParameters{});
-  EXPECT_GT(same_load.decision_floors, kDecidingFloors);
+  EXPECT_GT((same_load.gap_beside.at("rate_dependent_static") - same_load.gap_after) / same_load.noise_floor, kDecidingFloors);
+  EXPECT_TRUE(same_load.ruled_out.empty());
   EXPECT_TRUE(same_load.decided_for.empty());
+  EXPECT_EQ(same_load.verdict_after, "squeeze_film");
   SyntheticOptions o;
   o.speeds_m_per_s = o.test_speeds_m_per_s;
   rig::RigParameters heavier;

@@ -31,11 +31,11 @@ class GapReliability(unittest.TestCase):
                     checks=[("squeeze_film", 6.8, True)]),  # replaces seed 1
                case(3, "thermal_thinning", "hydrodynamic_lift", 4.0, checks=[("thermal_thinning", 1.5, True)]),
                case(6, "rate_dependent_static", "rate_dependent_static", 3.5, checks=[("squeeze_film", 2.5, False)]),
-               # Seed 7's record did not decide although the proposal promised 4 floors; seed 8's decided for the truth.
+               # Seed 7's record kept the wrong verdict although the proposal promised 4 floors; seed 8's put it right.
                dict(case(7, "instrument", "squeeze_film", 5.5, checks=[("instrument", 4.0, True)]),
-                    proposal_checks=[{"against": "instrument", "separation_floors": 4.0, "truth_nearer": True, "decided_for": None}]),
+                    proposal_checks=[{"against": "instrument", "separation_floors": 4.0, "truth_nearer": True, "verdict_after": "squeeze_film"}]),
                dict(case(8, "instrument", "squeeze_film", 6.0),
-                    proposal_checks=[{"against": "instrument", "separation_floors": 1.0, "truth_nearer": True, "decided_for": "instrument"}]),
+                    proposal_checks=[{"against": "instrument", "separation_floors": 1.0, "truth_nearer": True, "verdict_after": "instrument"}]),
                case(4, "none", "none", 0.8, confidence=0.7),
                case(5, "slip_transient", "slip_transient", 0.3, generator="rig")]
         with tempfile.TemporaryDirectory() as root:
