@@ -504,7 +504,7 @@ void add_gap_command(CLI::App& app) {
   diagnose->add_option("--test", diagnose_args->test,
                        "Test bundle of the same machine and kind (other runs, other speeds), or a test the diagnosis proposes (a "
                        "stiffer spring, another load, a slide-hold-slide: the calibrated rig is scaled as the bundle's told one): the "
-                       "fitted baseline, the verdict's candidate and those named beside it predict it, on data no fit or verdict saw");
+                       "fitted baseline, the verdict's candidate and those named beside it predict it, on data no fit or verdict saw, and the report states which of them it rules out (two noise floors beyond the nearest) and the verdict after it");
   diagnose->add_option("--out", diagnose_args->out, "Output directory")->capture_default_str();
   diagnose->add_option("--seed", diagnose_args->seed, "Seed of random starts, bootstrap and instrument noise")->capture_default_str();
   diagnose->add_option("--candidates", diagnose_args->candidates,
