@@ -436,6 +436,7 @@ void run_selftest(const SelftestArgs& args) {
                             {"named_or_indistinguishable_fraction", numerics::finite_or_null(sum.named_or_indistinguishable_fraction)},
                             {"mean_names_per_verdict", numerics::finite_or_null(sum.mean_names_per_verdict)},
                             {"deciding_proposals", sum.deciding_proposals}, {"deciding_proposals_for_truth", sum.deciding_proposals_for_truth},
+                            {"named_after_proposed_tests", sum.named_after_proposed_tests},
                             {"tentative_verdicts", sum.tentative_verdicts}, {"tentative_right", sum.tentative_right},
                             {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
                             {"confusion", sum.confusion}};
@@ -471,6 +472,9 @@ void run_selftest(const SelftestArgs& args) {
     if (sum.deciding_proposals)
       std::printf("  proposed tests that decide (>= %g floors), run on the truth: %d of %d came out for it\n", gap::kDecidingFloors,
                   sum.deciding_proposals_for_truth, sum.deciding_proposals);
+    if (sum.effect_cases)
+      std::printf("  named once the proposed tests run on the truth are seen (their verdict after the record): %d of %d\n",
+                  sum.named_after_proposed_tests, sum.effect_cases);
     if (sum.tentative_verdicts)
       std::printf("  tentative verdicts (a candidate that halves the gap without earning): %d of %d right\n", sum.tentative_right,
                   sum.tentative_verdicts);

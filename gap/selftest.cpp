@@ -298,8 +298,12 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
         to[row.c.true_effect].first += 1.0 - after / before;
         ++to[row.c.true_effect].second;
       };
-      for (const ProposalCheck& k : row.proposal_checks)
+      std::string after = row.verdict;
+      for (const ProposalCheck& k : row.proposal_checks) {
         if (k.floors >= kDecidingFloors) ++out.deciding_proposals, out.deciding_proposals_for_truth += k.truth_nearer;
+        if (!k.verdict_after.empty()) after = k.verdict_after;
+      }
+      out.named_after_proposed_tests += after == row.c.true_effect;
       add(shrink, row.heldout_gap_before, row.heldout_gap_after);
       add(test_shrink, row.test_gap_before, row.test_gap_after);
     }

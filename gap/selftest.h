@@ -131,6 +131,10 @@ struct SelftestSummary {
   // Proposed tests run on the truth (SelftestRow::proposal_checks) whose proposed separation was
   // two floors or more — the ones the conclusion names — and how many of them came out for the truth.
   int deciding_proposals = 0, deciding_proposals_for_truth = 0;
+  // Effect cases named once the proposed tests run on the truth are seen: each check's verdict after
+  // its record (ProposalCheck::verdict_after) in place of the verdict; a check without one (journals
+  // from before it) leaves the verdict.
+  int named_after_proposed_tests = 0;
   // Tentative verdicts (SelftestRow::tentative) of effect cases and controls, and how many were right.
   int tentative_verdicts = 0, tentative_right = 0;
   double controls_none_fraction = 0.0;

@@ -88,6 +88,22 @@ TEST(SelftestSummary, ProposedTestsCountWhenTheyDecideAndForTheTruthWhenItCameNe
   const SelftestSummary s = summarise(rows);
   EXPECT_EQ(s.deciding_proposals, 2);  // the 1.7-floor test is not named, so not counted
   EXPECT_EQ(s.deciding_proposals_for_truth, 1);
+  EXPECT_EQ(s.named_after_proposed_tests, 0);  // journalled before the verdict after the record: the verdicts stand
+}
+
+// Named once the proposed tests are seen: a record that puts the wrong verdict right counts, one
+// that overturns a right verdict takes it away, one that keeps it leaves it.
+TEST(SelftestSummary, TheVerdictAfterAProposedTestsRecordReplacesTheVerdict) {
+  std::vector<SelftestRow> rows{row("squeeze_film", "rate_dependent_static", 0.4, kIndependentGenerator),
+                                row("thermal_thinning", "thermal_thinning", 0.6, kIndependentGenerator),
+                                row("instrument", "instrument", 0.9, kIndependentGenerator),
+                                row("none", "none", 0.7, kIndependentGenerator)};
+  rows[0].proposal_checks = {{"squeeze_film", "heavier_load", 6.8, 0.3, 0.06, true, "squeeze_film"}};
+  rows[1].proposal_checks = {{"hydrodynamic_lift", "wider_speeds", 3.0, 0.05, 0.02, false, "hydrodynamic_lift"}};
+  rows[2].proposal_checks = {{"squeeze_film", "stiffer_spring", 2.5, 0.01, 0.05, true, "instrument"}};
+  const SelftestSummary s = summarise(rows);
+  EXPECT_DOUBLE_EQ(s.identified_fraction, 2.0 / 3.0);
+  EXPECT_EQ(s.named_after_proposed_tests, 2);  // the film put right, the thinning overturned, the load cell kept
 }
 
 // A verdict whose candidate did not earn is tentative (verdict.h Decision::tentative); the summary
