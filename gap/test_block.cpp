@@ -1,33 +1,15 @@
 #include "gap/test_block.h"
 
 #include <algorithm>
-#include <cmath>
 #include <limits>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
 #include "gap/compare.h"
 #include "gap/discriminate.h"
 #include "gap/verdict.h"
-#include "rig/friction_model.h"
 
 namespace tribo::gap {
-namespace {
-
-// Whether two candidates hold mechanisms the catalogue calls alike at constant speed
-// (rig::EffectInfo::alike_at_constant_speed).
-bool alike(const std::vector<std::string>& as, const std::vector<std::string>& bs) {
-  for (const std::string& x : as)
-    for (const std::string& y : bs) {
-      const auto& tx = rig::effect_info(x).alike_at_constant_speed;
-      const auto& ty = rig::effect_info(y).alike_at_constant_speed;
-      if (std::count(tx.begin(), tx.end(), y) || std::count(ty.begin(), ty.end(), x)) return true;
-    }
-  return false;
-}
-
-}  // namespace
 
 TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParameters& model_rig, const Diagnosis& d,
                             std::uint64_t seed, const std::optional<rig::RigParameters>& diagnosed_rig) {
@@ -72,7 +54,7 @@ TestBlockGap test_block_gap(const ExperimentBundle& test, const rig::RigParamete
   for (const Named& n : named) {
     const double margin = (n.gap - named.front().gap) / out.noise_floor;
     const std::string name = verdict_name(n.c->effects);
-    if (margin >= kDecidingFloors && (parts || !alike(named.front().c->effects, n.c->effects))) {
+    if (margin >= kDecidingFloors && (parts || !alike_at_constant_speed(named.front().c->effects, n.c->effects))) {
       if (out.ruled_out.empty()) out.decision_floors = margin;
       out.ruled_out.push_back(name);
     } else {

@@ -294,17 +294,20 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
   return {agree / B, B > 1 ? std::sqrt(std::max(0.0, (s2 - s1 * s1 / B) / (B - 1))) : 0.0};
 }
 
+bool alike_at_constant_speed(const std::vector<std::string>& a, const std::vector<std::string>& b) {
+  return std::any_of(a.begin(), a.end(), [&](const std::string& e) {
+    const std::vector<std::string>& t = rig::effect_info(e).alike_at_constant_speed;
+    return std::any_of(b.begin(), b.end(), [&](const std::string& f) { return std::count(t.begin(), t.end(), f) > 0; });
+  });
+}
+
 std::vector<std::string> alike_mechanisms(const std::vector<Candidate>& cs, int chosen, double gap_before, double floor) {
   std::vector<std::string> out;
   if (chosen < 0 || !(floor > 0.0)) return out;
   const std::vector<std::string>& verdict = cs[static_cast<std::size_t>(chosen)].effects;
   for (const Candidate& c : cs) {
     if (c.effects.size() != 1 || std::count(verdict.begin(), verdict.end(), c.effects.front())) continue;
-    const bool twin = std::any_of(verdict.begin(), verdict.end(), [&](const std::string& e) {
-      const std::vector<std::string>& t = rig::effect_info(e).alike_at_constant_speed;
-      return std::count(t.begin(), t.end(), c.effects.front()) > 0;
-    });
-    if (twin && halves_excess(c.heldout_gap_after, gap_before, floor)) out.push_back(c.effects.front());
+    if (alike_at_constant_speed(verdict, c.effects) && halves_excess(c.heldout_gap_after, gap_before, floor)) out.push_back(c.effects.front());
   }
   return out;
 }

@@ -180,6 +180,11 @@ Confidence bootstrap_confidence(const std::vector<Item>& items, const std::vecto
                                 const std::vector<Candidate>& candidates, int chosen, const std::string& verdict, const DiagnosisOptions& o,
                                 const std::vector<Refit>& refits = {});
 
+// Whether two candidates' effects hold mechanisms the catalogue calls alike at constant speed
+// (rig::EffectInfo::alike_at_constant_speed, a relation both ways:
+// Verdict.AlikeMechanismsAreCatalogueEffectsAlikeBothWays).
+bool alike_at_constant_speed(const std::vector<std::string>& a, const std::vector<std::string>& b);
+
 // The candidates of another mechanism that explain the held-out gap as the verdict's does and that
 // runs at constant speed and one normal load cannot tell from it (rig::EffectInfo::
 // alike_at_constant_speed), by name: single effects listed there for an effect of the verdict

@@ -82,9 +82,10 @@ TEST(SelftestSummary, TruthBesideTheVerdictIsCountedApartWithTheNamesGiven) {
 TEST(SelftestSummary, ProposedTestsCountWhenTheyDecideAndForTheTruthWhenItCameNearer) {
   std::vector<SelftestRow> rows{row("squeeze_film", "rate_dependent_static", 0.4, kIndependentGenerator),
                                 row("thermal_thinning", "hydrodynamic_lift", 0.2, kIndependentGenerator)};
-  rows[0].proposal_checks = {{"squeeze_film", "stiffer_spring", 5.2, 0.106, 0.086, true},
-                             {"strain_rate_hardening", "wider_speeds", 1.7, 0.1, 0.2, false}};
-  rows[1].proposal_checks = {{"thermal_thinning", "stiffer_spring", 4.6, 0.02, 0.03, false}};
+  // Journalled before the verdict after the record: it is empty.
+  rows[0].proposal_checks = {{"squeeze_film", "stiffer_spring", 5.2, 0.106, 0.086, true, ""},
+                             {"strain_rate_hardening", "wider_speeds", 1.7, 0.1, 0.2, false, ""}};
+  rows[1].proposal_checks = {{"thermal_thinning", "stiffer_spring", 4.6, 0.02, 0.03, false, ""}};
   const SelftestSummary s = summarise(rows);
   EXPECT_EQ(s.deciding_proposals, 2);  // the 1.7-floor test is not named, so not counted
   EXPECT_EQ(s.deciding_proposals_for_truth, 1);
