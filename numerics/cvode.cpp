@@ -1,5 +1,6 @@
 #include "numerics/cvode.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -32,6 +33,7 @@ Cvode::Cvode(CVRhsFn rhs, void* user_data, const CvodeSettings& settings, double
     const auto n = static_cast<sunindextype>(size_);
     y_ = check_ptr(N_VNew_Serial(n, ctx_), "N_VNew_Serial");
     abstol_ = check_ptr(N_VNew_Serial(n, ctx_), "N_VNew_Serial");
+    dense_ = check_ptr(N_VNew_Serial(n, ctx_), "N_VNew_Serial");
     for (std::size_t i = 0; i < size_; ++i) {
       NV_Ith_S(y_, i) = y0[i];
       NV_Ith_S(abstol_, i) = settings.absolute_tolerances[i];
@@ -64,9 +66,10 @@ void Cvode::release() {
   if (solver_) SUNLinSolFree(solver_);
   if (matrix_) SUNMatDestroy(matrix_);
   if (abstol_) N_VDestroy(abstol_);
+  if (dense_) N_VDestroy(dense_);
   if (y_) N_VDestroy(y_);
   if (ctx_) SUNContext_Free(&ctx_);
-  mem_ = nullptr, solver_ = nullptr, matrix_ = nullptr, abstol_ = nullptr, y_ = nullptr, ctx_ = nullptr;
+  mem_ = nullptr, solver_ = nullptr, matrix_ = nullptr, abstol_ = nullptr, dense_ = nullptr, y_ = nullptr, ctx_ = nullptr;
 }
 
 void Cvode::restart(double t, std::span<const double> y) {
@@ -84,6 +87,14 @@ void Cvode::set_roots(CVRootFn roots, std::span<const int> directions) {
 void Cvode::set_stop_time(double t_stop_s) { check(CVodeSetStopTime(mem_, t_stop_s), "CVodeSetStopTime"); }
 
 int Cvode::advance(double t_out, double& t_reached) { return CVode(mem_, t_out, y_, &t_reached, CV_NORMAL); }
+
+int Cvode::step(double t_out, double& t_reached) { return CVode(mem_, t_out, y_, &t_reached, CV_ONE_STEP); }
+
+void Cvode::interpolate(double t, std::span<double> y) {
+  check(CVodeGetDky(mem_, t, 0, dense_), "CVodeGetDky");
+  const double* d = N_VGetArrayPointer(dense_);
+  std::copy(d, d + size_, y.begin());
+}
 
 std::span<double> Cvode::state() { return {N_VGetArrayPointer(y_), size_}; }
 

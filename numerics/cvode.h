@@ -43,6 +43,13 @@ class Cvode {
   // Advances towards t_out; returns CV_SUCCESS, CV_ROOT_RETURN, CV_TSTOP_RETURN or a negative
   // CVODE flag (describe() names it).
   int advance(double t_out, double& t_reached);
+  // One internal step (CVODE's CV_ONE_STEP), same returns: roots are checked once over the whole
+  // step, where advance() checks them again at every t_out inside it — dear when output is denser
+  // than the steps. t_out, the next output time, bounds the first step after a restart (as it
+  // does for advance()) and is otherwise unused. state() is then the state at t_reached.
+  int step(double t_out, double& t_reached);
+  // The state at t within the last step, from CVODE's interpolating polynomial (CVodeGetDky).
+  void interpolate(double t, std::span<double> y);
 
   std::span<double> state();
   // Which roots fired at the last CV_ROOT_RETURN (non-zero entries), one entry per root.
@@ -64,6 +71,7 @@ class Cvode {
   SUNContext ctx_ = nullptr;
   N_Vector y_ = nullptr;
   N_Vector abstol_ = nullptr;
+  N_Vector dense_ = nullptr;  // interpolate()'s output
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver solver_ = nullptr;
   void* mem_ = nullptr;

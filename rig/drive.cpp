@@ -59,20 +59,12 @@ Drive Drive::slide_hold_slide(double speed, double slide_s, double hold_s) {
   return steps({0.0, slide_s, slide_s + hold_s}, {speed, 0.0, speed});
 }
 
-std::size_t Drive::segment(double t) const {
+std::size_t Drive::segment_at(double t) const {
   const auto it = std::upper_bound(t_.begin(), t_.end(), t);
   return it == t_.begin() ? 0 : static_cast<std::size_t>(it - t_.begin()) - 1;
 }
 
-double Drive::speed_m_per_s(double t) const {
-  const std::size_t i = segment(t);
-  return v_start_[i] + slope_[i] * (t - t_[i]);
-}
-
-double Drive::acceleration_m_per_s2(double t) const { return slope_[segment(t)]; }
-
-double Drive::displacement_m(double t) const {
-  const std::size_t i = segment(t);
+double Drive::displacement_m(double t, std::size_t i) const {
   const double dt = t - t_[i];
   return x_start_[i] + v_start_[i] * dt + 0.5 * slope_[i] * dt * dt;
 }

@@ -36,13 +36,20 @@ struct Machine {
   int direction = 0;
   double phase_start_s = 0.0;
   std::string callback_error;
+  // The drive's segment being integrated: at its end (a breakpoint, CVODE's stop time) the event
+  // functions see the drive that led there, not the next segment's (a hold's zero load rate would
+  // hide a breakaway that the last slide's load rate had reached).
+  std::size_t segment = 0;
+
+  double drive_speed(double t) const { return drive.speed_m_per_s(t, segment); }
+  double drive_acceleration(double t) const { return drive.acceleration_m_per_s2(t, segment); }
 
   FrictionContext context(double t, const double* y) const {
     FrictionContext c;
     c.t_s = t;
     c.phase = phase;
     c.slip_direction = phase == Phase::slip ? direction : 0;
-    c.drive_speed_m_per_s = drive.speed_m_per_s(t);
+    c.drive_speed_m_per_s = drive_speed(t);
     // Speed along the slip direction; clipped at 0 for the instant before a velocity match is located.
     c.relative_speed_m_per_s = phase == Phase::slip ? std::max(0.0, direction * (c.drive_speed_m_per_s - y[kXdot])) : 0.0;
     c.normal_load_N = rig.normal_load_N;
@@ -55,12 +62,12 @@ struct Machine {
 
   // Force the contact must supply to keep ẋ = v: F_need = M v̇ + r v + k x.
   double needed_force(double t, const double* y) const {
-    return rig.mass_kg * drive.acceleration_m_per_s2(t) + rig.damping_N_s_per_m * drive.speed_m_per_s(t) +
+    return rig.mass_kg * drive_acceleration(t) + rig.damping_N_s_per_m * drive_speed(t) +
            rig.stiffness_N_per_m * y[kX];
   }
   // dF_need/dt while stuck (v̇ is piecewise constant).
   double force_rate(double t) const {
-    return rig.damping_N_s_per_m * drive.acceleration_m_per_s2(t) + rig.stiffness_N_per_m * drive.speed_m_per_s(t);
+    return rig.damping_N_s_per_m * drive_acceleration(t) + rig.stiffness_N_per_m * drive_speed(t);
   }
 
   // Kinetic friction at the onset of slip in direction d (|U| = 0⁺).
@@ -87,7 +94,7 @@ struct Machine {
   }
 
   double acceleration(double t, const double* y) const {
-    if (phase == Phase::stick) return drive.acceleration_m_per_s2(t);
+    if (phase == Phase::stick) return drive_acceleration(t);
     return (friction(t, y) - rig.damping_N_s_per_m * y[kXdot] - rig.stiffness_N_per_m * y[kX]) / rig.mass_kg;
   }
 
@@ -95,8 +102,8 @@ struct Machine {
     const FrictionContext c = context(t, y);
     law.state_rates(c, std::span<double>(dy + kLaw, law.state_size()));
     if (phase == Phase::stick) {
-      dy[kX] = drive.speed_m_per_s(t);
-      dy[kXdot] = drive.acceleration_m_per_s2(t);
+      dy[kX] = drive_speed(t);
+      dy[kXdot] = drive_acceleration(t);
       dy[kSlip] = 0.0;
     } else {
       dy[kX] = y[kXdot];
@@ -114,7 +121,7 @@ struct Machine {
       g[0] = breakaway_limit(t, y, +1, limit) - need;
       g[1] = breakaway_limit(t, y, -1, limit) + need;
     } else {
-      g[0] = direction * (drive.speed_m_per_s(t) - y[kXdot]);
+      g[0] = direction * (drive_speed(t) - y[kXdot]);
     }
   }
 };
@@ -257,8 +264,8 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     s.xdot_m_per_s = y[kXdot];
     s.xddot_m_per_s2 = m.acceleration(t, y.data());
     s.friction_N = m.friction(t, y.data());
-    s.drive_speed_m_per_s = drive.speed_m_per_s(t);
-    s.drive_displacement_m = drive.displacement_m(t);
+    s.drive_speed_m_per_s = m.drive_speed(t);
+    s.drive_displacement_m = drive.displacement_m(t, m.segment);
     s.slip_distance_m = y[kSlip];
     s.phase = m.phase;
     s.slip_direction = m.phase == Phase::slip ? m.direction : 0;
@@ -276,7 +283,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     e.kind = EventKind::breakaway;
     e.slip_direction = d;
     e.x_m = y[kX];
-    e.xdot_m_per_s = drive.speed_m_per_s(t);
+    e.xdot_m_per_s = m.drive_speed(t);
     e.friction_N = m.needed_force(t, y.data());
     e.mu = std::abs(e.friction_N) / rig.normal_load_N;
     e.load_rate_per_s = std::abs(m.force_rate(t)) / rig.normal_load_N;
@@ -285,7 +292,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     m.phase = Phase::slip;
     m.direction = d;
     m.phase_start_s = t;
-    y[kXdot] = drive.speed_m_per_s(t);
+    y[kXdot] = m.drive_speed(t);
     y[kSlip] = 0.0;
     law.on_slip_onset(m.context(t, y.data()), law_state());
   };
@@ -294,7 +301,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   // ẋ = v is within the re-attachment limit (or within the kinetic friction at 0⁺ of the
   // opposite direction, so that neither slip direction is consistent); otherwise slip on in −d.
   auto velocity_match = [&]() {
-    y[kXdot] = drive.speed_m_per_s(t);
+    y[kXdot] = m.drive_speed(t);
     Event e;
     e.t_s = t;
     e.x_m = y[kX];
@@ -334,7 +341,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
         } else {
           return;
         }
-      } else if (m.direction * (drive.speed_m_per_s(t) - y[kXdot]) < 0.0) {
+      } else if (m.direction * (m.drive_speed(t) - y[kXdot]) < 0.0) {
         velocity_match();
       } else {
         return;
@@ -383,6 +390,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
       summary.end_time_s = t;
       return summary;
     }
+    m.segment = drive.segment_at(t);
     const double t_stop = std::min(t_end, drive.next_breakpoint_s(t));
     const std::vector<int> directions = m.phase == Phase::stick ? std::vector<int>{-1, -1} : std::vector<int>{-1};
     cv.restart(t, y);
@@ -394,21 +402,34 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     } else if (next_sample <= t || next_sample > t + dt_phase) {
       next_sample = t + dt_phase;
     }
+    // One CVODE step at a time, the output instants inside each interpolated from its polynomial:
+    // the steps are several output spacings long, and CVODE would otherwise check the roots again
+    // at every output instant (Cvode::step).
+    double t_step = t;
     while (true) {
-      const double t_out = std::min(next_sample, t_stop);
-      double t_reached = t;
-      const int flag = cv.advance(t_out, t_reached);
+      const int flag = cv.step(std::min(next_sample, t_stop), t_step);
       if (flag < 0) {
-        summary.message = "CVODE failed at t = " + numerics::shortest(t_reached) + " s with " + numerics::Cvode::describe(flag) +
+        summary.message = "CVODE failed at t = " + numerics::shortest(t_step) + " s with " + numerics::Cvode::describe(flag) +
                           (m.callback_error.empty() ? "" : " (" + m.callback_error + ")") +
                           (cv.last_message().empty() ? "" : ": " + cv.last_message());
         summary.end_time_s = t;
         summary.integrator_steps += cv.steps();
         return summary;
       }
-      t = t_reached;
+      const bool root = flag == CV_ROOT_RETURN;
+      // The regular output instants within the step: before an event (the state at the event is
+      // its own sample), and never t_stop (sampled after the drive's breakpoint is handled).
+      while (next_sample < t_stop && (root ? next_sample < t_step : next_sample <= t_step)) {
+        t = next_sample;
+        cv.interpolate(t, y);
+        emit_sample();
+        next_sample = next_output_after(t);
+        if ((settled_stop = settled_here())) break;
+      }
+      if (settled_stop) break;
+      t = t_step;
       std::copy(cv.state().begin(), cv.state().end(), y.begin());
-      if (flag == CV_ROOT_RETURN) {
+      if (root) {
         emit_sample();  // the state at the event, before the switch: times stay strictly increasing
         settling.restart();
         if (m.phase == Phase::stick) {
@@ -418,6 +439,10 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
           velocity_match();
         }
         settle();
+        if (t >= t_stop) {  // an event on the breakpoint itself: the next segment may switch it again
+          m.segment = drive.segment_at(t);
+          settle();
+        }
         // At a re-attachment the friction jumps (μk W to the spring's pull): the first stick
         // sample comes a slip spacing later, not a stick spacing, whose interpolant would spread
         // the jump (a Coulomb trough read 0.016 high at 4000 stick samples a 375-s run).
@@ -425,6 +450,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
         break;
       }
       if (t >= t_stop) {
+        m.segment = drive.segment_at(t);  // the next segment from here on
         if (options.relock_at_drive_steps && m.phase == Phase::slip && t < t_end) {
           Event e;
           e.t_s = t;
@@ -441,17 +467,11 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
           m.phase_start_s = t;
           law.on_stick_onset(m.context(t, y.data()), law_state());
         }
-        if (m.phase == Phase::stick) y[kXdot] = drive.speed_m_per_s(t);  // follow a drive step
+        if (m.phase == Phase::stick) y[kXdot] = m.drive_speed(t);  // follow a drive step
         settle();
         emit_sample();
         settling.restart();
         next_sample = next_output_after(t);
-        break;
-      }
-      emit_sample();
-      next_sample = next_output_after(t);
-      if (settled_here()) {
-        settled_stop = true;
         break;
       }
     }

@@ -1,6 +1,6 @@
 // Drive histories: exact displacement of piecewise-linear speed, a stuck slider following a
-// velocity step (load-rate change at the step, thesis 3.1.20 φ̇ = k v / W while stuck), and a
-// slipping one re-locked by a step.
+// velocity step (load-rate change at the step, thesis 3.1.20 φ̇ = k v / W while stuck), one
+// breaking away just before a hold, and a slipping one re-locked by a step.
 #include <gtest/gtest.h>
 
 #include "rig/drive.h"
@@ -47,6 +47,32 @@ TEST(Drive, StuckSliderBreaksAwayWhenTheSpringReachesMuSW) {
   const double t_expected = 0.5 + (x_s - 0.5e-3) / 3e-3;
   EXPECT_NEAR(e.t_s, t_expected, 1e-8);
   EXPECT_NEAR(e.load_rate_per_s, rig.stiffness_N_per_m * 3e-3 / rig.normal_load_N, 1e-12);
+}
+
+// The spring reaches k x + r v = μs W shortly before a hold; from the hold on the damper's r v is
+// gone and k x alone stays below μs W. The breakaway is at the closed-form time all the same: the
+// integrator's last step of the slide ends on the hold's start, where the event functions see the
+// slide's drive (its left limit), not the hold's. One output instant per run, so that no output
+// instant inside the slide finds the crossing instead.
+TEST(Drive, AStuckSliderBreaksAwayJustBeforeAHoldThatWouldHaveHeldIt) {
+  const RigParameters rig;
+  const double v = 1e-3, mu_s = 0.3;
+  const double x_s = (mu_s * rig.normal_load_N - rig.damping_N_s_per_m * v) / rig.stiffness_N_per_m;
+  const double t_break = x_s / v, t_hold = t_break + 0.5 * rig.damping_N_s_per_m / rig.stiffness_N_per_m;
+  ASSERT_LT(rig.stiffness_N_per_m * v * t_hold, mu_s * rig.normal_load_N);  // the hold alone would hold it
+  const Drive d = Drive::slide_hold_slide(v, t_hold, 1.0);
+  auto law = make_coulomb(mu_s, 0.2);
+  SimulationOptions opt;
+  opt.duration_s = t_hold + 0.5;
+  opt.stick_samples_per_run = 1;
+  const SimulationResult r = simulate(rig, d, *law, opt);
+  ASSERT_TRUE(r.summary.completed) << r.summary.message;
+  ASSERT_FALSE(r.events.empty());
+  EXPECT_EQ(r.events.front().kind, EventKind::breakaway);
+  EXPECT_NEAR(r.events.front().t_s, t_break, 1e-8);
+  // By the segment's formula at its end: the slide's speed, at the breakpoint and in it.
+  EXPECT_DOUBLE_EQ(d.speed_m_per_s(t_hold, d.segment_at(0.0)), v);
+  EXPECT_DOUBLE_EQ(d.speed_m_per_s(t_hold), 0.0);
 }
 
 // SimulationOptions::relock_at_drive_steps: sliding steadily at 0.1 m/s, the drive steps to 0.2 m/s
