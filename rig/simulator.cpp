@@ -199,6 +199,7 @@ void validate(const SimulationOptions& o) {
   if (!std::isfinite(o.initial_displacement_m)) bad("initial_displacement_m must be finite");
   if (!(o.max_event_rate_per_s >= 0.0) || !std::isfinite(o.max_event_rate_per_s)) bad("max_event_rate_per_s must be finite and >= 0");
   if (o.events_before_rate_limit < 0) bad("events_before_rate_limit must be >= 0");
+  if (o.max_steps_per_output < 1) bad("max_steps_per_output must be at least 1");
   for (std::size_t i = 0; i < o.output_times_s.size(); ++i) {
     const double t = o.output_times_s[i];
     if (!std::isfinite(t) || t < 0.0 || (i > 0 && !(t > o.output_times_s[i - 1])))
@@ -251,7 +252,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   // Jacobian keeps the corrector robust across friction jumps. A stiff law (FrictionLaw::stiff)
   // takes BDF, whose steps are not bound by its damping time scale.
   const auto method = law.stiff() ? numerics::CvodeSettings::Method::bdf : numerics::CvodeSettings::Method::adams;
-  const numerics::CvodeSettings settings{method, options.relative_tolerance, atol, 200000};
+  const numerics::CvodeSettings settings{method, options.relative_tolerance, atol, options.max_steps_per_output};
   numerics::Cvode cv(rhs_callback, &m, settings, 0.0, y);
   SimulationSummary summary;
   double t = 0.0;
@@ -372,6 +373,30 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     return options.stop_when_settled;
   };
 
+  // At a drive breakpoint (CVODE's stop time): the next segment from here on; a slipping contact
+  // re-locked if asked; a stuck slider follows the new speed; then any switch the new drive forces.
+  auto at_breakpoint = [&]() {
+    m.segment = drive.segment_at(t);
+    if (options.relock_at_drive_steps && m.phase == Phase::slip && t < t_end) {
+      Event e;
+      e.t_s = t;
+      e.kind = EventKind::relock;
+      e.x_m = y[kX];
+      e.xdot_m_per_s = y[kXdot];
+      e.friction_N = m.direction * law.kinetic_force_N(m.context(t, y.data()));
+      e.mu = std::abs(e.friction_N) / rig.normal_load_N;
+      e.phase_duration_s = t - m.phase_start_s;
+      e.slip_distance_m = y[kSlip];
+      emit_event(e);
+      m.phase = Phase::stick;
+      m.direction = 0;
+      m.phase_start_s = t;
+      law.on_stick_onset(m.context(t, y.data()), law_state());
+    }
+    if (m.phase == Phase::stick) y[kXdot] = m.drive_speed(t);
+    settle();
+  };
+
   emit_sample();
   double next_sample = 0.0;
   settle();
@@ -406,8 +431,13 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
     // the steps are several output spacings long, and CVODE would otherwise check the roots again
     // at every output instant (Cvode::step).
     double t_step = t;
+    long steps_since_output = 0;  // CVODE's own step limit counts per call, here one step
     while (true) {
-      const int flag = cv.step(std::min(next_sample, t_stop), t_step);
+      int flag = cv.step(std::min(next_sample, t_stop), t_step);
+      if (flag >= 0 && ++steps_since_output > options.max_steps_per_output) {
+        flag = CV_TOO_MUCH_WORK;
+        m.callback_error = std::to_string(options.max_steps_per_output) + " steps without reaching the next output instant";
+      }
       if (flag < 0) {
         summary.message = "CVODE failed at t = " + numerics::shortest(t_step) + " s with " + numerics::Cvode::describe(flag) +
                           (m.callback_error.empty() ? "" : " (" + m.callback_error + ")") +
@@ -423,6 +453,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
         t = next_sample;
         cv.interpolate(t, y);
         emit_sample();
+        steps_since_output = 0;
         next_sample = next_output_after(t);
         if ((settled_stop = settled_here())) break;
       }
@@ -439,10 +470,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
           velocity_match();
         }
         settle();
-        if (t >= t_stop) {  // an event on the breakpoint itself: the next segment may switch it again
-          m.segment = drive.segment_at(t);
-          settle();
-        }
+        if (t >= t_stop) at_breakpoint();  // an event on the breakpoint itself
         // At a re-attachment the friction jumps (μk W to the spring's pull): the first stick
         // sample comes a slip spacing later, not a stick spacing, whose interpolant would spread
         // the jump (a Coulomb trough read 0.016 high at 4000 stick samples a 375-s run).
@@ -450,25 +478,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
         break;
       }
       if (t >= t_stop) {
-        m.segment = drive.segment_at(t);  // the next segment from here on
-        if (options.relock_at_drive_steps && m.phase == Phase::slip && t < t_end) {
-          Event e;
-          e.t_s = t;
-          e.kind = EventKind::relock;
-          e.x_m = y[kX];
-          e.xdot_m_per_s = y[kXdot];
-          e.friction_N = m.direction * law.kinetic_force_N(m.context(t, y.data()));
-          e.mu = std::abs(e.friction_N) / rig.normal_load_N;
-          e.phase_duration_s = t - m.phase_start_s;
-          e.slip_distance_m = y[kSlip];
-          emit_event(e);
-          m.phase = Phase::stick;
-          m.direction = 0;
-          m.phase_start_s = t;
-          law.on_stick_onset(m.context(t, y.data()), law_state());
-        }
-        if (m.phase == Phase::stick) y[kXdot] = m.drive_speed(t);  // follow a drive step
-        settle();
+        at_breakpoint();
         emit_sample();
         settling.restart();
         next_sample = next_output_after(t);

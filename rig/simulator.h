@@ -38,6 +38,9 @@ struct SimulationOptions {
   std::vector<double> output_times_s;
   // A run with more events than this stops and says so (e.g. chattering at a velocity match).
   long max_events = 2'000'000;
+  // A run whose integrator takes more steps than this between two output instants (or events)
+  // stops and says so (CV_TOO_MUCH_WORK): a crawl or a stall, not a solution.
+  long max_steps_per_output = 200'000;
   // When > 0: the run also stops, in the same way, once its events by time t outnumber
   // events_before_rate_limit + max_event_rate_per_s × t. A budget in proportion to the duration,
   // judged as it is spent: a run that chatters (a Zeno sequence of velocity matches, thousands

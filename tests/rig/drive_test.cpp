@@ -3,6 +3,8 @@
 // breaking away just before a hold, and a slipping one re-locked by a step.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "rig/drive.h"
 #include "rig/kinetic_laws.h"
 #include "rig/simulator.h"
@@ -73,6 +75,38 @@ TEST(Drive, AStuckSliderBreaksAwayJustBeforeAHoldThatWouldHaveHeldIt) {
   // By the segment's formula at its end: the slide's speed, at the breakpoint and in it.
   EXPECT_DOUBLE_EQ(d.speed_m_per_s(t_hold, d.segment_at(0.0)), v);
   EXPECT_DOUBLE_EQ(d.speed_m_per_s(t_hold), 0.0);
+}
+
+// A re-attachment that falls on a velocity step: the drive steps 1 → 2 mm/s where a run at 1 mm/s
+// first re-attaches, give or take a few times the root finder's tolerance, so that some of these
+// runs locate the event on CVODE's stop time itself. The slider then sticks and must move with the
+// new speed, as after any step: every stuck sample after the step has ẋ = v(t).
+TEST(Drive, AStuckSliderFollowsAVelocityStepThatFallsOnItsReattachment) {
+  const RigParameters rig;
+  auto law = make_coulomb(0.3, 0.2);
+  SimulationOptions opt;
+  opt.duration_s = 3.0;
+  const SimulationResult at_one_speed = simulate(rig, Drive::constant(1e-3), *law, opt);
+  double t_reattach = -1.0;
+  for (const Event& e : at_one_speed.events)
+    if (e.kind == EventKind::reattach) {
+      t_reattach = e.t_s;
+      break;
+    }
+  ASSERT_GT(t_reattach, 0.0);
+  for (int k = -8; k <= 8; ++k) {
+    const double t_step = t_reattach * (1.0 + 2e-15 * k);
+    const SimulationResult r = simulate(rig, Drive::steps({0.0, t_step}, {1e-3, 2e-3}), *law, opt);
+    ASSERT_TRUE(r.summary.completed) << r.summary.message;
+    int stuck_after = 0, off = 0;
+    for (const Sample& s : r.samples) {
+      if (s.phase != Phase::stick || !(s.t_s > t_step)) continue;
+      ++stuck_after;
+      off += std::abs(s.xdot_m_per_s - 2e-3) > 1e-12 ? 1 : 0;
+    }
+    EXPECT_GT(stuck_after, 100) << "step at t_reattach × (1 + " << 2e-15 * k << ")";
+    EXPECT_EQ(off, 0) << "step at t_reattach × (1 + " << 2e-15 * k << ")";
+  }
 }
 
 // SimulationOptions::relock_at_drive_steps: sliding steadily at 0.1 m/s, the drive steps to 0.2 m/s

@@ -202,6 +202,27 @@ TEST(StickSlip, EventRateOptionsAreChecked) {
   EXPECT_THROW(simulate(rig, Drive::constant(1e-3), *law, o), std::invalid_argument);
 }
 
+// The integrator's work between two output instants is bounded: a run that would need more steps
+// than max_steps_per_output to reach the next one stops, says CV_TOO_MUCH_WORK and where, and is
+// not completed. A slip on the thesis rig takes tens of steps between slip samples at 200 a period
+// (samples_per_period); four is too few. The bound itself is checked.
+TEST(StickSlip, ARunThatCrawlsBetweenOutputInstantsStopsAndSaysSo) {
+  const RigParameters rig;
+  auto law = make_coulomb(0.3, 0.2);
+  SimulationOptions o;
+  o.duration_s = 2.0;
+  o.max_steps_per_output = 4;
+  const SimulationResult r = simulate(rig, Drive::constant(1e-2), *law, o);
+  EXPECT_FALSE(r.summary.completed);
+  EXPECT_NE(r.summary.message.find("CV_TOO_MUCH_WORK"), std::string::npos) << r.summary.message;
+  EXPECT_NE(r.summary.message.find("4 steps without reaching the next output instant"), std::string::npos) << r.summary.message;
+  EXPECT_LT(r.summary.end_time_s, o.duration_s);
+  o.max_steps_per_output = 200'000;
+  EXPECT_TRUE(simulate(rig, Drive::constant(1e-2), *law, o).summary.completed);
+  o.max_steps_per_output = 0;
+  EXPECT_THROW(simulate(rig, Drive::constant(1e-2), *law, o), std::invalid_argument);
+}
+
 TEST(SteadySliding, SettleOptionsAreChecked) {
   const RigParameters rig;
   auto law = make_coulomb(0.3, 0.2);
