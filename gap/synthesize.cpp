@@ -69,8 +69,8 @@ ExperimentBundle synthesize_bundle(const rig::RigParameters& rig, const rig::Fri
       run.trace.xdot_m_per_s.push_back(r.samples[i].xdot_m_per_s);
       run.trace.friction_N.push_back(F[i]);
       if (history) {
-        run.trace.x_drive_m.push_back(drive.displacement_m(r.samples[i].t_s));
-        run.trace.v_drive_m_per_s.push_back(drive.speed_m_per_s(r.samples[i].t_s));
+        run.trace.x_drive_m.push_back(r.samples[i].drive_displacement_m);
+        run.trace.v_drive_m_per_s.push_back(r.samples[i].drive_speed_m_per_s);
       }
     }
     b.runs.push_back(std::move(run));
