@@ -37,6 +37,34 @@ void BM_PredictForeignControl(benchmark::State& state) {
 }
 BENCHMARK(BM_PredictForeignControl)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 
+// The two candidates whose fits were the slowest of validation case 14818 (independent thermal
+// thinning, 2026-12-05), with the parameters they settled on there, added to the same control:
+// arg 0, a slip transient with rate weakening (a 0.0137, D_c 4.3 µm, β 0.0084), whose state R
+// tracks the stable level a slip of D_c behind; arg 1, a squeeze film (φ_max 0.361, D_b 0.228 mm,
+// h 6.9 µm), whose share decays while stuck.
+void BM_PredictForeignControlSlowCandidate(benchmark::State& state) {
+  using namespace tribo;
+  const gap::ExperimentBundle bundle = gap::read_bundle(kBundle);
+  const rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
+  const gap::Comparison comparison(bundle, rig);
+  rig::FrictionModel model = rig::coulomb(0.362, 0.190);
+  if (state.range(0) == 0) {
+    model.add("slip_transient");
+    model.set("slip_transient", "amplitude", 0.0137);
+    model.set("slip_transient", "decay_distance_m", 4.3e-6);
+    model.set("slip_transient", "rate_weakening", 0.0084);
+    state.SetLabel("slip_transient, rate weakening");
+  } else {
+    model.add("squeeze_film");
+    model.set("squeeze_film", "film_fraction", 0.361);
+    model.set("squeeze_film", "build_up_distance_m", 2.28e-4);
+    model.set("squeeze_film", "film_thickness_m", 6.9e-6);
+    state.SetLabel("squeeze_film");
+  }
+  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+BENCHMARK(BM_PredictForeignControlSlowCandidate)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
+
 // A measured record's prediction: the paper-on-paper stick-slip at k = 2254 N/m
 // (../shared/data/real, beside the checkout; skipped without it), three runs of 375, 14 and 3.8 s,
 // at the calibrated Coulomb baseline of docs/gap-paper (μs 0.504, μk 0.348, ζ 0.043), one effect

@@ -34,9 +34,9 @@ void CompositeLaw::initial_state(std::span<double> state) const {
   for (std::size_t i = 0; i < effects_.size(); ++i) effects_[i]->initial_state(slice(state, i));
 }
 
-void CompositeLaw::state_tolerances(std::span<double> atol) const {
+void CompositeLaw::state_tolerances(std::span<double> atol, double mu_tolerance) const {
   if (baseline_.homogenised) baseline_.homogenised->state_tolerances(atol.first(base_size_));
-  for (std::size_t i = 0; i < effects_.size(); ++i) effects_[i]->state_tolerances(slice(atol, i));
+  for (std::size_t i = 0; i < effects_.size(); ++i) effects_[i]->state_tolerances(slice(atol, i), mu_tolerance);
 }
 
 double CompositeLaw::static_coefficient(const FrictionContext& c) const {
@@ -102,8 +102,9 @@ void CompositeLaw::state_rates(const FrictionContext& c, std::span<double> rates
   for_each_effect(c, [&](std::size_t i, const EffectContext& e) { effects_[i]->state_rates(e, slice(rates, i)); });
 }
 
-bool CompositeLaw::stiff() const {
-  return std::any_of(effects_.begin(), effects_.end(), [](const auto& e) { return e->stiff(); });
+bool CompositeLaw::stiff(double normal_load_N, double natural_frequency_rad_per_s) const {
+  return std::any_of(effects_.begin(), effects_.end(),
+                     [&](const auto& e) { return e->stiff(normal_load_N, natural_frequency_rad_per_s); });
 }
 
 void CompositeLaw::on_slip_onset(const FrictionContext& c, std::span<double> state) const {

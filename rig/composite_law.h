@@ -29,13 +29,13 @@ class CompositeLaw final : public FrictionLaw {
   std::string name() const override;
   std::size_t state_size() const override { return state_size_; }
   void initial_state(std::span<double> state) const override;
-  void state_tolerances(std::span<double> atol) const override;
+  void state_tolerances(std::span<double> atol, double mu_tolerance) const override;
   double static_limit_N(const FrictionContext& c) const override;
   double reattach_limit_N(const FrictionContext& c) const override { return static_limit_N(c); }
   double kinetic_force_N(const FrictionContext& c) const override;
   void state_rates(const FrictionContext& c, std::span<double> rates) const override;
   void on_slip_onset(const FrictionContext& c, std::span<double> state) const override;
-  bool stiff() const override;
+  bool stiff(double normal_load_N, double natural_frequency_rad_per_s) const override;
 
   // Channel 1: μs at the context's load rate.
   double static_coefficient(const FrictionContext& c) const;

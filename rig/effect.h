@@ -64,7 +64,8 @@ class FrictionEffect {
 
   virtual std::size_t state_size() const { return 0; }
   virtual void initial_state(std::span<double> /*state*/) const {}
-  virtual void state_tolerances(std::span<double> atol) const {
+  // As FrictionLaw::state_tolerances.
+  virtual void state_tolerances(std::span<double> atol, double /*mu_tolerance*/) const {
     for (double& a : atol) a = 1e-10;
   }
   virtual void state_rates(const EffectContext& /*c*/, std::span<double> rates) const {
@@ -72,7 +73,7 @@ class FrictionEffect {
   }
   virtual void on_slip_onset(const EffectContext& /*c*/, std::span<double> /*state*/) const {}
   // True when the effect makes the rig's equations stiff (FrictionLaw::stiff).
-  virtual bool stiff() const { return false; }
+  virtual bool stiff(double /*normal_load_N*/, double /*natural_frequency_rad_per_s*/) const { return false; }
 
   // Channel 2: fraction (0..1] of the normal load still carried by solid contact.
   virtual double solid_fraction(const EffectContext& /*c*/) const { return 1.0; }

@@ -42,7 +42,11 @@ class FrictionLaw {
   virtual std::size_t state_size() const { return 0; }
   virtual void initial_state(std::span<double> /*state*/) const {}
   // Absolute error tolerance of each state variable for the integrator, in the state's units.
-  virtual void state_tolerances(std::span<double> atol) const {
+  // `mu_tolerance` is the error in μ the integrator allows on the displacement (x's tolerance is
+  // SimulationOptions::displacement_tolerance_fraction × W/k, a spring force of that fraction of
+  // W): a state that moves friction by μ per unit takes it as is, so that no state is integrated
+  // more finely than the force it acts through.
+  virtual void state_tolerances(std::span<double> atol, double /*mu_tolerance*/) const {
     for (double& a : atol) a = 1e-12;
   }
 
@@ -62,9 +66,11 @@ class FrictionLaw {
   }
 
   // A law whose friction varies so steeply with slip speed that it acts as a damper far stiffer
-  // than the rig's own (rate-and-state's direct effect: dF/dU = a W / U) makes the rig's equations
-  // stiff; the stepper then integrates with BDF instead of Adams (rig/simulator.h).
-  virtual bool stiff() const { return false; }
+  // than the rig's own (rate-and-state's direct effect: dF/dU = a W / U), or whose state relaxes
+  // far faster than the rig oscillates at load W and natural frequency ω_n (a squeeze film of
+  // sub-millisecond squeeze-out time), makes the rig's equations stiff; the stepper then
+  // integrates with BDF instead of Adams (rig/simulator.h).
+  virtual bool stiff(double /*normal_load_N*/, double /*natural_frequency_rad_per_s*/) const { return false; }
 
   // Event hooks: the state may jump when a slip begins or a stick begins.
   virtual void on_slip_onset(const FrictionContext& /*c*/, std::span<double> /*state*/) const {}

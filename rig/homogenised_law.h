@@ -137,7 +137,8 @@ class HomogenisedLaw final : public FrictionLaw {
   std::string name() const override { return "homogenised"; }
   std::size_t state_size() const override { return HomogenisedBase::kStateSize; }
   void initial_state(std::span<double> state) const override { base_->initial_state(state); }
-  void state_tolerances(std::span<double> atol) const override { base_->state_tolerances(atol); }
+  // The film's own scales: h̄ and the temperature act through the tables, not as a μ increment.
+  void state_tolerances(std::span<double> atol, double /*mu_tolerance*/) const override { base_->state_tolerances(atol); }
   double static_limit_N(const FrictionContext& c) const override { return base_->static_limit_N(c, 1.0, 0.0); }
   double kinetic_force_N(const FrictionContext& c) const override { return base_->kinetic_force_N(c, 1.0, 0.0, 0.0); }
   void state_rates(const FrictionContext& c, std::span<double> rates) const override;

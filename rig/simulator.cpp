@@ -223,7 +223,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   std::vector<double> atol(n);
   atol[kX] = atol[kSlip] = options.displacement_tolerance_fraction * x_scale;
   atol[kXdot] = atol[kX] * wn;
-  law.state_tolerances(std::span<double>(atol.data() + kLaw, law.state_size()));
+  law.state_tolerances(std::span<double>(atol.data() + kLaw, law.state_size()), options.displacement_tolerance_fraction);
 
   Machine m{rig, drive, law, Phase::stick, 0, 0.0, {}};
   std::vector<double> y(n, 0.0);
@@ -251,7 +251,7 @@ SimulationSummary simulate(const RigParameters& rig, const Drive& drive, const F
   // Adams–Moulton: the rig is a lightly damped oscillator, non-stiff; Newton with a dense
   // Jacobian keeps the corrector robust across friction jumps. A stiff law (FrictionLaw::stiff)
   // takes BDF, whose steps are not bound by its damping time scale.
-  const auto method = law.stiff() ? numerics::CvodeSettings::Method::bdf : numerics::CvodeSettings::Method::adams;
+  const auto method = law.stiff(rig.normal_load_N, wn) ? numerics::CvodeSettings::Method::bdf : numerics::CvodeSettings::Method::adams;
   const numerics::CvodeSettings settings{method, options.relative_tolerance, atol, options.max_steps_per_output};
   numerics::Cvode cv(rhs_callback, &m, settings, 0.0, y);
   SimulationSummary summary;

@@ -43,13 +43,13 @@ class RateAndState final : public FrictionEffect {
   void initial_state(std::span<double> state) const override { state[0] = steady_state_age_s(v0_m_per_s_); }
   // θ enters as b ln θ, so a relative error δ shifts μ by b δ. θ ≥ D_c/U; 1e-9 of θ(0) = D_c/V0 keeps
   // that below 1e-6 b at sliding speeds up to 1e3 V0 (rtol covers larger θ).
-  void state_tolerances(std::span<double> atol) const override { atol[0] = 1e-9 * steady_state_age_s(v0_m_per_s_); }
+  void state_tolerances(std::span<double> atol, double /*mu_tolerance*/) const override { atol[0] = 1e-9 * steady_state_age_s(v0_m_per_s_); }
   void state_rates(const EffectContext& c, std::span<double> rates) const override;
   double kinetic_increment(const EffectContext& c) const override;
   double static_increment(const EffectContext& c) const override;
   // The direct effect is a damper a W / U: at the µm/s of a slide-hold-slide test it exceeds a
   // stiff machine's own damping by orders of magnitude, and Adams steps would have to resolve it.
-  bool stiff() const override { return a_ > 0.0; }
+  bool stiff(double /*normal_load_N*/, double /*natural_frequency_rad_per_s*/) const override { return a_ > 0.0; }
 
   // θ of steady sliding at speed V: D_c / V.
   double steady_state_age_s(double speed_m_per_s) const { return dc_m_ / speed_m_per_s; }
