@@ -40,8 +40,8 @@ class SlipTransient final : public FrictionEffect {
   // R is a friction coefficient: 1e-9 is far below any measured μ. At the displacement's μ
   // tolerance instead (1e-6 in a gap prediction) a fit's predictions with rate weakening took
   // half the steps, but the fits moved: the velocity-step diagnosis test's re-calibrated baseline
-  // stick-slipped on held-out data for 5 of 6 noise seeds against 2 of 6 (bench/README.md, "Law
-  // states at the displacement's tolerance"). Not taken.
+  // stick-slipped on held-out data for 5 of 6 noise seeds against 2 of 6 (bench/README.md, "A
+  // stiff squeeze film with BDF"). Not taken.
   void state_tolerances(std::span<double> atol, double /*mu_tolerance*/) const override {
     atol[0] = 1e-10;
     if (atol.size() > 1) atol[1] = 1e-9;

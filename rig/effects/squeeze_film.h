@@ -33,8 +33,9 @@ class SqueezeFilm final : public FrictionEffect {
   double squeeze_time_s(double normal_load_N) const;
   // A film squeezed out within a radian of the rig's oscillation, τ_sq ω_n < 1: Adams' steps,
   // about 1/(8 ω_n) where the rig alone sets them, would be bound by their stability to ≈ τ_sq
-  // through every stick (validation case 14818's film, τ_sq ω_n = 0.055: a prediction 1.4× faster
-  // with BDF, its items within 2.2e-5 of the reference against Adams' 1.2e-5; bench/README.md).
+  // through every stick (validation case 14818's film, τ_sq ω_n = 0.055: its prediction of the
+  // foreign control 2.8× faster with BDF and φ at the μ tolerance, the case's items 2.2e-5 rms from
+  // the reference against 9.0e-6 before; bench/README.md, "A stiff squeeze film with BDF").
   bool stiff(double normal_load_N, double natural_frequency_rad_per_s) const override {
     return squeeze_time_s(normal_load_N) * natural_frequency_rad_per_s < 1.0;
   }
