@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,16 +25,24 @@ const std::vector<std::string> kEffects{"none",          "slip_transient", "visc
 
 const std::filesystem::path kBundle = std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/gap/data/foreign-coulomb-control";
 
-void BM_PredictForeignControl(benchmark::State& state) {
+// The foreign control's predictions by the calibrated Coulomb baseline (docs/gap.md) with `add`'s
+// effects and parameters set on it, timed.
+void predict_foreign_control(benchmark::State& state, const std::function<void(tribo::rig::FrictionModel&)>& add) {
   using namespace tribo;
   const gap::ExperimentBundle bundle = gap::read_bundle(kBundle);
   const rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
   const gap::Comparison comparison(bundle, rig);
-  rig::FrictionModel model = rig::coulomb(0.362, 0.190);  // the calibrated baseline (docs/gap.md)
-  const std::string& effect = kEffects.at(static_cast<std::size_t>(state.range(0)));
-  if (effect != "none") model.add(effect);
-  state.SetLabel(effect);
+  rig::FrictionModel model = rig::coulomb(0.362, 0.190);
+  add(model);
   for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+}
+
+void BM_PredictForeignControl(benchmark::State& state) {
+  const std::string& effect = kEffects.at(static_cast<std::size_t>(state.range(0)));
+  state.SetLabel(effect);
+  predict_foreign_control(state, [&](tribo::rig::FrictionModel& model) {
+    if (effect != "none") model.add(effect);
+  });
 }
 BENCHMARK(BM_PredictForeignControl)->DenseRange(0, 6)->Unit(benchmark::kMillisecond);
 
@@ -43,25 +52,19 @@ BENCHMARK(BM_PredictForeignControl)->DenseRange(0, 6)->Unit(benchmark::kMillisec
 // tracks the stable level a slip of D_c behind; arg 1, a squeeze film (φ_max 0.361, D_b 0.228 mm,
 // h 6.9 µm), whose share decays while stuck.
 void BM_PredictForeignControlSlowCandidate(benchmark::State& state) {
-  using namespace tribo;
-  const gap::ExperimentBundle bundle = gap::read_bundle(kBundle);
-  const rig::RigParameters rig = gap::apply_bundle_rig(bundle, rig::RigParameters{});
-  const gap::Comparison comparison(bundle, rig);
-  rig::FrictionModel model = rig::coulomb(0.362, 0.190);
-  if (state.range(0) == 0) {
-    model.add("slip_transient");
-    model.set("slip_transient", "amplitude", 0.0137);
-    model.set("slip_transient", "decay_distance_m", 4.3e-6);
-    model.set("slip_transient", "rate_weakening", 0.0084);
-    state.SetLabel("slip_transient, rate weakening");
-  } else {
-    model.add("squeeze_film");
-    model.set("squeeze_film", "film_fraction", 0.361);
-    model.set("squeeze_film", "build_up_distance_m", 2.28e-4);
-    model.set("squeeze_film", "film_thickness_m", 6.9e-6);
-    state.SetLabel("squeeze_film");
-  }
-  for (auto _ : state) benchmark::DoNotOptimize(comparison.predict(rig, model, 1));
+  const bool transient = state.range(0) == 0;
+  state.SetLabel(transient ? "slip_transient, rate weakening" : "squeeze_film");
+  predict_foreign_control(state, [&](tribo::rig::FrictionModel& model) {
+    if (transient) {
+      model.set("slip_transient", "amplitude", 0.0137);
+      model.set("slip_transient", "decay_distance_m", 4.3e-6);
+      model.set("slip_transient", "rate_weakening", 0.0084);
+    } else {
+      model.set("squeeze_film", "film_fraction", 0.361);
+      model.set("squeeze_film", "build_up_distance_m", 2.28e-4);
+      model.set("squeeze_film", "film_thickness_m", 6.9e-6);
+    }
+  });
 }
 BENCHMARK(BM_PredictForeignControlSlowCandidate)->DenseRange(0, 1)->Unit(benchmark::kMillisecond);
 
