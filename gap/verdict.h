@@ -111,7 +111,11 @@ Standing standing_of(const std::vector<Item>& items, const std::vector<double>& 
 
 // The verdict's index among `cs` (standings `st`, held-out multiplicity `m`), or −1 when none
 // earns its parameters: the simplest earning candidate (the most evidence among equals), unless
-// one with more parameters has decisive evidence over it.
+// one with more parameters has decisive evidence over it; then, between that one and an earning
+// single effect of a mechanism alike to it (rig::EffectInfo::alike_at_constant_speed), the one
+// with the more evidence. Alike mechanisms are not nested — neither is the other in a limit — so
+// their parameter counts do not say which is the simpler, and the held-out evidence already
+// charges a fit for what it does not predict.
 int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>& st, const Multiplicity& m);
 
 // The earning candidates the held-out data do not tell from the verdict's (index `chosen`): neither

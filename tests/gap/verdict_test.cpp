@@ -203,6 +203,28 @@ TEST(Verdict, RuleNamesTheSimplestEarnerAndOwnsUpToWhatItCannotExplain) {
   EXPECT_FALSE(decide(cs, {st(0.0, 0.2, false), st(0.0, 0.2, false)}, m, o, 0.2, 0.0).unexplained);
 }
 
+// Occam's order is for nested candidates: the hardened locus is the locus with m = 0, so it must
+// beat the locus decisively. The squeeze film and the locus are alike mechanisms, neither a limit of
+// the other: between them the larger held-out evidence is named, by however little (its confidence
+// is shared with the other, verdict_confidence). Neither a pair nor a candidate that does not earn
+// takes the verdict so.
+TEST(Verdict, BetweenAlikeMechanismsTheEvidenceDecidesNotTheParameterCount) {
+  const Multiplicity m{1.0, 1.0, 1.0, 1.0};
+  const std::vector<Candidate> cs{candidate("rate_dependent_static", 2, {}), candidate("squeeze_film", 3, {}),
+                                  candidate("strain_rate_hardening", 3, {})};
+  // 2 nats more for the film: not decisive, but alike — the film.
+  EXPECT_EQ(verdict_index(cs, {st(2.0, 0.05, true), st(2.5, 0.04, true), st(0.0, 0.2, false)}, m), 1);
+  EXPECT_EQ(verdict_index(cs, {st(2.5, 0.04, true), st(2.0, 0.05, true), st(0.0, 0.2, false)}, m), 0);
+  // The same 2 nats for the hardened locus, which nests the locus: the locus stays.
+  EXPECT_EQ(verdict_index(cs, {st(2.0, 0.05, true), st(0.0, 0.2, false), st(2.5, 0.04, true)}, m), 0);
+  // A film that does not earn is not named.
+  EXPECT_EQ(verdict_index(cs, {st(2.0, 0.05, true), st(2.5, 0.04, false), st(0.0, 0.2, false)}, m), 0);
+  // Nor is a pair with the film in it.
+  std::vector<Candidate> with_pair = cs;
+  with_pair[1].effects = {"rate_dependent_static", "squeeze_film"};
+  EXPECT_EQ(verdict_index(with_pair, {st(2.0, 0.05, true), st(2.5, 0.04, true), st(0.0, 0.2, false)}, m), 0);
+}
+
 // "Unexplained" tells the user to look outside the catalogue, so it must not be said of a gap a
 // catalogue candidate halves (issue 35: a Kato ageing case called unexplained although the squeeze
 // film cut its held-out gap by 87 % without earning on likelihood). Gap 20 floors, no earner: the
