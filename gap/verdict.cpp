@@ -191,9 +191,9 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
     if (cs[i].extra_parameters <= cs[chosen].extra_parameters) continue;
     if (decisive(evidence(st[i].lpd, st[chosen].lpd, m), st[i].heldout_gap, st[chosen].heldout_gap)) chosen = i;
   }
-  // On the development data (352 cases: validation sets 9001-9022, development data since, and
-  // the selftest's development runs; docs/gap.md) this moves 9 verdicts, 5 to the withheld effect
-  // and 2 away from it.
+  // On the development data (352 journalled cases: validation sets 9001-9022, development data
+  // since, and the selftest's development runs; docs/gap.md) this moves 9 verdicts, 5 to the
+  // withheld effect (4 cases: one is journalled twice) and 2 away from it.
   const std::size_t simplest = chosen;
   for (std::size_t i : order)
     if (alike_singles(cs[simplest], cs[i]) && st[i].evidence.gain > st[chosen].evidence.gain) chosen = i;
