@@ -15,9 +15,11 @@
 //                    written in, generator, kind, set, seed, provenance
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "apps/commands.h"
@@ -28,6 +30,7 @@
 #include "gap/independent/generator.h"
 #include "gap/selftest.h"
 #include "numerics/format.h"
+#include "rig/friction_model.h"
 
 namespace tribo::cli {
 namespace {
@@ -43,6 +46,7 @@ struct GeneratedCase {
   std::map<std::string, gap::ExperimentBundle> proposed;  // by test name; empty for the drive-history kinds
   rig::RigParameters rig;  // as the model is told it
   double mu_s = 0.0, mu_k = 0.0;
+  std::map<std::string, std::vector<double>> model_effects;  // the rig generator's model beside its baseline
   std::string form;
   std::map<std::string, double> truth_parameters;
 };
@@ -61,10 +65,14 @@ GeneratedCase generate(const GenerateArgs& a) {
       for (std::size_t i = 1; i < a.speeds_m_per_s.size(); ++i)  // between them, as the sets' test speeds
         options.test_speeds_m_per_s.push_back(std::sqrt(a.speeds_m_per_s[i - 1] * a.speeds_m_per_s[i]));
     }
-    gap::CaseBundles c = gap::make_case_bundles({a.effect, {}, a.seed, a.generator}, options);
-    g.proposed = gap::make_proposed_test_bundles({a.effect, {}, a.seed, a.generator}, options);
+    // The selftest's case with this seed: the rig generator's model as its selftest has it.
+    const gap::SelftestCase sc{a.effect, a.generator == gap::kRigGenerator ? gap::rig_model_effects(a.effect) : std::vector<std::string>{},
+                               a.seed, a.generator};
+    gap::CaseBundles c = gap::make_case_bundles(sc, options);
+    g.proposed = gap::make_proposed_test_bundles(sc, options);
     g.bundle = std::move(c.bundle), g.test = std::move(c.test);
     g.mu_s = c.model.baseline.mu_s, g.mu_k = c.model.baseline.mu_k;
+    g.model_effects = c.model.effects;
     g.form = c.form;
     g.truth_parameters = c.truth_parameters;
   } else {
@@ -96,6 +104,15 @@ std::string model_toml(const GeneratedCase& g, const GenerateArgs& a) {
      << "[friction]\nlaw = \"coulomb\"\n"
      << "mu_s = " << n(g.mu_s) << "\n"
      << "mu_k = " << n(g.mu_k) << "\n";
+  if (g.model_effects.empty()) return os.str();
+  std::vector<std::string> names;
+  for (const auto& [name, values] : g.model_effects) names.push_back("\"" + name + "\"");
+  os << "effects = [" << numerics::join(names, ", ") << "]\n";
+  for (const auto& [name, values] : g.model_effects) {
+    os << "\n[friction." << name << "]\n";
+    const auto& parameters = rig::effect_info(name).parameters;
+    for (std::size_t i = 0; i < values.size(); ++i) os << parameters[i].name << " = " << n(values[i]) << "\n";
+  }
   return os.str();
 }
 

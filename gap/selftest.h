@@ -182,6 +182,9 @@ std::vector<DetectionBin> detection_table(const std::vector<SelftestRow>& rows);
 // second-effect case. Independent generator: quick — one effect and one control; full — every
 // effect it has a form for × 2 seeds and 3 controls.
 std::vector<SelftestCase> selftest_cases(bool quick, std::uint64_t seed, SelftestSet set = SelftestSet::development);
+// The effects the rig generator's model has beside a withheld `effect`: the locus under strain-rate
+// hardening, which reshapes it (the selftest's second-effect case); none for any other.
+std::vector<std::string> rig_model_effects(const std::string& effect);
 
 // `finished` holds rows of an earlier, interrupted run: a case found there (same true effect,
 // model effects and seed) is taken as it is rather than diagnosed again. `on_row` is called for

@@ -120,5 +120,16 @@ TEST(RateHardening, TheLocusIsJudgedAtTheProjectionOfTheHardenedLocusThatNestsIt
   EXPECT_LT(d.verdict.heldout_gap_after, 0.1 * d.verdict.heldout_gap_before);
 }
 
+// A validation draw's strength f reaches 1.5, and f × U(0.12, 0.25) then past the catalogue's upper
+// m = 0.35: validation set 9352's case 14359 drew m = 0.355, and the selftest stopped there
+// (make_friction_law refuses it). The draw is held at the bound; `tribo gap generate` makes the
+// same case, its model with the locus as the selftest's.
+TEST(RateHardening, AStrongValidationDrawStaysWithinTheCataloguesRangeOfM) {
+  const SyntheticCase c = make_synthetic_case("strain_rate_hardening", rig_model_effects("strain_rate_hardening"), 14359,
+                                              synthetic_options(SelftestSet::validation));
+  EXPECT_DOUBLE_EQ(c.truth.get("strain_rate_hardening", "m"), 0.35);
+  EXPECT_TRUE(c.model.has("rate_dependent_static"));
+}
+
 }  // namespace
 }  // namespace tribo::gap
