@@ -39,9 +39,9 @@ void switch_on(rig::FrictionModel& m, const std::string& effect, std::mt19937_64
     m.set(effect, "location_per_s", contact::location_through_point_per_s(shape, phi_mid, mu_mid));
   } else if (effect == "strain_rate_hardening") {
     // Within the catalogue's range of m: a strong validation draw (f above 1.4) would reach past it.
-    const rig::ParameterSpec& index_m = rig::effect_info(effect).parameters.front();
-    assert(index_m.name == "m");
-    m.set(effect, "m", std::min(index_m.upper, f * uniform(rng, 0.12, 0.25)));
+    const rig::ParameterSpec& m_spec = rig::effect_info(effect).parameters.front();
+    assert(m_spec.name == "m");
+    m.set(effect, "m", std::min(m_spec.upper, f * uniform(rng, 0.12, 0.25)));
     m.set(effect, "reference_load_rate_per_s", rig.stiffness_N_per_m * o.speeds_m_per_s.front() / rig.normal_load_N);
   } else if (effect == "slip_transient") {
     m.set(effect, "amplitude", std::min(1.0, f * uniform(rng, 0.6, 1.0)));

@@ -167,12 +167,10 @@ Standing standing_of(const std::vector<Item>& items, const std::vector<double>& 
 
 namespace {
 
-// Single catalogue effects listed as alike (a name outside the catalogue is alike to nothing).
+// Single effects alike_at_constant_speed (a name outside the catalogue is alike to nothing).
 bool alike_singles(const Candidate& a, const Candidate& b) {
-  if (a.effects.size() != 1 || b.effects.size() != 1) return false;
-  const auto& catalogue = rig::effect_catalogue();
-  const auto info = std::find_if(catalogue.begin(), catalogue.end(), [&](const rig::EffectInfo& e) { return e.name == a.effects.front(); });
-  return info != catalogue.end() && std::count(info->alike_at_constant_speed.begin(), info->alike_at_constant_speed.end(), b.effects.front()) > 0;
+  return a.effects.size() == 1 && b.effects.size() == 1 && rig::find_effect_info(a.effects.front()) != nullptr &&
+         alike_at_constant_speed(a.effects, b.effects);
 }
 
 }  // namespace

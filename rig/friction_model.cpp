@@ -142,12 +142,16 @@ const std::vector<EffectInfo>& effect_catalogue() {
   return catalogue;
 }
 
+const EffectInfo* find_effect_info(const std::string& name) {
+  for (const auto& e : effect_catalogue())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
 const EffectInfo& effect_info(const std::string& name) {
+  if (const EffectInfo* e = find_effect_info(name)) return *e;
   std::string known;
-  for (const auto& e : effect_catalogue()) {
-    if (e.name == name) return e;
-    known += (known.empty() ? "" : ", ") + e.name;
-  }
+  for (const auto& e : effect_catalogue()) known += (known.empty() ? "" : ", ") + e.name;
   throw std::invalid_argument("unknown friction effect '" + name + "' (known: " + known + ")");
 }
 

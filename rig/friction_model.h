@@ -46,6 +46,8 @@ struct EffectInfo {
 const std::vector<EffectInfo>& effect_catalogue();
 // Throws std::invalid_argument listing the known names when `name` is not one.
 const EffectInfo& effect_info(const std::string& name);
+// The same, or nullptr when `name` is not in the catalogue.
+const EffectInfo* find_effect_info(const std::string& name);
 
 class HomogenisedBase;  // rig/homogenised_law.h
 
