@@ -159,28 +159,32 @@ RowColumnFft::RowColumnFft(Eigen::Index nx, Eigen::Index ny, bool measure) : nx_
   }
   init_threads_once();
   // Planning arrays (FFTW_MEASURE overwrites them); the plans then run on the caller's arrays.
+  const std::size_t block = static_cast<std::size_t>(kColumns * ny);
   double* r = static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(nx)));
   fftw_complex* c = static_cast<fftw_complex*>(
-      fftw_malloc(sizeof(fftw_complex) * static_cast<std::size_t>(std::max(nx / 2 + 1, kColumns * ny))));
-  if (r == nullptr || c == nullptr) {
+      fftw_malloc(sizeof(fftw_complex) * std::max(static_cast<std::size_t>(nx / 2 + 1), block)));
+  fftw_complex* d = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * block));
+  if (r == nullptr || c == nullptr || d == nullptr) {
     fftw_free(r);
     fftw_free(c);
+    fftw_free(d);
     throw std::bad_alloc();
   }
   const unsigned flags = measure ? FFTW_MEASURE : FFTW_ESTIMATE;
-  const int n_y = static_cast<int>(ny), stride = static_cast<int>(kColumns);
+  const int n_y = static_cast<int>(ny), columns = static_cast<int>(kColumns);
   {
     std::lock_guard<std::mutex> lock(planner_mutex());
     fftw_plan_with_nthreads(1);
     row_forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(nx), r, c, flags);
     row_inverse_ = fftw_plan_dft_c2r_1d(static_cast<int>(nx), c, r, flags);
-    block_forward_ = fftw_plan_many_dft(1, &n_y, stride, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_FORWARD, flags);
-    block_inverse_ = fftw_plan_many_dft(1, &n_y, stride, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_BACKWARD, flags);
-    column_forward_ = fftw_plan_many_dft(1, &n_y, 1, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_FORWARD, flags);
-    column_inverse_ = fftw_plan_many_dft(1, &n_y, 1, c, nullptr, stride, 1, c, nullptr, stride, 1, FFTW_BACKWARD, flags);
+    block_forward_ = fftw_plan_many_dft(1, &n_y, columns, c, nullptr, 1, n_y, d, nullptr, 1, n_y, FFTW_FORWARD, flags);
+    block_inverse_ = fftw_plan_many_dft(1, &n_y, columns, d, nullptr, 1, n_y, c, nullptr, 1, n_y, FFTW_BACKWARD, flags);
+    column_forward_ = fftw_plan_many_dft(1, &n_y, 1, c, nullptr, 1, n_y, d, nullptr, 1, n_y, FFTW_FORWARD, flags);
+    column_inverse_ = fftw_plan_many_dft(1, &n_y, 1, d, nullptr, 1, n_y, c, nullptr, 1, n_y, FFTW_BACKWARD, flags);
   }
   fftw_free(r);
   fftw_free(c);
+  fftw_free(d);
   for (void* p : {row_forward_, row_inverse_, block_forward_, block_inverse_, column_forward_, column_inverse_}) {
     if (p == nullptr) {
       release();
@@ -218,23 +222,26 @@ void RowColumnFft::row_inverse(std::complex<double>* in, double* out) const {
 }
 
 namespace {
-void run_columns(void* block_plan, void* column_plan, std::complex<double>* block, Eigen::Index count) {
-  assert(count >= 0 && count <= RowColumnFft::kColumns);
-  auto* c = reinterpret_cast<fftw_complex*>(block);
+void run_columns(void* block_plan, void* column_plan, const std::complex<double>* in, std::complex<double>* out,
+                 Eigen::Index ny, Eigen::Index count) {
+  assert(count >= 0 && count <= RowColumnFft::kColumns && in != out);
+  // fftw's signature is non-const; an out-of-place complex transform preserves its input.
+  auto* i = reinterpret_cast<fftw_complex*>(const_cast<std::complex<double>*>(in));
+  auto* o = reinterpret_cast<fftw_complex*>(out);
   if (count == RowColumnFft::kColumns) {
-    fftw_execute_dft(static_cast<fftw_plan>(block_plan), c, c);
+    fftw_execute_dft(static_cast<fftw_plan>(block_plan), i, o);
     return;
   }
-  for (Eigen::Index k = 0; k < count; ++k) fftw_execute_dft(static_cast<fftw_plan>(column_plan), c + k, c + k);
+  for (Eigen::Index k = 0; k < count; ++k) fftw_execute_dft(static_cast<fftw_plan>(column_plan), i + k * ny, o + k * ny);
 }
 }  // namespace
 
-void RowColumnFft::columns_forward(std::complex<double>* block, Eigen::Index count) const {
-  run_columns(block_forward_, column_forward_, block, count);
+void RowColumnFft::columns_forward(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const {
+  run_columns(block_forward_, column_forward_, in, out, ny_, count);
 }
 
-void RowColumnFft::columns_inverse(std::complex<double>* block, Eigen::Index count) const {
-  run_columns(block_inverse_, column_inverse_, block, count);
+void RowColumnFft::columns_inverse(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const {
+  run_columns(block_inverse_, column_inverse_, in, out, ny_, count);
 }
 
 }  // namespace tribo::contact

@@ -59,12 +59,14 @@ class RealFft2d {
 // The 1-D transforms of the same nx × ny real 2-D FFT taken line by line, for a caller that fuses
 // its own work into the stages (ElasticHalfSpace::displacement_by_rows): r2c along x of one
 // x-line (nx doubles → nx/2 + 1 complex values), and the complex transforms along y of a block
-// of kColumns columns of that half spectrum, gathered interleaved (value j of column c at
-// block[j·kColumns + c]) so that FFTW's vector codelets take several columns at once. The
-// composition is RealFft2d's transform (same unnormalised convention). Single-threaded plans,
-// executed through FFTW's new-array interface, which is safe from several threads at once (each
-// thread owns its buffers); the arrays must be SIMD-aligned (aligned()). Planned as RealFft2d
-// (estimate, or measure; the shipped wisdom holds measured plans for square grids 64² … 4096²).
+// of kColumns columns of that half spectrum, each column contiguous (value j of column c at
+// block[c·ny + j]), from one block into another: so FFTW transforms the columns where they lie.
+// (Interleaved columns, or a transform in place, made FFTW copy every column into a buffer of
+// its own and back: a quarter of the column stage, bench/README.md.) The composition is
+// RealFft2d's transform (same unnormalised convention). Single-threaded plans, executed through
+// FFTW's new-array interface, which is safe from several threads at once (each thread owns its
+// buffers); the arrays must be SIMD-aligned (aligned()). Planned as RealFft2d (estimate, or
+// measure; the shipped wisdom holds measured plans for square grids 64² … 4096²).
 class RowColumnFft {
  public:
   static constexpr Eigen::Index kColumns = 8;
@@ -82,9 +84,10 @@ class RowColumnFft {
 
   void row_forward(const double* in, std::complex<double>* out) const;  // in: nx values, preserved
   void row_inverse(std::complex<double>* in, double* out) const;        // in: nx/2 + 1, destroyed
-  // The first `count` ≤ kColumns columns of an interleaved block of ny · kColumns values, in place.
-  void columns_forward(std::complex<double>* block, Eigen::Index count) const;
-  void columns_inverse(std::complex<double>* block, Eigen::Index count) const;
+  // The first `count` ≤ kColumns columns of a block of ny · kColumns values (column c at c·ny),
+  // from `in` into `out` (distinct blocks; `in` is left unchanged).
+  void columns_forward(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const;
+  void columns_inverse(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const;
 
  private:
   void release() noexcept;
@@ -92,9 +95,9 @@ class RowColumnFft {
   Eigen::Index nx_, ny_;
   void* row_forward_ = nullptr;  // fftw_plan
   void* row_inverse_ = nullptr;
-  void* block_forward_ = nullptr;  // kColumns interleaved columns
+  void* block_forward_ = nullptr;  // kColumns contiguous columns, out of place
   void* block_inverse_ = nullptr;
-  void* column_forward_ = nullptr;  // one column of an interleaved block
+  void* column_forward_ = nullptr;  // one of them
   void* column_inverse_ = nullptr;
 };
 

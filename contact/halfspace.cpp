@@ -44,61 +44,75 @@ Eigen::Index padded_length(Eigen::Index n) {
   }
 }
 
-// The column stage of displacement_by_rows moves one block of kb = RowColumnFft::kColumns
-// columns (nb ≤ kb of them real) between the half spectrum, whose lines are `stride` complex
-// values apart, and the interleaved block (kb apart): nb values of each of ny lines, from `from`
-// (lines from_stride apart) to `to` (to_stride apart). Fixed-length moves the compiler keeps
-// inline and vectorises (a library memmove per line took 9 % of a 1024² solve), with the lines
-// ahead prefetched (the spectrum's are more than a page apart, beyond the hardware prefetcher).
+// The column stage of displacement_by_rows moves one block of kb = RowColumnFft::kColumns columns
+// (nb ≤ kb of them real) between the half spectrum, whose lines are `stride` complex values apart,
+// and the block, whose columns are contiguous (value j of column c at c·ny + j). Each line gives
+// nb neighbouring values, one to each column. Fixed-length moves the compiler keeps inline (a
+// library memmove per line took 9 % of a 1024² solve), with the lines ahead prefetched (the
+// spectrum's are more than a page apart, beyond the hardware prefetcher).
 constexpr Eigen::Index kPrefetchLines = 16;
 
+inline void prefetch_line(const std::complex<double>* line, bool write) {
+  const double* p = reinterpret_cast<const double*>(line);
+  if (write) {
+    __builtin_prefetch(p, 1);
+    __builtin_prefetch(p + 8, 1);
+  } else {
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + 8);
+  }
+}
+
 TRIBO_VECTOR_CLONES
-void move_block(const std::complex<double>* from, Eigen::Index from_stride, std::complex<double>* to,
-                Eigen::Index to_stride, Eigen::Index ny, Eigen::Index nb) {
+void gather_block(const std::complex<double>* spectrum, Eigen::Index stride, std::complex<double>* block, Eigen::Index ny,
+                  Eigen::Index nb) {
   constexpr Eigen::Index kb = RowColumnFft::kColumns;
-  const double* __restrict a = reinterpret_cast<const double*>(from);
-  double* __restrict b = reinterpret_cast<double*>(to);
   for (Eigen::Index j = 0; j < ny; ++j) {
-    const double* src = a + 2 * j * from_stride;
-    double* dst = b + 2 * j * to_stride;
-    if (j + kPrefetchLines < ny) {
-      __builtin_prefetch(src + 2 * kPrefetchLines * from_stride);
-      __builtin_prefetch(src + 2 * kPrefetchLines * from_stride + 8);
-      __builtin_prefetch(dst + 2 * kPrefetchLines * to_stride, 1);
-      __builtin_prefetch(dst + 2 * kPrefetchLines * to_stride + 8, 1);
-    }
+    const std::complex<double>* line = spectrum + j * stride;
+    if (j + kPrefetchLines < ny) prefetch_line(line + kPrefetchLines * stride, false);
     if (nb == kb) {
-      for (Eigen::Index i = 0; i < 2 * kb; ++i) dst[i] = src[i];
+      for (Eigen::Index c = 0; c < kb; ++c) block[c * ny + j] = line[c];
     } else {
-      for (Eigen::Index i = 0; i < 2 * nb; ++i) dst[i] = src[i];
+      for (Eigen::Index c = 0; c < nb; ++c) block[c * ny + j] = line[c];
     }
   }
 }
 
-// The block's transform times the kernel (`kernel`: the block's kb values for each line j in
-// turn, 0 past its nb columns), returning Σ weight K |x|² (weight 1 for the k = 0 and Nyquist
-// columns, which have no mirror image in the half spectrum, 2 for the others).
 TRIBO_VECTOR_CLONES
-double multiply_block(std::complex<double>* block, const double* kernel, Eigen::Index ny, const double* weight) {
+void scatter_block(const std::complex<double>* block, std::complex<double>* spectrum, Eigen::Index stride, Eigen::Index ny,
+                   Eigen::Index nb) {
   constexpr Eigen::Index kb = RowColumnFft::kColumns;
-  double* __restrict x = reinterpret_cast<double*>(block);
-  const double* __restrict k = kernel;
-  // One partial sum per position in the line (a single running sum would chain 2 kb dependent adds
-  // per line), added up at the end.
-  double part[kb] = {};
   for (Eigen::Index j = 0; j < ny; ++j) {
-    const double* kj = k + j * kb;
-    double* xj = x + 2 * j * kb;
-    for (Eigen::Index c = 0; c < kb; ++c) {
-      const double re = xj[2 * c], im = xj[2 * c + 1], kc = kj[c];
-      part[c] += kc * (re * re + im * im);
-      xj[2 * c] = re * kc;
-      xj[2 * c + 1] = im * kc;
+    std::complex<double>* line = spectrum + j * stride;
+    if (j + kPrefetchLines < ny) prefetch_line(line + kPrefetchLines * stride, true);
+    if (nb == kb) {
+      for (Eigen::Index c = 0; c < kb; ++c) line[c] = block[c * ny + j];
+    } else {
+      for (Eigen::Index c = 0; c < nb; ++c) line[c] = block[c * ny + j];
     }
   }
-  for (Eigen::Index c = 0; c < kb; ++c) part[c] *= weight[c];
+}
+
+// The block's first nb transformed columns times the kernel (`kernel`: the block's columns in
+// turn, ny values each, as the block), returning Σ weight K |x|² (weight 1 for the k = 0 and
+// Nyquist columns, which have no mirror image in the half spectrum, 2 for the others).
+TRIBO_VECTOR_CLONES
+double multiply_block(std::complex<double>* block, const double* kernel, Eigen::Index ny, Eigen::Index nb,
+                      const double* weight) {
   double e = 0.0;
-  for (const double p : part) e += p;
+  for (Eigen::Index c = 0; c < nb; ++c) {
+    double* __restrict x = reinterpret_cast<double*>(block + c * ny);
+    const double* __restrict k = kernel + c * ny;
+    double part = 0.0;
+#pragma omp simd reduction(+ : part)
+    for (Eigen::Index j = 0; j < ny; ++j) {
+      const double re = x[2 * j], im = x[2 * j + 1], kj = k[j];
+      part += kj * (re * re + im * im);
+      x[2 * j] = re * kj;
+      x[2 * j + 1] = im * kj;
+    }
+    e += weight[c] * part;
+  }
   return e;
 }
 
@@ -154,18 +168,18 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
     }
     self_compliance_ = sum;
     lines_ = std::make_unique<RowColumnFft>(mx, my);
-    // The kernel in the order the column stage reads it (contiguous per block; 0 past the last
-    // column): read a line stride apart, as the half spectrum is laid out, every value was a
-    // cache miss (the multiply took 10 % of a 1024² solve, 2.5 % now).
+    // The kernel in the order the column stage reads it (a block's columns in turn, ny values
+    // each; 0 past the last column): read a line stride apart, as the half spectrum is laid out,
+    // every value was a cache miss (the multiply took 10 % of a 1024² solve, 2.5 % now).
     constexpr Eigen::Index kb = RowColumnFft::kColumns;
     const Eigen::Index blocks = (mxh + kb - 1) / kb;
     block_kernel_.reserve(static_cast<std::size_t>(blocks * my * kb));
     numerics::advise_huge_pages(block_kernel_.data(), sizeof(double) * block_kernel_.capacity());
     block_kernel_.assign(static_cast<std::size_t>(blocks * my * kb), 0.0);
     for (Eigen::Index b = 0; b < blocks; ++b) {
-      for (Eigen::Index j = 0; j < my; ++j) {
-        for (Eigen::Index c = 0; c < kb && b * kb + c < mxh; ++c) {
-          block_kernel_[static_cast<std::size_t>((b * my + j) * kb + c)] = kernel_[j * mxh + b * kb + c];
+      for (Eigen::Index c = 0; c < kb && b * kb + c < mxh; ++c) {
+        for (Eigen::Index j = 0; j < my; ++j) {
+          block_kernel_[static_cast<std::size_t>((b * kb + c) * my + j)] = kernel_[j * mxh + b * kb + c];
         }
       }
     }
@@ -252,12 +266,13 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
   const RowColumnFft& f = *lines_;
   std::complex<double>* spectrum = fft_.spectrum();  // the [ny][nx/2 + 1] half spectrum (aligned rows)
   const int threads = row_threads();
-  // Per thread: a block of columns, and a line of nx doubles for lines of s and u that do not have
-  // the plans' alignment (odd nx: every other line) and for the lines of u when u is not kept.
-  const Eigen::Index scratch = kb * ny + nx / 2 + 1;
+  // Per thread: two blocks of columns (the column transforms go from one to the other), and a
+  // line of nx doubles for lines of s and u that do not have the plans' alignment (odd nx: every
+  // other line) and for the lines of u when u is not kept.
+  const Eigen::Index scratch = 2 * kb * ny + nx / 2 + 1;
   scratch_.resize(static_cast<std::size_t>(threads * scratch));
   const bool even_x = nx % 2 == 0;
-  auto line_buffer = [&](int t) { return reinterpret_cast<double*>(scratch_.data() + t * scratch + kb * ny); };
+  auto line_buffer = [&](int t) { return reinterpret_cast<double*>(scratch_.data() + t * scratch + 2 * kb * ny); };
 
   // 1. Lines of s, each transformed along x as soon as it is made.
 #pragma omp parallel num_threads(threads)
@@ -270,25 +285,26 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
       f.row_forward(line, spectrum + j * mxh);
     }
   }
-  // 2. Blocks of kb columns: gathered (kb neighbouring values of a line are contiguous), along y,
-  // times the kernel (with the energy, the k = 0 and Nyquist columns counted once and the others
-  // twice by Hermitian symmetry), back, and scattered.
+  // 2. Blocks of kb columns: gathered, along y into the second block, times the kernel (with the
+  // energy, the k = 0 and Nyquist columns counted once and the others twice by Hermitian
+  // symmetry), back into the first, and scattered.
   const Eigen::Index blocks = (mxh + kb - 1) / kb;
   std::vector<double> part(static_cast<std::size_t>(threads), 0.0);
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num(), m = omp_get_num_threads();
     std::complex<double>* block = scratch_.data() + t * scratch;
+    std::complex<double>* transformed = block + kb * ny;
     double e = 0.0;
     for (Eigen::Index b = blocks * t / m; b < blocks * (t + 1) / m; ++b) {
       const Eigen::Index k0 = b * kb, nb = std::min(kb, mxh - k0);
-      move_block(spectrum + k0, mxh, block, kb, ny, nb);
-      f.columns_forward(block, nb);
+      gather_block(spectrum + k0, mxh, block, ny, nb);
+      f.columns_forward(block, transformed, nb);
       std::array<double, kb> weight{};
       for (Eigen::Index c = 0; c < nb; ++c) weight[c] = k0 + c == 0 || (even_x && k0 + c == mxh - 1) ? 1.0 : 2.0;
-      e += multiply_block(block, block_kernel_.data() + b * ny * kb, ny, weight.data());
-      f.columns_inverse(block, nb);
-      move_block(block, kb, spectrum + k0, mxh, ny, nb);
+      e += multiply_block(transformed, block_kernel_.data() + b * ny * kb, ny, nb, weight.data());
+      f.columns_inverse(transformed, block, nb);
+      scatter_block(block, spectrum + k0, mxh, ny, nb);
     }
     part[static_cast<std::size_t>(t)] = e;
   }

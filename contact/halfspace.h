@@ -83,7 +83,7 @@ class ElasticHalfSpace {
   bool periodic_;
   RealFft2d fft_;                // nx × ny (periodic) or ≥ (2nx − 2) × (2ny − 2) (padded)
   std::unique_ptr<RowColumnFft> lines_;           // periodic: the transforms of displacement_by_rows
-  std::vector<double> block_kernel_;              // its kernel by column block: [block][j][column]
+  std::vector<double> block_kernel_;              // its kernel by column block: [block][column][j]
   std::vector<std::complex<double>> scratch_;     // its per-thread column blocks and lines
   Eigen::ArrayXd kernel_;        // real Fourier multiplier on the half spectrum, 1/(FFT size) folded in
   double self_compliance_ = 0.0;
