@@ -84,10 +84,11 @@ TEST_P(LineProduct, EqualsTheTwoDimensionalProductAndItsEnergy) {
 }
 
 // 256² is a grid the shipped wisdom holds line plans for, 255 × 192 one it does not (odd nx);
-// 64 × 48 is below the size where the lines are split between threads.
+// 64 × 48 is below the size where the lines are split between threads. The last column block
+// holds one column at 256² and 64 × 48, six at 90 × 64 (46 columns in blocks of 8).
 INSTANTIATE_TEST_SUITE_P(EvenOddThreads, LineProduct,
                          ::testing::Values(LineCase{256, 256, 1}, LineCase{256, 256, 2}, LineCase{255, 192, 1},
-                                           LineCase{255, 192, 2}, LineCase{64, 48, 2}));
+                                           LineCase{255, 192, 2}, LineCase{64, 48, 2}, LineCase{90, 64, 1}));
 
 // When decide() declines, no line of u is transformed back or used.
 TEST(LineProductDeclined, LeavesTheDisplacementUntouched) {
