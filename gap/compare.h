@@ -93,7 +93,7 @@ struct RunPlan {
   double stick_spacing_s = 0.0, slip_spacing_s = 0.0;
   double slip_step_s = 0.0;                               // Δ of slip_drop (from the measured run)
   // The record has the slider's displacement: whether a constant-speed run oscillates is read off
-  // it (rig::classify_regime), for the record and for its simulation alike (compare.cpp
+  // it (rig::classify_regime), for the record and for its simulation alike (trace_features.h
   // analyse_constant_speed); else off μ's span.
   bool regime_from_x = false;
   // A constant-speed run is simulated this much past the measured record, its window starting

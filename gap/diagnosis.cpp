@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "gap/discriminate.h"
+#include "gap/laplace.h"
 #include "gap/pipeline.h"
 #include "gap/report.h"
 #include "numerics/format.h"

@@ -67,7 +67,7 @@ bool has_item(const Comparison& c, const std::string& observable) {
   return false;
 }
 
-// Whether a run oscillates is read off its displacement where the record has one (compare.cpp
+// Whether a run oscillates is read off its displacement where the record has one (gap/trace_features.h
 // analyse_constant_speed), so the decision does not hang on μ's span against a fixed 5 %, which the
 // record's noise crosses and its noise-free simulation does not (validation seed 14011's test block).
 // A steady slide, x at μk W/k, with friction noise of σ = 0.006 in μ at 1 kHz: smoothed over five
