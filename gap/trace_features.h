@@ -23,7 +23,9 @@ inline constexpr int kStepBins = 24;
 // blocks (steady_mu and its noise), which needs a few samples each.
 inline constexpr std::size_t kMinSegmentSamples = 20;
 
-// Features by name (mu_peak, slip_drop_2, period_s, steady_mu_1, mu_after_step_1_7, ...).
+// Features by name: a constant-speed run's mean_mu, mu_peak, mu_trough, period_s, rise_time_s,
+// slip_drop_j, peak_to_peak_m; a drive history's steady_mu_k, steady_scatter_k, peak_after_hold_k and
+// after_step_k_j (segment k, bin j).
 using Features = std::map<std::string, double>;
 
 struct Signal {
