@@ -3,14 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "gap/trace_features.h"
 
 namespace tribo::gap::trace {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // A sawtooth of stick-slip: μ rises linearly from 0.2 to 0.3 over 0.8 s (stick) and falls back
 // over 0.2 s (slip), period 1 s, sampled at 1 kHz for 20 s.
@@ -69,7 +68,7 @@ TEST(TraceFeatures, HighPassNoiseIsTheWhiteNoiseUnderASmoothSignal) {
   std::normal_distribution<double> noise(0.0, 2e-3);
   std::vector<double> smooth, noisy;
   for (int i = 0; i < 20000; ++i) {
-    const double y = 0.3 + 0.05 * std::sin(2.0 * kPi * 1e-3 * i);
+    const double y = 0.3 + 0.05 * std::sin(2.0 * std::numbers::pi * 1e-3 * i);
     smooth.push_back(y);
     noisy.push_back(y + noise(rng));
   }
