@@ -166,10 +166,12 @@ struct TrialInput {
 // t = g − β s − t̄ on the free cells and g on the others (Polonsky & Keer's recovery: overlapping
 // open cells gain pressure, opening plastic cells lose it), written over s; and the sums.
 // Selects, not jumps: the sets are scattered over the grid, so a branch on them would be
-// mispredicted about as often as a cell is in contact.
-TRIBO_VECTOR_CLONES
-TrialStats trial_cells(const double* __restrict p, const double* __restrict v, double* __restrict s, Eigen::Index lo,
-                       Eigen::Index hi, TrialInput in) {
+// mispredicted about as often as a cell is in contact. Without a cap (kCapped false: an elastic
+// solve) no cell is plastic, and the loop leaves the cap's tests out: they were about half of
+// its work (bench/README.md).
+template <bool kCapped>
+TRIBO_VECTOR_CLONES TrialStats trial_cells(const double* __restrict p, const double* __restrict v, double* __restrict s,
+                                           Eigen::Index lo, Eigen::Index hi, TrialInput in) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double cap = in.cap, d = in.delta, b = in.beta, tr = in.tau, tmean = in.tmean;
   double res2 = 0.0, slope0 = 0.0, slope_free = 0.0, load = 0.0, free = 0.0;
@@ -179,18 +181,20 @@ TrialStats trial_cells(const double* __restrict p, const double* __restrict v, d
   for (Eigen::Index i = lo; i < hi; ++i) {
     const double q = p[i];
     const double g = v[i] - d;
-    const bool q_open = q <= 0.0, q_plastic = q >= cap;
-    const double r = std::min(std::max(g, q_plastic ? 0.0 : -inf), q_open ? 0.0 : inf);
+    const bool q_open = q <= 0.0, q_plastic = kCapped && q >= cap;
+    const double r = std::min(kCapped ? std::max(g, q_plastic ? 0.0 : -inf) : g, q_open ? 0.0 : inf);
     const double t = (q_open | q_plastic) ? g : g - b * s[i] - tmean;
     const double y = q - tr * t;
     s[i] = y;
     res2 += r * r;
-    const bool open = y <= 0.0, plastic = y >= cap, inside = !(open | plastic);
-    const double py = std::min(std::max(y, 0.0), cap);
+    const bool open = y <= 0.0, plastic = kCapped && y >= cap, inside = !(open | plastic);
+    const double py = kCapped ? std::min(std::max(y, 0.0), cap) : std::max(y, 0.0);
     open_max = std::max(open_max, open ? y : -inf);
-    plastic_min = std::min(plastic_min, plastic ? y : inf);
+    if constexpr (kCapped) {
+      plastic_min = std::min(plastic_min, plastic ? y : inf);
+      free_max = std::max(free_max, inside ? y : -inf);
+    }
     free_min = std::min(free_min, inside ? y : inf);
-    free_max = std::max(free_max, inside ? y : -inf);
     free += inside ? 1.0 : 0.0;
     slope_free += inside ? g : 0.0;
     load += py;
@@ -216,27 +220,35 @@ struct StepStats {
 // Pass C on cells [lo, hi): the step s = clamp(y − c, 0, cap) − p over the trial y in s, with
 // α_max = min of p / −s (s < 0) and (cap − p) / s (s > 0), one division per cell (the distance
 // to the bound the cell moves toward over |s|: the divider took half of this pass with two); and,
-// where v is given, the slope Σ (v − δ) s.
-TRIBO_VECTOR_CLONES
-StepStats step_cells(const double* __restrict p, double* __restrict s, const double* __restrict v, Eigen::Index lo,
-                     Eigen::Index hi, double cap, double c, double delta) {
+// where v is given, the slope Σ (v − δ) s. Without a cap only the cells that fall count.
+template <bool kCapped>
+[[gnu::always_inline]] inline double step_of(double y, double q, double cap, double c) {
+  return kCapped ? std::min(std::max(y - c, 0.0), cap) - q : std::max(y - c, 0.0) - q;
+}
+template <bool kCapped>
+[[gnu::always_inline]] inline double alpha_limit(double si, double q, double cap) {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  double alpha_max = inf, slope = 0.0;
+  if constexpr (kCapped) return si != 0.0 ? (si < 0.0 ? q : cap - q) / std::abs(si) : inf;
+  return si < 0.0 ? q / -si : inf;
+}
+
+template <bool kCapped>
+TRIBO_VECTOR_CLONES StepStats step_cells(const double* __restrict p, double* __restrict s, const double* __restrict v,
+                                         Eigen::Index lo, Eigen::Index hi, double cap, double c, double delta) {
+  double alpha_max = std::numeric_limits<double>::infinity(), slope = 0.0;
   if (v == nullptr) {
 #pragma omp simd reduction(min : alpha_max)
     for (Eigen::Index i = lo; i < hi; ++i) {
-      const double q = p[i];
-      const double si = std::min(std::max(s[i] - c, 0.0), cap) - q;
+      const double si = step_of<kCapped>(s[i], p[i], cap, c);
       s[i] = si;
-      alpha_max = std::min(alpha_max, si != 0.0 ? (si < 0.0 ? q : cap - q) / std::abs(si) : inf);
+      alpha_max = std::min(alpha_max, alpha_limit<kCapped>(si, p[i], cap));
     }
   } else {
 #pragma omp simd reduction(min : alpha_max) reduction(+ : slope)
     for (Eigen::Index i = lo; i < hi; ++i) {
-      const double q = p[i];
-      const double si = std::min(std::max(s[i] - c, 0.0), cap) - q;
+      const double si = step_of<kCapped>(s[i], p[i], cap, c);
       s[i] = si;
-      alpha_max = std::min(alpha_max, si != 0.0 ? (si < 0.0 ? q : cap - q) / std::abs(si) : inf);
+      alpha_max = std::min(alpha_max, alpha_limit<kCapped>(si, p[i], cap));
       slope += (v[i] - delta) * si;
     }
   }
@@ -253,8 +265,6 @@ struct StateStats {
   double w_sum = 0.0, vw = 0.0;  // Σ_F w, Σ_F (v − ref) w
   double s_sum = 0.0, vs = 0.0;  // Σ_F s, Σ_F (v − ref) s
   double sw = 0.0;               // Σ_F s w
-  double plastic_v_max = -std::numeric_limits<double>::infinity();
-  double open_v_min = std::numeric_limits<double>::infinity();
   double usum = 0.0, usq = 0.0;  // Σ u, Σ u² (the elastic scale)
 
   void merge(const StateStats& o) {
@@ -266,8 +276,6 @@ struct StateStats {
     s_sum += o.s_sum;
     vs += o.vs;
     sw += o.sw;
-    plastic_v_max = std::max(plastic_v_max, o.plastic_v_max);
-    open_v_min = std::min(open_v_min, o.open_v_min);
     usum += o.usum;
     usq += o.usq;
   }
@@ -275,26 +283,21 @@ struct StateStats {
 
 // Pass D on cells [lo, hi): p += α s, v += α w (α = alpha_max lands cells on a bound: those
 // within 2 ulp of the cap are put on it), and the new state's sums about ref (α = 0: the sums
-// alone); h for the elastic scale u = v − h.
-TRIBO_VECTOR_CLONES
-StateStats update_cells(double* __restrict p, double* __restrict v, const double* __restrict s,
-                        const double* __restrict w, const double* __restrict h, Eigen::Index lo, Eigen::Index hi,
-                        double alpha, double ref, double cap) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  const double cap_snap = std::isfinite(cap) ? cap * (1.0 - 4e-16) : cap;
-  double fr = 0.0, s1 = 0.0, s2 = 0.0, w_sum = 0.0, vw = 0.0, s_sum = 0.0, vs = 0.0, sw = 0.0, usum = 0.0, usq = 0.0,
-         ovmin = inf, pvmax = -inf;
-#pragma omp simd reduction(+ : fr, s1, s2, w_sum, vw, s_sum, vs, sw, usum, usq) reduction(min : ovmin) \
-    reduction(max : pvmax)
+// alone); h for the elastic scale u = v − h. Without a cap no cell is plastic.
+template <bool kCapped>
+TRIBO_VECTOR_CLONES StateStats update_cells(double* __restrict p, double* __restrict v, const double* __restrict s,
+                                            const double* __restrict w, const double* __restrict h, Eigen::Index lo,
+                                            Eigen::Index hi, double alpha, double ref, double cap) {
+  const double cap_snap = cap * (1.0 - 4e-16);
+  double fr = 0.0, s1 = 0.0, s2 = 0.0, w_sum = 0.0, vw = 0.0, s_sum = 0.0, vs = 0.0, sw = 0.0, usum = 0.0, usq = 0.0;
+#pragma omp simd reduction(+ : fr, s1, s2, w_sum, vw, s_sum, vs, sw, usum, usq)
   for (Eigen::Index i = lo; i < hi; ++i) {
     double pn = std::max(p[i] + alpha * s[i], 0.0);
-    pn = pn >= cap_snap ? cap : pn;
+    if constexpr (kCapped) pn = pn >= cap_snap ? cap : pn;
     p[i] = pn;
     const double vn = v[i] + alpha * w[i];
     v[i] = vn;
-    const bool open = pn <= 0.0, plastic = pn >= cap, in = !(open | plastic);
-    ovmin = std::min(ovmin, open ? vn : inf);
-    pvmax = std::max(pvmax, plastic ? vn : -inf);
+    const bool open = pn <= 0.0, plastic = kCapped && pn >= cap, in = !(open | plastic);
     const double dv = in ? vn - ref : 0.0, sf = in ? s[i] : 0.0, wf = in ? w[i] : 0.0;
     fr += in ? 1.0 : 0.0;
     s1 += dv;
@@ -311,7 +314,28 @@ StateStats update_cells(double* __restrict p, double* __restrict v, const double
   StateStats a;
   a.free = static_cast<long>(fr);
   a.s1 = s1, a.s2 = s2, a.w_sum = w_sum, a.vw = vw, a.s_sum = s_sum, a.vs = vs, a.sw = sw;
-  a.usum = usum, a.usq = usq, a.open_v_min = ovmin, a.plastic_v_max = pvmax;
+  a.usum = usum, a.usq = usq;
+  return a;
+}
+
+// Where no cell is free (every cell in contact at the cap), the approach is only bracketed:
+// plastic cells need δ ≥ v, open ones δ ≤ v. The bracket's ends on cells [lo, hi); rare, so not
+// among pass D's sums.
+struct ApproachBracket {
+  double plastic_v_max = -std::numeric_limits<double>::infinity();
+  double open_v_min = std::numeric_limits<double>::infinity();
+  void merge(const ApproachBracket& o) {
+    plastic_v_max = std::max(plastic_v_max, o.plastic_v_max);
+    open_v_min = std::min(open_v_min, o.open_v_min);
+  }
+};
+
+ApproachBracket bracket_cells(const double* p, const double* v, Eigen::Index lo, Eigen::Index hi, double cap) {
+  ApproachBracket a;
+  for (Eigen::Index i = lo; i < hi; ++i) {
+    if (p[i] <= 0.0) a.open_v_min = std::min(a.open_v_min, v[i]);
+    if (p[i] >= cap) a.plastic_v_max = std::max(a.plastic_v_max, v[i]);
+  }
   return a;
 }
 
@@ -325,6 +349,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   const Eigen::Index n = h0.size();
   const double cell = grid.cell_area_m2();
   const double cap = opt.pressure_cap_Pa;
+  const bool capped = std::isfinite(cap);  // else an elastic solve: its passes leave the cap's tests out
   const bool load_control = control == Control::load;
   const double target = load_control ? value / cell : 0.0;  // Σ p_i for load control
   if (load_control) {
@@ -393,11 +418,13 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       if (st.free > 0) {
         dref = st.s1 / static_cast<double>(st.free);
       } else {
-        // Without free cells δ is only bracketed: plastic cells need δ ≥ v, open ones δ ≤ v.
-        // Take the smallest admissible approach, or the middle of an empty bracket.
-        const double d = (!std::isfinite(st.open_v_min) || st.plastic_v_max <= st.open_v_min)
-                             ? st.plastic_v_max
-                             : 0.5 * (st.plastic_v_max + st.open_v_min);
+        // Without free cells δ is only bracketed: take the smallest admissible approach, or the
+        // middle of an empty bracket.
+        const ApproachBracket b = grid_chunks<ApproachBracket>(
+            n, [&](Eigen::Index lo, Eigen::Index hi) { return bracket_cells(pp, vp, lo, hi, cap); });
+        const double d = (!std::isfinite(b.open_v_min) || b.plastic_v_max <= b.open_v_min)
+                             ? b.plastic_v_max
+                             : 0.5 * (b.plastic_v_max + b.open_v_min);
         dref = d - ref;
       }
       delta = ref + dref;
@@ -410,10 +437,15 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     s_free = st.s_sum;
     return !(std::abs(dref * st.s1) > 1e8 * std::abs(g2));
   };
-  // Pass D (update_cells) on a padded half-space.
+  // Pass D (update_cells) on the len cells from a, against w_at, the step's product there.
+  auto update_at = [&](Eigen::Index a, Eigen::Index len, const double* w_at, double alpha, double ref) {
+    return capped ? update_cells<true>(pp + a, vp + a, sp + a, w_at, hp + a, 0, len, alpha, ref, cap)
+                  : update_cells<false>(pp + a, vp + a, sp + a, w_at, hp + a, 0, len, alpha, ref, cap);
+  };
+  // Pass D on a padded half-space.
   auto update_pass = [&](double alpha, double ref) {
     return grid_chunks<StateStats>(
-        n, [&](Eigen::Index lo, Eigen::Index hi) { return update_cells(pp, vp, sp, wp, hp, lo, hi, alpha, ref, cap); });
+        n, [&](Eigen::Index lo, Eigen::Index hi) { return update_at(lo, hi - lo, wp + lo, alpha, ref); });
   };
   // Pass D without a step (α = 0): the state's sums about ref, against w = 0 (each line segment
   // against a line of zeros, so that no w grid is needed).
@@ -422,7 +454,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       StateStats acc;
       for (Eigen::Index a = lo; a < hi;) {
         const Eigen::Index b = std::min(hi, (a / nx + 1) * nx);
-        acc.merge(update_cells(pp + a, vp + a, sp + a, zero_line.data(), hp + a, 0, b - a, 0.0, ref, cap));
+        acc.merge(update_at(a, b - a, zero_line.data(), 0.0, ref));
         a = b;
       }
       return acc;
@@ -459,7 +491,9 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
     // Pass B (trial_cells): the residual, and the trial written over s.
     const TrialInput trial{cap, delta, beta, tau, tmean};
     const TrialStats tb = grid_chunks<TrialStats>(
-        n, [&](Eigen::Index lo, Eigen::Index hi) { return trial_cells(pp, vp, sp, lo, hi, trial); });
+        n, [&](Eigen::Index lo, Eigen::Index hi) {
+          return capped ? trial_cells<true>(pp, vp, sp, lo, hi, trial) : trial_cells<false>(pp, vp, sp, lo, hi, trial);
+        });
     residual = std::sqrt(tb.res2) / std::max(scale, 1e-300 + 1e-12 * hscale);
     if (!std::isfinite(residual)) break;
     if (residual <= opt.tolerance) {
@@ -503,6 +537,10 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       alpha = std::min(alpha_best, sc.alpha_max);
       return true;
     };
+    auto step_pass = [&](Eigen::Index lo, Eigen::Index hi) {
+      return capped ? step_cells<true>(pp, sp, step_v, lo, hi, cap, c, delta)
+                    : step_cells<false>(pp, sp, step_v, lo, hi, cap, c, delta);
+    };
     bool descent = false;
     StateStats updated;
     if (hs.periodic()) {
@@ -513,19 +551,15 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       std::vector<StateStats> states(threads);
       hs.displacement_by_rows(
           sp, nullptr,
-          [&](int t, Eigen::Index j) {
-            steps[static_cast<std::size_t>(t)].merge(step_cells(pp, sp, step_v, j * nx, (j + 1) * nx, cap, c, delta));
-          },
+          [&](int t, Eigen::Index j) { steps[static_cast<std::size_t>(t)].merge(step_pass(j * nx, (j + 1) * nx)); },
           [&](double den) { return descent = line_minimum(merged(steps), den); },
           [&](int t, Eigen::Index j, const double* w_line) {
-            const Eigen::Index a = j * nx;
-            states[static_cast<std::size_t>(t)].merge(
-                update_cells(pp + a, vp + a, sp + a, w_line, hp + a, 0, nx, alpha, ref, cap));
+            states[static_cast<std::size_t>(t)].merge(update_at(j * nx, nx, w_line, alpha, ref));
           });
       if (descent) updated = merged(states);
     } else {
       const StepStats sc = grid_chunks<StepStats>(
-          n, [&](Eigen::Index lo, Eigen::Index hi) { return step_cells(pp, sp, step_v, lo, hi, cap, c, delta); });
+          n, [&](Eigen::Index lo, Eigen::Index hi) { return step_pass(lo, hi); });
       descent = line_minimum(sc, hs.displacement_and_energy(s, w));
       if (descent) updated = update_pass(alpha, ref);
     }
