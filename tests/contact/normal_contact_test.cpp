@@ -288,6 +288,35 @@ TEST(NormalContact, ElasticPlasticConvergesUpToSaturation) {
   EXPECT_EQ(previous_area, grid.area_m2());  // saturation: the whole surface flows
 }
 
+// An elastic solve (no cap) runs passes that leave the cap's tests out (normal_contact.cpp,
+// kCapped). A cap a thousand times the largest pressure is never reached, so the capped passes
+// take the same path: the same iterations, and the same pressure to the last bits but for the
+// α_max of the cells that rise (finite against the cap, ∞ without it), which is never the least.
+// On a periodic grid (odd: lines that are not a multiple of the eight-lane vector) and a padded one.
+TEST(NormalContact, ACapNoCellReachesLeavesTheElasticSolveAsItIs) {
+  for (const bool periodic : {true, false}) {
+    for (const Eigen::Index n : {63, 64}) {
+      const auto sp = rough(n, 5);
+      const Grid grid = Grid::patch(n, n, sp.size_m, sp.size_m);
+      const Eigen::ArrayXXd h = gap_from_heights(gaussian_surface(sp));
+      ElasticHalfSpace hs(grid, kEStar, periodic);
+      const double slope = surface_statistics(h, sp.size_m, sp.size_m).rms_slope;
+      const double load = 0.03 * kEStar * slope * grid.area_m2();  // a few per cent in contact
+      const NormalContactResult elastic = solve_normal_load(hs, h, load);
+      ASSERT_TRUE(elastic.summary.converged) << elastic.summary.message;
+      NormalContactOptions capped;
+      capped.pressure_cap_Pa = 1e3 * elastic.max_pressure_Pa;
+      const NormalContactResult far_cap = solve_normal_load(hs, h, load, capped);
+      ASSERT_TRUE(far_cap.summary.converged) << far_cap.summary.message;
+      EXPECT_EQ(far_cap.summary.iterations, elastic.summary.iterations) << "n = " << n << ", periodic " << periodic;
+      EXPECT_EQ(far_cap.plastic_area_m2, 0.0);
+      EXPECT_EQ(far_cap.real_area_m2, elastic.real_area_m2);
+      EXPECT_LE((far_cap.pressure_Pa - elastic.pressure_Pa).abs().maxCoeff(), 1e-12 * elastic.max_pressure_Pa)
+          << "n = " << n << ", periodic " << periodic;
+    }
+  }
+}
+
 // Loading–unloading: the flattened profile (h + plastic increment) carries the peak load
 // elastically with the same pressure; at a lower load the contact shrinks without new flow.
 TEST(NormalContact, PlasticFlatteningMakesUnloadingAndReloadingElastic) {
