@@ -36,7 +36,8 @@ void add_homogenise_command(CLI::App& app) {
       "homogenise", "friction-law tables (law.json) from BEM contact and Reynolds solves on a rough surface pair");
   cmd->add_option("config", args->config, "CONFIG.toml: [surface] [domain] [material] [junction] [lubricant] [pin] [speeds] [homogenise] [micro_ehl] (docs/homogenise.md)")
       ->required();
-  cmd->add_option("--out", args->out, "output directory (law.json, stribeck.csv, area.csv, PNGs; patches/ and a ball's ball-film/ kept so a killed run resumes)");
+  cmd->add_option("--out", args->out, "output directory (law.json, stribeck.csv, area.csv, PNGs; patches/ and a ball's ball-film/ kept so a killed run resumes)")
+      ->capture_default_str();
   cmd->add_flag("!--no-plots", args->plots, "skip stribeck.png and area.png");
   cmd->callback([args] { run_homogenise(*args); });
 }

@@ -155,9 +155,9 @@ void add_reynolds_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "output directory (reynolds.json, pressure_Pa.npy, ...)")->capture_default_str();
   add_summary_only_flag(cmd, args->summary_only, "reynolds.json");
   CLI::App* ff = cmd->add_subcommand("flow-factors", "Patir-Cheng flow factors and rugosity lift over rough realisations");
-  ff->add_option("config", ff_args->config, "TOML config ([surface], [homogenisation], [lubricant], [motion])")
+  ff->add_option("config", ff_args->config, "TOML config ([surface], [homogenisation], [lubricant], [motion], [domain])")
       ->required();
-  ff->add_option("--out", ff_args->out, "output directory (flow_factors.csv, rugosity_lift.csv)")
+  ff->add_option("--out", ff_args->out, "output directory (flow_factors.csv, rugosity_lift.csv, flow_factors.json)")
       ->capture_default_str();
   cmd->require_subcommand(0, 1);
   ff->callback([ff_args] { run_flow_factors(*ff_args); });
