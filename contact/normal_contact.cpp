@@ -318,7 +318,7 @@ TRIBO_VECTOR_CLONES StateStats update_cells(double* __restrict p, double* __rest
   return a;
 }
 
-// Where no cell is free (every cell in contact at the cap), the approach is only bracketed:
+// Where no cell is free (each cell open or at the cap), the approach is only bracketed:
 // plastic cells need δ ≥ v, open ones δ ≤ v. The bracket's ends on cells [lo, hi); rare, so not
 // among pass D's sums.
 struct ApproachBracket {
