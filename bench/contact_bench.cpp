@@ -6,11 +6,13 @@
 //   per_iter_over_fft    wall time per iteration / wall time of one r2c + c2r pair, same grid
 //   per_iter_over_fft_cpu the same ratio in process CPU time (robust on a shared machine)
 //   fft_pair_ms          that FFT pair, measured in the same process with the same thread count
-//                        just before and just after the solve (the mean: this machine's speed
-//                        drifts by up to 2× within minutes, so the pair brackets the solve)
 //   fft_pairs            half-space evaluations of the solve (1 per iteration + 1 for the start)
 //   pairs_per_iter       fft_pairs / iterations (the floor is 1)
 //   solve_cpu_s, solve_s the whole solve, process CPU and wall time
+// A solve benchmark runs kSolveRounds rounds, each a solve between two FFT pairs (the mean of the
+// two: this machine's speed drifts by up to 2× within minutes, so the pairs bracket each solve);
+// the counters are the rounds' medians, with the least and largest ratio in CPU time
+// (per_iter_over_fft_cpu_min, _max) for the spread.
 //   peak_rss_MiB         the process' peak resident memory so far (VmHWM)
 // and, to locate the floor, BM_Product (one half-space product with its energy, as the solve
 // does it, over an FFT pair) and BM_GridPass (one fused update pass — 4 grids read, 2 written,
@@ -27,6 +29,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "contact/fft.h"
 #include "contact/halfspace.h"
@@ -79,6 +82,12 @@ PairTime fft_pair_time(Eigen::Index n, int threads) {
           (cpu_seconds() - c0) / reps};
 }
 
+double median(std::vector<double> x) {
+  std::sort(x.begin(), x.end());
+  const std::size_t m = x.size() / 2;
+  return x.size() % 2 == 1 ? x[m] : 0.5 * (x[m - 1] + x[m]);
+}
+
 Eigen::ArrayXXd bench_surface(Eigen::Index n) {
   GaussianSurfaceParams p;
   p.grid = n;
@@ -89,6 +98,8 @@ Eigen::ArrayXXd bench_surface(Eigen::Index n) {
   p.seed = 1;
   return gaussian_surface(p);
 }
+
+constexpr int kSolveRounds = 5;
 
 void solve_bench(benchmark::State& state, bool plastic) {
   const Eigen::Index n = state.range(0);
@@ -105,30 +116,35 @@ void solve_bench(benchmark::State& state, bool plastic) {
   opt.tolerance = 1e-8;
   if (plastic) opt.pressure_cap_Pa = load / grid.area_m2() / 0.6;
   NormalContactResult r;
-  const PairTime before = fft_pair_time(n, threads);
-  double solve_s = 0.0, solve_cpu_s = 0.0;
+  PairTime before = fft_pair_time(n, threads);
+  std::vector<double> solve_s, solve_cpu_s, pair_s, pair_cpu_s, ratio, ratio_cpu;
   for (auto _ : state) {
     const double c0 = cpu_seconds();
     const auto t0 = std::chrono::steady_clock::now();
     r = solve_normal_load(hs, h, load, opt);
-    solve_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    solve_cpu_s += cpu_seconds() - c0;
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double cpu = cpu_seconds() - c0;
     benchmark::DoNotOptimize(r.real_area_m2);
+    const PairTime after = fft_pair_time(n, threads);
+    const PairTime pair{0.5 * (before.wall_s + after.wall_s), 0.5 * (before.cpu_s + after.cpu_s)};
+    const double iterations = r.summary.iterations;
+    solve_s.push_back(wall), solve_cpu_s.push_back(cpu), pair_s.push_back(pair.wall_s), pair_cpu_s.push_back(pair.cpu_s);
+    ratio.push_back(wall / iterations / pair.wall_s), ratio_cpu.push_back(cpu / iterations / pair.cpu_s);
+    before = after;
   }
   if (!r.summary.converged) state.SkipWithError(r.summary.message.c_str());
-  const PairTime after = fft_pair_time(n, threads);
-  const PairTime fft{0.5 * (before.wall_s + after.wall_s), 0.5 * (before.cpu_s + after.cpu_s)};
-  const double runs = static_cast<double>(state.iterations()) * r.summary.iterations;
   state.counters["iterations"] = r.summary.iterations;
   state.counters["fft_pairs"] = r.summary.fft_pairs;
   state.counters["pairs_per_iter"] = static_cast<double>(r.summary.fft_pairs) / r.summary.iterations;
-  state.counters["solve_cpu_s"] = solve_cpu_s / static_cast<double>(state.iterations());
-  state.counters["solve_s"] = solve_s / static_cast<double>(state.iterations());
-  state.counters["fft_pair_cpu_ms"] = 1e3 * fft.cpu_s;
+  state.counters["solve_cpu_s"] = median(solve_cpu_s);
+  state.counters["solve_s"] = median(solve_s);
+  state.counters["fft_pair_cpu_ms"] = 1e3 * median(pair_cpu_s);
   state.counters["area_fraction"] = r.area_fraction;
-  state.counters["fft_pair_ms"] = 1e3 * fft.wall_s;
-  state.counters["per_iter_over_fft"] = solve_s / runs / fft.wall_s;
-  state.counters["per_iter_over_fft_cpu"] = solve_cpu_s / runs / fft.cpu_s;
+  state.counters["fft_pair_ms"] = 1e3 * median(pair_s);
+  state.counters["per_iter_over_fft"] = median(ratio);
+  state.counters["per_iter_over_fft_cpu"] = median(ratio_cpu);
+  state.counters["per_iter_over_fft_cpu_min"] = *std::min_element(ratio_cpu.begin(), ratio_cpu.end());
+  state.counters["per_iter_over_fft_cpu_max"] = *std::max_element(ratio_cpu.begin(), ratio_cpu.end());
   state.counters["peak_rss_MiB"] = peak_rss_mib();
 }
 
@@ -232,7 +248,7 @@ void grids(benchmark::internal::Benchmark* b) {
   for (int n : {256, 512, 1024, 2048}) {
     for (int t : {1, 2}) b->Args({n, t});
   }
-  b->ArgNames({"n", "threads"})->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
+  b->ArgNames({"n", "threads"})->Unit(benchmark::kMillisecond)->Iterations(kSolveRounds)->UseRealTime();
 }
 
 BENCHMARK(BM_FftPair)->Apply([](benchmark::internal::Benchmark* b) {

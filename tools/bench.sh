@@ -116,13 +116,18 @@ def g(kind, n, t, key, fmt="{:.2f}"):
         return "—"
     return fmt.format(b[key])
 
+def ratio(kind, n, t):
+    median = g(kind, n, t, "per_iter_over_fft_cpu")
+    return "**{}** ({}–{})".format(median, g(kind, n, t, "per_iter_over_fft_cpu_min"), g(kind, n, t, "per_iter_over_fft_cpu_max"))
+
 grids = (256, 512, 1024, 2048)
 out = []
 out.append(f"Measured {os.environ['STARTED']} by `tools/bench.sh contact`. Machine load — before: "
            f"`{os.environ['LOAD_BEFORE'].strip()}`; after: `{os.environ['LOAD_AFTER'].strip()}`.")
 out.append("")
 out.append("Per CG iteration, as a multiple of one FFTW r2c + c2r pair on the same grid and thread count "
-           "(process CPU time, both measured in the same process; the pair just before and just after the solve). "
+           "(process CPU time, both measured in the same process: the median of five rounds, each a solve between two "
+           "pairs, with the rounds' least and largest ratio in brackets). "
            "Product: the 2-D product with its kernel multiply; line product: the same taken line by line, "
            "as the solve takes it on these periodic grids, with nothing fused into it:")
 out.append("")
@@ -130,15 +135,15 @@ out.append("| grid | threads | FFT pair CPU | product / pair | line product / pa
 out.append("|---|---|---|---|---|---|---|---|---|---|---|---|")
 for n in grids:
     for t in (1, 2):
-        out.append("| {}² | {} | {} ms | {} | {} | {} | {} | {} | **{}** | {} | {} | **{}** |".format(
+        out.append("| {}² | {} | {} ms | {} | {} | {} | {} | {} | {} | {} | {} | {} |".format(
             n, t, g("ElasticSolve", n, t, "fft_pair_cpu_ms", "{:.3g}"),
             g("Product", n, t, "over_fft_cpu"), g("LineProduct", n, t, "over_fft_cpu"), g("GridPass", n, t, "over_fft_cpu"),
             g("ElasticSolve", n, t, "iterations", "{:.0f}"), g("ElasticSolve", n, t, "pairs_per_iter"),
-            g("ElasticSolve", n, t, "per_iter_over_fft_cpu"),
+            ratio("ElasticSolve", n, t),
             g("ElasticPlasticSolve", n, t, "iterations", "{:.0f}"), g("ElasticPlasticSolve", n, t, "pairs_per_iter"),
-            g("ElasticPlasticSolve", n, t, "per_iter_over_fft_cpu")))
+            ratio("ElasticPlasticSolve", n, t)))
 out.append("")
-out.append("Whole solves (10 % contact, relative residual 1e-8):")
+out.append("Whole solves (10 % contact, relative residual 1e-8; medians of the five rounds):")
 out.append("")
 out.append("| grid | threads | elastic CPU | elastic wall | plastic CPU | plastic wall | peak RSS |")
 out.append("|---|---|---|---|---|---|---|")
