@@ -522,7 +522,7 @@ void add_gap_command(CLI::App& app) {
                        "or spring_force (k x alone, a rig without an accelerometer); the simulation reads its own the same way")
       ->check(CLI::IsMember({"inertia_corrected", "spring_force"}));
   diagnose->add_flag("--quick", diagnose_args->quick, "Fewer iterations per fit");
-  diagnose->add_flag("!--no-plot", diagnose_args->plot, "Skip the PNG plots");
+  diagnose->add_flag("!--no-plots,!--no-plot", diagnose_args->plot, "Skip the PNG plots (--no-plot: the same, its earlier name)");
   diagnose->callback([diagnose_args] { run_diagnose(*diagnose_args); });
 
   auto selftest_args = std::make_shared<SelftestArgs>();
