@@ -9,11 +9,11 @@
 //   fft_pairs            half-space evaluations of the solve (1 per iteration + 1 for the start)
 //   pairs_per_iter       fft_pairs / iterations (the floor is 1)
 //   solve_cpu_s, solve_s the whole solve, process CPU and wall time
+//   peak_rss_MiB         the process' peak resident memory so far (VmHWM)
 // A solve benchmark runs kSolveRounds rounds, each a solve between two FFT pairs (the mean of the
 // two: this machine's speed drifts by up to 2× within minutes, so the pairs bracket each solve);
 // the counters are the rounds' medians, with the least and largest ratio in CPU time
-// (per_iter_over_fft_cpu_min, _max) for the spread.
-//   peak_rss_MiB         the process' peak resident memory so far (VmHWM)
+// (per_iter_over_fft_cpu_min, _max) for the spread;
 // and, to locate the floor, BM_Product (one half-space product with its energy, as the solve
 // does it, over an FFT pair) and BM_GridPass (one fused update pass — 4 grids read, 2 written,
 // the solve's heaviest — over an FFT pair), both in CPU time and measured in the same process.
