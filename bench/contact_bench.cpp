@@ -35,10 +35,12 @@
 #include "contact/halfspace.h"
 #include "contact/normal_contact.h"
 #include "contact/surface.h"
+#include "numerics/median.h"
 
 namespace {
 
 using namespace tribo::contact;
+using tribo::numerics::median;
 
 double peak_rss_mib() {
   std::ifstream status("/proc/self/status");
@@ -80,12 +82,6 @@ PairTime fft_pair_time(Eigen::Index n, int threads) {
   }
   return {std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / reps,
           (cpu_seconds() - c0) / reps};
-}
-
-double median(std::vector<double> x) {
-  std::sort(x.begin(), x.end());
-  const std::size_t m = x.size() / 2;
-  return x.size() % 2 == 1 ? x[m] : 0.5 * (x[m - 1] + x[m]);
 }
 
 Eigen::ArrayXXd bench_surface(Eigen::Index n) {
