@@ -102,6 +102,8 @@ ContactRun load_contact_run(const toml::table& doc, const std::filesystem::path&
   if (auto s = root.table("solver")) {
     run.solver.tolerance = s->number("tolerance", run.solver.tolerance, Range::positive);
     run.solver.max_iterations = static_cast<int>(s->integer("max_iterations", 0, 0, 1'000'000'000));
+    run.solver.single_precision_above =
+        s->number("single_precision_above", run.solver.single_precision_above, Range::non_negative);
     run.threads = static_cast<int>(s->integer("threads", 0, 0, 1'000'000));
     std::string why;
     if (!run.solver.is_valid(&why)) s->fail("tolerance", why);
@@ -192,6 +194,8 @@ ContactSolve solve_contact_run(const ContactRun& run) {
   j["iterations"] = run.tangential_load_N > 0.0 ? total_iterations : r.summary.iterations;
   j["residual"] = r.summary.residual;
   j["tolerance"] = run.solver.tolerance;
+  j["fft_pairs"] = r.summary.fft_pairs;
+  j["single_pairs"] = r.summary.single_pairs;
   j["message"] = r.summary.message;
   j["wall_s"] = wall;
   if (run.surface_kind == "sphere") {

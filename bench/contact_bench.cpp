@@ -6,7 +6,9 @@
 //   per_iter_over_fft    wall time per iteration / wall time of one r2c + c2r pair, same grid
 //   per_iter_over_fft_cpu the same ratio in process CPU time (robust on a shared machine)
 //   fft_pair_ms          that FFT pair, measured in the same process with the same thread count
-//   fft_pairs            half-space evaluations of the solve (1 per iteration + 1 for the start)
+//   fft_pairs            half-space evaluations of the solve (1 per iteration + 1 for the start
+//                        + 1 where it leaves single precision)
+//   single_pairs         how many of them in single precision (normal_contact.h, mixed precision)
 //   pairs_per_iter       fft_pairs / iterations (the floor is 1)
 //   solve_cpu_s, solve_s the whole solve, process CPU and wall time
 //   peak_rss_MiB         the process' peak resident memory so far (VmHWM)
@@ -131,6 +133,7 @@ void solve_bench(benchmark::State& state, bool plastic) {
   if (!r.summary.converged) state.SkipWithError(r.summary.message.c_str());
   state.counters["iterations"] = r.summary.iterations;
   state.counters["fft_pairs"] = r.summary.fft_pairs;
+  state.counters["single_pairs"] = r.summary.single_pairs;
   state.counters["pairs_per_iter"] = static_cast<double>(r.summary.fft_pairs) / r.summary.iterations;
   state.counters["solve_cpu_s"] = median(solve_cpu_s);
   state.counters["solve_s"] = median(solve_s);

@@ -1,7 +1,7 @@
-# The system libraries Debian 12 ships without a usable CMake package — FFTW (pkg-config, plus its
-# OpenMP threads library), SuiteSparse 5 and hypre (neither a pkg-config nor a CMake file) — and
-# LAPACK (CMake's FindLAPACK), as imported targets tribo::fftw, tribo::suitesparse, tribo::hypre
-# and tribo::lapack. One file for both uses: the
+# The system libraries Debian 12 ships without a usable CMake package — FFTW (pkg-config, double
+# and single precision, plus its OpenMP threads library), SuiteSparse 5 and hypre (neither a
+# pkg-config nor a CMake file) — and LAPACK (CMake's FindLAPACK), as imported targets
+# tribo::fftw, tribo::suitesparse, tribo::hypre and tribo::lapack. One file for both uses: the
 # build includes it from TriboDependencies.cmake, and the installed triboConfig.cmake includes it
 # so that a consumer's find_package(tribo) re-finds them on its own machine instead of trusting
 # paths recorded at tribo's build. Expects OpenMP::OpenMP_CXX to exist (found before).
@@ -11,9 +11,11 @@ endif()
 
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(FFTW3 REQUIRED IMPORTED_TARGET fftw3)
+# Single precision (the normal solve's products far from its tolerance): the same Debian package.
+pkg_check_modules(FFTW3F REQUIRED IMPORTED_TARGET fftw3f)
 find_library(FFTW3_OMP_LIB fftw3_omp REQUIRED)
 add_library(tribo::fftw INTERFACE IMPORTED)
-target_link_libraries(tribo::fftw INTERFACE PkgConfig::FFTW3 ${FFTW3_OMP_LIB} OpenMP::OpenMP_CXX)
+target_link_libraries(tribo::fftw INTERFACE PkgConfig::FFTW3 PkgConfig::FFTW3F ${FFTW3_OMP_LIB} OpenMP::OpenMP_CXX)
 
 find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse REQUIRED)
 set(TRIBO_SUITESPARSE_LIBRARIES "")

@@ -15,7 +15,8 @@
 
 namespace tribo::contact {
 namespace detail {
-extern const char* const kShippedFftwWisdom;  // contact/fftw_wisdom.txt, compiled in by CMake
+extern const char* const kShippedFftwWisdom;   // contact/fftw_wisdom.txt, compiled in by CMake
+extern const char* const kShippedFftwfWisdom;  // contact/fftwf_wisdom.txt: single precision
 }  // namespace detail
 namespace {
 
@@ -33,7 +34,8 @@ void init_threads_once() {
   std::call_once(once, [] {
     if (fftw_init_threads() == 0) throw std::runtime_error("FFTW: fftw_init_threads failed");
     std::lock_guard<std::mutex> lock(planner_mutex());
-    wisdom_loaded = fftw_import_wisdom_from_string(detail::kShippedFftwWisdom) != 0;
+    wisdom_loaded = fftw_import_wisdom_from_string(detail::kShippedFftwWisdom) != 0 &&
+                    fftwf_import_wisdom_from_string(detail::kShippedFftwfWisdom) != 0;
   });
 }
 
@@ -152,7 +154,58 @@ void RealFft2d::inverse(double* out) {
   }
 }
 
-RowColumnFft::RowColumnFft(Eigen::Index nx, Eigen::Index ny, bool measure) : nx_(nx), ny_(ny) {
+namespace {
+
+// FFTW's double (fftw_) and single-precision (fftwf_) interfaces under one name each.
+template <class Real>
+struct Fftw;
+
+template <>
+struct Fftw<double> {
+  using Plan = fftw_plan;
+  using Cx = fftw_complex;
+  static void* malloc(std::size_t bytes) { return fftw_malloc(bytes); }
+  static void free(void* p) { fftw_free(p); }
+  static int alignment_of(double* p) { return fftw_alignment_of(p); }
+  static Plan r2c(int n, double* r, Cx* c, unsigned f) { return fftw_plan_dft_r2c_1d(n, r, c, f); }
+  static Plan c2r(int n, Cx* c, double* r, unsigned f) { return fftw_plan_dft_c2r_1d(n, c, r, f); }
+  static Plan many(int n, int howmany, Cx* in, Cx* out, int sign, unsigned f) {
+    return fftw_plan_many_dft(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, n, sign, f);
+  }
+  static void destroy(void* p) { fftw_destroy_plan(static_cast<Plan>(p)); }
+  static void execute_r2c(void* p, double* in, Cx* out) { fftw_execute_dft_r2c(static_cast<Plan>(p), in, out); }
+  static void execute_c2r(void* p, Cx* in, double* out) { fftw_execute_dft_c2r(static_cast<Plan>(p), in, out); }
+  static void execute_dft(void* p, Cx* in, Cx* out) { fftw_execute_dft(static_cast<Plan>(p), in, out); }
+  // The plans are single-threaded whatever RealFft2d's last plan asked (the planner is shared).
+  static void one_thread() { fftw_plan_with_nthreads(1); }
+};
+
+template <>
+struct Fftw<float> {
+  using Plan = fftwf_plan;
+  using Cx = fftwf_complex;
+  static void* malloc(std::size_t bytes) { return fftwf_malloc(bytes); }
+  static void free(void* p) { fftwf_free(p); }
+  static int alignment_of(float* p) { return fftwf_alignment_of(p); }
+  static Plan r2c(int n, float* r, Cx* c, unsigned f) { return fftwf_plan_dft_r2c_1d(n, r, c, f); }
+  static Plan c2r(int n, Cx* c, float* r, unsigned f) { return fftwf_plan_dft_c2r_1d(n, c, r, f); }
+  static Plan many(int n, int howmany, Cx* in, Cx* out, int sign, unsigned f) {
+    return fftwf_plan_many_dft(1, &n, howmany, in, nullptr, 1, n, out, nullptr, 1, n, sign, f);
+  }
+  static void destroy(void* p) { fftwf_destroy_plan(static_cast<Plan>(p)); }
+  static void execute_r2c(void* p, float* in, Cx* out) { fftwf_execute_dft_r2c(static_cast<Plan>(p), in, out); }
+  static void execute_c2r(void* p, Cx* in, float* out) { fftwf_execute_dft_c2r(static_cast<Plan>(p), in, out); }
+  static void execute_dft(void* p, Cx* in, Cx* out) { fftwf_execute_dft(static_cast<Plan>(p), in, out); }
+  // fftwf's threads are never initialised: its plans are single-threaded.
+  static void one_thread() {}
+};
+
+}  // namespace
+
+template <class Real>
+RowColumnFftOf<Real>::RowColumnFftOf(Eigen::Index nx, Eigen::Index ny, bool measure) : nx_(nx), ny_(ny) {
+  using F = Fftw<Real>;
+  using Cx = typename F::Cx;
   if (nx < 1 || ny < 1) {
     throw std::invalid_argument("FFT grid must have at least one point per direction, got " + std::to_string(nx) +
                                 " x " + std::to_string(ny));
@@ -160,31 +213,30 @@ RowColumnFft::RowColumnFft(Eigen::Index nx, Eigen::Index ny, bool measure) : nx_
   init_threads_once();
   // Planning arrays (FFTW_MEASURE overwrites them); the plans then run on the caller's arrays.
   const std::size_t block = static_cast<std::size_t>(kColumns * ny);
-  double* r = static_cast<double*>(fftw_malloc(sizeof(double) * static_cast<std::size_t>(nx)));
-  fftw_complex* c = static_cast<fftw_complex*>(
-      fftw_malloc(sizeof(fftw_complex) * std::max(static_cast<std::size_t>(nx / 2 + 1), block)));
-  fftw_complex* d = static_cast<fftw_complex*>(fftw_malloc(sizeof(fftw_complex) * block));
+  Real* r = static_cast<Real*>(F::malloc(sizeof(Real) * static_cast<std::size_t>(nx)));
+  Cx* c = static_cast<Cx*>(F::malloc(sizeof(Cx) * std::max(static_cast<std::size_t>(nx / 2 + 1), block)));
+  Cx* d = static_cast<Cx*>(F::malloc(sizeof(Cx) * block));
   if (r == nullptr || c == nullptr || d == nullptr) {
-    fftw_free(r);
-    fftw_free(c);
-    fftw_free(d);
+    F::free(r);
+    F::free(c);
+    F::free(d);
     throw std::bad_alloc();
   }
   const unsigned flags = measure ? FFTW_MEASURE : FFTW_ESTIMATE;
   const int n_y = static_cast<int>(ny), columns = static_cast<int>(kColumns);
   {
     std::lock_guard<std::mutex> lock(planner_mutex());
-    fftw_plan_with_nthreads(1);
-    row_forward_ = fftw_plan_dft_r2c_1d(static_cast<int>(nx), r, c, flags);
-    row_inverse_ = fftw_plan_dft_c2r_1d(static_cast<int>(nx), c, r, flags);
-    block_forward_ = fftw_plan_many_dft(1, &n_y, columns, c, nullptr, 1, n_y, d, nullptr, 1, n_y, FFTW_FORWARD, flags);
-    block_inverse_ = fftw_plan_many_dft(1, &n_y, columns, d, nullptr, 1, n_y, c, nullptr, 1, n_y, FFTW_BACKWARD, flags);
-    column_forward_ = fftw_plan_many_dft(1, &n_y, 1, c, nullptr, 1, n_y, d, nullptr, 1, n_y, FFTW_FORWARD, flags);
-    column_inverse_ = fftw_plan_many_dft(1, &n_y, 1, d, nullptr, 1, n_y, c, nullptr, 1, n_y, FFTW_BACKWARD, flags);
+    F::one_thread();
+    row_forward_ = F::r2c(static_cast<int>(nx), r, c, flags);
+    row_inverse_ = F::c2r(static_cast<int>(nx), c, r, flags);
+    block_forward_ = F::many(n_y, columns, c, d, FFTW_FORWARD, flags);
+    block_inverse_ = F::many(n_y, columns, d, c, FFTW_BACKWARD, flags);
+    column_forward_ = F::many(n_y, 1, c, d, FFTW_FORWARD, flags);
+    column_inverse_ = F::many(n_y, 1, d, c, FFTW_BACKWARD, flags);
   }
-  fftw_free(r);
-  fftw_free(c);
-  fftw_free(d);
+  F::free(r);
+  F::free(c);
+  F::free(d);
   for (void* p : {row_forward_, row_inverse_, block_forward_, block_inverse_, column_forward_, column_inverse_}) {
     if (p == nullptr) {
       release();
@@ -194,54 +246,67 @@ RowColumnFft::RowColumnFft(Eigen::Index nx, Eigen::Index ny, bool measure) : nx_
   }
 }
 
-RowColumnFft::~RowColumnFft() { release(); }
+template <class Real>
+RowColumnFftOf<Real>::~RowColumnFftOf() {
+  release();
+}
 
-void RowColumnFft::release() noexcept {
+template <class Real>
+void RowColumnFftOf<Real>::release() noexcept {
   std::lock_guard<std::mutex> lock(planner_mutex());
   for (void** p : {&row_forward_, &row_inverse_, &block_forward_, &block_inverse_, &column_forward_, &column_inverse_}) {
-    if (*p != nullptr) fftw_destroy_plan(static_cast<fftw_plan>(*p));
+    if (*p != nullptr) Fftw<Real>::destroy(*p);
     *p = nullptr;
   }
 }
 
-bool RowColumnFft::aligned(const void* p) {
+template <class Real>
+bool RowColumnFftOf<Real>::aligned(const void* p) {
   // fftw_alignment_of is p's offset from FFTW's SIMD alignment; fftw_malloc's arrays have 0.
-  return fftw_alignment_of(static_cast<double*>(const_cast<void*>(p))) == 0;
+  return Fftw<Real>::alignment_of(static_cast<Real*>(const_cast<void*>(p))) == 0;
 }
 
-void RowColumnFft::row_forward(const double* in, std::complex<double>* out) const {
+template <class Real>
+void RowColumnFftOf<Real>::row_forward(const Real* in, Complex* out) const {
   assert(aligned(in) && aligned(out));
   // fftw's signature is non-const; an out-of-place r2c preserves its input.
-  fftw_execute_dft_r2c(static_cast<fftw_plan>(row_forward_), const_cast<double*>(in),
-                       reinterpret_cast<fftw_complex*>(out));
+  Fftw<Real>::execute_r2c(row_forward_, const_cast<Real*>(in), reinterpret_cast<typename Fftw<Real>::Cx*>(out));
 }
 
-void RowColumnFft::row_inverse(std::complex<double>* in, double* out) const {
+template <class Real>
+void RowColumnFftOf<Real>::row_inverse(Complex* in, Real* out) const {
   assert(aligned(in) && aligned(out));
-  fftw_execute_dft_c2r(static_cast<fftw_plan>(row_inverse_), reinterpret_cast<fftw_complex*>(in), out);
+  Fftw<Real>::execute_c2r(row_inverse_, reinterpret_cast<typename Fftw<Real>::Cx*>(in), out);
 }
 
 namespace {
-void run_columns(void* block_plan, void* column_plan, const std::complex<double>* in, std::complex<double>* out,
+template <class Real>
+void run_columns(void* block_plan, void* column_plan, const std::complex<Real>* in, std::complex<Real>* out,
                  Eigen::Index ny, Eigen::Index count) {
-  assert(count >= 0 && count <= RowColumnFft::kColumns && in != out);
+  using Cx = typename Fftw<Real>::Cx;
+  assert(count >= 0 && count <= RowColumnFftOf<Real>::kColumns && in != out);
   // fftw's signature is non-const; an out-of-place complex transform preserves its input.
-  auto* i = reinterpret_cast<fftw_complex*>(const_cast<std::complex<double>*>(in));
-  auto* o = reinterpret_cast<fftw_complex*>(out);
-  if (count == RowColumnFft::kColumns) {
-    fftw_execute_dft(static_cast<fftw_plan>(block_plan), i, o);
+  auto* i = reinterpret_cast<Cx*>(const_cast<std::complex<Real>*>(in));
+  auto* o = reinterpret_cast<Cx*>(out);
+  if (count == RowColumnFftOf<Real>::kColumns) {
+    Fftw<Real>::execute_dft(block_plan, i, o);
     return;
   }
-  for (Eigen::Index k = 0; k < count; ++k) fftw_execute_dft(static_cast<fftw_plan>(column_plan), i + k * ny, o + k * ny);
+  for (Eigen::Index k = 0; k < count; ++k) Fftw<Real>::execute_dft(column_plan, i + k * ny, o + k * ny);
 }
 }  // namespace
 
-void RowColumnFft::columns_forward(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const {
-  run_columns(block_forward_, column_forward_, in, out, ny_, count);
+template <class Real>
+void RowColumnFftOf<Real>::columns_forward(const Complex* in, Complex* out, Eigen::Index count) const {
+  run_columns<Real>(block_forward_, column_forward_, in, out, ny_, count);
 }
 
-void RowColumnFft::columns_inverse(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const {
-  run_columns(block_inverse_, column_inverse_, in, out, ny_, count);
+template <class Real>
+void RowColumnFftOf<Real>::columns_inverse(const Complex* in, Complex* out, Eigen::Index count) const {
+  run_columns<Real>(block_inverse_, column_inverse_, in, out, ny_, count);
 }
+
+template class RowColumnFftOf<double>;
+template class RowColumnFftOf<float>;
 
 }  // namespace tribo::contact

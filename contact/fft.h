@@ -58,7 +58,7 @@ class RealFft2d {
 
 // The 1-D transforms of the same nx × ny real 2-D FFT taken line by line, for a caller that fuses
 // its own work into the stages (ElasticHalfSpace::displacement_by_rows): r2c along x of one
-// x-line (nx doubles → nx/2 + 1 complex values), and the complex transforms along y of a block
+// x-line (nx values → nx/2 + 1 complex values), and the complex transforms along y of a block
 // of kColumns columns of that half spectrum, each column contiguous (value j of column c at
 // block[c·ny + j]), from one block into another: so FFTW transforms the columns where they lie.
 // (Interleaved columns, or a transform in place, made FFTW copy every column into a buffer of
@@ -67,14 +67,18 @@ class RealFft2d {
 // FFTW's new-array interface, which is safe from several threads at once (each thread owns its
 // buffers); the arrays must be SIMD-aligned (aligned()). Planned as RealFft2d (estimate, or
 // measure; the shipped wisdom holds measured plans for square grids 64² … 4096²).
-class RowColumnFft {
+// Real = double (FFTW) or float (FFTW's single-precision library, fftwf_: the normal solve's
+// products far from its tolerance, normal_contact.h).
+template <class Real>
+class RowColumnFftOf {
  public:
+  using Complex = std::complex<Real>;
   static constexpr Eigen::Index kColumns = 8;
 
-  RowColumnFft(Eigen::Index nx, Eigen::Index ny, bool measure = false);
-  ~RowColumnFft();
-  RowColumnFft(const RowColumnFft&) = delete;
-  RowColumnFft& operator=(const RowColumnFft&) = delete;
+  RowColumnFftOf(Eigen::Index nx, Eigen::Index ny, bool measure = false);
+  ~RowColumnFftOf();
+  RowColumnFftOf(const RowColumnFftOf&) = delete;
+  RowColumnFftOf& operator=(const RowColumnFftOf&) = delete;
 
   Eigen::Index nx() const { return nx_; }
   Eigen::Index ny() const { return ny_; }
@@ -82,32 +86,35 @@ class RowColumnFft {
   // Whether an array has the alignment the plans were made for (fftw_malloc's).
   static bool aligned(const void* p);
 
-  void row_forward(const double* in, std::complex<double>* out) const;  // in: nx values, preserved
-  void row_inverse(std::complex<double>* in, double* out) const;        // in: nx/2 + 1, destroyed
+  void row_forward(const Real* in, Complex* out) const;  // in: nx values, preserved
+  void row_inverse(Complex* in, Real* out) const;        // in: nx/2 + 1, destroyed
   // The first `count` ≤ kColumns columns of a block of ny · kColumns values (column c at c·ny),
   // from `in` into `out` (distinct blocks; `in` is left unchanged).
-  void columns_forward(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const;
-  void columns_inverse(const std::complex<double>* in, std::complex<double>* out, Eigen::Index count) const;
+  void columns_forward(const Complex* in, Complex* out, Eigen::Index count) const;
+  void columns_inverse(const Complex* in, Complex* out, Eigen::Index count) const;
 
  private:
   void release() noexcept;
 
   Eigen::Index nx_, ny_;
-  void* row_forward_ = nullptr;  // fftw_plan
+  void* row_forward_ = nullptr;  // fftw_plan or fftwf_plan
   void* row_inverse_ = nullptr;
   void* block_forward_ = nullptr;  // kColumns contiguous columns, out of place
   void* block_inverse_ = nullptr;
   void* column_forward_ = nullptr;  // one of them
   void* column_inverse_ = nullptr;
 };
+using RowColumnFft = RowColumnFftOf<double>;
+using RowColumnFftSingle = RowColumnFftOf<float>;
 
 // FFTW wisdom shipped with tribo (contact/fftw_wisdom.txt, made by build/bench/fftw_wisdom): the
 // plans FFTW_MEASURE chose for RealFft2d on square grids 64² … 4096² on 1 and 2 threads, and for
-// RowColumnFft's line transforms on the same grids. It is imported before the first plan, and
+// RowColumnFft's line transforms on the same grids; and (contact/fftwf_wisdom.txt) for
+// RowColumnFftSingle's on those grids. It is imported before the first plan, and
 // FFTW then builds a covered problem's plan from it, without measuring: the same plan in every
 // run and process, so results stay reproducible to the bit (a measured plan can differ from run
 // to run), at the measured plan's speed — an r2c + c2r pair on 2048² on one thread took 31 ms
-// against the estimated plan's 61 ms (bench/README.md). False when FFTW rejected the wisdom
+// against the estimated plan's 61 ms (bench/README.md). False when FFTW rejected either wisdom
 // (another FFTW version): every plan is then FFTW's estimate — slower, the same results to
 // round-off.
 bool shipped_fftw_wisdom_loaded();

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "contact/vector_clones.h"
 #include "numerics/huge_pages.h"
@@ -44,7 +45,7 @@ Eigen::Index padded_length(Eigen::Index n) {
   }
 }
 
-// The column stage of displacement_by_rows moves one block of kb = RowColumnFft::kColumns columns
+// The column stage of displacement_by_rows moves one block of kb = RowColumnFftOf::kColumns columns
 // (nb ≤ kb of them real) between the half spectrum, whose lines are `stride` complex values apart,
 // and the block, whose columns are contiguous (value j of column c at c·ny + j). Each line gives
 // nb neighbouring values, one to each column. Fixed-length moves the compiler keeps inline (a
@@ -52,23 +53,24 @@ Eigen::Index padded_length(Eigen::Index n) {
 // spectrum's are more than a page apart, beyond the hardware prefetcher).
 constexpr Eigen::Index kPrefetchLines = 16;
 
-inline void prefetch_line(const std::complex<double>* line, bool write) {
-  const double* p = reinterpret_cast<const double*>(line);
+// A block's line: kb values in two cache lines (RowColumnFftOf::kColumns).
+inline void prefetch_line(const void* line, bool write) {
+  const char* p = static_cast<const char*>(line);
   if (write) {
     __builtin_prefetch(p, 1);
-    __builtin_prefetch(p + 8, 1);
+    __builtin_prefetch(p + 64, 1);
   } else {
     __builtin_prefetch(p);
-    __builtin_prefetch(p + 8);
+    __builtin_prefetch(p + 64);
   }
 }
 
-TRIBO_VECTOR_CLONES
-void gather_block(const std::complex<double>* spectrum, Eigen::Index stride, std::complex<double>* block, Eigen::Index ny,
-                  Eigen::Index nb) {
-  constexpr Eigen::Index kb = RowColumnFft::kColumns;
+template <class Real>
+TRIBO_VECTOR_CLONES void gather_block(const std::complex<Real>* spectrum, Eigen::Index stride, std::complex<Real>* block,
+                                      Eigen::Index ny, Eigen::Index nb) {
+  constexpr Eigen::Index kb = RowColumnFftOf<Real>::kColumns;
   for (Eigen::Index j = 0; j < ny; ++j) {
-    const std::complex<double>* line = spectrum + j * stride;
+    const std::complex<Real>* line = spectrum + j * stride;
     if (j + kPrefetchLines < ny) prefetch_line(line + kPrefetchLines * stride, false);
     if (nb == kb) {
       for (Eigen::Index c = 0; c < kb; ++c) block[c * ny + j] = line[c];
@@ -78,12 +80,12 @@ void gather_block(const std::complex<double>* spectrum, Eigen::Index stride, std
   }
 }
 
-TRIBO_VECTOR_CLONES
-void scatter_block(const std::complex<double>* block, std::complex<double>* spectrum, Eigen::Index stride, Eigen::Index ny,
-                   Eigen::Index nb) {
-  constexpr Eigen::Index kb = RowColumnFft::kColumns;
+template <class Real>
+TRIBO_VECTOR_CLONES void scatter_block(const std::complex<Real>* block, std::complex<Real>* spectrum, Eigen::Index stride,
+                                       Eigen::Index ny, Eigen::Index nb) {
+  constexpr Eigen::Index kb = RowColumnFftOf<Real>::kColumns;
   for (Eigen::Index j = 0; j < ny; ++j) {
-    std::complex<double>* line = spectrum + j * stride;
+    std::complex<Real>* line = spectrum + j * stride;
     if (j + kPrefetchLines < ny) prefetch_line(line + kPrefetchLines * stride, true);
     if (nb == kb) {
       for (Eigen::Index c = 0; c < kb; ++c) line[c] = block[c * ny + j];
@@ -96,22 +98,26 @@ void scatter_block(const std::complex<double>* block, std::complex<double>* spec
 // The block's first nb transformed columns times the kernel (`kernel`: the block's columns in
 // turn, ny values each, as the block), returning Σ weight K |x|² (weight 1 for the k = 0 and
 // Nyquist columns, which have no mirror image in the half spectrum, 2 for the others).
-TRIBO_VECTOR_CLONES
-double multiply_block(std::complex<double>* block, const double* kernel, Eigen::Index ny, Eigen::Index nb,
-                      const double* weight) {
+template <class Real>
+TRIBO_VECTOR_CLONES double multiply_block(std::complex<Real>* block, const Real* kernel, Eigen::Index ny, Eigen::Index nb,
+                                          const double* weight) {
   double e = 0.0;
   for (Eigen::Index c = 0; c < nb; ++c) {
-    double* __restrict x = reinterpret_cast<double*>(block + c * ny);
-    const double* __restrict k = kernel + c * ny;
-    double part = 0.0;
+    Real* __restrict x = reinterpret_cast<Real*>(block + c * ny);
+    const Real* __restrict k = kernel + c * ny;
+    Real part = 0;
 #pragma omp simd reduction(+ : part)
     for (Eigen::Index j = 0; j < ny; ++j) {
-      const double re = x[2 * j], im = x[2 * j + 1], kj = k[j];
-      part += kj * (re * re + im * im);
+      const Real re = x[2 * j], im = x[2 * j + 1], kj = k[j];
+      if constexpr (std::is_same_v<Real, double>) {
+        part += kj * (re * re + im * im);
+      } else {
+        part += (kj * re) * re + (kj * im) * im;  // |x|² alone can pass FLT_MAX on a large grid
+      }
       x[2 * j] = re * kj;
       x[2 * j + 1] = im * kj;
     }
-    e += weight[c] * part;
+    e += weight[c] * static_cast<double>(part);
   }
   return e;
 }
@@ -167,22 +173,7 @@ ElasticHalfSpace::ElasticHalfSpace(const Grid& grid, double e_star_Pa, bool peri
       }
     }
     self_compliance_ = sum;
-    lines_ = std::make_unique<RowColumnFft>(mx, my);
-    // The kernel in the order the column stage reads it (a block's columns in turn, ny values
-    // each; 0 past the last column): read a line stride apart, as the half spectrum is laid out,
-    // every value was a cache miss (the multiply took 10 % of a 1024² solve, 2.5 % now).
-    constexpr Eigen::Index kb = RowColumnFft::kColumns;
-    const Eigen::Index blocks = (mxh + kb - 1) / kb;
-    block_kernel_.reserve(static_cast<std::size_t>(blocks * my * kb));
-    numerics::advise_huge_pages(block_kernel_.data(), sizeof(double) * block_kernel_.capacity());
-    block_kernel_.assign(static_cast<std::size_t>(blocks * my * kb), 0.0);
-    for (Eigen::Index b = 0; b < blocks; ++b) {
-      for (Eigen::Index c = 0; c < kb && b * kb + c < mxh; ++c) {
-        for (Eigen::Index j = 0; j < my; ++j) {
-          block_kernel_[static_cast<std::size_t>((b * kb + c) * my + j)] = kernel_[j * mxh + b * kb + c];
-        }
-      }
-    }
+    make_lines(lines_);
   } else {
     const double a = 0.5 * grid.dx_m, b = 0.5 * grid.dy_m;
     auto real = fft_.real();
@@ -257,22 +248,65 @@ int ElasticHalfSpace::row_threads() const {
   return one_thread_ || grid_.nx * grid_.ny < kParallelMinCells ? 1 : std::max(1, omp_get_max_threads());
 }
 
+template <class Real>
+void ElasticHalfSpace::make_lines(Lines<Real>& lines) {
+  const Eigen::Index mx = fft_.nx(), my = fft_.ny(), mxh = fft_.nx_half();
+  lines.fft = std::make_unique<RowColumnFftOf<Real>>(mx, my);
+  // A single-precision line of the half spectrum is 8 bytes a value: an even stride keeps every
+  // line on FFTW's 16-byte alignment.
+  lines.stride = std::is_same_v<Real, double> ? mxh : mxh + mxh % 2;
+  if constexpr (!std::is_same_v<Real, double>) lines.spectrum.assign(static_cast<std::size_t>(lines.stride * my), {});
+  // The kernel in the order the column stage reads it (a block's columns in turn, ny values
+  // each; 0 past the last column): read a line stride apart, as the half spectrum is laid out,
+  // every value was a cache miss (the multiply took 10 % of a 1024² solve, 2.5 % now).
+  constexpr Eigen::Index kb = RowColumnFftOf<Real>::kColumns;
+  const Eigen::Index blocks = (mxh + kb - 1) / kb;
+  lines.block_kernel.reserve(static_cast<std::size_t>(blocks * my * kb));
+  numerics::advise_huge_pages(lines.block_kernel.data(), sizeof(Real) * lines.block_kernel.capacity());
+  lines.block_kernel.assign(static_cast<std::size_t>(blocks * my * kb), Real{0});
+  for (Eigen::Index b = 0; b < blocks; ++b) {
+    for (Eigen::Index c = 0; c < kb && b * kb + c < mxh; ++c) {
+      for (Eigen::Index j = 0; j < my; ++j) {
+        lines.block_kernel[static_cast<std::size_t>((b * kb + c) * my + j)] = static_cast<Real>(kernel_[j * mxh + b * kb + c]);
+      }
+    }
+  }
+}
+
 double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPass& make_row,
-                                              const std::function<bool(double)>& decide, const UseRow& use_row) {
+                                              const std::function<bool(double)>& decide, const UseRow& use_row,
+                                              Precision precision) {
   if (!periodic_) throw std::logic_error("displacement_by_rows needs a periodic half-space");
   assert(s != u && "displacement_by_rows cannot work in place");
-  const Eigen::Index nx = grid_.nx, ny = grid_.ny, mxh = lines_->nx_half();
-  constexpr Eigen::Index kb = RowColumnFft::kColumns;
-  const RowColumnFft& f = *lines_;
-  std::complex<double>* spectrum = fft_.spectrum();  // the [ny][nx/2 + 1] half spectrum (aligned rows)
+  if (precision == Precision::full) return rows_product(lines_, fft_.spectrum(), s, u, make_row, decide, use_row);
+  if (!lines_single_.fft) make_lines(lines_single_);
+  return rows_product(lines_single_, lines_single_.spectrum.data(), s, u, make_row, decide, use_row);
+}
+
+template <class Real>
+double ElasticHalfSpace::rows_product(Lines<Real>& lines, std::complex<Real>* spectrum, double* s, double* u,
+                                      const RowPass& make_row, const std::function<bool(double)>& decide,
+                                      const UseRow& use_row) {
+  using F = RowColumnFftOf<Real>;
+  constexpr bool kFull = std::is_same_v<Real, double>;
+  const Eigen::Index nx = grid_.nx, ny = grid_.ny, mxh = lines.fft->nx_half(), stride = lines.stride;
+  constexpr Eigen::Index kb = F::kColumns;
+  const F& f = *lines.fft;
   const int threads = row_threads();
-  // Per thread: two blocks of columns (the column transforms go from one to the other), and a
-  // line of nx doubles for lines of s and u that do not have the plans' alignment (odd nx: every
-  // other line) and for the lines of u when u is not kept.
-  const Eigen::Index scratch = 2 * kb * ny + nx / 2 + 1;
-  scratch_.resize(static_cast<std::size_t>(threads * scratch));
+  // Per thread: two blocks of columns (the column transforms go from one to the other), a line of
+  // nx values of the transforms' precision — for lines of s and u that do not have the plans'
+  // alignment (odd nx: every other line), or in single precision for each line of s and u — and
+  // in single precision a line of nx doubles, for the lines of u when u is not kept. An even
+  // length keeps each thread's share 16-byte aligned.
+  const Eigen::Index line_values = nx / 2 + 1, scratch_raw = 2 * kb * ny + line_values + (kFull ? 0 : nx);
+  const Eigen::Index scratch = scratch_raw + scratch_raw % 2;
+  lines.scratch.resize(static_cast<std::size_t>(threads * scratch));
   const bool even_x = nx % 2 == 0;
-  auto line_buffer = [&](int t) { return reinterpret_cast<double*>(scratch_.data() + t * scratch + 2 * kb * ny); };
+  auto line_buffer = [&](int t) { return reinterpret_cast<Real*>(lines.scratch.data() + t * scratch + 2 * kb * ny); };
+  auto wide_buffer = [&](int t) {
+    if constexpr (kFull) return line_buffer(t);
+    else return reinterpret_cast<double*>(lines.scratch.data() + t * scratch + 2 * kb * ny + line_values);
+  };
 
   // 1. Lines of s, each transformed along x as soon as it is made.
 #pragma omp parallel num_threads(threads)
@@ -280,9 +314,14 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
     const int t = omp_get_thread_num(), m = omp_get_num_threads();
     for (Eigen::Index j = ny * t / m; j < ny * (t + 1) / m; ++j) {
       make_row(t, j);
-      const double* line = s + j * nx;
-      if (!RowColumnFft::aligned(line)) line = std::copy_n(line, nx, line_buffer(t)) - nx;
-      f.row_forward(line, spectrum + j * mxh);
+      const double* made = s + j * nx;
+      const Real* line;
+      if constexpr (kFull) {
+        line = F::aligned(made) ? made : std::copy_n(made, nx, line_buffer(t)) - nx;
+      } else {
+        line = std::transform(made, made + nx, line_buffer(t), [](double x) { return static_cast<Real>(x); }) - nx;
+      }
+      f.row_forward(line, spectrum + j * stride);
     }
   }
   // 2. Blocks of kb columns: gathered, along y into the second block, times the kernel (with the
@@ -293,18 +332,18 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
 #pragma omp parallel num_threads(threads)
   {
     const int t = omp_get_thread_num(), m = omp_get_num_threads();
-    std::complex<double>* block = scratch_.data() + t * scratch;
-    std::complex<double>* transformed = block + kb * ny;
+    std::complex<Real>* block = lines.scratch.data() + t * scratch;
+    std::complex<Real>* transformed = block + kb * ny;
     double e = 0.0;
     for (Eigen::Index b = blocks * t / m; b < blocks * (t + 1) / m; ++b) {
       const Eigen::Index k0 = b * kb, nb = std::min(kb, mxh - k0);
-      gather_block(spectrum + k0, mxh, block, ny, nb);
+      gather_block(spectrum + k0, stride, block, ny, nb);
       f.columns_forward(block, transformed, nb);
       std::array<double, kb> weight{};
       for (Eigen::Index c = 0; c < nb; ++c) weight[c] = k0 + c == 0 || (even_x && k0 + c == mxh - 1) ? 1.0 : 2.0;
-      e += multiply_block(transformed, block_kernel_.data() + b * ny * kb, ny, nb, weight.data());
+      e += multiply_block(transformed, lines.block_kernel.data() + b * ny * kb, ny, nb, weight.data());
       f.columns_inverse(transformed, block, nb);
-      scatter_block(block, spectrum + k0, mxh, ny, nb);
+      scatter_block(block, spectrum + k0, stride, ny, nb);
     }
     part[static_cast<std::size_t>(t)] = e;
   }
@@ -316,12 +355,17 @@ double ElasticHalfSpace::displacement_by_rows(double* s, double* u, const RowPas
   {
     const int t = omp_get_thread_num(), m = omp_get_num_threads();
     for (Eigen::Index j = ny * t / m; j < ny * (t + 1) / m; ++j) {
-      double* line = u != nullptr ? u + j * nx : line_buffer(t);
-      if (RowColumnFft::aligned(line)) {
-        f.row_inverse(spectrum + j * mxh, line);
+      double* line = u != nullptr ? u + j * nx : wide_buffer(t);
+      if constexpr (kFull) {
+        if (F::aligned(line)) {
+          f.row_inverse(spectrum + j * stride, line);
+        } else {
+          f.row_inverse(spectrum + j * stride, line_buffer(t));
+          line = std::copy_n(line_buffer(t), nx, line) - nx;
+        }
       } else {
-        f.row_inverse(spectrum + j * mxh, line_buffer(t));
-        line = std::copy_n(line_buffer(t), nx, line) - nx;
+        f.row_inverse(spectrum + j * stride, line_buffer(t));
+        std::copy_n(line_buffer(t), nx, line);
       }
       use_row(t, j, line);
     }

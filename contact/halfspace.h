@@ -69,10 +69,15 @@ class ElasticHalfSpace {
   // Every line j is made and used by the same thread t < row_threads() (its accumulators can be
   // kept per thread and merged in thread order). Returns the energy. `s` and `u` are nx × ny
   // arrays (x contiguous) and must not alias.
+  // With Precision::single the lines of s are rounded to float and the transforms, the kernel and
+  // the half spectrum are FFTW's single precision: u to a few 1e-7 of max |u| and the energy to
+  // 1e-7, in a little over half the time at 1024² (bench/README.md), for an iterative solve far
+  // from its tolerance.
   using RowPass = std::function<void(int thread, Eigen::Index line)>;
   using UseRow = std::function<void(int thread, Eigen::Index line, const double* u_line)>;
+  enum class Precision { full, single };
   double displacement_by_rows(double* s, double* u, const RowPass& make_row, const std::function<bool(double)>& decide,
-                              const UseRow& use_row);
+                              const UseRow& use_row, Precision precision = Precision::full);
   int row_threads() const;
   // Number of r2c + c2r pairs per displacement() — one on the (padded) FFT grid.
   const RealFft2d& fft() const { return fft_; }
@@ -82,9 +87,22 @@ class ElasticHalfSpace {
   double e_star_Pa_;
   bool periodic_;
   RealFft2d fft_;                // nx × ny (periodic) or ≥ (2nx − 2) × (2ny − 2) (padded)
-  std::unique_ptr<RowColumnFft> lines_;           // periodic: the transforms of displacement_by_rows
-  std::vector<double> block_kernel_;              // its kernel by column block: [block][column][j]
-  std::vector<std::complex<double>> scratch_;     // its per-thread column blocks and lines
+  // displacement_by_rows' transforms, kernel by column block ([block][column][j]), per-thread
+  // column blocks and lines, and (single precision) its own half spectrum, lines `stride` apart.
+  template <class Real>
+  struct Lines {
+    std::unique_ptr<RowColumnFftOf<Real>> fft;
+    std::vector<Real> block_kernel;
+    std::vector<std::complex<Real>> scratch, spectrum;
+    Eigen::Index stride = 0;
+  };
+  template <class Real>
+  void make_lines(Lines<Real>& lines);
+  template <class Real>
+  double rows_product(Lines<Real>& lines, std::complex<Real>* spectrum, double* s, double* u, const RowPass& make_row,
+                      const std::function<bool(double)>& decide, const UseRow& use_row);
+  Lines<double> lines_;       // periodic; the half spectrum is fft_'s
+  Lines<float> lines_single_;  // made at the first single-precision product
   Eigen::ArrayXd kernel_;        // real Fourier multiplier on the half spectrum, 1/(FFT size) folded in
   double self_compliance_ = 0.0;
   bool one_thread_ = false;      // constructed with threads = 1

@@ -491,6 +491,9 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   };
   take_state(state_pass(delta), delta, true);
 
+  // Products in single precision until the residual reaches single_precision_above.
+  bool single = hs.periodic() && opt.single_precision_above > opt.tolerance;
+  int single_pairs = 0;
   double tau = 1.0 / c0;  // trial step length (m/Pa → Pa per m of gap)
   double residual = 0.0;
   bool converged = false, have_step = false;
@@ -524,6 +527,21 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       residual = relative();
     }
     if (!std::isfinite(residual)) break;
+    if (single && (!(residual > opt.single_precision_above) || it >= max_iterations)) {
+      // The single products' round-off, added up in v, is near the residual now (or the solve
+      // ends): u = G p again in double, the state's sums from it, and double from here on. The
+      // last step's sums were of a single product: the next direction starts afresh. (A start
+      // already this close took no single product: v is the start's double one.)
+      single = false;
+      if (single_pairs > 0) {
+        hs.displacement_and_energy(p, v);
+        ++fft_pairs;
+        v += h0;
+        take_state(state_pass(delta), delta, true);
+        have_step = false;
+        continue;
+      }
+    }
     if (residual <= opt.tolerance) {
       converged = true;
       break;
@@ -586,7 +604,9 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
           [&](double den) { return descent = line_minimum(merged(steps), den); },
           [&](int t, Eigen::Index j, const double* w_line) {
             states[static_cast<std::size_t>(t)].merge(update_at(j * nx, nx, w_line, alpha, ref, scaled));
-          });
+          },
+          single ? ElasticHalfSpace::Precision::single : ElasticHalfSpace::Precision::full);
+      single_pairs += single ? 1 : 0;
       if (descent) updated = merged(states);
     } else {
       const StepStats sc = grid_chunks<StepStats>(
@@ -638,6 +658,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   out.summary.iterations = it;
   out.summary.residual = residual;
   out.summary.fft_pairs = fft_pairs;
+  out.summary.single_pairs = single_pairs;
   std::ostringstream msg;
   if (converged) {
     msg << "converged in " << it << " iterations, residual " << residual << " <= " << opt.tolerance;
@@ -661,6 +682,7 @@ bool NormalContactOptions::is_valid(std::string* why) const {
   if (!(tolerance > 0.0 && tolerance < 1.0)) return fail("tolerance must lie in (0, 1)");
   if (max_iterations < 0) return fail("max_iterations must be >= 0");
   if (!(pressure_cap_Pa > 0.0)) return fail("pressure cap (hardness) must be positive");
+  if (!(single_precision_above >= 0.0)) return fail("single_precision_above must be >= 0");
   return true;
 }
 

@@ -90,6 +90,7 @@ py::dict contact_summary(const contact::NormalContactSummary& s) {
   d["iterations"] = s.iterations;
   d["residual"] = s.residual;
   d["fft_pairs"] = s.fft_pairs;
+  d["single_pairs"] = s.single_pairs;
   d["message"] = s.message;
   return d;
 }
@@ -241,7 +242,7 @@ tolerance: relative complementarity residual; max_iterations 0 = automatic; thre
 
 Returns dict: pressure_Pa, gap_m, displacement_m, plastic_increment_m (arrays (nx, ny));
 normal_load_N, approach_m, real_area_m2, plastic_area_m2, area_fraction, max_pressure_Pa, mean_gap_m;
-summary {converged, iterations, residual, fft_pairs, message}. Non-convergence is reported there,
+summary {converged, iterations, residual, fft_pairs, single_pairs, message}. Non-convergence is reported there,
 not raised; bad input raises ValueError.)",
         "gap0_m"_a, "size_m"_a, "size_y_m"_a = py::none(), "e_star_Pa"_a = 1.137e11, "normal_load_N"_a = py::none(),
         "approach_m"_a = py::none(), "mean_gap_m"_a = py::none(), "periodic"_a = true, "hardness_Pa"_a = py::none(),
