@@ -9,6 +9,7 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "numerics/huge_pages.h"
@@ -34,8 +35,9 @@ void init_threads_once() {
   std::call_once(once, [] {
     if (fftw_init_threads() == 0) throw std::runtime_error("FFTW: fftw_init_threads failed");
     std::lock_guard<std::mutex> lock(planner_mutex());
-    wisdom_loaded = fftw_import_wisdom_from_string(detail::kShippedFftwWisdom) != 0 &&
-                    fftwf_import_wisdom_from_string(detail::kShippedFftwfWisdom) != 0;
+    const bool double_loaded = fftw_import_wisdom_from_string(detail::kShippedFftwWisdom) != 0;
+    const bool single_loaded = fftwf_import_wisdom_from_string(detail::kShippedFftwfWisdom) != 0;
+    wisdom_loaded = double_loaded && single_loaded;
   });
 }
 
@@ -288,11 +290,19 @@ void run_columns(void* block_plan, void* column_plan, const std::complex<Real>* 
   // fftw's signature is non-const; an out-of-place complex transform preserves its input.
   auto* i = reinterpret_cast<Cx*>(const_cast<std::complex<Real>*>(in));
   auto* o = reinterpret_cast<Cx*>(out);
-  if (count == RowColumnFftOf<Real>::kColumns) {
+  // A single-precision column of odd length ends 8 bytes off FFTW's 16-byte alignment, so every
+  // other column of a block is misaligned for the one-column plan (planned on aligned arrays). The
+  // block plan knows its columns' offsets: a partial block is transformed whole, its unused
+  // columns holding whatever the scratch held (finite values, never scattered back).
+  constexpr bool kSingle = std::is_same_v<Real, float>;
+  if (count == RowColumnFftOf<Real>::kColumns || (kSingle && ny % 2 == 1)) {
     Fftw<Real>::execute_dft(block_plan, i, o);
     return;
   }
-  for (Eigen::Index k = 0; k < count; ++k) Fftw<Real>::execute_dft(column_plan, i + k * ny, o + k * ny);
+  for (Eigen::Index k = 0; k < count; ++k) {
+    assert(RowColumnFftOf<Real>::aligned(i + k * ny) && RowColumnFftOf<Real>::aligned(o + k * ny));
+    Fftw<Real>::execute_dft(column_plan, i + k * ny, o + k * ny);
+  }
 }
 }  // namespace
 

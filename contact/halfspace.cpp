@@ -105,7 +105,7 @@ TRIBO_VECTOR_CLONES double multiply_block(std::complex<Real>* block, const Real*
   for (Eigen::Index c = 0; c < nb; ++c) {
     Real* __restrict x = reinterpret_cast<Real*>(block + c * ny);
     const Real* __restrict k = kernel + c * ny;
-    Real part = 0;
+    double part = 0.0;
 #pragma omp simd reduction(+ : part)
     for (Eigen::Index j = 0; j < ny; ++j) {
       const Real re = x[2 * j], im = x[2 * j + 1], kj = k[j];
@@ -117,7 +117,7 @@ TRIBO_VECTOR_CLONES double multiply_block(std::complex<Real>* block, const Real*
       x[2 * j] = re * kj;
       x[2 * j + 1] = im * kj;
     }
-    e += weight[c] * static_cast<double>(part);
+    e += weight[c] * part;
   }
   return e;
 }

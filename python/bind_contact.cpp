@@ -119,7 +119,7 @@ py::dict solve_contact(const ArrayXXd& gap0_m, double size_m, std::optional<doub
                        std::optional<double> normal_load_N, std::optional<double> approach_m,
                        std::optional<double> mean_gap_m, bool periodic, std::optional<double> hardness_Pa,
                        double tangential_load_N, double alpha, std::optional<double> interface_shear_strength_Pa,
-                       double tolerance, int max_iterations, int threads) {
+                       double tolerance, int max_iterations, double single_precision_above, int threads) {
   if (gap0_m.rows() < 1 || gap0_m.cols() < 1) throw std::invalid_argument("gap0_m: empty array");
   const int controls = int(normal_load_N.has_value()) + int(approach_m.has_value()) + int(mean_gap_m.has_value());
   if (controls != 1) throw std::invalid_argument("give exactly one of normal_load_N, approach_m, mean_gap_m");
@@ -132,6 +132,7 @@ py::dict solve_contact(const ArrayXXd& gap0_m, double size_m, std::optional<doub
   contact::NormalContactOptions options;
   options.tolerance = tolerance;
   options.max_iterations = max_iterations;
+  options.single_precision_above = single_precision_above;
   if (std::string why; !options.is_valid(&why)) throw std::invalid_argument(why);
 
   py::dict d;
@@ -238,7 +239,9 @@ Control, exactly one of: normal_load_N (N), approach_m (rigid approach, m), mean
 tangential_load_N > 0 (N, with normal_load_N and hardness_Pa): junction growth under the Tabor cap
 sqrt(sigma0^2 - alpha tau^2) with alpha and interface_shear_strength_Pa (tau_i, Pa; None = never slips)
 as `tribo contact` does; the extra dict "junction" then reports it.
-tolerance: relative complementarity residual; max_iterations 0 = automatic; threads 0 = all OpenMP threads.
+tolerance: relative complementarity residual; max_iterations 0 = automatic; single_precision_above: the
+products in single precision while the residual is above it (periodic), 0 = double throughout;
+threads 0 = all OpenMP threads.
 
 Returns dict: pressure_Pa, gap_m, displacement_m, plastic_increment_m (arrays (nx, ny));
 normal_load_N, approach_m, real_area_m2, plastic_area_m2, area_fraction, max_pressure_Pa, mean_gap_m;
@@ -247,7 +250,7 @@ not raised; bad input raises ValueError.)",
         "gap0_m"_a, "size_m"_a, "size_y_m"_a = py::none(), "e_star_Pa"_a = 1.137e11, "normal_load_N"_a = py::none(),
         "approach_m"_a = py::none(), "mean_gap_m"_a = py::none(), "periodic"_a = true, "hardness_Pa"_a = py::none(),
         "tangential_load_N"_a = 0.0, "alpha"_a = 25.0, "interface_shear_strength_Pa"_a = py::none(),
-        "tolerance"_a = 1e-8, "max_iterations"_a = 0, "threads"_a = 0);
+        "tolerance"_a = 1e-8, "max_iterations"_a = 0, "single_precision_above"_a = 1e-6, "threads"_a = 0);
 }
 
 }  // namespace tribo::python

@@ -97,14 +97,16 @@ TEST_P(LineProduct, EqualsTheTwoDimensionalProductAndItsEnergy) {
 // 64 × 48 is below the size where the lines are split between threads. The last column block
 // holds one column at 256² and 64 × 48, six at 90 × 64 (46 columns in blocks of 8); in single
 // precision at 64 × 48 the half spectrum's 33 values a line are padded to 34 (8-byte values: an
-// even stride keeps every line on FFTW's alignment).
+// even stride keeps every line on FFTW's alignment); at 99² and 201 × 171 (two threads) the last
+// block holds 2 and 5 columns of odd length, every other one 8 bytes off FFTW's alignment.
 INSTANTIATE_TEST_SUITE_P(EvenOddThreads, LineProduct,
                          ::testing::Values(LineCase{256, 256, 1}, LineCase{256, 256, 2}, LineCase{255, 192, 1},
                                            LineCase{255, 192, 2}, LineCase{64, 48, 2}, LineCase{90, 64, 1}));
 INSTANTIATE_TEST_SUITE_P(SinglePrecision, LineProduct,
                          ::testing::Values(LineCase{256, 256, 1, Precision::single}, LineCase{256, 256, 2, Precision::single},
                                            LineCase{255, 192, 2, Precision::single}, LineCase{64, 48, 2, Precision::single},
-                                           LineCase{90, 64, 1, Precision::single}));
+                                           LineCase{90, 64, 1, Precision::single}, LineCase{99, 99, 1, Precision::single},
+                                           LineCase{201, 171, 2, Precision::single}));
 
 // When decide() declines, no line of u is transformed back or used.
 TEST(LineProductDeclined, LeavesTheDisplacementUntouched) {

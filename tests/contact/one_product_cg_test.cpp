@@ -189,6 +189,25 @@ TEST(MixedPrecision, SingleProductsFarFromTheToleranceReachTheDoubleSolution) {
   }
 }
 
+// A solve stopped by its iteration limit while its products are single takes u = G p in double
+// before it returns: the returned displacement is G p of the returned pressure to round-off.
+TEST(MixedPrecision, AStopWhileSingleReturnsADoubleState) {
+  const Grid grid = Grid::patch(128, 128, 1e-3, 1e-3);
+  ElasticHalfSpace hs(grid, kEStar, true);
+  const Eigen::ArrayXXd h = rough_gap(128, 7);
+  NormalContactOptions opt;
+  opt.max_iterations = 12;
+  const NormalContactResult r = solve_normal_load(hs, h, ten_percent_load(128, 7), opt);
+  EXPECT_FALSE(r.summary.converged);
+  EXPECT_GT(r.summary.residual, opt.single_precision_above);
+  EXPECT_EQ(r.summary.iterations, 12);
+  EXPECT_EQ(r.summary.single_pairs, 12);
+  EXPECT_EQ(r.summary.fft_pairs, 14);
+  Eigen::ArrayXXd u;
+  hs.displacement(r.pressure_Pa, u);
+  EXPECT_LE((u - r.displacement_m).abs().maxCoeff(), 1e-12 * u.abs().maxCoeff());
+}
+
 TEST(MixedPrecision, ANegativeThresholdIsRejected) {
   NormalContactOptions opt;
   opt.single_precision_above = -1e-6;
