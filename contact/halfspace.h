@@ -88,12 +88,13 @@ class ElasticHalfSpace {
   bool periodic_;
   RealFft2d fft_;                // nx × ny (periodic) or ≥ (2nx − 2) × (2ny − 2) (padded)
   // displacement_by_rows' transforms, kernel by column block ([block][column][j]), per-thread
-  // column blocks and lines, and (single precision) its own half spectrum, lines `stride` apart.
+  // column blocks and lines, and the stride of its half spectrum's lines (in fft_'s spectrum
+  // buffer, which a single-precision one fits in twice over).
   template <class Real>
   struct Lines {
     std::unique_ptr<RowColumnFftOf<Real>> fft;
     std::vector<Real> block_kernel;
-    std::vector<std::complex<Real>> scratch, spectrum;
+    std::vector<std::complex<Real>> scratch;
     Eigen::Index stride = 0;
   };
   template <class Real>
