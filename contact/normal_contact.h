@@ -12,7 +12,8 @@
 // the mean of h + u over the free cells). Elastic contact is the case p_cap = ∞. Surface
 // plasticity with p_cap = σ0 ≈ 3Y is the thesis' fully plastic junction pressure (3.1.9) at F = 0.
 //
-// The iteration takes one half-space product each and keeps u = G p exact (no re-synchronisation):
+// The iteration takes one half-space product each and keeps u = G p exact (no re-synchronisation;
+// in double, see "Mixed precision" below for the products far from the tolerance):
 // from a feasible p (0 ≤ p ≤ p_cap, Σ p ΔA = W) with v = h + u,
 //   t = g − β s on the free cells, β = Σ_F g w / Σ_F s w   (G-conjugate to the last step s, w = G s:
 //                                                          Daniel's formula, robust to projected steps)
