@@ -53,15 +53,18 @@ Eigen::Index padded_length(Eigen::Index n) {
 // spectrum's are more than a page apart, beyond the hardware prefetcher).
 constexpr Eigen::Index kPrefetchLines = 16;
 
-// A block's line: kb values in two cache lines (RowColumnFftOf::kColumns).
-inline void prefetch_line(const void* line, bool write) {
-  const char* p = static_cast<const char*>(line);
-  if (write) {
-    __builtin_prefetch(p, 1);
-    __builtin_prefetch(p + 64, 1);
-  } else {
-    __builtin_prefetch(p);
-    __builtin_prefetch(p + 64);
+// A block's line of the half spectrum: kb values, two 64-byte cache lines in double precision and
+// one in single.
+template <class Real>
+inline void prefetch_line(const std::complex<Real>* line, bool write) {
+  constexpr std::size_t kBytes = RowColumnFftOf<Real>::kColumns * sizeof(std::complex<Real>);
+  const char* p = reinterpret_cast<const char*>(line);
+  for (std::size_t at = 0; at < kBytes; at += 64) {
+    if (write) {
+      __builtin_prefetch(p + at, 1);
+    } else {
+      __builtin_prefetch(p + at);
+    }
   }
 }
 

@@ -409,9 +409,13 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
   const double c0 = hs.self_compliance_m_per_Pa();
   int fft_pairs = 0;
 
-  hs.displacement_and_energy(p, v);  // u of the start
-  ++fft_pairs;
-  v += h0;
+  // v = h + G p by a double product: the start's, and where the single-precision products end.
+  auto displacement_afresh = [&] {
+    hs.displacement_and_energy(p, v);
+    ++fft_pairs;
+    v += h0;
+  };
+  displacement_afresh();
 
   // What the next direction needs from the state: δ (load control: the free cells' mean of v),
   // Σ_F g², and, against the last step, Σ_F g w, Σ_F s w, Σ_F s, Σ_F g s (g = v − δ); and the
@@ -534,9 +538,7 @@ NormalContactResult solve(ElasticHalfSpace& hs, const Eigen::ArrayXXd& h0, Contr
       // already this close took no single product: v is the start's double one.)
       single = false;
       if (single_pairs > 0) {
-        hs.displacement_and_energy(p, v);
-        ++fft_pairs;
-        v += h0;
+        displacement_afresh();
         take_state(state_pass(delta), delta, true);
         have_step = false;
         continue;
