@@ -4,6 +4,7 @@
 // as candidate (20 bootstrap resamples: the tests read the fit, not the confidence).
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "gap/diagnosis.h"
@@ -12,11 +13,18 @@
 
 namespace tribo::gap {
 
-inline Diagnosis diagnose_with_one_candidate(const independent::IndependentCase& c, const std::string& effect) {
+// A bundle and the model it is diagnosed against (a selftest case's CaseBundles), seeded as given.
+inline Diagnosis diagnose_with_one_candidate(const ExperimentBundle& bundle, const rig::FrictionModel& model, const std::string& effect,
+                                             std::uint64_t seed = 1) {
   DiagnosisOptions o;
   o.bootstrap_samples = 20;
   o.candidates = {effect};
-  return diagnose(c.bundle, apply_bundle_rig(c.bundle, rig::RigParameters{}), rig::coulomb(c.model_mu_s, c.model_mu_k), o);
+  o.seed = seed;
+  return diagnose(bundle, apply_bundle_rig(bundle, rig::RigParameters{}), model, o);
+}
+
+inline Diagnosis diagnose_with_one_candidate(const independent::IndependentCase& c, const std::string& effect) {
+  return diagnose_with_one_candidate(c.bundle, rig::coulomb(c.model_mu_s, c.model_mu_k), effect);
 }
 
 }  // namespace tribo::gap

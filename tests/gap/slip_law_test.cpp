@@ -49,11 +49,7 @@ TEST(SlipLaw, OnDieterichsAgeingLawTheSearchReachesTheSlipTransientsBasin) {
   const SelftestCase sc{"slip_transient", {}, 20002, kIndependentGenerator};
   const CaseBundles c = make_case_bundles(sc, synthetic_options(SelftestSet::validation));
   ASSERT_EQ(c.form, "Dieterich-Ruina rate and state, ageing law");
-  DiagnosisOptions o;
-  o.bootstrap_samples = 20;
-  o.candidates = {"slip_transient"};
-  o.seed = sc.seed;
-  const Diagnosis d = diagnose(c.bundle, apply_bundle_rig(c.bundle, rig::RigParameters{}), c.model, o);
+  const Diagnosis d = diagnose_with_one_candidate(c.bundle, c.model, "slip_transient", sc.seed);
   ASSERT_EQ(d.candidates.size(), 1u);
   const Candidate& k = d.candidates.front();
   const double amplitude = k.params.at("slip_transient.amplitude"), beta = k.params.at("slip_transient.rate_weakening");
