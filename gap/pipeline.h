@@ -121,7 +121,7 @@ bool rebase(const FitProblem& p, const Calibration& cal, Baseline& b, std::vecto
 
 // A candidate's fit continued to convergence from where it stopped, the rig free again.
 Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int comparisons);
-// The first four of `ranked` refined (in parallel); the others as they are.
+// The first five of `ranked` refined (in parallel); the others as they are.
 std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, std::vector<Candidate> ranked, int comparisons);
 
 // Nested candidates (a general effect that reduces to a special one in a limit): where the general
