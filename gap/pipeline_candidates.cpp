@@ -189,14 +189,15 @@ std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, st
   // Four: the hardened locus (three parameters on a Coulomb model) fits static friction well enough
   // to rank third on data with a dynamic effect, and with three slots it pushed out the effect
   // itself (independent lift seed 306: the lift's search stops at its grid start, U½ = 0.63 mm/s,
-  // where the cost is flat; refined, it moves to 1.4 mm/s and closes the gap). On two threads the
-  // fourth refinement runs beside the third. Five: a search holds the rig where the calibration
-  // put it, and the calibration moves the rig to absorb what the baseline lacks. Independent Eyring
-  // viscous force, development seed 404: the calibrated stiffness 10 477 N/m (truth 10 130); held
-  // there, the viscous search ends at a train gap of 0.0205 and ranks fifth (6.8 nats); refined
-  // with the rig free it moves the stiffness to 10 068 N/m and leaves 0.0098 (25.5 nats,
-  // named at 99.5 %). Four slots had served until the rig's one-step integration (35e7cf0) moved
-  // that calibration and pushed the viscous force from fourth to fifth.
+  // where the cost is flat; refined, it moves to 1.4 mm/s and closes the gap). Five: a search holds
+  // the rig where the calibration put it, and the calibration moves the rig to absorb what the
+  // baseline lacks. Independent Eyring viscous force, development seed 404: the calibrated
+  // stiffness 10 477 N/m (truth 10 130); held there, the viscous search ends at a train gap of
+  // 0.0205 and ranks fifth (6.8 nats); refined with the rig free it moves the stiffness to
+  // 10 068 N/m and leaves 0.0098 (25.5 nats, named at 99.5 %). Four slots had served until the
+  // rig's one-step integration (35e7cf0) moved that calibration and pushed the viscous force from
+  // fourth to fifth. On two threads the fifth refinement runs in a round of its own (development
+  // medians 61 s rig, 75 s independent, against 65 and 70 s with four, on differently loaded cores).
   constexpr std::size_t kRefined = 5;
   numerics::parallel_for(std::min(kRefined, ranked.size()), [&](std::size_t k) { ranked[k] = refine(p, b, ranked[k], comparisons); });
   return ranked;
