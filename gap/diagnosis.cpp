@@ -80,7 +80,6 @@ std::vector<ProposedSeparation> propose_tests(const ExperimentBundle& bundle, co
 std::string DiagnosisOptions::invalid_reason() const {
   if (starts < 1) return "starts must be at least 1";
   if (max_iterations < 1) return "max_iterations must be at least 1";
-  if (!(refinement_stop_nats >= 0.0)) return "refinement_stop_nats must not be negative";
   if (!(unexplained_floors > 1.0)) return "unexplained_floors must exceed 1";
   if (bootstrap_samples < 0) return "bootstrap_samples must not be negative";
   if (refit_leaders < 0) return "refit_leaders must not be negative";

@@ -29,11 +29,6 @@ enum class FitWeights { observable, likelihood };
 struct DiagnosisOptions {
   int starts = 3;                      // fits per candidate: from the best grid points (else the defaults, then random points)
   int max_iterations = 12;             // Levenberg-Marquardt iterations per start
-  // A refinement (the leaders', the calibration's) also stops once an accepted step raises the
-  // training items' profile log-likelihood (fit.h) by less than this many nats; 0: Ceres' relative
-  // stop alone, |Δcost|/cost < 1e-6. A tenth of a nat, against evidence that must exceed
-  // Evidence::kStrong = 3 nats with standard errors of several.
-  double refinement_stop_nats = 0.1;
   FitWeights fit_weights = FitWeights::likelihood;
   // A held-out gap above this many noise floors is a real disagreement: if no candidate halves its
   // excess over the floor, the verdict is "unexplained" (one that halves it without earning is
@@ -78,8 +73,7 @@ struct Localization {
 };
 
 // How a least-squares fit (Ceres) ended: its termination type ("CONVERGENCE", "NO_CONVERGENCE" when
-// the iteration limit stopped it, "CONVERGENCE_IN_NATS" when a refinement's step gained less than
-// kRefinementStopNats, fit.h, ...) and iterations, for the start that gave the result.
+// the iteration limit stopped it, ...) and iterations, for the start that gave the result.
 struct FitTermination {
   std::string termination = "not fitted";
   int iterations = 0;

@@ -3,17 +3,13 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <memory>
 #include <random>
 #include <stdexcept>
 
 #include "gap/parallel_numeric_diff.h"
-#include "gap/verdict.h"
 #include "numerics/format.h"
 
 namespace tribo::gap {
@@ -82,68 +78,7 @@ int missing_items(const Comparison& c, const FitSetup& s, const std::vector<bool
 // from the transient to the steady scatter; a 4 × 4 grid named the quick set's lift thermal thinning.
 constexpr int kProfileIterations = 3;
 
-// Ends a refinement when an accepted step raised the training items' profile log-likelihood by
-// less than DiagnosisOptions::refinement_stop_nats. Ceres' own stop is relative to the cost
-// (|Δcost|/cost < 1e-6); on a cost far above the noise it kept iterating on changes the data cannot
-// see: independent validation seed 14942 (Kato ageing), the slip transient refined 19 iterations
-// in 110 s at D_c ≈ 0.3 µm, 14 of its steps rejected, for 0.23 % of the cost.
-class StopBelowNats final : public ceres::IterationCallback {
- public:
-  StopBelowNats(const Comparison& c, const std::vector<FitParameter>& space, const FitSetup& start, const std::vector<int>& train,
-                const std::vector<bool>& needed, std::uint64_t seed, const double* u, double stop_nats)
-      : c_(c), space_(space), start_(start), train_(train), needed_(needed), seed_(seed), u_(u), stop_nats_(stop_nats),
-        noise_(item_noise(c.items(), c.relative_noise())) {}
-
-  ceres::CallbackReturnType operator()(const ceres::IterationSummary& summary) override {
-    if (summary.iteration > 0 && !summary.step_is_successful) return ceres::SOLVER_CONTINUE;
-    const double l = log_likelihood();
-    const bool small = summary.iteration > 0 && l - last_ < stop_nats_;
-    last_ = l;
-    return small ? ceres::SOLVER_TERMINATE_SUCCESSFULLY : ceres::SOLVER_CONTINUE;
-  }
-
- private:
-  double log_likelihood() const {
-    FitSetup s = start_;
-    apply(space_, std::vector<double>(u_, u_ + space_.size()), s);
-    std::vector<double> r;
-    try {
-      r = c_.residuals(c_.predict(s.rig, s.model, seed_, nullptr, &needed_));
-    } catch (const std::invalid_argument&) {
-      r.assign(c_.items().size(), 1.0);
-    }
-    return profile_log_likelihood(c_.items(), r, noise_, train_);
-  }
-
-  const Comparison& c_;
-  const std::vector<FitParameter>& space_;
-  const FitSetup& start_;
-  const std::vector<int>& train_;
-  const std::vector<bool>& needed_;
-  std::uint64_t seed_;
-  const double* u_;
-  double stop_nats_;
-  std::vector<double> noise_;
-  double last_ = -std::numeric_limits<double>::infinity();
-};
-
 }  // namespace
-
-double profile_log_likelihood(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& noise,
-                              const std::vector<int>& train) {
-  std::map<std::string, std::array<double, 3>> by;  // Σ r², Σ σ², n
-  for (int k : train) {
-    const auto i = static_cast<std::size_t>(k);
-    auto& a = by[items[i].observable];
-    a[0] += r[i] * r[i], a[1] += noise[i] * noise[i], a[2] += 1.0;
-  }
-  double l = 0.0;
-  for (const auto& [o, a] : by) {
-    constexpr double kLeast = Predictive::kResolution * Predictive::kResolution;
-    l -= 0.5 * a[2] * std::log(std::max({a[0] / a[2], a[1] / a[2], kLeast}));
-  }
-  return l;
-}
 
 std::vector<FitParameter> effect_parameters(const std::string& effect) {
   std::vector<FitParameter> out;
@@ -283,17 +218,10 @@ FitResult fit(const Comparison& c, const std::vector<FitParameter>& space, const
     so.logging_type = ceres::SILENT;
     so.num_threads = 1;
     so.function_tolerance = refine ? 1e-6 : 1e-4;  // |Δcost|/cost
-    std::unique_ptr<StopBelowNats> stop;
-    if (refine && tail.empty() && o.refinement_stop_nats > 0.0) {
-      stop = std::make_unique<StopBelowNats>(c, space, start, train, train_mask, o.seed, u.data(), o.refinement_stop_nats);
-      so.callbacks.push_back(stop.get());
-      so.update_state_every_iteration = true;
-    }
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
-    const bool stopped_in_nats = summary.termination_type == ceres::USER_SUCCESS;
     return std::make_pair(summary.final_cost,
-                          FitTermination{stopped_in_nats ? "CONVERGENCE_IN_NATS" : ceres::TerminationTypeToString(summary.termination_type),
+                          FitTermination{ceres::TerminationTypeToString(summary.termination_type),
                                          std::max(0, static_cast<int>(summary.iterations.size()) - 1), iterations});
   };
   // Starts: the best points of a coarse grid over the effect's coordinates (up to two), each with

@@ -120,14 +120,6 @@ bool better_fit(const FitResult& a, const FitResult& b);
 enum class Resolution { search, refine };
 constexpr double kSearchStep = 0.01;  // the search's difference step in the coordinates u ∈ [1, 2]
 
-// The training items' log-likelihood with each observable's variance profiled out:
-// −Σ_o (n_o / 2) ln m_o, m_o the mean squared residual of o's items in `train`, no lower than their
-// mean squared noise `noise` (gap units; a fit gains nothing by following the noise). A step
-// changes the comparison of candidates by about its change, in nats: the evidence (verdict.h) is a
-// held-out log density whose predictive variance per observable is estimated alike.
-double profile_log_likelihood(const std::vector<Item>& items, const std::vector<double>& r, const std::vector<double>& noise,
-                              const std::vector<int>& train);
-
 // Least squares over the items of positive weight w_i (the training items), residual w_i r_i,
 // over the coordinates of `space` from `start`. The first `randomised_from` coordinates are the
 // baseline's (profiled on the grid); the rest the effect's, gridded (up to two) when there are
