@@ -121,7 +121,11 @@ bool rebase(const FitProblem& p, const Calibration& cal, Baseline& b, std::vecto
 
 // A candidate's fit continued to convergence from where it stopped, the rig free again.
 Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int comparisons);
-// The first five of `ranked` refined (in parallel); the others as they are.
+// Whether a candidate explains anything held out: positive evidence over the baseline, or a
+// held-out gap below the baseline's.
+bool explains(const Candidate& c);
+// Those of the first five of `ranked` that explain something refined (in parallel); the others as
+// they are.
 std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, std::vector<Candidate> ranked, int comparisons);
 
 // Nested candidates (a general effect that reduces to a special one in a limit): where the general
@@ -149,9 +153,9 @@ std::vector<Candidate> reduce_pair(const FitProblem& p, const Baseline& b, std::
 
 // A pair is the last answer before "unexplained": when the best single closes less than
 // pair_threshold of the held-out gap and leaves more than unexplained_floors noise floors
-// (`noise_floor`, the held-out gap the data's noise alone leaves), the two best are fitted
-// together, its members are refined from its fit (reduce_pair), and every candidate is judged
-// among one more comparison. Below that, a gap is `none` or a single's even when a pair would cut
+// (`noise_floor`, the held-out gap the data's noise alone leaves), and one of the two best
+// explains something (explains()), the two are fitted together, its members are refined from its
+// fit (reduce_pair), and every candidate is judged among one more comparison. Below that, a gap is `none` or a single's even when a pair would cut
 // it further: in the 160 validation cases of seeds 9001–9010 a pair was searched in 54, every one
 // but one below 5 floors, and named in 2, both wrong (docs/gap.md). Returns the candidates ranked
 // and the number of comparisons they were judged among.
