@@ -154,11 +154,12 @@ std::vector<Candidate> reduce_pair(const FitProblem& p, const Baseline& b, std::
 // A pair is the last answer before "unexplained": when the best single closes less than
 // pair_threshold of the held-out gap and leaves more than unexplained_floors noise floors
 // (`noise_floor`, the held-out gap the data's noise alone leaves), and each of the two best
-// explains something alone (explains()), the two are fitted together, its members are refined from its
-// fit (reduce_pair), and every candidate is judged among one more comparison. Below that, a gap is `none` or a single's even when a pair would cut
-// it further: in the 160 validation cases of seeds 9001–9010 a pair was searched in 54, every one
-// but one below 5 floors, and named in 2, both wrong (docs/gap.md). Returns the candidates ranked
-// and the number of comparisons they were judged among.
+// explains something alone (explains()), the two are fitted together, its members are refined
+// from its fit (reduce_pair), and every candidate is judged among one more comparison. Below
+// that, a gap is `none` or a single's even when a pair would cut it further: in the 160
+// validation cases of seeds 9001–9010 a pair was searched in 54, every one but one below 5
+// floors, and named in 2, both wrong (docs/gap.md). Returns the candidates ranked and the number
+// of comparisons they were judged among.
 struct Paired {
   std::vector<Candidate> candidates;
   int comparisons = 0;
