@@ -33,8 +33,9 @@
 //     calibrated baseline's decisively — by more than 3 nats (a likelihood ratio of 20), and by two
 //     standard errors of the difference or, where the evidence rests on a few items, with the
 //     held-out gap halved. If the best single closes less than `pair_threshold` of the gap and
-//     leaves more than `unexplained_floors` noise floors, the two best singles are fitted together,
-//     and each is refined again from the pair's fit without the other (pipeline.h reduce_pair).
+//     leaves more than `unexplained_floors` noise floors, the two best singles, when each explains
+//     something held out alone (pipeline.h explains), are fitted together, and each is refined
+//     again from the pair's fit without the other (pipeline.h reduce_pair).
 //     A nested pair is judged with each at its best: when thermal thinning (which is viscous
 //     friction as U_T → ∞) fits train better, viscous friction is refined again from its projection.
 //  4. Verdict: the simplest earning candidate, unless one with more parameters has decisive
