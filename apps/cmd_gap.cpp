@@ -252,10 +252,10 @@ void run_diagnose(const DiagnoseArgs& args) {
   make_output_dir(args.out);
   const std::filesystem::path dir(args.out);
   const int candidates = static_cast<int>(o.candidates.size());
-  // Steps reported, at most: calibration, each candidate, the five leading refined (those that
-  // explain something), a pair, its refinement and its two members refined from it, and the
-  // leaders' refits for the resamples.
-  Progress progress("gap: fitting", 1 + candidates + std::min(5, candidates) + 4 + 1);
+  // Steps reported, at most: calibration, each candidate, the leaders refined (those that explain
+  // something), a pair, its refinement and its two members refined from it, and the leaders'
+  // refits for the resamples.
+  Progress progress("gap: fitting", 1 + candidates + std::min(static_cast<int>(gap::kRefinedLeaders), candidates) + 4 + 1);
   o.progress = [&](const std::string& what) { progress.step(what); };
   gap::Diagnosis d;
   try {

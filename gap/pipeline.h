@@ -124,8 +124,10 @@ Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int
 // Whether a candidate explains anything held out: positive evidence over the baseline, or a
 // held-out gap below the baseline's.
 bool explains(const Candidate& c);
-// Those of the first five of `ranked` that explain something refined (in parallel); the others as
-// they are.
+// How many of the ranking's leaders are refined at most (refine_leaders explains why five).
+constexpr std::size_t kRefinedLeaders = 5;
+// Those of the first kRefinedLeaders of `ranked` that explain something refined (in parallel); the
+// others as they are.
 std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, std::vector<Candidate> ranked, int comparisons);
 
 // Nested candidates (a general effect that reduces to a special one in a limit): where the general

@@ -206,8 +206,7 @@ std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, st
   // the slip transient's refinement took 110 s, its rate state relaxing in ~10 µs while slipping,
   // and ended at -0.3 nats). Both development sets: the 48 verdicts and confidences the same to
   // the digit, wall time -3 % (rig) and -4 % (independent); 14942 the same verdict (docs/gap.md).
-  constexpr std::size_t kRefined = 5;
-  numerics::parallel_for(std::min(kRefined, ranked.size()), [&](std::size_t k) {
+  numerics::parallel_for(std::min(kRefinedLeaders, ranked.size()), [&](std::size_t k) {
     if (explains(ranked[k])) ranked[k] = refine(p, b, ranked[k], comparisons);
   });
   return ranked;
