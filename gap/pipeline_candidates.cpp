@@ -156,7 +156,9 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
     // thesis form, amplitude 0.97, D_c 0.51 mm) searched from mid-range ended at β = 0.032,
     // amplitude 0.23 and μk 34 % above the truth, a train gap of 0.033, and squeeze_film was named
     // at 100 %; from β = 0 the search reaches 0.0037 (amplitude 0.97, D_c 0.49 mm) in 7 s. So it
-    // searches from both and keeps the better fit.
+    // searches from both and keeps the better fit — except from a start read off a velocity step,
+    // whose steady levels before and after each step show β's slope directly (and whose measured
+    // record, the slowest diagnosis, would pay the second search near its 5-min bar).
     FitSetup thesis_form = start;
     const rig::ParameterSpec& beta = rig::effect_info("slip_transient").parameters[2];
     assert(beta.name == "rate_weakening");
