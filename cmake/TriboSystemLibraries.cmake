@@ -1,12 +1,11 @@
 # The system libraries Debian 12 ships without a usable CMake package — FFTW (pkg-config, double
 # and single precision, plus its OpenMP threads library), SuiteSparse 5 and hypre (neither a
 # pkg-config nor a CMake file) — and LAPACK (CMake's FindLAPACK), as imported targets
-# tribo::fftw, tribo::suitesparse, tribo::hypre and tribo::lapack, and liquid-dsp (a header and a
-# library, no package file) as tribo::liquid. One file for both uses: the
+# tribo::fftw, tribo::suitesparse, tribo::hypre and tribo::lapack. One file for both uses: the
 # build includes it from TriboDependencies.cmake, and the installed triboConfig.cmake includes it
 # so that a consumer's find_package(tribo) re-finds them on its own machine instead of trusting
 # paths recorded at tribo's build. Expects OpenMP::OpenMP_CXX to exist (found before).
-if(TARGET tribo::fftw AND TARGET tribo::suitesparse AND TARGET tribo::hypre AND TARGET tribo::lapack AND TARGET tribo::liquid)
+if(TARGET tribo::fftw AND TARGET tribo::suitesparse AND TARGET tribo::hypre AND TARGET tribo::lapack)
   return()
 endif()
 
@@ -47,10 +46,3 @@ target_link_libraries(tribo::hypre INTERFACE ${HYPRE_LIBRARY} ${MPI_CXX_LIBRARIE
 find_package(LAPACK REQUIRED)
 add_library(tribo::lapack INTERFACE IMPORTED)
 target_link_libraries(tribo::lapack INTERFACE LAPACK::LAPACK)
-
-# liquid-dsp (gap/recorder.h): the Butterworth design of a record's anti-alias filter.
-find_path(LIQUID_INCLUDE_DIR liquid/liquid.h REQUIRED)
-find_library(LIQUID_LIBRARY liquid REQUIRED)
-add_library(tribo::liquid INTERFACE IMPORTED)
-target_include_directories(tribo::liquid INTERFACE ${LIQUID_INCLUDE_DIR})
-target_link_libraries(tribo::liquid INTERFACE ${LIQUID_LIBRARY})

@@ -70,26 +70,6 @@ std::optional<double> rig_key(const toml::table& rig, const std::string& key, co
   return v;
 }
 
-// [recorder]: both keys or neither, an order of 1 to 8 and a positive, finite cut-off; a
-// pin_on_disc bundle only (compare.cpp reads constant-speed runs through it).
-AntiAliasFilter anti_alias_filter(const toml::table& recorder, const std::string& kind, const fs::path& file, long table_line) {
-  const toml::node* order = recorder.get("anti_alias_order");
-  const toml::node* cutoff = recorder.get("anti_alias_cutoff_Hz");
-  if (!order || !cutoff) rig::fail_at(file, table_line, "[recorder] needs both anti_alias_order and anti_alias_cutoff_Hz");
-  const auto n = order->value<int64_t>();
-  if (!n || *n < 1 || *n > 8)
-    rig::fail_at(file, static_cast<long>(order->source().begin.line), "[recorder] anti_alias_order must be an integer from 1 to 8");
-  const auto fc = cutoff->value<double>();
-  if (!fc || !std::isfinite(*fc) || *fc <= 0.0)
-    rig::fail_at(file, static_cast<long>(cutoff->source().begin.line), "[recorder] anti_alias_cutoff_Hz must be a positive number");
-  if (kind != "pin_on_disc")
-    rig::fail_at(file, table_line, "[recorder] is read for kind = \"pin_on_disc\" only (a drive history is simulated at its measured instants)");
-  for (const auto& [key, node] : recorder)
-    if (key.str() != "anti_alias_order" && key.str() != "anti_alias_cutoff_Hz")
-      rig::fail_at(file, static_cast<long>(node.source().begin.line), "unknown key [recorder] " + std::string(key.str()));
-  return {static_cast<int>(*n), *fc};
-}
-
 // [rig.relative_uncertainty]: a refinable key, given in [rig] itself, with u ∈ (0, 1).
 std::map<std::string, double> relative_uncertainties(const toml::table& table, const ExperimentBundle& b, const fs::path& file) {
   std::map<std::string, double> out;
@@ -135,7 +115,7 @@ ExperimentBundle read_bundle(const fs::path& dir) {
     }
     for (const auto& [key, node] : doc) {
       const std::string k(key.str());
-      if (k != "rig" && k != "recorder" && k != "materials" && k != "lubricant" && k != "notes")
+      if (k != "rig" && k != "materials" && k != "lubricant" && k != "notes")
         b.warnings.push_back(toml_file.string() + ": unknown table '" + k + "' ignored");
     }
     if (const toml::table* rig = doc["rig"].as_table()) {
@@ -168,12 +148,6 @@ ExperimentBundle read_bundle(const fs::path& dir) {
       for (const auto& [key, node] : *rig)
         if (!known.count(std::string(key.str())))
           b.warnings.push_back(toml_file.string() + ": unknown key [rig] " + std::string(key.str()) + " ignored");
-    }
-    if (const toml::node* recorder = doc.get("recorder")) {
-      const toml::table* table = recorder->as_table();
-      const long line = static_cast<long>(recorder->source().begin.line);
-      if (!table) rig::fail_at(toml_file, line, "[recorder] must be a table");
-      b.anti_alias = anti_alias_filter(*table, b.kind, toml_file, line);
     }
   }
 
@@ -273,8 +247,6 @@ void write_bundle(const ExperimentBundle& b, const fs::path& dir) {
       os << "\n[rig.relative_uncertainty]\n";
       for (const auto& [k, u] : b.relative_uncertainty) os << k << " = " << u << "\n";
     }
-    if (b.anti_alias.stated())
-      os << "\n[recorder]\nanti_alias_order = " << b.anti_alias.order << "\nanti_alias_cutoff_Hz = " << b.anti_alias.cutoff_Hz << "\n";
   }
   if (!b.static_points.empty()) {
     std::ofstream os = open(dir / "static_friction.csv");

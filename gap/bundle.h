@@ -10,10 +10,6 @@
 //                         as a fraction u (the true value within ± u of the stated one, as
 //                         "k = 168 N/m ± 3 %"); the diagnosis refines a constant within that
 //                         interval, and takes one without a stated uncertainty as exact;
-//                         [recorder] anti_alias_order, anti_alias_cutoff_Hz (optional, together;
-//                         pin_on_disc only): the low-pass filter the data acquisition applies to
-//                         every channel before it samples it — the simulation is read through the
-//                         same filter (compare.h);
 //                         optional [materials], [lubricant], [notes] (kept as text, not read)
 //   static_friction.csv   phi_dot_per_s,mu_s                 one row per stick event (optional)
 //   runs.csv              run_id,v_m_per_s,file               one trace per driven speed (optional)
@@ -60,14 +56,6 @@ struct RegimePoint {
   double frequency_rad_per_s = 0.0;
 };
 
-// The data acquisition's anti-alias filter: a Butterworth low-pass of `order` with its −3 dB point
-// at `cutoff_Hz`, applied to every channel before sampling (order 0: none stated).
-struct AntiAliasFilter {
-  int order = 0;
-  double cutoff_Hz = 0.0;
-  bool stated() const { return order > 0; }
-};
-
 struct ExperimentBundle {
   std::string name;  // directory name
   std::string kind = "pin_on_disc";
@@ -79,7 +67,6 @@ struct ExperimentBundle {
   // (4.2.3)) or "spring_force" (k x alone, a rig without an accelerometer): how the traces'
   // friction was measured, and so how the simulation reads its own.
   bool spring_force_channel = false;
-  AntiAliasFilter anti_alias;  // [recorder]
   std::vector<StaticPoint> static_points;
   std::vector<Run> runs;
   std::vector<RegimePoint> regimes;

@@ -10,7 +10,6 @@
 #include <optional>
 #include <stdexcept>
 
-#include "gap/recorder.h"
 #include "gap/trace_features.h"
 #include "numerics/format.h"
 #include "numerics/median.h"
@@ -43,11 +42,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // sit between two trained neighbours, or any curve through the trained ones passes it.
 constexpr int kBinsPerBlock = 3;
 constexpr int kSamplesPerPeriod = 50;  // output density of simulated constant-speed runs
-// A run read through a stated anti-alias filter is simulated, interpolated and filtered on a grid this
-// many times finer than the record's spacing (the filter's cut-off lies below the record's Nyquist
-// frequency, so at a quarter of the spacing the bilinear design is within 1 % of the analog filter
-// up to twice the cut-off), and output at least that densely while it slips.
-constexpr int kRecorderSubsteps = 4;
 constexpr double kSimulatedCycles = 4.0;  // cycles a simulated constant-speed window holds at least (RunPlan::simulated_extra_s)
 // ... and at most about a quarter of this many events later (a stick-slip cycle is a breakaway and
 // a re-attachment): a constant-speed simulation ends at this event, its window the second half of
@@ -274,42 +268,6 @@ Signal sampled_as_recorded(const Signal& s, const std::vector<bool>& slipping, c
   return out;
 }
 
-// A simulated constant-speed run as its record's data acquisition reads it (RunPlan::anti_alias):
-// on a grid kRecorderSubsteps times finer than the record's spacing from the run's start (linear
-// between the simulation's outputs), through the anti-alias filter, and then every
-// kRecorderSubsteps-th value — the record's own sampling.
-Signal through_recorder(const Signal& s, const RunPlan& plan) {
-  const double h = plan.sample_spacing_s / kRecorderSubsteps;
-  const auto n = static_cast<std::size_t>(std::floor((s.t.back() - s.t.front()) / h)) + 1;
-  std::vector<double> t(n), mu(n), x(s.x.empty() ? 0 : n);
-  std::size_t i = 0;
-  for (std::size_t j = 0; j < n; ++j) {
-    t[j] = s.t.front() + static_cast<double>(j) * h;
-    while (i + 2 < s.t.size() && s.t[i + 1] <= t[j]) ++i;
-    const double w = s.t.size() > 1 ? std::clamp((t[j] - s.t[i]) / (s.t[i + 1] - s.t[i]), 0.0, 1.0) : 0.0;
-    const std::size_t k = std::min(i + 1, s.t.size() - 1);
-    mu[j] = s.mu[i] + w * (s.mu[k] - s.mu[i]);
-    if (!x.empty()) x[j] = s.x[i] + w * (s.x[k] - s.x[i]);
-  }
-  mu = low_pass(plan.anti_alias, mu, h);
-  if (!x.empty()) x = low_pass(plan.anti_alias, x, h);
-  Signal out;
-  for (std::size_t j = 0; j < n; j += kRecorderSubsteps) {
-    out.t.push_back(t[j]);
-    out.mu.push_back(mu[j]);
-    if (!x.empty()) out.x.push_back(x[j]);
-  }
-  return out;
-}
-
-// Output density of a simulation read through the recorder: a sample every kRecorderSubsteps-th of
-// the record's spacing while it slips, so that the filter sees the breakaway and the re-attachment
-// as the steps they are, not as ramps between coarse outputs.
-int recorder_samples_per_period(const rig::RigParameters& rig, const RunPlan& plan) {
-  const double natural_period_s = 2.0 * M_PI * std::sqrt(rig.mass_kg / rig.stiffness_N_per_m);
-  return static_cast<int>(std::ceil(natural_period_s / (plan.sample_spacing_s / kRecorderSubsteps)));
-}
-
 // The instants a drive history's simulation outputs: the measured ones, and each `lag_s` earlier
 // (within the run) where an instrument with that lag reads the state; increasing, no repeats.
 std::vector<double> recorder_instants(const std::vector<double>& measured_s, double lag_s) {
@@ -347,7 +305,6 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           options.stop_when_settled = !trace;
         }
         options.samples_per_period = kSamplesPerPeriod;
-        if (plan.anti_alias.stated()) options.samples_per_period = std::max(kSamplesPerPeriod, recorder_samples_per_period(rig, plan));
         // A drive history is read at the measured instants: the simulation outputs there (and τ
         // earlier, where a lagging instrument reads the acceleration), not on a grid of its natural
         // period — 4 samples per period of a 1e6 N/m machine were 13 times the record's 5850.
@@ -398,10 +355,7 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
             for (auto* v : {&read.t, &read.mu, &read.x, &read.x_drive}) v->resize(n);
             read_slipping.resize(n);
           }
-          if (plan.anti_alias.stated()) {  // a uniform record (the constructor checks)
-            read = through_recorder(read, plan);
-            if (trace) s = through_recorder(s, plan);
-          } else if (plan.slip_spacing_s > 0.0) {
+          if (plan.slip_spacing_s > 0.0) {
             read = sampled_as_recorded(read, read_slipping, plan);
             if (trace) s = sampled_as_recorded(s, slipping, plan);
           }
@@ -434,30 +388,6 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
         // A few cycles of breakaways are all it reads: a law that chatters at a velocity match, or
         // many short cycles, end the run at the event limit instead of the budget of a trace.
         options.max_events = std::min<long>(Comparison::event_budget(rig, plan.duration_s), kStaticPointEvents);
-        const double from = rig::analysis_start_s(0.0, plan.duration_s);
-        if (plan.anti_alias.stated()) {
-          // Read off the recorded channel as the traces are: the record's maximum around each
-          // breakaway, within two periods of the filter's cut-off either side — the filter delays
-          // and rounds the peak that the breakaway's own reading would give.
-          options.samples_per_period = std::max(4, recorder_samples_per_period(rig, plan));
-          options.stick_samples_per_run = static_cast<int>(std::ceil(plan.duration_s / (plan.sample_spacing_s / kRecorderSubsteps)));
-          const Simulated sim = run_simulation(rig, rig::Drive::constant(v), law, model, seed, options, plan);
-          if (sim.samples.size() < 3) break;
-          Signal s;
-          for (std::size_t i = 0; i < sim.samples.size(); ++i)
-            if (s.t.empty() || sim.samples[i].t_s > s.t.back()) s.t.push_back(sim.samples[i].t_s), s.mu.push_back(sim.friction_N[i] / W);
-          const Signal recorded = through_recorder(s, plan);
-          const double half_window_s = 2.0 / plan.anti_alias.cutoff_Hz;
-          std::vector<std::pair<double, double>> breakaways;
-          for (const rig::Event& e : sim.events) {
-            if (e.kind != rig::EventKind::breakaway) continue;
-            const auto a = std::lower_bound(recorded.t.begin(), recorded.t.end(), e.t_s - half_window_s) - recorded.t.begin();
-            const auto b = std::upper_bound(recorded.t.begin(), recorded.t.end(), e.t_s + half_window_s) - recorded.t.begin();
-            if (b > a) breakaways.emplace_back(e.t_s, *std::max_element(recorded.mu.begin() + a, recorded.mu.begin() + b));
-          }
-          if (const auto mu = static_point_reading(breakaways, sim.summary, options.max_events, from)) f["mu_s"] = *mu;
-          break;
-        }
         // Only breakaways matter: keep no samples and output as sparsely as allowed.
         options.samples_per_period = 4;  // the rig's minimum
         options.stick_samples_per_run = 10;
@@ -469,7 +399,8 @@ Features predict_plan(const RunPlan& plan, const rig::RigParameters& rig, const 
           if (e.kind == rig::EventKind::breakaway) breakaways.emplace_back(e.t_s, rig::breakaway_reading(instrument, e.mu, e.load_rate_per_s));
         };
         const rig::SimulationSummary run = rig::simulate(rig, rig::Drive::constant(v), law, options, observer);
-        if (const auto mu = static_point_reading(breakaways, run, options.max_events, from)) f["mu_s"] = *mu;
+        if (const auto mu = static_point_reading(breakaways, run, options.max_events, rig::analysis_start_s(0.0, plan.duration_s)))
+          f["mu_s"] = *mu;
         break;
       }
       case RunPlan::Kind::regime_point: {
@@ -650,13 +581,6 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     } else {
       plan.kind = RunPlan::Kind::constant_speed;
       if (!(run.v_m_per_s > 0.0)) throw std::invalid_argument("run " + run.run_id + ": constant-speed trace needs v_m_per_s > 0");
-      plan.anti_alias = bundle.anti_alias;
-      if (plan.anti_alias.stated() && plan.slip_spacing_s > 0.0)
-        throw std::invalid_argument("run " + run.run_id + ": [recorder] states an anti-alias filter, but the trace is not sampled uniformly");
-      if (plan.anti_alias.stated() && !(plan.anti_alias.cutoff_Hz * plan.sample_spacing_s < 0.5))
-        throw std::invalid_argument("run " + run.run_id + ": [recorder] anti_alias_cutoff_Hz = " + numerics::shortest(plan.anti_alias.cutoff_Hz) +
-                                    " is not below the Nyquist frequency of the trace's sampling (" +
-                                    numerics::shortest(0.5 / plan.sample_spacing_s) + " Hz)");
       std::string regime;
       double step = 0.0;
       // With the slider's displacement recorded, its regime is read as the rig reads a simulated
@@ -730,10 +654,6 @@ Comparison::Comparison(const ExperimentBundle& bundle, const rig::RigParameters&
     // be integrated for hours (the thesis example's 1e-4 1/s point: 26 000 s more).
     const double load_s = (2.0 * p.mu_s + 0.2) / p.phi_dot_per_s;
     plan.duration_s = load_s + std::min(2.0 * load_s, kStaticPointCycles_s);
-    // Stick events read off the recorded channel pass its filter too, realised at a step of a
-    // twentieth of the cut-off's period (f_c h = 0.05, as a 200-Hz filter on a 1-kHz record's quarter step).
-    plan.anti_alias = bundle.anti_alias;
-    if (plan.anti_alias.stated()) plan.sample_spacing_s = kRecorderSubsteps * 0.05 / plan.anti_alias.cutoff_Hz;
     plans_.push_back(plan);
     add("mu_s_vs_load_rate", 0, plan.label, "static", v, new_unit(UnitKey::at_speed(v)), p.mu_s, "mu_s", {{"mu_s", static_noise}});
   }

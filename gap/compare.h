@@ -110,9 +110,6 @@ struct RunPlan {
   // compare.cpp: the one-run form changed the velocity-step fits and is not yet understood).
   bool carry_law_state = false;
   bool spring_force_channel = false;  // the bundle's friction_channel: the simulation reads k x alone
-  // The bundle's anti-alias filter (a constant-speed run): the simulation is read through it on a
-  // grid finer than the record's and then at the record's spacing (compare.cpp through_recorder).
-  AntiAliasFilter anti_alias;
 };
 
 struct SimulatedRun {

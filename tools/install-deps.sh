@@ -5,7 +5,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config git
   libeigen3-dev libsuitesparse-dev libhypre-dev libfftw3-dev libsundials-dev libceres-dev
-  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libopenblas-openmp-dev libliquid-dev
+  libtomlplusplus-dev libcli11-dev nlohmann-json3-dev libopenblas-openmp-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-pandas python3-dev pybind11-dev
   python3-venv python3-pip python3-setuptools python3-wheel

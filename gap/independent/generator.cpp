@@ -180,8 +180,6 @@ ExperimentBundle record_bundle(const IndependentLaw& truth, const RigConstants& 
   ExperimentBundle b;
   b.name = "independent";
   b.kind = "pin_on_disc";
-  // What the data acquisition states about itself: its anti-alias filter, ahead of the sampling.
-  b.anti_alias = {o.recorder.anti_alias_order, o.recorder.anti_alias_cutoff_fraction * 0.5 * o.recorder.rate_Hz};
   b.mass_kg = told.mass_kg;
   b.stiffness_N_per_m = told.stiffness_N_per_m;
   b.damping_N_s_per_m = told.damping_N_s_per_m;
