@@ -1,0 +1,69 @@
+"""tools/slip_speed_profile.py bins a trace's friction by the slider's slip speed U = v − ẋ: on a
+made-up record whose friction is a known step in U, each quarter-decade bin holds the samples and
+the mean μ put there, the slips are counted once each despite the velocity channel's noise, and the
+lift's excess is the closed form μk f_max exp(−(U/U_s)^n). A trace without ẋ is refused (exit 2)."""
+
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from helpers import SOURCE_DIR
+
+TOOL = os.path.join(SOURCE_DIR, "tools", "slip_speed_profile.py")
+
+
+def write_bundle(root, rows, columns="t_s,xdot_m_per_s,friction_N"):
+    os.makedirs(os.path.join(root, "traces"))
+    with open(os.path.join(root, "experiment.toml"), "w") as f:
+        f.write("[rig]\nnormal_load_N = 100.0\n")
+    with open(os.path.join(root, "runs.csv"), "w") as f:
+        f.write("run_id,v_m_per_s,file\n0,0.01,traces/run_0.csv\n")
+    with open(os.path.join(root, "traces", "run_0.csv"), "w") as f:
+        f.write(columns + "\n" + "".join(",".join(f"{x:.9g}" for x in r) + "\n" for r in rows))
+
+
+class SlipSpeedProfile(unittest.TestCase):
+    def test_bins_friction_by_slip_speed_and_counts_each_slip_once(self):
+        # Three cycles at v = 10 mm/s, 1 ms apart: 20 samples stuck (ẋ = v ± 0.5 mm/s of noise, μ = 0.2),
+        # then a slip of 10 samples at U = 0.05 m/s (μ 0.15) and 10 at U = 0.2 m/s (μ 0.1).
+        rows, t = [], 0.0
+        for _ in range(3):
+            for i in range(20):
+                rows.append((t, 0.01 + (0.0005 if i % 2 else -0.0005), 20.0)); t += 1e-3
+            for u, mu in ((0.05, 0.15), (0.2, 0.10)):
+                for _ in range(10):
+                    rows.append((t, 0.01 - u, 100.0 * mu)); t += 1e-3
+        with tempfile.TemporaryDirectory() as root:
+            write_bundle(root, rows)
+            out = subprocess.run([sys.executable, TOOL, root], capture_output=True, text=True, check=True).stdout
+        self.assertIn("run 0, v_drive = 0.01 m/s, 3 slips", out)
+        bins = {line.split(",")[0]: line.split(",")[2:] for line in out.splitlines() if line[0].isdigit()}
+        # U = 0.05 lies in [0.0316, 0.0562), U = 0.2 in [0.178, 0.316); the stuck samples' U = ±0.5 mm/s
+        # fall in [0.000316, 0.000562) (the positive half) or are left out (U ≤ 0.1 mm/s).
+        self.assertEqual(bins["0.0316"], ["30", "0.1500", "10.00"])
+        self.assertEqual(bins["0.178"], ["30", "0.1000", "10.00"])
+        self.assertEqual(bins["0.000316"][:2], ["30", "0.2000"])
+
+    def test_lift_excess_is_the_closed_form_and_a_trace_without_xdot_is_refused(self):
+        truth = {"parameters": {"coulomb.mu_k": 0.2, "lift.max_fraction": 0.5, "lift.stribeck_speed_m_per_s": 0.025,
+                                "lift.exponent": 1.5}}
+        with tempfile.TemporaryDirectory() as root:
+            write_bundle(root, [(0.0, 0.01, 20.0), (1e-3, 0.01, 20.0)])
+            with open(os.path.join(root, "truth.json"), "w") as f:
+                json.dump(truth, f)
+            out = subprocess.run([sys.executable, TOOL, root, "--truth", os.path.join(root, "truth.json")],
+                                 capture_output=True, text=True, check=True).stdout
+            self.assertIn(f"0.05,{0.2 * 0.5 * math.exp(-(2.0 ** 1.5)):.5f}", out)  # 0.00591
+            bad = os.path.join(root, "bad")
+            write_bundle(bad, [(0.0, 20.0), (1e-3, 20.0)], columns="t_s,friction_N")
+            run = subprocess.run([sys.executable, TOOL, bad], capture_output=True, text=True)
+        self.assertEqual(run.returncode, 2)
+        self.assertIn("no xdot_m_per_s column", run.stderr)
+
+
+if __name__ == "__main__":
+    unittest.main()
