@@ -6,7 +6,9 @@
 For every constant-speed trace with the columns t_s, xdot_m_per_s and friction_N (or mu) of a
 bundle (gap/bundle.h), the slip speed U = v_drive − ẋ (m/s; 0 while the slider sticks to the disc)
 and μ = F / W, binned in U by quarter decades from 0.1 mm/s: per bin the number of samples, their
-mean μ, and the time a slip spends there (ms per slip, a slip counted where U passes 20 mm/s). A velocity-dependent friction law shows
+mean μ, and the time a slip spends there (ms per slip, a slip counted where U passes 20 mm/s;
+the samples times the record's mean spacing, so for a uniformly sampled record only — one
+sampled densely in slip and sparsely in stick overstates it). A velocity-dependent friction law shows
 as μ changing with U; where a bin's time per slip is a few samples, the record's anti-alias filter
 and the breakaway's and re-attachment's jumps decide what it shows there.
 
@@ -73,6 +75,8 @@ def main(argv):
     a = parser.parse_args(argv)
     try:
         runs, load = read_bundle_runs(a.bundle)
+        if a.run is not None and a.run not in (r[0] for r in runs):
+            raise ValueError(f"{a.bundle / 'runs.csv'}: no run_id {a.run}")
         for run_id, v, trace in runs:
             if a.run is not None and run_id != a.run:
                 continue

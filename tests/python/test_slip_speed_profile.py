@@ -1,7 +1,8 @@
 """tools/slip_speed_profile.py bins a trace's friction by the slider's slip speed U = v − ẋ: on a
 made-up record whose friction is a known step in U, each quarter-decade bin holds the samples and
 the mean μ put there, the slips are counted once each despite the velocity channel's noise, and the
-lift's excess is the closed form μk f_max exp(−(U/U_s)^n). A trace without ẋ is refused (exit 2)."""
+lift's excess is the closed form μk f_max exp(−(U/U_s)^n). A trace without ẋ, or a run the bundle
+does not hold, is refused (exit 2)."""
 
 import json
 import math
@@ -63,6 +64,14 @@ class SlipSpeedProfile(unittest.TestCase):
             run = subprocess.run([sys.executable, TOOL, bad], capture_output=True, text=True)
         self.assertEqual(run.returncode, 2)
         self.assertIn("no xdot_m_per_s column", run.stderr)
+
+    def test_a_run_the_bundle_does_not_hold_is_refused(self):
+        with tempfile.TemporaryDirectory() as root:
+            write_bundle(root, [(0.0, 0.01, 20.0), (1e-3, 0.01, 20.0)])
+            run = subprocess.run([sys.executable, TOOL, root, "--run", "7"], capture_output=True, text=True)
+        self.assertEqual(run.returncode, 2)
+        self.assertIn("runs.csv: no run_id 7", run.stderr)
+        self.assertEqual(run.stdout, "")
 
 
 if __name__ == "__main__":
