@@ -335,6 +335,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
                           {"evidence_se_nats", numerics::finite_or_null(c.evidence_se_nats)}, {"heldout_gap", numerics::finite_or_null(c.heldout_gap)},
                           {"earns", c.earns}});
   j["candidates"] = candidates;
+  j["verdict_adds"] = row.verdict_adds;
   j["indistinguishable_from"] = row.indistinguishable_from;
   j["alike_mechanisms"] = row.alike_mechanisms;
   j["proposal_checks"] = nlohmann::json::array();
@@ -438,6 +439,7 @@ void run_selftest(const SelftestArgs& args) {
                             {"mean_names_per_verdict", numerics::finite_or_null(sum.mean_names_per_verdict)},
                             {"deciding_proposals", sum.deciding_proposals}, {"deciding_proposals_for_truth", sum.deciding_proposals_for_truth},
                             {"named_after_proposed_tests", sum.named_after_proposed_tests},
+                            {"truth_among_adds", sum.truth_among_adds},
                             {"tentative_verdicts", sum.tentative_verdicts}, {"tentative_right", sum.tentative_right},
                             {"mean_heldout_shrink", sum.mean_shrink}, {"mean_test_shrink", sum.mean_test_shrink},
                             {"confusion", sum.confusion}};
@@ -476,6 +478,9 @@ void run_selftest(const SelftestArgs& args) {
     if (sum.effect_cases)
       std::printf("  named once the proposed tests run on the truth are seen (their verdict after the record): %d of %d\n",
                   sum.named_after_proposed_tests, sum.effect_cases);
+    if (sum.effect_cases)
+      std::printf("  the truth among what the verdict adds (the hardening brings the locus a model lacks): %d of %d\n",
+                  sum.truth_among_adds, sum.effect_cases);
     if (sum.tentative_verdicts)
       std::printf("  tentative verdicts (a candidate that halves the gap without earning): %d of %d right\n", sum.tentative_right,
                   sum.tentative_verdicts);

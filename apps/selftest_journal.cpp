@@ -7,7 +7,19 @@
 
 #include <nlohmann/json.hpp>
 
+#include "rig/friction_model.h"
+
 namespace tribo::cli {
+
+std::vector<std::string> adds_of_verdict(const std::string& verdict, const std::vector<std::string>& model_effects) {
+  if (verdict == "none" || verdict == "unexplained") return {};
+  std::vector<std::string> effects;
+  for (std::size_t from = 0, plus = 0; plus != std::string::npos; from = plus + 1) {
+    plus = verdict.find('+', from);
+    effects.push_back(verdict.substr(from, plus == std::string::npos ? std::string::npos : plus - from));
+  }
+  return rig::with_implied_effects(effects, model_effects);
+}
 
 // Rows of an earlier run of the same set (quick or full) from OUT/cases.jsonl, one JSON object a
 // line, appended as each case finishes. A line cut short by a kill is skipped.
@@ -49,6 +61,8 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       }
       r.correct = r.verdict == r.c.true_effect;
       r.git_commit = j.value("git_commit", std::string());
+      r.verdict_adds = j.contains("verdict_adds") ? j.at("verdict_adds").get<std::vector<std::string>>()
+                                                   : adds_of_verdict(r.verdict, r.c.model_effects);
       r.indistinguishable_from = j.value("indistinguishable_from", std::vector<std::string>{});
       r.alike_mechanisms = j.value("alike_mechanisms", std::vector<std::string>{});
       for (const nlohmann::json& k : j.value("proposal_checks", nlohmann::json::array()))

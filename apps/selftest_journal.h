@@ -9,11 +9,16 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "gap/selftest.h"
 
 namespace tribo::cli {
+
+// What a verdict ("none", "unexplained", "a" or "a+b") adds to a model with `model_effects`
+// (gap::Verdict::adds), for journals from before it was written.
+std::vector<std::string> adds_of_verdict(const std::string& verdict, const std::vector<std::string>& model_effects);
 
 // The rows of an earlier run of the same set in `file` (a missing file: none), in file order.
 std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, bool quick);

@@ -174,7 +174,7 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   d.verdict.tentative = choice.tentative;
   d.verdict.heldout_gap_before = d.baseline_heldout.gap;
   d.verdict.heldout_gap_after = chosen ? chosen->heldout_gap_after : d.baseline_heldout.gap;
-  if (chosen) d.verdict.effects = chosen->effects;
+  if (chosen) d.verdict.effects = chosen->effects, d.verdict.adds = implied_effects(chosen->effects, p.model);
   d.best_simulated = chosen ? comparison.predict(chosen->rig, chosen->model, o.seed) : d.baseline_simulated;
   d.verdict.remaining_floors = d.verdict.noise_floor > 0.0 ? d.verdict.heldout_gap_after / d.verdict.noise_floor
                                                            : std::numeric_limits<double>::quiet_NaN();

@@ -101,6 +101,10 @@ struct Candidate {
 
 struct Verdict {
   std::vector<std::string> effects;  // empty: "none" or "unexplained"
+  // What the verdict's change adds to the model: `effects` with those they bring (fit.h
+  // implied_effects: strain-rate hardening brings the junction locus it modifies to a model
+  // without one). The report's "Add …" names these.
+  std::vector<std::string> adds;
   bool unexplained = false;          // the gap stays well above the noise floor whatever is added
   // Named only because it halves the gap's excess over the floor where no candidate earned its
   // parameters (verdict.h Decision::tentative); the report says so and names the others that do.

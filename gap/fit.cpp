@@ -97,13 +97,9 @@ std::vector<FitParameter> effect_parameters(const std::string& effect) {
 }
 
 std::vector<std::string> implied_effects(const std::vector<std::string>& effects, const rig::FrictionModel& model) {
-  std::vector<std::string> out;
-  const bool locus = model.has("rate_dependent_static") || std::count(effects.begin(), effects.end(), "rate_dependent_static");
-  for (const auto& e : effects) {
-    if (e == "strain_rate_hardening" && !locus) out.push_back("rate_dependent_static");
-    out.push_back(e);
-  }
-  return out;
+  std::vector<std::string> present;
+  for (const auto& [name, values] : model.effects) present.push_back(name);
+  return rig::with_implied_effects(effects, present);
 }
 
 double damping_ratio(const rig::RigParameters& rig) {

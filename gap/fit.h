@@ -74,12 +74,12 @@ struct FitSetup {
 // (ParameterSpec::fit); the others keep their values.
 std::vector<FitParameter> effect_parameters(const std::string& effect);
 
-// The effects a candidate's fit moves. strain_rate_hardening reshapes the junction locus that
-// rate_dependent_static gives (catalogue: "implies the locus"); on a model without that locus it
-// brings the locus's own fitted parameters, not the thesis defaults, so that it is judged as the
-// locus with hardening — which reduces to rate_dependent_static at m = 0 — rather than as a
-// hardening index on a static friction fixed elsewhere (independent Johnson–Cook seeds 302, 402
-// fitted m alone to a held-out gap of 0.25–0.49, worse than no effect).
+// The effects a candidate's fit moves: `effects` with those they imply that `model` lacks
+// (rig::EffectInfo::implies). strain_rate_hardening on a model without the junction locus brings
+// the locus's own fitted parameters, not the thesis defaults, so that it is judged as the locus
+// with hardening — which reduces to rate_dependent_static at m = 0 — rather than as a hardening
+// index on a static friction fixed elsewhere (independent Johnson–Cook seeds 302, 402 fitted m
+// alone to a held-out gap of 0.25–0.49, worse than no effect).
 std::vector<std::string> implied_effects(const std::vector<std::string>& effects, const rig::FrictionModel& model);
 
 // Damping ratio ζ = r / (2 √(k M)): the rig's damping when stiffness and mass are fitted too, so

@@ -82,7 +82,7 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
     std::snprintf(buf, sizeof buf,
                   "Add %s to the model (%s): it cuts the held-out gap from %.3g to %.3g%s (%.0f %% smaller, bootstrap confidence %s); "
                   "the baseline misses most in %s (%s, %.0f %% of the squared residual).",
-                  join(chosen->effects, " and ").c_str(), params.c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
+                  join(d.verdict.adds, " and ").c_str(), params.c_str(), d.verdict.heldout_gap_before, d.verdict.heldout_gap_after,
                   floor_text, 100.0 * (1.0 - d.verdict.heldout_gap_after / std::max(d.verdict.heldout_gap_before, 1e-300)),
                   confidence_text(d.verdict.confidence).c_str(), top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-",
                   top ? 100.0 * top->share : 0.0);
@@ -180,6 +180,7 @@ nlohmann::json report_json(const Diagnosis& d) {
   }
   json effect = d.verdict.effects.size() > 1 ? json(d.verdict.effects) : json(verdict_name(d.verdict));
   j["verdict"] = {{"effect", effect},
+                  {"adds", d.verdict.adds},
                   {"heldout_gap_before", d.verdict.heldout_gap_before},
                   {"heldout_gap_after", d.verdict.heldout_gap_after},
                   {"heldout_gap_after_bootstrap_std", d.verdict.heldout_gap_after_std},

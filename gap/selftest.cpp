@@ -263,6 +263,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.confidence_fixed_fits = d.verdict.confidence_fixed_fits;
   row.confidence_bootstrap = d.verdict.confidence_bootstrap;
   row.correct = row.verdict == sc.true_effect;
+  row.verdict_adds = d.verdict.adds;
   row.indistinguishable_from = d.verdict.indistinguishable;
   row.alike_mechanisms = d.verdict.alike_mechanisms;
   for (const Candidate& k : d.candidates)
@@ -317,6 +318,7 @@ SelftestSummary summarise(const std::vector<SelftestRow>& rows) {
         if (!k.verdict_after.empty()) after = k.verdict_after;
       }
       out.named_after_proposed_tests += after == row.c.true_effect;
+      out.truth_among_adds += row.truth_added();
       add(shrink, row.heldout_gap_before, row.heldout_gap_after);
       add(test_shrink, row.test_gap_before, row.test_gap_after);
     }

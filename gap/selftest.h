@@ -12,6 +12,7 @@
 //                  alternative form stands for.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -94,12 +95,19 @@ struct SelftestRow {
   double wall_s = 0.0;  // the diagnosis' wall time (the speed target is per bundle); 0: not recorded
   StageTimes stage_times;  // where that time went (Diagnosis::stage_times); zeros: not recorded
   std::vector<CandidateFigures> candidates;  // in the diagnosis' ranking; empty in journals from before
+  // What the verdict's change adds to the model (Verdict::adds): the verdict's effects, and the locus
+  // the hardening brings to a model without one. Journals from before: derived from the verdict.
+  std::vector<std::string> verdict_adds;
   std::vector<std::string> indistinguishable_from;  // earning candidates the held-out data do not tell from the verdict
   std::vector<std::string> alike_mechanisms;        // Verdict::alike_mechanisms (empty in journals from before)
   std::vector<ProposalCheck> proposal_checks;       // pairs that hold the truth (empty in journals from before)
   std::string git_commit;                    // the build that diagnosed it (journals); empty: not recorded
   // The truth is the verdict or named beside it (indistinguishable_from, alike_mechanisms).
   bool truth_named_or_listed() const;
+  // The truth is among what the verdict adds (verdict_adds); false for controls.
+  bool truth_added() const {
+    return c.true_effect != "none" && std::find(verdict_adds.begin(), verdict_adds.end(), c.true_effect) != verdict_adds.end();
+  }
   // Named without earning its parameters (Verdict::tentative), read from the verdict's candidate
   // figures; false for none, unexplained and journals without candidates.
   bool tentative() const;
@@ -135,6 +143,11 @@ struct SelftestSummary {
   // its record (ProposalCheck::verdict_after) in place of the verdict; a check without one (journals
   // from before it) leaves the verdict.
   int named_after_proposed_tests = 0;
+  // Effect cases whose truth is among what the verdict adds (SelftestRow::truth_added): the verdict,
+  // or the junction locus a hardening verdict brings to a model without one. Not the bar, which
+  // counts the verdict alone: a hardened locus named for a truth the generator wrote as the plain
+  // locus's mechanism (static friction that grows with the time at rest) counts here, not there.
+  int truth_among_adds = 0;
   // Tentative verdicts (SelftestRow::tentative) of effect cases and controls, and how many were right.
   int tentative_verdicts = 0, tentative_right = 0;
   double controls_none_fraction = 0.0;

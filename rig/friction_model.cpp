@@ -1,5 +1,7 @@
 #include "rig/friction_model.h"
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -60,7 +62,8 @@ std::vector<EffectInfo> build_catalogue() {
         {"reference_load_rate_per_s", "1/s", kAnchorLoadRate_per_s, 1e-6, 1e3,
          "load rate at which the locus keeps its location parameter"}},
        {},
-       kAlikeToSqueezeFilm},
+       kAlikeToSqueezeFilm,
+       {"rate_dependent_static"}},
       {"slip_transient",
        "after slip onset friction decays from the breakaway level with slip distance (not time)",
        "thesis section 5.2a, Figs 5.2.3-5.2.6",
@@ -146,6 +149,20 @@ const EffectInfo* find_effect_info(const std::string& name) {
   for (const auto& e : effect_catalogue())
     if (e.name == name) return &e;
   return nullptr;
+}
+
+std::vector<std::string> with_implied_effects(const std::vector<std::string>& effects, const std::vector<std::string>& present) {
+  const auto holds = [](const std::vector<std::string>& names, const std::string& n) {
+    return std::find(names.begin(), names.end(), n) != names.end();
+  };
+  std::vector<std::string> out;
+  for (const std::string& e : effects) {
+    if (const EffectInfo* info = find_effect_info(e))
+      for (const std::string& implied : info->implies)
+        if (!holds(present, implied) && !holds(effects, implied) && !holds(out, implied)) out.push_back(implied);
+    out.push_back(e);
+  }
+  return out;
 }
 
 const EffectInfo& effect_info(const std::string& name) {

@@ -40,6 +40,10 @@ struct EffectInfo {
   // this one's from, whatever form fits best: there they act through the same channel; a hold or a
   // change of the load parts them (the diagnosis shares its confidence between them, gap/verdict.h).
   std::vector<std::string> alike_at_constant_speed = {};
+  // Effects this one acts through and brings to a model that lacks them: strain-rate hardening
+  // reshapes the junction locus of rate_dependent_static, so on a model without the locus it is
+  // added — and fitted — with the locus's own parameters, not a static friction fixed elsewhere.
+  std::vector<std::string> implies = {};
 };
 
 // All effects of the catalogue, in a fixed order.
@@ -48,6 +52,10 @@ const std::vector<EffectInfo>& effect_catalogue();
 const EffectInfo& effect_info(const std::string& name);
 // The same, or nullptr when `name` is not in the catalogue.
 const EffectInfo* find_effect_info(const std::string& name);
+// `effects` with those they imply (EffectInfo::implies) that neither they nor `present` hold, each
+// just before the effect implying it: what adding `effects` to a model with `present` adds. Names
+// not in the catalogue imply nothing.
+std::vector<std::string> with_implied_effects(const std::vector<std::string>& effects, const std::vector<std::string>& present);
 
 class HomogenisedBase;  // rig/homogenised_law.h
 

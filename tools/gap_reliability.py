@@ -16,6 +16,9 @@ ran a proposed test on the truth (`proposal_checks`), the verdict once its recor
 as `tribo gap diagnose --test` states it) replaces the verdict — a wrong verdict may be put right so, a
 right one overturned; in journals from before that field, the one of the pair nearer the record
 where the proposed separation is two noise floors or more. Rows of journals without a noise floor are left out of that table.
+Before the tables, the withheld effects named, and those whose truth is among what the verdict adds
+to the model (`verdict_adds`: the hardened locus brings the junction locus a model lacks; journals
+from before that field, derived from the verdict) — beside the score, not in it.
 
 With --plot PNG (needs matplotlib), both tables drawn: the reliability diagram (share right
 against the mean confidence of each bin, with the diagonal a calibrated confidence would follow)
@@ -40,6 +43,21 @@ def named_or_listed(r):
 
 
 DECIDING_FLOORS = 2.0  # gap::kDecidingFloors
+IMPLIES = {"strain_rate_hardening": ["rate_dependent_static"]}  # rig::EffectInfo::implies, for journals before verdict_adds
+
+
+def verdict_adds(r):
+    """What the verdict adds to the model (gap::Verdict::adds)."""
+    if "verdict_adds" in r:
+        return r["verdict_adds"]
+    if r["verdict"] in ("none", "unexplained"):
+        return []
+    out = []
+    effects = r["verdict"].split("+")
+    for e in effects:
+        out += [i for i in IMPLIES.get(e, []) if i not in effects and i not in (r.get("model_effects") or []) and i not in out]
+        out.append(e)
+    return out
 
 
 def named_after_test(r):
@@ -145,6 +163,9 @@ def main(argv):
     right = sum(r["true_effect"] == "none" for r in nones)
     print(f"{len(rows)} cases; {len(nones)} 'none' verdicts, {right} of them controls"
           + (f": reliability of 'none' {right / len(nones):.3f}" if nones else ""))
+    effects = [r for r in rows if r["true_effect"] != "none"]
+    print(f"{len(effects)} withheld effects: {sum(bool(r['correct']) for r in effects)} named; "
+          f"{sum(r['true_effect'] in verdict_adds(r) for r in effects)} with the truth among what the verdict adds")
     rel, det = reliability(rows), detection(rows)
     print("kind,confidence_from,confidence_to,verdicts,right")
     for kind, bins in rel.items():

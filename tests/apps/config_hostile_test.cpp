@@ -137,6 +137,32 @@ TEST(ConfigHostile, AJournalRowOfTheWrongTypesIsSkippedAndTheValidOneKept) {
   std::filesystem::remove(file);
 }
 
+// What a verdict adds to the model (gap::Verdict::adds) is read back where the journal holds it, and
+// derived from the verdict and the model's effects in a journal from before it: the hardened locus
+// brings the locus a model lacks, a pair both its effects, "none" and "unexplained" nothing. A list
+// of the wrong type skips the line as any other key of the wrong type does.
+TEST(ConfigHostile, WhatTheVerdictAddsIsReadBackOrDerivedFromTheVerdict) {
+  EXPECT_EQ(adds_of_verdict("strain_rate_hardening", {}), (std::vector<std::string>{"rate_dependent_static", "strain_rate_hardening"}));
+  EXPECT_EQ(adds_of_verdict("strain_rate_hardening", {"rate_dependent_static"}), std::vector<std::string>{"strain_rate_hardening"});
+  EXPECT_EQ(adds_of_verdict("thermal_thinning+squeeze_film", {}), (std::vector<std::string>{"thermal_thinning", "squeeze_film"}));
+  EXPECT_TRUE(adds_of_verdict("none", {}).empty());
+  EXPECT_TRUE(adds_of_verdict("unexplained", {}).empty());
+  const auto file = std::filesystem::temp_directory_path() / "tribo-adds-cases.jsonl";
+  const std::string row = R"("true_effect":"rate_dependent_static","model_effects":[],"verdict":"strain_rate_hardening",)"
+                          R"("heldout_gap_before":0.1,"heldout_gap_after":0.01,"confidence":0.2,"quick":true)";
+  std::ofstream(file) << "{\"seed\":1," << row << "}\n"
+                      << "{\"seed\":2,\"verdict_adds\":[\"strain_rate_hardening\"]," << row << "}\n"
+                      << "{\"seed\":3,\"verdict_adds\":7," << row << "}\n";
+  const std::vector<gap::SelftestRow> rows = finished_rows(file, true);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0].verdict_adds, (std::vector<std::string>{"rate_dependent_static", "strain_rate_hardening"}));
+  EXPECT_TRUE(rows[0].truth_added());
+  EXPECT_FALSE(rows[0].correct);  // the score counts the verdict alone
+  EXPECT_EQ(rows[1].verdict_adds, std::vector<std::string>{"strain_rate_hardening"});  // as journalled
+  EXPECT_FALSE(rows[1].truth_added());
+  std::filesystem::remove(file);
+}
+
 // A resumed sweep's results.csv: a point id that is not a non-negative integer, or a point twice,
 // is refused naming the file and line (it ended as "stoi" with no file, or exit status 1, or was
 // taken silently); a sweep.json that is JSON but not an object is another sweep's.

@@ -148,7 +148,7 @@ TEST(ProposedTests, TheConclusionNamesTheTestThatDecidesOrSaysNoneDoes) {
   chosen.effects = {"rate_dependent_static"};
   chosen.heldout_gap_before = 0.07, chosen.heldout_gap_after = 0.035;
   d.candidates = {chosen};
-  d.verdict.effects = chosen.effects;
+  d.verdict.effects = d.verdict.adds = chosen.effects;
   d.verdict.heldout_gap_before = 0.07, d.verdict.heldout_gap_after = 0.035;
   d.verdict.indistinguishable = {"squeeze_film", "strain_rate_hardening"};
   d.proposed_tests = {{"squeeze_film", "stiffer_spring", "the present speeds with a spring twice as stiff", 0.057, 0.011, 5.2},
@@ -172,7 +172,7 @@ TEST(ProposedTests, TheConclusionSaysWhichMechanismShareTheConfidenceAndWhatPart
   Candidate chosen;
   chosen.effects = {"squeeze_film"};
   d.candidates = {chosen};
-  d.verdict.effects = chosen.effects;
+  d.verdict.effects = d.verdict.adds = chosen.effects;
   d.verdict.heldout_gap_before = 0.42, d.verdict.heldout_gap_after = 0.03;
   d.verdict.alike_mechanisms = {"rate_dependent_static"};
   d.proposed_tests = {{"rate_dependent_static", "slide_hold_slide", "a slide-hold-slide at 0.014 m/s", 0.3, 0.02, 15.0}};

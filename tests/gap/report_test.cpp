@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "gap/fit.h"
 #include "gap/report.h"
 #include "rig/homogenised_law.h"
 
@@ -30,7 +31,7 @@ Diagnosis made_up() {
 
 TEST(Report, NamedVerdictGivesTheEffectItsParametersAndTheShrink) {
   Diagnosis d = made_up();
-  d.verdict.effects = {"slip_transient"};
+  d.verdict.effects = d.verdict.adds = {"slip_transient"};
   d.verdict.heldout_gap_after = 0.157;
   d.verdict.remaining_floors = 0.157 / 0.02;
   const std::string s = conclusion(d, &d.candidates.front());
@@ -64,6 +65,34 @@ TEST(Report, NamedVerdictGivesTheEffectItsParametersAndTheShrink) {
   EXPECT_TRUE(report_json(d)["verdict"]["confidence"].is_null());
 }
 
+// Strain-rate hardening reshapes the junction locus (thesis (5.1.2) inside (3.1.24)); on a model
+// without the locus its candidate is fitted with the locus's parameters too (fit.h implied_effects),
+// and the conclusion tells the reader to add both — as gap_report.json's verdict.adds lists them.
+TEST(Report, AHardenedLocusOnAModelWithoutOneIsAddedWithTheLocus) {
+  Diagnosis d = made_up();
+  Candidate c;
+  c.effects = {"strain_rate_hardening"};
+  c.params = {{"rate_dependent_static.mu_s_max", 0.52}, {"strain_rate_hardening.m", 0.21}};
+  c.heldout_gap_after = 0.02;
+  d.candidates = {c};
+  d.verdict.effects = c.effects;
+  d.verdict.adds = implied_effects(c.effects, rig::FrictionModel{});
+  d.verdict.heldout_gap_after = 0.02;
+  const std::string s = conclusion(d, &d.candidates.front());
+  EXPECT_NE(s.find("Add rate_dependent_static and strain_rate_hardening to the model (rate_dependent_static.mu_s_max = 0.52, "
+                   "strain_rate_hardening.m = 0.21)"),
+            std::string::npos)
+      << s;
+  d.baseline_simulated = d.best_simulated = d.measured = {};
+  const nlohmann::json j = report_json(d)["verdict"];
+  EXPECT_EQ(j["effect"], "strain_rate_hardening");  // the candidate's name, as the candidates list it
+  EXPECT_EQ(j["adds"], nlohmann::json({"rate_dependent_static", "strain_rate_hardening"}));
+  // A model that has the locus gets the hardening alone.
+  rig::FrictionModel with_locus;
+  with_locus.add("rate_dependent_static");
+  EXPECT_EQ(implied_effects(c.effects, with_locus), std::vector<std::string>{"strain_rate_hardening"});
+}
+
 // A tentative verdict (verdict.h Decision::tentative) says it did not earn on likelihood, with its
 // evidence, and names the other candidates that halve the excess: 0.08 does (excess 0.078 ≤ half of
 // 0.339), 0.25 does not; "closest" is the smallest held-out gap, not the first in the ranking.
@@ -76,7 +105,7 @@ TEST(Report, ATentativeVerdictSaysItDidNotEarnAndWhatElseHalvesTheGap) {
   lift.effects = {"hydrodynamic_lift"}, lift.heldout_gap_after = 0.25;
   d.candidates.push_back(film);
   d.candidates.push_back(lift);
-  d.verdict.effects = {"slip_transient"};
+  d.verdict.effects = d.verdict.adds = {"slip_transient"};
   d.verdict.tentative = true;
   d.verdict.heldout_gap_after = 0.157;
   d.verdict.remaining_floors = 0.157 / 0.02;

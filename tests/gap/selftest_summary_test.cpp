@@ -77,6 +77,23 @@ TEST(SelftestSummary, TruthBesideTheVerdictIsCountedApartWithTheNamesGiven) {
   EXPECT_TRUE(std::isnan(summarise({rows[4]}).named_or_indistinguishable_fraction));  // controls only
 }
 
+// What the verdict adds to the model (Verdict::adds) is counted beside the score, not in it: the
+// hardened locus on a model without the locus brings the locus (Kato's ageing, a static friction
+// growing with the time at rest, named the hardened locus counts there), a pair both its effects.
+TEST(SelftestSummary, TheTruthAmongWhatTheVerdictAddsIsCountedApart) {
+  std::vector<SelftestRow> rows{row("rate_dependent_static", "strain_rate_hardening", 0.1, kIndependentGenerator),
+                                row("squeeze_film", "thermal_thinning+squeeze_film", 0.2, kIndependentGenerator),
+                                row("viscous_friction", "thermal_thinning", 0.3, kIndependentGenerator),
+                                row("none", "none", 0.7, kIndependentGenerator)};
+  rows[0].verdict_adds = {"rate_dependent_static", "strain_rate_hardening"};
+  rows[1].verdict_adds = {"thermal_thinning", "squeeze_film"};
+  rows[2].verdict_adds = {"thermal_thinning"};
+  const SelftestSummary s = summarise(rows);
+  EXPECT_DOUBLE_EQ(s.identified_fraction, 0.0);  // the score counts the verdict alone
+  EXPECT_EQ(s.truth_among_adds, 2);               // the locus the hardening brings, the film in the pair
+  EXPECT_FALSE(rows[3].truth_added());            // a control's empty change holds no truth
+}
+
 // A proposed test run on the truth counts when its proposed separation reached two floors (the
 // conclusion names only those), and for the truth when the truth's model came nearer its record.
 TEST(SelftestSummary, ProposedTestsCountWhenTheyDecideAndForTheTruthWhenItCameNearer) {

@@ -47,6 +47,7 @@ class GapReliability(unittest.TestCase):
                 dirs.append(os.path.join(root, name))
             out = subprocess.run([sys.executable, TOOL, *dirs], capture_output=True, text=True, check=True).stdout
         self.assertIn("8 cases; 1 'none' verdicts, 1 of them controls", out)
+        self.assertIn("7 withheld effects: 3 named; 3 with the truth among what the verdict adds", out)
         table = {tuple(line.split(",")[:3]): tuple(int(x) for x in line.split(",")[3:])
                  for line in out.splitlines() if line.startswith(("independent,", "rig,"))}
         self.assertEqual(table[("independent", "2", "3")], (1, 0, 1, 1))   # seed 1 from set b: listed, named after its test
@@ -70,6 +71,21 @@ class GapReliability(unittest.TestCase):
         self.assertIn("effect,0.9,1,1,1", out)   # the instrument, named at 95 %: right
         self.assertIn("effect,0,0.5,1,0", out)   # the film taken for ageing at 30 %: wrong
         self.assertIn("none,0.7,0.8,1,1", out)
+
+    def test_the_truth_among_what_the_verdict_adds_is_counted_beside_the_score(self):
+        # Kato's ageing named the hardened locus on a model without the locus (a journal from before
+        # verdict_adds: derived, the locus brought); the same verdict on a model with the locus adds the
+        # hardening alone; a pair holding the truth; a journal that states what was added.
+        rows = [case(1, "rate_dependent_static", "strain_rate_hardening", 9.0),
+                dict(case(2, "rate_dependent_static", "strain_rate_hardening", 9.0), model_effects=["rate_dependent_static"]),
+                case(3, "squeeze_film", "thermal_thinning+squeeze_film", 4.0),
+                dict(case(4, "rate_dependent_static", "strain_rate_hardening", 9.0), verdict_adds=["strain_rate_hardening"]),
+                case(5, "none", "none", 0.8)]
+        with tempfile.TemporaryDirectory() as root:
+            with open(os.path.join(root, "cases.jsonl"), "w") as f:
+                f.writelines(json.dumps(r) + "\n" for r in rows)
+            out = subprocess.run([sys.executable, TOOL, root], capture_output=True, text=True, check=True).stdout
+        self.assertIn("4 withheld effects: 0 named; 2 with the truth among what the verdict adds", out)
 
     def test_plot_without_a_directory_is_refused(self):
         run = subprocess.run([sys.executable, TOOL, "--plot", "x.png"], capture_output=True, text=True)
