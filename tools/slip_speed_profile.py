@@ -7,8 +7,8 @@ For every constant-speed trace with the columns t_s, xdot_m_per_s and friction_N
 bundle (gap/bundle.h), the slip speed U = v_drive − ẋ (m/s; 0 while the slider sticks to the disc)
 and μ = F / W, binned in U by quarter decades from 0.1 mm/s: per bin the number of samples, their
 mean μ, and the time a slip spends there (ms per slip, a slip counted where U passes 20 mm/s;
-the samples times the record's mean spacing, so for a uniformly sampled record only — one
-sampled densely in slip and sparsely in stick overstates it). A velocity-dependent friction law shows
+each sample standing for the time until the next, so that a record sampled densely in slip and
+sparsely in stick is weighed by its own times). A velocity-dependent friction law shows
 as μ changing with U; where a bin's time per slip is a few samples, the record's anti-alias filter
 and the breakaway's and re-attachment's jumps decide what it shows there.
 
@@ -48,7 +48,8 @@ def profile(trace, v, load_N):
             raise ValueError(f"{trace}: friction_N needs [rig] normal_load_N in experiment.toml")
         mu = [float(r["friction_N"]) / load_N for r in rows]
     speed = [v - float(r["xdot_m_per_s"]) for r in rows]
-    spacing = (t[-1] - t[0]) / (len(t) - 1)
+    # Each sample holds until the next (the last for as long as the interval before it).
+    share = [t[i + 1] - t[i] for i in range(len(t) - 1)] + [t[-1] - t[-2] if len(t) > 1 else 0.0]
     # A slip starts where U passes 20 mm/s after it was below 5 mm/s: far outside the sensor noise
     # of ẋ (about 1 mm/s in the independent generator's records), which crosses a single level often.
     slips, stuck = 0, True
@@ -58,13 +59,13 @@ def profile(trace, v, load_N):
         elif u < 0.005:
             stuck = True
     bins = {}
-    for u, m in zip(speed, mu):
+    for u, m, dt in zip(speed, mu, share):
         if u <= 1e-4:
             continue
         k = math.floor(4 * math.log10(u))
-        n, s = bins.get(k, (0, 0.0))
-        bins[k] = (n + 1, s + m)
-    return bins, spacing, max(slips, 1)
+        n, s, time = bins.get(k, (0, 0.0, 0.0))
+        bins[k] = (n + 1, s + m, time + dt)
+    return bins, max(slips, 1)
 
 
 def main(argv):
@@ -80,12 +81,12 @@ def main(argv):
         for run_id, v, trace in runs:
             if a.run is not None and run_id != a.run:
                 continue
-            bins, spacing, slips = profile(trace, v, load)
+            bins, slips = profile(trace, v, load)
             print(f"run {run_id}, v_drive = {v:g} m/s, {slips} slips")
             print("U_from_m_per_s,U_to_m_per_s,samples,mean_mu,ms_per_slip")
             for k in sorted(bins):
-                n, s = bins[k]
-                print(f"{10 ** (k / 4):.3g},{10 ** ((k + 1) / 4):.3g},{n},{s / n:.4f},{1e3 * n * spacing / slips:.2f}")
+                n, s, time = bins[k]
+                print(f"{10 ** (k / 4):.3g},{10 ** ((k + 1) / 4):.3g},{n},{s / n:.4f},{1e3 * time / slips:.2f}")
         if a.truth:
             p = json.loads(a.truth.read_text())["parameters"]
             mu_k, f_max = p["coulomb.mu_k"], p["lift.max_fraction"]

@@ -1,6 +1,6 @@
 """tools/slip_speed_profile.py bins a trace's friction by the slider's slip speed U = v − ẋ: on a
 made-up record whose friction is a known step in U, each quarter-decade bin holds the samples and
-the mean μ put there, the slips are counted once each despite the velocity channel's noise, and the
+the mean μ put there and the time they stand for (the record's own sampling times), the slips are counted once each despite the velocity channel's noise, and the
 lift's excess is the closed form μk f_max exp(−(U/U_s)^n). A trace without ẋ, or a run the bundle
 does not hold, is refused (exit 2)."""
 
@@ -48,6 +48,24 @@ class SlipSpeedProfile(unittest.TestCase):
         self.assertEqual(bins["0.0316"], ["30", "0.1500", "10.00"])
         self.assertEqual(bins["0.178"], ["30", "0.1000", "10.00"])
         self.assertEqual(bins["0.000316"][:2], ["30", "0.2000"])
+
+    def test_time_per_slip_is_the_records_own_for_a_record_sampled_densely_in_slip(self):
+        # Stuck every 5 ms (12 samples), slipping every 0.5 ms (10 samples at U = 0.05 m/s, 10 at 0.2):
+        # each slip sample stands for 0.5 ms, so 5 ms per slip in each bin — the mean spacing (1.9 ms)
+        # would have put 19 ms there.
+        rows, t = [], 0.0
+        for _ in range(3):
+            for i in range(12):
+                rows.append((t, 0.01, 20.0)); t += 5e-3 if i < 11 else 0.5e-3
+            for u, mu in ((0.05, 0.15), (0.2, 0.10)):
+                for _ in range(10):
+                    rows.append((t, 0.01 - u, 100.0 * mu)); t += 0.5e-3
+        with tempfile.TemporaryDirectory() as root:
+            write_bundle(root, rows)
+            out = subprocess.run([sys.executable, TOOL, root], capture_output=True, text=True, check=True).stdout
+        bins = {line.split(",")[0]: line.split(",")[2:] for line in out.splitlines() if line[0].isdigit()}
+        self.assertEqual(bins["0.0316"], ["30", "0.1500", "5.00"])
+        self.assertEqual(bins["0.178"], ["30", "0.1000", "5.00"])
 
     def test_lift_excess_is_the_closed_form_and_a_trace_without_xdot_is_refused(self):
         truth = {"parameters": {"coulomb.mu_k": 0.2, "lift.max_fraction": 0.5, "lift.stribeck_speed_m_per_s": 0.025,
