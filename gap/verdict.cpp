@@ -184,10 +184,19 @@ int verdict_index(const std::vector<Candidate>& cs, const std::vector<Standing>&
     if (cs[a].extra_parameters != cs[b].extra_parameters) return cs[a].extra_parameters < cs[b].extra_parameters;
     return st[a].evidence.gain > st[b].evidence.gain;
   });
+  const auto beaten = [&](std::size_t i) {
+    for (std::size_t j : order)
+      if (cs[j].extra_parameters > cs[i].extra_parameters && decisive(evidence(st[j].lpd, st[i].lpd, m), st[j].heldout_gap, st[i].heldout_gap))
+        return true;
+    return false;
+  };
+  // The leaders of the parameter counts, fewest first; the largest count's leader is never beaten.
   std::size_t chosen = order.front();
-  for (std::size_t i : order) {
-    if (cs[i].extra_parameters <= cs[chosen].extra_parameters) continue;
-    if (decisive(evidence(st[i].lpd, st[chosen].lpd, m), st[i].heldout_gap, st[chosen].heldout_gap)) chosen = i;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const bool leader = k == 0 || cs[order[k]].extra_parameters != cs[order[k - 1]].extra_parameters;
+    if (!leader) continue;
+    chosen = order[k];
+    if (!beaten(chosen)) break;
   }
   // On the development data (352 journalled cases: validation sets 9001-9022, development data
   // since, and the selftest's development runs; docs/gap.md) this moves 9 verdicts, 5 to the

@@ -110,8 +110,12 @@ Standing standing_of(const std::vector<Item>& items, const std::vector<double>& 
                      int comparisons);
 
 // The verdict's index among `cs` (standings `st`, held-out multiplicity `m`), or −1 when none
-// earns its parameters: the simplest earning candidate (the most evidence among equals), unless
-// one with more parameters has decisive evidence over it; then, between that one and an earning
+// earns its parameters: the simplest earning candidate (the most evidence among equals) over which
+// no earning candidate with more parameters has decisive evidence — each parameter count's leader
+// judged against every larger candidate, so that a larger one beating the simplest does not pass
+// over a middle one as good as it (validation case 15008: thermal thinning, 2 parameters and
+// 14.6 ± 3.4 nats, was passed over for the slip transient, 3 and 13.2, decisive over the viscous
+// force, 1 and 8.0, that thermal thinning was not decisive over); then, between that one and an earning
 // single effect of a mechanism alike to it (rig::EffectInfo::alike_at_constant_speed), the one
 // with the more evidence. Alike mechanisms are not nested — neither is the other in a limit — so
 // their parameter counts do not say which is the simpler, and the held-out evidence already

@@ -185,6 +185,16 @@ TEST(Verdict, RuleNamesTheSimplestEarnerAndOwnsUpToWhatItCannotExplain) {
   // by 4 nats: b.
   EXPECT_EQ(verdict_index(cs, {st(2.0, 0.05, true), st(3.0, 0.01, true)}, m), 1);
   EXPECT_EQ(verdict_index(cs, {st(0.0, 0.05, false), st(0.0, 0.01, false)}, m), -1);
+  // c beats a by 3.2 nats, b only by 2, and c is not decisive over b: b, the simplest that nothing
+  // larger beats — not c for having beaten a (validation case 15008's order: viscous friction,
+  // thermal thinning, slip transient).
+  const std::vector<Candidate> three{candidate("a", 1, {}), candidate("b", 2, {}), candidate("c", 3, {})};
+  EXPECT_EQ(verdict_index(three, {st(2.0, 0.05, true), st(2.5, 0.03, true), st(2.8, 0.02, true)}, m), 1);
+  // c decisive over b too: c.
+  EXPECT_EQ(verdict_index(three, {st(2.0, 0.05, true), st(2.0, 0.03, true), st(2.8, 0.02, true)}, m), 2);
+  // A level's leader is the most evidence among equals: b2 (2.6) over b (2.5); c beats neither.
+  const std::vector<Candidate> four{candidate("a", 1, {}), candidate("b", 2, {}), candidate("b2", 2, {}), candidate("c", 3, {})};
+  EXPECT_EQ(verdict_index(four, {st(2.0, 0.05, true), st(2.5, 0.03, true), st(2.6, 0.03, true), st(2.8, 0.02, true)}, m), 2);
 
   const double floor = 0.01;
   // Gap 0.2 = 20 floors; a leaves 0.15: its excess is not halved → unexplained.
