@@ -27,22 +27,34 @@ def write_bundle(root, rows, columns="t_s,xdot_m_per_s,friction_N"):
         f.write(columns + "\n" + "".join(",".join(f"{x:.9g}" for x in r) + "\n" for r in rows))
 
 
+def three_cycles(stuck, stuck_dt_s, slip_dt_s, noise_m_per_s):
+    """Three stick-slip cycles at v = 10 mm/s: `stuck` samples (ẋ = v ± the noise, alternating; μ = 0.2)
+    `stuck_dt_s` apart, then 10 samples at U = 0.05 m/s (μ 0.15) and 10 at U = 0.2 m/s (μ 0.1),
+    `slip_dt_s` apart and `slip_dt_s` after the last stuck sample."""
+    rows, t = [], 0.0
+    for _ in range(3):
+        for i in range(stuck):
+            rows.append((t, 0.01 + (noise_m_per_s if i % 2 else -noise_m_per_s), 20.0))
+            t += stuck_dt_s if i < stuck - 1 else slip_dt_s
+        for u, mu in ((0.05, 0.15), (0.2, 0.10)):
+            for _ in range(10):
+                rows.append((t, 0.01 - u, 100.0 * mu)); t += slip_dt_s
+    return rows
+
+
+def profile(rows):
+    """The tool's output on a one-run bundle of `rows`, and its bins by their lower edge."""
+    with tempfile.TemporaryDirectory() as root:
+        write_bundle(root, rows)
+        out = subprocess.run([sys.executable, TOOL, root], capture_output=True, text=True, check=True).stdout
+    return out, {line.split(",")[0]: line.split(",")[2:] for line in out.splitlines() if line[0].isdigit()}
+
+
 class SlipSpeedProfile(unittest.TestCase):
     def test_bins_friction_by_slip_speed_and_counts_each_slip_once(self):
-        # Three cycles at v = 10 mm/s, 1 ms apart: 20 samples stuck (ẋ = v ± 0.5 mm/s of noise, μ = 0.2),
-        # then a slip of 10 samples at U = 0.05 m/s (μ 0.15) and 10 at U = 0.2 m/s (μ 0.1).
-        rows, t = [], 0.0
-        for _ in range(3):
-            for i in range(20):
-                rows.append((t, 0.01 + (0.0005 if i % 2 else -0.0005), 20.0)); t += 1e-3
-            for u, mu in ((0.05, 0.15), (0.2, 0.10)):
-                for _ in range(10):
-                    rows.append((t, 0.01 - u, 100.0 * mu)); t += 1e-3
-        with tempfile.TemporaryDirectory() as root:
-            write_bundle(root, rows)
-            out = subprocess.run([sys.executable, TOOL, root], capture_output=True, text=True, check=True).stdout
+        # 1 ms apart; ẋ's noise ±0.5 mm/s while stuck.
+        out, bins = profile(three_cycles(20, 1e-3, 1e-3, 0.0005))
         self.assertIn("run 0, v_drive = 0.01 m/s, 3 slips", out)
-        bins = {line.split(",")[0]: line.split(",")[2:] for line in out.splitlines() if line[0].isdigit()}
         # U = 0.05 lies in [0.0316, 0.0562), U = 0.2 in [0.178, 0.316); the stuck samples' U = ±0.5 mm/s
         # fall in [0.000316, 0.000562) (the positive half) or are left out (U ≤ 0.1 mm/s).
         self.assertEqual(bins["0.0316"], ["30", "0.1500", "10.00"])
@@ -50,20 +62,9 @@ class SlipSpeedProfile(unittest.TestCase):
         self.assertEqual(bins["0.000316"][:2], ["30", "0.2000"])
 
     def test_time_per_slip_is_the_records_own_for_a_record_sampled_densely_in_slip(self):
-        # Stuck every 5 ms (12 samples), slipping every 0.5 ms (10 samples at U = 0.05 m/s, 10 at 0.2):
-        # each slip sample stands for 0.5 ms, so 5 ms per slip in each bin — the mean spacing (1.9 ms)
-        # would have put 19 ms there.
-        rows, t = [], 0.0
-        for _ in range(3):
-            for i in range(12):
-                rows.append((t, 0.01, 20.0)); t += 5e-3 if i < 11 else 0.5e-3
-            for u, mu in ((0.05, 0.15), (0.2, 0.10)):
-                for _ in range(10):
-                    rows.append((t, 0.01 - u, 100.0 * mu)); t += 0.5e-3
-        with tempfile.TemporaryDirectory() as root:
-            write_bundle(root, rows)
-            out = subprocess.run([sys.executable, TOOL, root], capture_output=True, text=True, check=True).stdout
-        bins = {line.split(",")[0]: line.split(",")[2:] for line in out.splitlines() if line[0].isdigit()}
+        # Stuck every 5 ms (12 samples), slipping every 0.5 ms: each slip sample stands for 0.5 ms, so
+        # 5 ms per slip in each bin — the mean spacing (196 ms over 95 intervals) would have put 21 ms there.
+        _, bins = profile(three_cycles(12, 5e-3, 0.5e-3, 0.0))
         self.assertEqual(bins["0.0316"], ["30", "0.1500", "5.00"])
         self.assertEqual(bins["0.178"], ["30", "0.1000", "5.00"])
 
