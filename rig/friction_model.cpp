@@ -1,7 +1,6 @@
 #include "rig/friction_model.h"
 
 #include <algorithm>
-
 #include <cmath>
 #include <stdexcept>
 
