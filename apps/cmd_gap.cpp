@@ -323,6 +323,7 @@ nlohmann::json row_json(const gap::SelftestRow& row, bool quick, const std::stri
           {"seed", row.c.seed},               {"quick", quick},
           {"verdict", row.verdict},           {"heldout_gap_before", row.heldout_gap_before},
           {"heldout_gap_after", row.heldout_gap_after}, {"noise_floor", numerics::finite_or_null(row.noise_floor)},
+          {"train_floors", numerics::finite_or_null(row.train_floors)},
           {"confidence", numerics::finite_or_null(row.confidence)},
           {"confidence_bootstrap", numerics::finite_or_null(row.confidence_bootstrap)},
           {"confidence_fixed_fits", numerics::finite_or_null(row.confidence_fixed_fits)},

@@ -55,6 +55,7 @@ std::vector<gap::SelftestRow> finished_rows(const std::filesystem::path& file, b
       r.confidence_fixed_fits = number(j, "confidence_fixed_fits");
       r.confidence_bootstrap = number(j, "confidence_bootstrap");
       r.noise_floor = number(j, "noise_floor");
+      r.train_floors = number(j, "train_floors");
       if (const auto t = j.find("stage_wall_s"); t != j.end() && t->is_object()) {
         const auto s = [&](const char* key) { return t->contains(key) && t->at(key).is_number() ? t->at(key).get<double>() : 0.0; };
         r.stage_times = {s("calibration"), s("candidates"), s("recalibration"), s("refinement"), s("confidence")};

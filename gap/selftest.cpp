@@ -259,6 +259,7 @@ SelftestRow diagnose_case(const SelftestCase& sc, const SyntheticOptions& synthe
   row.heldout_gap_before = d.verdict.heldout_gap_before;
   row.heldout_gap_after = d.verdict.heldout_gap_after;
   row.noise_floor = d.verdict.noise_floor;
+  row.train_floors = d.calibration.train_floors();
   row.confidence = d.verdict.confidence;
   row.confidence_fixed_fits = d.verdict.confidence_fixed_fits;
   row.confidence_bootstrap = d.verdict.confidence_bootstrap;

@@ -85,6 +85,9 @@ struct SelftestRow {
   double noise_floor = std::numeric_limits<double>::quiet_NaN();
   // The effect's signal: the calibrated baseline's held-out gap in noise floors (NaN without a floor).
   double signal_floors() const { return noise_floor > 0.0 ? heldout_gap_before / noise_floor : std::numeric_limits<double>::quiet_NaN(); }
+  // What the calibrated baseline leaves on the training items, in their noise floors
+  // (CalibrationSummary::train_floors); NaN without a floor and in journals from before.
+  double train_floors = std::numeric_limits<double>::quiet_NaN();
   // The bootstrap with every fit held (Verdict::confidence_fixed_fits); NaN in journals from before.
   double confidence_fixed_fits = std::numeric_limits<double>::quiet_NaN();
   // The bootstrap's agreement (Verdict::confidence_bootstrap); NaN in journals from before.

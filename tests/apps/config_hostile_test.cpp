@@ -117,7 +117,7 @@ TEST(ConfigHostile, AJournalRowOfTheWrongTypesIsSkippedAndTheValidOneKept) {
   const std::string row = R"("true_effect":"none","model_effects":[],"verdict":"none","heldout_gap_before":0.1,"heldout_gap_after":0.1,"confidence":0.5)";
   std::ofstream(file) << "{\"quick\":1,\"seed\":3," << row << "}\n"
                       << "{\"quick\":true,\"seed\":1e300," << row << "}\n"
-                      << "{\"quick\":true,\"seed\":7,\"confidence_bootstrap\":0.66,\"stage_wall_s\":{\"candidates\":12.5,\"refinement\":\"x\"},"
+                      << "{\"quick\":true,\"seed\":7,\"confidence_bootstrap\":0.66,\"train_floors\":27.9,\"stage_wall_s\":{\"candidates\":12.5,\"refinement\":\"x\"},"
                       << R"("proposal_checks":[{"against":"squeeze_film","test":"stiffer_spring","separation_floors":5.2,"gap_verdict":0.1,)"
                       << R"("gap_against":0.08,"truth_nearer":true,"verdict_after":"squeeze_film"}],)" << row << "}\n";
   const std::vector<gap::SelftestRow> rows = finished_rows(file, true);
@@ -125,6 +125,7 @@ TEST(ConfigHostile, AJournalRowOfTheWrongTypesIsSkippedAndTheValidOneKept) {
   EXPECT_EQ(rows[0].c.seed, 7u);
   EXPECT_TRUE(rows[0].correct);
   EXPECT_EQ(rows[0].confidence_bootstrap, 0.66);  // a "none" row's agreement before the reliability of "none"
+  EXPECT_EQ(rows[0].train_floors, 27.9);          // what the calibrated baseline left on the training items
   EXPECT_EQ(rows[0].stage_times.candidates_s, 12.5);  // a stage read back; one not a number, or missing, reads 0
   EXPECT_EQ(rows[0].stage_times.refinement_s, 0.0);
   EXPECT_EQ(rows[0].stage_times.calibration_s, 0.0);
