@@ -106,6 +106,11 @@ struct Verdict {
   // without one). The report's "Add …" names these.
   std::vector<std::string> adds;
   bool unexplained = false;          // the gap stays well above the noise floor whatever is added
+  // The calibrated baseline misses its own training items by more than unexplained_floors of their
+  // noise floor. In-sample, so if anything too kind to it: a "none" verdict then says the held-out
+  // speeds do not show the miss, not that the baseline is the whole story (validation case 15038:
+  // 27.9 floors on training, 3.9 held out, a run the baseline stick-slips at recorded sliding).
+  bool baseline_misses_training = false;
   // Named only because it halves the gap's excess over the floor where no candidate earned its
   // parameters (verdict.h Decision::tentative); the report says so and names the others that do.
   bool tentative = false;

@@ -123,6 +123,14 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   baseline_text(d.calibrated).c_str(), d.verdict.heldout_gap_before, floor_text,
                   top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0, closest.c_str(),
                   closest_gap, confidence_text(d.verdict.confidence).c_str(), confidence_text(d.verdict.confidence_bootstrap).c_str());
+    if (d.verdict.baseline_misses_training) {
+      std::string text = buf;
+      std::snprintf(buf, sizeof buf,
+                    " But it misses its own training items by %.3g times their noise floor: it is not the whole story there, only "
+                    "what the held-out speeds cannot fault.",
+                    d.calibration.train_floors());
+      return text + buf;
+    }
   }
   return buf;
 }
@@ -191,6 +199,7 @@ nlohmann::json report_json(const Diagnosis& d) {
                   {"indistinguishable_from", d.verdict.indistinguishable},
                   {"alike_mechanisms", d.verdict.alike_mechanisms},
                   {"tentative", d.verdict.tentative},
+                  {"baseline_misses_training", d.verdict.baseline_misses_training},
                   {"noise_floor", d.verdict.noise_floor},
                   {"remaining_gap_in_floors", numerics::finite_or_null(d.verdict.remaining_floors)},
                   {"remaining_where", d.verdict.remaining_where},

@@ -144,6 +144,18 @@ TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {
   EXPECT_NE(s.find("less than about one noise floor is not excluded."), std::string::npos) << s;
   EXPECT_DOUBLE_EQ(report_json(d)["verdict"]["confidence_bootstrap"].get<double>(), 0.96);
   EXPECT_EQ(verdict_name(d.verdict), "none");
+  EXPECT_EQ(s.find("But it misses"), std::string::npos) << s;
+  // A baseline that misses its training items beyond the noise is not called the whole story
+  // (validation case 15038: 27.9 floors on training, 3.9 held out).
+  d.verdict.baseline_misses_training = true;
+  d.calibration.train_gap = 0.0985, d.calibration.train_noise_floor = 0.00353;
+  s = conclusion(d, nullptr);
+  EXPECT_NE(s.find("less than about one noise floor is not excluded. But it misses its own training items by 27.9 times their noise "
+                   "floor: it is not the whole story there, only what the held-out speeds cannot fault."),
+            std::string::npos)
+      << s;
+  EXPECT_TRUE(report_json(d)["verdict"]["baseline_misses_training"].get<bool>());
+  d.verdict.baseline_misses_training = false;
   // A homogenised base has no μs, μk of its own: the sentence names the law, not placeholders.
   d.calibrated.baseline.homogenised =
       rig::load_homogenised_base(std::filesystem::path(TRIBO_SOURCE_DIR) / "tests/gap/data/law-linear.json", 93.857);
