@@ -171,7 +171,8 @@ Diagnosis diagnose(const ExperimentBundle& bundle, const rig::RigParameters& mod
   if (!parts_alike_mechanisms(bundle))
     d.verdict.alike_mechanisms = alike_mechanisms(d.candidates, choice.index, d.baseline_heldout.gap, d.verdict.noise_floor);
   d.verdict.unexplained = choice.unexplained;
-  d.verdict.baseline_misses_training = misses_training(p, baseline);
+  d.verdict.baseline_misses_training =
+      d.calibration.train_noise_floor > 0.0 && beyond_noise(d.calibration.train_gap, d.calibration.train_noise_floor, o);
   d.verdict.tentative = choice.tentative;
   d.verdict.heldout_gap_before = d.baseline_heldout.gap;
   d.verdict.heldout_gap_after = chosen ? chosen->heldout_gap_after : d.baseline_heldout.gap;

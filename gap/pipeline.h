@@ -177,10 +177,6 @@ struct Choice {
   std::vector<std::string> indistinguishable;
 };
 Choice choose(const FitProblem& p, const Baseline& b, const std::vector<Candidate>& candidates, int comparisons, double noise_floor);
-// Whether the calibrated baseline `b` misses its own training items by more than
-// unexplained_floors of their noise floor (Verdict::baseline_misses_training); false where the
-// data give no floor.
-bool misses_training(const FitProblem& p, const Baseline& b);
 
 // The verdict's bootstrap confidence (verdict.h bootstrap_confidence), with the baseline and the
 // leading candidates refitted (linearised) on redrawn training data where the data give a noise

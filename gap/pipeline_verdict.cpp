@@ -90,11 +90,6 @@ std::vector<std::vector<std::vector<double>>> refitted_residuals(const Compariso
 
 }  // namespace
 
-bool misses_training(const FitProblem& p, const Baseline& b) {
-  const double floor = breakdown(p.items, p.noise_r, p.train).gap;
-  return floor > 0.0 && beyond_noise(b.train_gap, floor, p.options);
-}
-
 Choice choose(const FitProblem& p, const Baseline& b, const std::vector<Candidate>& candidates, int comparisons, double noise_floor) {
   std::vector<Standing> standing;
   for (const Candidate& c : candidates)
