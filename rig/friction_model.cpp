@@ -73,7 +73,10 @@ std::vector<EffectInfo> build_catalogue() {
         {"rate_weakening", "1", 0.0, 0.0, 0.1, "fall of the stable kinetic level per e-fold of slip speed, beta = b - a of Ruina's slip law",
          FitRange{0.0, 0.05, false}},
         {"reference_speed_m_per_s", "m/s", 1e-2, 1e-9, 10.0,
-         "U_ref, where the rate part of the stable level is zero (only moves the level mu_k absorbs)"}}},
+         "U_ref, where the rate part of the stable level is zero (only moves the level mu_k absorbs)"},
+        // Not fitted: the diagnosis fits both laws, 0 and 1 (gap/pipeline_candidates.cpp).
+        {"ageing_share", "1", 0.0, 0.0, 1.0,
+         "f = beta/b = 1 - a/b: Dieterich's ageing law shapes the increment with b = beta/f (linear fall by b per D_c, healing as the slip slows); 0 is Ruina's slip law"}}},
       {"rate_and_state",
        "Dieterich-Ruina rate-and-state friction, ageing law: a ln(V/V0) + b ln(V0 theta/D_c); static friction heals as b ln(hold time)",
        "Dieterich (1979) JGR 84:2161; Ruina (1983) JGR 88:10359; Marone (1998); cf. thesis section 5.2a",
@@ -260,7 +263,8 @@ std::shared_ptr<const FrictionLaw> make_friction_law(const FrictionModel& m) {
   if (m.has("slip_transient")) {
     effects.push_back(std::make_unique<effects::SlipTransient>(p("slip_transient", "amplitude"), p("slip_transient", "decay_distance_m"),
                                                                p("slip_transient", "rate_weakening"),
-                                                               p("slip_transient", "reference_speed_m_per_s")));
+                                                               p("slip_transient", "reference_speed_m_per_s"),
+                                                               p("slip_transient", "ageing_share")));
   }
   if (m.has("rate_and_state")) {
     effects.push_back(std::make_unique<effects::RateAndState>(p("rate_and_state", "a"), p("rate_and_state", "b"),

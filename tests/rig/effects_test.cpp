@@ -113,6 +113,56 @@ TEST(SlipTransient, RateWeakeningRelaxesOverDcToRuinasSlipLawSteadyState) {
   EXPECT_EQ(effects::SlipTransient(1.0, dc).state_size(), 1u);
 }
 
+TEST(SlipTransient, AgeingShareFollowsDieterichsAgeingLawAtOneSpeed) {
+  // rig/effects/slip_transient.h: with the ageing share f the increment follows Dieterich's ageing
+  // law with b = β/f. At one speed V its state relaxes as θ − D_c/V ∝ e^{−s/D_c} (Ruina 1983), so
+  // X(s) = Δμ_ss + b ln(1 + (e^{(X0 − Δμ_ss)/b} − 1) e^{−s/D_c}). Started 5 b above the stable level
+  // it falls linearly at first, by b per D_c, where the slip law's exponential falls by 5 b (1 − 1/e).
+  const double beta = 0.009, f = 0.9, b = beta / f, u_ref = 0.01, v = 0.04, dc = 3e-4;
+  const effects::SlipTransient e(1.0, dc, beta, u_ref, f);
+  ASSERT_TRUE(e.ageing());
+  EXPECT_EQ(e.state_size(), 1u);
+  const double x_ss = e.steady_increment(v), x0 = x_ss + 5.0 * b;
+  auto closed_form = [&](double s) { return x_ss + b * std::log1p(std::expm1(5.0) * std::exp(-s / dc)); };
+  FrictionContext fc;
+  fc.relative_speed_m_per_s = v;
+  std::vector<double> state{x0}, rates(1);
+  auto rate = [&](double x) {
+    const std::vector<double> at{x};
+    e.state_rates(EffectContext{&fc, 0.3, 0.15, at}, rates);
+    return rates[0];
+  };
+  const int steps = 30000;
+  const double dt = 3.0 * dc / v / steps;
+  double x = x0, x_at_dc = 0.0;
+  for (int k = 1; k <= steps; ++k) {  // classical RK4, error O(dt⁴)
+    const double k1 = rate(x), k2 = rate(x + 0.5 * dt * k1), k3 = rate(x + 0.5 * dt * k2), k4 = rate(x + dt * k3);
+    x += dt / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4);
+    if (k == steps / 3) x_at_dc = x;
+  }
+  EXPECT_NEAR(x_at_dc, closed_form(dc), 1e-12);
+  EXPECT_NEAR(x, closed_form(3.0 * dc), 1e-12);
+  EXPECT_NEAR(x0 - x_at_dc, b, 0.02 * b);  // linear: b ln(e^5) − b ln(1 + (e^5 − 1)/e) = 0.99 b
+  // The kinetic increment is the state, floored at −μk.
+  state[0] = x_at_dc;
+  EXPECT_EQ(e.kinetic_increment(EffectContext{&fc, 0.3, 0.15, state}), x_at_dc);
+  // As the slip slows the stable level rises above X and the state heals with time: at |U| = V/100
+  // from the stable level of V, dX/dt = (|U|/D_c) b (e^{β ln(100)/b} − 1) > 0; the slip law's
+  // relaxation at f → 0 is the same rate to first order in the deviation over b.
+  fc.relative_speed_m_per_s = v / 100.0;
+  EXPECT_NEAR(rate(x_ss), (v / 100.0 / dc) * b * std::expm1(beta * std::log(100.0) / b), 1e-12);
+  const effects::SlipTransient slip_law(1.0, dc, beta, u_ref), nearly(1.0, dc, beta, u_ref, 1e-7);
+  EXPECT_FALSE(slip_law.ageing());
+  fc.relative_speed_m_per_s = v;
+  std::vector<double> two{0.0, x_ss + 0.001}, r2(2), one{x_ss + 0.001}, r1(1);
+  slip_law.state_rates(EffectContext{&fc, 0.3, 0.15, two}, r2);
+  nearly.state_rates(EffectContext{&fc, 0.3, 0.15, one}, r1);
+  EXPECT_NEAR(r1[0], r2[1], 1e-6 * std::abs(r2[1]));
+  // At rest nothing moves: the next slip onset sets the state.
+  fc.relative_speed_m_per_s = 0.0;
+  EXPECT_EQ(rate(x_ss), 0.0);
+}
+
 TEST(RateDependentStatic, BreakawayLiesOnTheJunctionLocus) {
   const RigParameters rig;
   FrictionModel m = coulomb(0.55, 0.1);
