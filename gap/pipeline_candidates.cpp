@@ -96,7 +96,7 @@ FitSetup search_start(const FitProblem& p, const Baseline& b, const std::vector<
       // basin (cost 0.0010, β 0.018 against b − a 0.010).
       const rig::ParameterSpec& beta = rate_weakening();
       start.model.set(e, beta.name, 0.5 * (beta.fit->lower + beta.fit->upper));
-      // Dieterich's ageing law with b = β, whose state heals with time as the slip slows (search).
+      // Dieterich's ageing law with b = β (search: the slip law is searched too).
       start.model.set(e, ageing_share().name, ageing_share().upper);
     }
     if (e == "strain_rate_hardening" && phi > 0.0 && locus_fitted) {
@@ -190,15 +190,28 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
     for (const FitParameter& q : space)
       if (!(q.effect == "slip_transient" && q.name == beta.name)) without_beta.push_back(q);
     const FitResult t = fit(*p.comparison, without_beta, thesis_form, p.equal_w, p.options, seed, 1, without_beta.size(), Resolution::search);
-    // Ruina's slip law in place of the ageing law, one Levenberg–Marquardt fit from where the
-    // ageing law's search ended.
-    FitSetup slip_law = r.setup;
+    // Both state laws are searched, Dieterich's ageing law with b = β (search_start) and Ruina's
+    // slip law, and the best of the three fits kept. The ageing law's transient falls linearly,
+    // b per D_c, while far above the stable level, and its state heals with time as the slip
+    // slows, where the slip law's does not move without slip. On the ageing-law draw 15044
+    // (validation set 9532, since development data) the slip law's fit left 1.70 noise floors held
+    // out and squeeze_film, which drains at rest and rebuilds over a slip distance, was named at
+    // 98 %; the ageing law leaves 0.40. Either law fitted from where the other's search ended
+    // stayed in that one's basin (15044 one way, development draw 20016 the other; docs/gap.md).
+    // The laws are two forms of one candidate, judged as candidates are (rank): on 20016 the
+    // ageing law's search fitted train better (0.019 against the slip law's refined 0.008 to come)
+    // with parameters the held-out data could not place (evidence −4 nats), ranked below the
+    // refinement's slots, and the slip law's basin was lost.
+    FitSetup slip_law = start;
     slip_law.model.set("slip_transient", ageing_share().name, ageing_share().default_value);
-    const FitResult a = fit(*p.comparison, space, slip_law, p.equal_w, p.options, seed, 1, space.size(), Resolution::search);
-    const double all_s = r.termination.wall_s + t.termination.wall_s + a.termination.wall_s;  // the candidate's fit time counts all
-    if (better_fit(t, r)) r = t;
-    if (better_fit(a, r)) r = a;
-    r.termination.wall_s = all_s;
+    FitResult s = fit(*p.comparison, space, slip_law, p.equal_w, p.options, seed, p.options.starts, p.search_base.size(), Resolution::search);
+    const double all_s = r.termination.wall_s + t.termination.wall_s + s.termination.wall_s;  // the candidate's fit time counts all
+    if (better_fit(t, s)) s = t;
+    r.termination.wall_s = s.termination.wall_s = all_s;
+    std::vector<Candidate> forms{candidate_from(p, b, effects, space, r, comparisons), candidate_from(p, b, effects, space, s, comparisons)};
+    rank(forms);
+    p.report("fitted " + verdict_name(effects));
+    return forms.front();
   }
   Candidate c = candidate_from(p, b, effects, space, r, comparisons);
   p.report("fitted " + verdict_name(effects));
