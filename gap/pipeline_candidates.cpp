@@ -186,6 +186,7 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
     const rig::ParameterSpec& beta = rate_weakening();
     FitSetup thesis_form = start;
     thesis_form.model.set("slip_transient", beta.name, beta.default_value);
+    thesis_form.model.set("slip_transient", ageing_share().name, ageing_share().default_value);  // refined, β frees the slip law
     std::vector<FitParameter> without_beta;
     for (const FitParameter& q : space)
       if (!(q.effect == "slip_transient" && q.name == beta.name)) without_beta.push_back(q);
@@ -208,6 +209,13 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
     const double all_s = r.termination.wall_s + t.termination.wall_s + s.termination.wall_s;  // the candidate's fit time counts all
     if (better_fit(t, s)) s = t;
     r.termination.wall_s = s.termination.wall_s = all_s;
+    // An ageing search that ended at β = 0 is the thesis form: one family with the others.
+    if (!(r.setup.model.get("slip_transient", beta.name) > 0.0)) {
+      if (better_fit(r, s)) s = r;
+      Candidate c = candidate_from(p, b, effects, space, s, comparisons);
+      p.report("fitted " + verdict_name(effects));
+      return c;
+    }
     std::vector<Candidate> forms{candidate_from(p, b, effects, space, r, comparisons), candidate_from(p, b, effects, space, s, comparisons)};
     rank(forms);
     p.report("fitted " + verdict_name(effects));
