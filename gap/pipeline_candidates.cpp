@@ -192,7 +192,7 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
       if (!(q.effect == "slip_transient" && q.name == beta.name)) without_beta.push_back(q);
     const FitResult t = fit(*p.comparison, without_beta, thesis_form, p.equal_w, p.options, seed, 1, without_beta.size(), Resolution::search);
     // Both state laws are searched, Dieterich's ageing law with b = β (search_start) and Ruina's
-    // slip law, and the best of the three fits kept. The ageing law's transient falls linearly,
+    // slip law (kept against the thesis form by train cost, as before). The ageing law's transient falls linearly,
     // b per D_c, while far above the stable level, and its state heals with time as the slip
     // slows, where the slip law's does not move without slip. On the ageing-law draw 15044
     // (validation set 9532, since development data) the slip law's fit left 1.70 noise floors held
