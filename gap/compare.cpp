@@ -125,6 +125,8 @@ StepResponse read_step_response(const Signal& s, const RunPlan& plan, double W) 
     if (!(best > 0.0 && x_best > 0.0)) continue;
     out.peak_rise = best;
     out.peak_travel_m = x_best;
+    out.steady_change = after;
+    out.speed_ratio = plan.step_speeds_m_per_s[k] / plan.step_speeds_m_per_s[k - 1];
     out.loading_stiffness_N_per_m = W * best / x_best;
     for (std::size_t i = i_best + 1; i + 1 < s.t.size() && s.t[i] <= t_end; ++i)
       if (rise(i) - after <= (best - after) / std::exp(1.0)) {

@@ -129,6 +129,11 @@ struct StepResponse {
   // Travel from the peak until the excess over the new steady level has fallen to 1/e of its
   // peak value: the slip distance of the decay (the rig slides with the load point by then).
   double decay_distance_m = kNaN;
+  // The new steady level less the old (the steady_mu of each segment's last 30 %) and the step's
+  // speed ratio V2/V1: a stable level that falls by β per e-fold of speed (Ruina's slip law,
+  // β = b − a) changes by −β ln(V2/V1).
+  double steady_change = kNaN;
+  double speed_ratio = kNaN;
 };
 
 class Comparison {

@@ -511,6 +511,23 @@ TEST(Comparison, StepResponseReadsPeakStiffnessAndDecayDistance) {
   EXPECT_NEAR(s.decay_distance_m, decay, 0.2e-6);  // two samples
 }
 
+// The stable level's change across the step, read off the same made-up record with the decay
+// ending at a new level Δμ_ss = −0.002 below the old: Ruina's slip law with β = 0.002 / ln(10/3) ≈
+// 0.00166 per e-fold of speed. The new level is the last 30 % of the segment, 35–50 s after the
+// step, where exp(−X/8 µm) is below e⁻⁴³: the level to 1e-12, the ratio exact.
+TEST(Comparison, StepResponseReadsTheStableLevelsChangeAndTheSpeedRatio) {
+  const double rise = 0.01, x_peak = 1e-6, decay = 8e-6, change = -0.002;
+  const ExperimentBundle b = velocity_step_bundle([&](double after) {
+    if (after <= 0.0) return 0.0;
+    if (after < x_peak) return rise * after / x_peak;
+    return change + (rise - change) * std::exp(-(after - x_peak) / decay);
+  });
+  const StepResponse s = Comparison(b, rig::RigParameters{}).step_response();
+  EXPECT_NEAR(s.steady_change, change, 1e-12);
+  EXPECT_DOUBLE_EQ(s.speed_ratio, 1e-5 / 3e-6);
+  EXPECT_NEAR(-s.steady_change / std::log(s.speed_ratio), 0.002 / std::log(10.0 / 3.0), 1e-12);
+}
+
 // A drive segment's steady window (its last 30 %) gives a level and a scatter. The record: μ = 0.6
 // with white noise σ = 3e-4 (100 Hz) and, in the 10 µm/s segment, a slow wander of amplitude 1e-3
 // (period 5 s, three periods in the window). The scatter is the excess over the noise the record's

@@ -64,26 +64,67 @@ TEST(Diagnosis, VelocityStepCalibratesStiffnessAndDampingAndNamesTheSlipTransien
   o.candidates = {"slip_transient", "viscous_friction", "strain_rate_hardening"};
   const Diagnosis d = diagnose(b, rig::RigParameters{}, rig::coulomb(0.62, 0.6), o);
   ASSERT_EQ(verdict_name(d.verdict.effects), "slip_transient") << report_json(d)["candidates"].dump(1);
-  // The baseline's misses all lie after the step, none before it, and most in the transient's
-  // bins: since the re-calibration from the refined leaders (pipeline.h rebase) the Coulomb
-  // baseline that fits train best slides at the steady level and misses the transient (99.97 % of
-  // the squared residual in its bins, 2026-11-28). The baselines before it kept μs > μk and
-  // stick-slipped where the truth slides: 77 % of the misses in the steady window's scatter with
-  // the likelihood weights, about half with equal weights.
-  double after_step = 0.0, transient = 0.0;
+  // The baseline's misses all lie after the step, none before it (the training items see only
+  // the first speed and the step's bins), and of its misses in friction after the step nearly all
+  // in the transient's bins. Which Coulomb baseline fits train best depends on where the
+  // re-calibration from the refined leaders starts (pipeline.h rebase): one that slides at the
+  // steady level and misses only the transient (99.97 % of the squared residual in its bins,
+  // 2026-11-28), or one with μs > μk, little damping and stick-slip in the steady window after the
+  // step (97 % of it in the scatter there, since the slip transient's search starts from the step's
+  // stable levels, 2026-12-07). Either misses the transient, not the levels.
+  double after_step = 0.0, transient = 0.0, settled = 0.0;
   for (const auto& l : d.localization) {
     if (l.where.find("high v") != std::string::npos) after_step += l.share;
-    if (l.observable == "mu_after_step" && l.where.find("slip transient after step") != std::string::npos) transient += l.share;
+    if (l.observable != "mu_after_step") continue;
+    (l.where.find("slip transient after step") != std::string::npos ? transient : settled) += l.share;
   }
   const std::string where = report_json(d)["localization"].dump(1);
   EXPECT_GT(after_step, 0.99) << where;
-  EXPECT_GT(transient, 0.5) << where;
+  EXPECT_GT(transient, 0.95 * (transient + settled)) << where;
   EXPECT_LT(d.verdict.heldout_gap_after, 0.5 * d.verdict.heldout_gap_before);
   // D_c within a factor 1.5 of the truth: noise 3e-4 on a 0.011 peak, eight LM iterations.
   const double dc = d.candidates.front().params.at("slip_transient.decay_distance_m");
   const std::string fitted = report_json(d)["candidates"][0]["params"].dump();
   EXPECT_GT(dc, 1e-5 / 1.5) << fitted;
   EXPECT_LT(dc, 1e-5 * 1.5) << fitted;
+}
+
+// The same machine with a rate-weakening rock (Ruina's slip law, b − a = β = 0.004): after the
+// step up the peak decays to a level β ln(10/3) = 0.0048 below the old one. The search starts from
+// what the step shows (gap/pipeline_candidates.cpp search_start): the peak, its 1/e distance and
+// the stable level's fall per e-fold of speed. With β started mid-range instead (0.025, a fall of
+// 0.030 across the step) that start lost to a grid point on the measured basalt step, which no
+// fit left (held-out gap 1.52 against 0.066; docs/gap.md). Tolerances: β within a factor 1.5
+// (0.0048 of level change against 3e-4 noise averaged over the steady windows' ≈ 100 samples
+// each), D_c as above.
+TEST(Diagnosis, VelocityStepOnARateWeakeningRockReadsTheStableLevelsFallAndNamesTheSlipLaw) {
+  rig::RigParameters truth_rig;
+  truth_rig.stiffness_N_per_m = 3e5;
+  truth_rig.damping_N_s_per_m = 0.5 * 2.0 * std::sqrt(3e5 * truth_rig.mass_kg);  // ζ = 0.5
+  const double beta = 0.004;
+  rig::FrictionModel truth = rig::coulomb(0.619, 0.608);
+  truth.set("slip_transient", "amplitude", 1.0);
+  truth.set("slip_transient", "decay_distance_m", 1e-5);
+  truth.set("slip_transient", "rate_weakening", beta);
+  truth.set("slip_transient", "reference_speed_m_per_s", 1e-5);
+  const ExperimentBundle b = velocity_step_bundle(truth_rig, truth, 11);
+  const StepResponse step = Comparison(b, truth_rig).step_response();
+  EXPECT_NEAR(-step.steady_change / std::log(step.speed_ratio), beta, 0.25 * beta);
+
+  DiagnosisOptions o;
+  o.max_iterations = 8;
+  o.bootstrap_samples = 50;
+  o.calibrate_rig = {};  // the machine known: this test is about the friction
+  o.candidates = {"slip_transient"};
+  const Diagnosis d = diagnose(b, truth_rig, rig::coulomb(0.62, 0.6), o);
+  ASSERT_EQ(verdict_name(d.verdict.effects), "slip_transient") << report_json(d)["candidates"].dump(1);
+  EXPECT_LT(d.verdict.heldout_gap_after, 0.5 * d.verdict.heldout_gap_before);
+  const auto& fitted = d.candidates.front().params;
+  const std::string params = report_json(d)["candidates"][0]["params"].dump();
+  EXPECT_GT(fitted.at("slip_transient.rate_weakening"), beta / 1.5) << params;
+  EXPECT_LT(fitted.at("slip_transient.rate_weakening"), beta * 1.5) << params;
+  EXPECT_GT(fitted.at("slip_transient.decay_distance_m"), 1e-5 / 1.5) << params;
+  EXPECT_LT(fitted.at("slip_transient.decay_distance_m"), 1e-5 * 1.5) << params;
 }
 
 }  // namespace
