@@ -115,14 +115,19 @@ std::string conclusion(const Diagnosis& d, const Candidate* chosen) {
                   baseline_text(d.calibrated).c_str(), d.verdict.heldout_gap_before, floor_text, closest.c_str(), closest_gap,
                   d.verdict.remaining_where.c_str(), confidence_text(d.verdict.confidence).c_str());
   } else {
+    // Without an estimate (one held-out block, no noise) there is no agreement to scale.
+    const std::string confidence =
+        std::isfinite(d.verdict.confidence)
+            ? "Confidence " + confidence_text(d.verdict.confidence) + ": the bootstrap's " + confidence_text(d.verdict.confidence_bootstrap) +
+                  " times the share of \"none\" verdicts that were right in the development selftests"
+            : "Confidence " + confidence_text(d.verdict.confidence);
     std::snprintf(buf, sizeof buf,
                   "No catalogue effect earns its parameters on held-out data: keep %s, "
                   "whose held-out gap is %.3g%s; the largest remaining share is %s (%s, %.0f %%), closest candidate %s at held-out gap %.3g. "
-                  "Confidence %s: the bootstrap's %s times the share of \"none\" verdicts that were right in the development "
-                  "selftests — an effect that moves the held-out data by less than about one noise floor is not excluded.",
+                  "%s — an effect that moves the held-out data by less than about one noise floor is not excluded.",
                   baseline_text(d.calibrated).c_str(), d.verdict.heldout_gap_before, floor_text,
                   top ? top->observable.c_str() : "-", top ? top->where.c_str() : "-", top ? 100.0 * top->share : 0.0, closest.c_str(),
-                  closest_gap, confidence_text(d.verdict.confidence).c_str(), confidence_text(d.verdict.confidence_bootstrap).c_str());
+                  closest_gap, confidence.c_str());
     if (d.verdict.baseline_misses_training) {
       std::string text = buf;
       std::snprintf(buf, sizeof buf,

@@ -145,6 +145,13 @@ TEST(Report, UnexplainedAndNoneSayWhatIsLeftAndWhere) {
   EXPECT_DOUBLE_EQ(report_json(d)["verdict"]["confidence_bootstrap"].get<double>(), 0.96);
   EXPECT_EQ(verdict_name(d.verdict), "none");
   EXPECT_EQ(s.find("But it misses"), std::string::npos) << s;
+  // One held-out block without a noise estimate (the thesis observations): the confidence is not
+  // estimable, said once, with no agreement to scale.
+  d.verdict.confidence = d.verdict.confidence_bootstrap = std::nan("");
+  s = conclusion(d, nullptr);
+  EXPECT_NE(s.find("Confidence not estimable: one held-out block and no noise estimate — an effect that moves"), std::string::npos) << s;
+  EXPECT_EQ(s.find("bootstrap's"), std::string::npos) << s;
+  d.verdict.confidence_bootstrap = 0.96, d.verdict.confidence = 0.72;
   // A baseline that misses its training items beyond the noise is not called the whole story
   // (validation case 15038: 27.9 floors on training, 3.9 held out).
   d.verdict.baseline_misses_training = true;
