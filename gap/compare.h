@@ -46,6 +46,7 @@
 // smoothed μ, located between samples, and an extremum cut by the window's start is left out.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -134,6 +135,8 @@ struct StepResponse {
   // β = b − a) changes by −β ln(V2/V1).
   double steady_change = kNaN;
   double speed_ratio = kNaN;
+  // That fall per e-fold of speed, β = −Δμ_ss / ln(V2/V1) (NaN without a step up).
+  double stable_fall_per_efold() const { return speed_ratio > 1.0 ? -steady_change / std::log(speed_ratio) : kNaN; }
 };
 
 class Comparison {

@@ -133,7 +133,7 @@ FitSetup search_start(const FitProblem& p, const Baseline& b, const std::vector<
     start.model.set("slip_transient", "amplitude", 1.0);
     start.model.set("slip_transient", "decay_distance_m", step.decay_distance_m);
     const rig::ParameterSpec& beta = rate_weakening();
-    const double slope = step.speed_ratio > 1.0 ? -step.steady_change / std::log(step.speed_ratio) : 0.0;
+    const double slope = step.stable_fall_per_efold();
     start.model.set("slip_transient", beta.name, std::isfinite(slope) ? std::clamp(slope, 0.0, beta.fit->upper) : 0.0);
     start.model.set("slip_transient", ageing_share().name, ageing_share().default_value);  // steady levels, no stick
     read_off = true;

@@ -525,7 +525,7 @@ TEST(Comparison, StepResponseReadsTheStableLevelsChangeAndTheSpeedRatio) {
   const StepResponse s = Comparison(b, rig::RigParameters{}).step_response();
   EXPECT_NEAR(s.steady_change, change, 1e-12);
   EXPECT_DOUBLE_EQ(s.speed_ratio, 1e-5 / 3e-6);
-  EXPECT_NEAR(-s.steady_change / std::log(s.speed_ratio), 0.002 / std::log(10.0 / 3.0), 1e-12);
+  EXPECT_NEAR(s.stable_fall_per_efold(), 0.002 / std::log(10.0 / 3.0), 1e-12);
 }
 
 // A drive segment's steady window (its last 30 %) gives a level and a scatter. The record: μ = 0.6

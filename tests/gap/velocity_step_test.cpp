@@ -112,7 +112,7 @@ TEST(Diagnosis, VelocityStepOnARateWeakeningRockReadsTheStableLevelsFallAndNames
   truth.set("slip_transient", "reference_speed_m_per_s", 1e-5);
   const ExperimentBundle b = velocity_step_bundle(truth_rig, truth, 11);
   const StepResponse step = Comparison(b, truth_rig).step_response();
-  EXPECT_NEAR(-step.steady_change / std::log(step.speed_ratio), beta, 0.25 * beta);
+  EXPECT_NEAR(step.stable_fall_per_efold(), beta, 0.25 * beta);
 
   DiagnosisOptions o;
   o.max_iterations = 8;
