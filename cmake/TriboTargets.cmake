@@ -87,15 +87,17 @@ endfunction()
 # leaks (set per test, so that one ctest run takes them beside the others).
 set(TRIBO_MPI_ASAN_OPTIONS "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
 
-# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s] [COST c] [PROCESSORS n]):
+# tribo_add_test(name SOURCES ... DEPENDS ... [LABELS slow|mpi] [TIMEOUT s] [COST c] [PROCESSORS n]
+#                [READS_SOURCE_TREE]):
 # one GoogleTest executable registered with CTest. Label `slow` marks tests the sanitizer build
 # skips (ctest -LE slow), `mpi` those that start Open MPI (sanitized without leak detection);
 # TIMEOUT overrides ctest's --timeout for a test known to run long; COST orders them (below);
 # PROCESSORS n reserves n of ctest -j's slots for each test — for tests whose OpenMP loops or
 # Eigen products use every core: beside another test their threads spin at each barrier for a
-# thread that is not running (a 47-s BEM convergence test took 843 s so under ctest -j2).
+# thread that is not running (a 47-s BEM convergence test took 843 s so under ctest -j2);
+# READS_SOURCE_TREE defines TRIBO_SOURCE_DIR, the checkout, for tests that read its files.
 function(tribo_add_test name)
-  cmake_parse_arguments(ARG "" "TIMEOUT;COST;PROCESSORS" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "READS_SOURCE_TREE" "TIMEOUT;COST;PROCESSORS" "SOURCES;DEPENDS;LABELS" ${ARGN})
   # Without TRIBO_SLOW_TESTS (the sanitizer build, which runs `-LE slow` anyway) a slow test's
   # executable is not even built.
   if(ARG_LABELS STREQUAL "slow" AND NOT TRIBO_SLOW_TESTS)
@@ -107,6 +109,9 @@ function(tribo_add_test name)
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest GTest::gtest_main OpenMP::OpenMP_CXX)
   tribo_test_pch()
   target_precompile_headers(${name} REUSE_FROM tribo_test_pch)
+  if(ARG_READS_SOURCE_TREE)
+    target_compile_definitions(${name} PRIVATE TRIBO_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  endif()
   # gtest_discover_tests cannot pass a list through PROPERTIES: one label per target.
   if(ARG_LABELS)
     set(label ${ARG_LABELS})
@@ -146,9 +151,13 @@ function(tribo_add_test name)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES ${properties})
 endfunction()
 
-# tribo_add_bench(name SOURCES ... DEPENDS ...): one Google Benchmark executable (not a test).
+# tribo_add_bench(name SOURCES ... DEPENDS ... [READS_SOURCE_TREE]): one Google Benchmark
+# executable (not a test); READS_SOURCE_TREE as for tribo_add_test.
 function(tribo_add_bench name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "READS_SOURCE_TREE" "" "SOURCES;DEPENDS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} benchmark::benchmark)
+  if(ARG_READS_SOURCE_TREE)
+    target_compile_definitions(${name} PRIVATE TRIBO_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  endif()
 endfunction()

@@ -175,8 +175,6 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
   const std::vector<FitParameter> space = p.space_of(effects, false);
   std::vector<FitResult> forms{fit(*p.comparison, space, start, p.equal_w, p.options, seed, p.options.starts, p.search_base.size(),
                                    Resolution::search, read_off)};
-  forms.reserve(2);  // r stays valid through the second form's push_back
-  FitResult& r = forms.front();
   if (std::count(effects.begin(), effects.end(), "slip_transient") && !read_off) {
     // The slip transient's search starts at mid-range rate weakening (search_start), and the grid
     // holds β there. The thesis form, β = 0 (the catalogue's default), is a basin of its own that
@@ -215,13 +213,13 @@ Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::
     FitSetup slip_law = start;
     slip_law.model.set("slip_transient", ageing_share().name, ageing_share().default_value);
     FitResult s = fit(*p.comparison, space, slip_law, p.equal_w, p.options, seed, p.options.starts, p.search_base.size(), Resolution::search);
-    const double all_s = r.termination.wall_s + t.termination.wall_s + s.termination.wall_s;  // the candidate's fit time counts all
+    const double all_s = forms[0].termination.wall_s + t.termination.wall_s + s.termination.wall_s;  // the candidate's fit time counts all
     if (better_fit(t, s)) s = t;
     // An ageing search that ended at β = 0 is the thesis form: one family with the others.
-    if (r.setup.model.get("slip_transient", beta.name) > 0.0)
+    if (forms[0].setup.model.get("slip_transient", beta.name) > 0.0)
       forms.push_back(s);
-    else if (!better_fit(r, s))
-      r = s;
+    else if (!better_fit(forms[0], s))
+      forms[0] = s;
     for (FitResult& f : forms) f.termination.wall_s = all_s;
   }
   std::vector<Candidate> judged;
