@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,10 @@ struct Candidate {
   std::vector<double> parameter_variance;  // per item, gap units² (gap/laplace.h); empty: none
   double heldout_parameter_sd = 0.0;        // rms_parameter_sd of it on the held-out items
   FitTermination fit;  // the last fit that made it (search, or refinement for the leaders)
+  // The same effects in another form, as its search left it: the slip transient's other state
+  // law (pipeline_candidates.cpp search). A leader's is refined beside it and the better of the
+  // two kept (refine_leaders); empty otherwise.
+  std::shared_ptr<const Candidate> other_form;
 };
 
 struct Verdict {

@@ -94,6 +94,8 @@ std::vector<double> parameter_variance_at(const FitProblem& p, const std::vector
 // A candidate's evidence over the baseline among `comparisons` candidates (verdict.h standing_of):
 // sets heldout_gap_before, evidence_nats, evidence_se_nats and earns.
 void judge(const FitProblem& p, const Baseline& b, int comparisons, Candidate& c);
+// Whether `a` ranks above `b`: it earns and `b` does not, or both alike and it has more evidence.
+bool ranks_above(const Candidate& a, const Candidate& b);
 // Earning candidates first, then by evidence (stable: ties keep their order).
 void rank(std::vector<Candidate>& cs);
 
@@ -126,7 +128,8 @@ Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int
 bool explains(const Candidate& c);
 // How many of the ranking's leaders are refined at most (refine_leaders explains why five).
 constexpr std::size_t kRefinedLeaders = 5;
-// Those of the first kRefinedLeaders of `ranked` that explain something refined (in parallel); the
+// Those of the first kRefinedLeaders of `ranked` that explain something refined (in parallel), each
+// with its other form (Candidate::other_form) beside it and the better of the two kept; the
 // others as they are.
 std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, std::vector<Candidate> ranked, int comparisons);
 
