@@ -100,7 +100,9 @@ bool ranks_above(const Candidate& a, const Candidate& b);
 void rank(std::vector<Candidate>& cs);
 
 // Step 2, one candidate: the effects added to the baseline at its calibration (started where the
-// data show them, where they do), searched with the rig held, judged.
+// data show them, where they do), searched with the rig held, judged. Where the effects are
+// searched in two forms (the slip transient's two state laws), the form that ranks first, with the
+// other as its other_form.
 Candidate search(const FitProblem& p, const Baseline& b, const std::vector<std::string>& effects, std::uint64_t seed,
                  int comparisons);
 // Every candidate of the problem searched (in parallel), ranked.
@@ -128,9 +130,9 @@ Candidate refine(const FitProblem& p, const Baseline& b, const Candidate& c, int
 bool explains(const Candidate& c);
 // How many of the ranking's leaders are refined at most (refine_leaders explains why five).
 constexpr std::size_t kRefinedLeaders = 5;
-// Those of the first kRefinedLeaders of `ranked` that explain something refined (in parallel), each
-// with its other form (Candidate::other_form) beside it and the better of the two kept; the
-// others as they are.
+// Those of the first kRefinedLeaders of `ranked` that explain something refined (in parallel), and
+// beside each its other form (Candidate::other_form) if that explains something, the better of the
+// two kept; the others as they are.
 std::vector<Candidate> refine_leaders(const FitProblem& p, const Baseline& b, std::vector<Candidate> ranked, int comparisons);
 
 // Nested candidates (a general effect that reduces to a special one in a limit): where the general
